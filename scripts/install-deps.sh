@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Furrow builds and tests with (as root, or with
+# sudo). Packages already present are not touched, so a second run is fast.
+set -euo pipefail
+
+packages=(
+  build-essential cmake
+  libeigen3-dev libceres-dev libpcl-dev libopencv-dev nlohmann-json3-dev doctest-dev
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev mpi-default-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+run() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+run apt-get update -qq
+run apt-get install -y -qq "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,193 @@
+#include "cli/args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "geometry/error.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+bool parse_double(const std::string& text, double& out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
+}
+
+}  // namespace
+
+Args::Args(std::string command, std::vector<std::string> words)
+    : command_(std::move(command)), words_(std::move(words)), used_(words_.size(), false) {}
+
+void Args::fail(const std::string& what) const {
+  throw InputError("furrow " + command_ + ": " + what);
+}
+
+bool Args::wants_help() const {
+  for (const auto& w : words_)
+    if (w == "--help" || w == "-h") return true;
+  return false;
+}
+
+std::optional<std::string> Args::optional_positional() {
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if (used_[i]) continue;
+    if (words_[i].rfind("--", 0) == 0) continue;  // an unknown option: finish() reports it
+    used_[i] = true;
+    return words_[i];
+  }
+  return std::nullopt;
+}
+
+std::string Args::positional(const std::string& what) {
+  auto v = optional_positional();
+  if (!v) fail("missing " + what);
+  return *v;
+}
+
+std::optional<std::string> Args::option(const std::string& name) {
+  const std::string key = "--" + name;
+  std::optional<std::string> value;
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if (used_[i]) continue;
+    if (words_[i] == key) {
+      if (i + 1 >= words_.size()) fail(key + " needs a value");
+      if (value) fail(key + " is given twice");
+      used_[i] = used_[i + 1] = true;
+      value = words_[i + 1];
+      ++i;
+    } else if (words_[i].rfind(key + "=", 0) == 0) {
+      if (value) fail(key + " is given twice");
+      used_[i] = true;
+      value = words_[i].substr(key.size() + 1);
+    }
+  }
+  return value;
+}
+
+std::string Args::option_or(const std::string& name, const std::string& fallback) {
+  auto v = option(name);
+  return v ? *v : fallback;
+}
+
+std::string Args::required_option(const std::string& name) {
+  auto v = option(name);
+  if (!v) fail("--" + name + " is required");
+  return *v;
+}
+
+bool Args::flag(const std::string& name) {
+  const std::string key = "--" + name;
+  bool found = false;
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if (!used_[i] && words_[i] == key) {
+      used_[i] = true;
+      found = true;
+    }
+  }
+  return found;
+}
+
+std::optional<double> Args::number(const std::string& name) {
+  auto v = option(name);
+  if (!v) return std::nullopt;
+  double x = 0;
+  if (!parse_double(*v, x)) fail("--" + name + " expects a number, got \"" + *v + "\"");
+  return x;
+}
+
+double Args::number_or(const std::string& name, double fallback) {
+  auto v = number(name);
+  return v ? *v : fallback;
+}
+
+double Args::positive_or(const std::string& name, double fallback) {
+  auto v = number(name);
+  if (v && !(*v > 0)) fail("--" + name + " must be positive, got " + option_or(name, ""));
+  return v ? *v : fallback;
+}
+
+double Args::non_negative_or(const std::string& name, double fallback) {
+  auto v = number(name);
+  if (v && *v < 0) {
+    std::ostringstream s;
+    s << "--" << name << " must not be negative, got " << *v;
+    fail(s.str());
+  }
+  return v ? *v : fallback;
+}
+
+std::optional<long> Args::integer(const std::string& name) {
+  auto v = option(name);
+  if (!v) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(v->c_str(), &end, 10);
+  if (v->empty() || end != v->c_str() + v->size() || errno != 0)
+    fail("--" + name + " expects a whole number, got \"" + *v + "\"");
+  return x;
+}
+
+long Args::integer_or(const std::string& name, long fallback, long min_value) {
+  auto v = integer(name);
+  if (v && *v < min_value)
+    fail("--" + name + " must be at least " + std::to_string(min_value) + ", got " +
+         std::to_string(*v));
+  return v ? *v : fallback;
+}
+
+void Args::finish() const {
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if (used_[i]) continue;
+    if (words_[i].rfind("--", 0) == 0) fail("unknown option " + words_[i]);
+    fail("unexpected argument \"" + words_[i] + "\"");
+  }
+}
+
+std::pair<int, int> parse_grid(const std::string& text, const std::string& option) {
+  const auto x = text.find('x');
+  auto bad = [&]() -> std::pair<int, int> {
+    throw InputError("--" + option + " expects COUNTUxCOUNTV with counts of at least 1 "
+                     "(e.g. 400x300), got \"" + text + "\"");
+  };
+  if (x == std::string::npos) {
+    // A single count means the same in both directions.
+    char* end = nullptr;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || end != text.c_str() + text.size() || n < 1 || n > 100000) return bad();
+    return {static_cast<int>(n), static_cast<int>(n)};
+  }
+  const std::string a = text.substr(0, x), b = text.substr(x + 1);
+  char* ea = nullptr;
+  char* eb = nullptr;
+  const long nu = std::strtol(a.c_str(), &ea, 10);
+  const long nv = std::strtol(b.c_str(), &eb, 10);
+  if (a.empty() || b.empty() || ea != a.c_str() + a.size() || eb != b.c_str() + b.size() ||
+      nu < 1 || nv < 1 || nu > 100000 || nv > 100000)
+    return bad();
+  return {static_cast<int>(nu), static_cast<int>(nv)};
+}
+
+std::vector<double> parse_number_list(const std::string& text, std::size_t count,
+                                      const std::string& option) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    double x = 0;
+    if (!parse_double(item, x))
+      throw InputError("--" + option + ": \"" + item + "\" is not a finite number");
+    out.push_back(x);
+  }
+  if (out.size() != count)
+    throw InputError("--" + option + " expects " + std::to_string(count) +
+                     " comma-separated numbers, got \"" + text + "\"");
+  return out;
+}
+
+}  // namespace furrow::cli

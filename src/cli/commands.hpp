@@ -1,0 +1,25 @@
+#pragma once
+// The furrow subcommands. Each lives in its own cmd_<name>.cpp, defines one
+// Command and is listed in main.cpp. A command returns the process exit
+// status; bad input is thrown as InputError (status 2), never printed and
+// carried on.
+#include "cli/args.hpp"
+
+namespace furrow::cli {
+
+// Exit statuses shared by every command (also documented in README.md).
+constexpr int kExitOk = 0;
+constexpr int kExitFail = 1;        // the part fails inspection (out of tolerance, gouge)
+constexpr int kExitBadInput = 2;    // a file, option or value the user must fix
+constexpr int kExitInternal = 3;    // a bug or an unexpected system failure
+
+struct Command {
+  const char* name;
+  const char* summary;  // one line for `furrow help`
+  const char* usage;    // full help for `furrow help NAME` / `furrow NAME --help`
+  int (*run)(Args& args);
+};
+
+extern const Command kInfoCommand;
+
+}  // namespace furrow::cli

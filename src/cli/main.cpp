@@ -1,0 +1,81 @@
+// furrow: command-line entry point. Thin by design: it finds the subcommand,
+// maps exceptions to exit statuses and prints errors once, on stderr.
+#include <exception>
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "geometry/error.hpp"
+
+namespace {
+
+using furrow::cli::Command;
+
+const Command* const kCommands[] = {
+    &furrow::cli::kInfoCommand,
+};
+
+const Command* find_command(const std::string& name) {
+  for (const Command* c : kCommands)
+    if (name == c->name) return c;
+  return nullptr;
+}
+
+void print_overview(std::ostream& out) {
+  out << "furrow " << FURROW_VERSION
+      << " - inspection planning and machining-error verification of sculptured surfaces\n\n"
+         "usage: furrow COMMAND [options]\n\ncommands:\n";
+  for (const Command* c : kCommands) {
+    std::string name = c->name;
+    name.resize(18, ' ');
+    out << "  " << name << c->summary << "\n";
+  }
+  out << "\n'furrow help COMMAND' shows a command's options.\n"
+         "Exit status: 0 ok/pass, 1 inspection fail, 2 bad input, 3 internal error.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (words.empty() || words[0] == "help" || words[0] == "--help" || words[0] == "-h") {
+    if (words.size() >= 2) {
+      if (const Command* c = find_command(words[1])) {
+        std::cout << c->usage;
+        return furrow::cli::kExitOk;
+      }
+      std::cerr << "furrow: unknown command \"" << words[1] << "\"\n";
+      return furrow::cli::kExitBadInput;
+    }
+    print_overview(words.empty() ? std::cerr : std::cout);
+    return words.empty() ? furrow::cli::kExitBadInput : furrow::cli::kExitOk;
+  }
+  if (words[0] == "--version" || words[0] == "version") {
+    std::cout << "furrow " << FURROW_VERSION << "\n";
+    return furrow::cli::kExitOk;
+  }
+  const Command* command = find_command(words[0]);
+  if (!command) {
+    std::cerr << "furrow: unknown command \"" << words[0] << "\" (see 'furrow help')\n";
+    return furrow::cli::kExitBadInput;
+  }
+  furrow::cli::Args args(words[0], std::vector<std::string>(words.begin() + 1, words.end()));
+  if (args.wants_help()) {
+    std::cout << command->usage;
+    return furrow::cli::kExitOk;
+  }
+  try {
+    return command->run(args);
+  } catch (const furrow::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return furrow::cli::kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "internal error: out of memory\n";
+    return furrow::cli::kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return furrow::cli::kExitInternal;
+  }
+}

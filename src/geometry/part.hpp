@@ -1,0 +1,59 @@
+#pragma once
+// A part: the free-form faces to inspect, each a NURBS patch with an optional
+// trim and an orientation flag. Everything is in millimetres.
+//
+// Face::normal-related calls honour `reversed`, so the normal always points
+// out of the material (DESIGN.md); code should go through Face rather than the
+// bare surface whenever orientation matters.
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/differential_geometry.hpp"
+#include "geometry/nurbs_surface.hpp"
+#include "geometry/trim.hpp"
+
+namespace furrow {
+
+class Face {
+ public:
+  Face(std::string name, NurbsSurface surface, Trim trim = {}, bool reversed = false,
+       std::string source_type = {});
+
+  const std::string& name() const { return name_; }
+  const NurbsSurface& surface() const { return surface_; }
+  const Trim& trim() const { return trim_; }
+  bool reversed() const { return reversed_; }
+  // Original surface type when imported from CAD ("plane", "b-spline", ...);
+  // empty for native JSON faces.
+  const std::string& source_type() const { return source_type_; }
+  const ParameterDomain& domain() const { return surface_.domain(); }
+
+  // Inside the parameter rectangle and kept by the trim.
+  bool contains(double u, double v) const;
+
+  DifferentialGeometry geometry(double u, double v) const;
+  DifferentialGeometry geometry(const SurfaceDerivatives& d) const;
+
+ private:
+  std::string name_;
+  NurbsSurface surface_;
+  Trim trim_;
+  bool reversed_ = false;
+  std::string source_type_;
+  double derivative_scale_ = 1;
+};
+
+struct Part {
+  std::vector<Face> faces;
+  // Units the part file was written in ("mm" or "inch"); geometry is always mm.
+  std::string source_units = "mm";
+
+  // Box of all control nets (contains every face).
+  Eigen::AlignedBox3d control_box() const;
+  // Index of the face with that name, or nullopt.
+  std::optional<std::size_t> find_face(const std::string& name) const;
+};
+
+}  // namespace furrow

@@ -1,0 +1,166 @@
+#include "io/part_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "geometry/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json_fields.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using jf::json;
+
+double units_to_mm(const std::string& units, const std::string& where) {
+  if (units == "mm" || units == "millimetre" || units == "millimeter") return 1.0;
+  if (units == "inch" || units == "in") return 25.4;
+  throw InputError(where + ": unknown units \"" + units + "\" (expected \"mm\" or \"inch\")");
+}
+
+namespace {
+
+Face parse_face(const json& jface, const std::string& where, double scale) {
+  jf::object(jface, where);
+  std::string name = jf::string(jf::member(jface, "name", where), jf::child(where, "name"));
+  const int degree_u = jf::integer(jf::member(jface, "degree_u", where), jf::child(where, "degree_u"));
+  const int degree_v = jf::integer(jf::member(jface, "degree_v", where), jf::child(where, "degree_v"));
+  std::vector<double> knots_u =
+      jf::numbers(jf::member(jface, "knots_u", where), jf::child(where, "knots_u"));
+  std::vector<double> knots_v =
+      jf::numbers(jf::member(jface, "knots_v", where), jf::child(where, "knots_v"));
+
+  const std::string cp_where = jf::child(where, "control_points");
+  const json& jnet = jf::array(jf::member(jface, "control_points", where), cp_where);
+  if (jnet.empty()) throw InputError(cp_where + ": the control net is empty");
+  std::vector<std::vector<Eigen::Vector3d>> net(jnet.size());
+  for (std::size_t i = 0; i < jnet.size(); ++i) {
+    const std::string row_where = jf::child(cp_where, i);
+    const json& jrow = jf::array(jnet[i], row_where);
+    if (jrow.empty()) throw InputError(row_where + ": the row is empty");
+    net[i].reserve(jrow.size());
+    for (std::size_t j = 0; j < jrow.size(); ++j)
+      net[i].push_back(scale * jf::vector3(jrow[j], jf::child(row_where, j)));
+  }
+
+  std::vector<std::vector<double>> weights;
+  if (const json* jw = jf::optional_member(jface, "weights", where)) {
+    const std::string w_where = jf::child(where, "weights");
+    jf::array(*jw, w_where);
+    for (std::size_t i = 0; i < jw->size(); ++i)
+      weights.push_back(jf::numbers((*jw)[i], jf::child(w_where, i)));
+  }
+
+  Trim trim;
+  if (const json* jt = jf::optional_member(jface, "trim", where)) {
+    const std::string t_where = jf::child(where, "trim");
+    jf::array(*jt, t_where);
+    std::vector<UvLoop> loops;
+    for (std::size_t l = 0; l < jt->size(); ++l) {
+      const std::string l_where = jf::child(t_where, l);
+      jf::array((*jt)[l], l_where);
+      UvLoop loop;
+      for (std::size_t k = 0; k < (*jt)[l].size(); ++k)
+        loop.push_back(jf::vector2((*jt)[l][k], jf::child(l_where, k)));
+      loops.push_back(std::move(loop));
+    }
+    trim = Trim(std::move(loops), t_where);
+  }
+
+  bool reversed = false;
+  if (const json* jr = jf::optional_member(jface, "reversed", where))
+    reversed = jf::boolean(*jr, jf::child(where, "reversed"));
+  std::string source_type;
+  if (const json* js = jf::optional_member(jface, "source_type", where))
+    source_type = jf::string(*js, jf::child(where, "source_type"));
+
+  NurbsSurface surface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), net, weights,
+                       where);
+  return Face(std::move(name), std::move(surface), std::move(trim), reversed,
+              std::move(source_type));
+}
+
+}  // namespace
+
+Part parse_part_json(const std::string& text, const std::string& name) {
+  const json doc = jf::parse_text(text, name);
+  const std::string root = name + ":";
+  jf::object(doc, root);
+  Part part;
+  part.source_units = jf::string(jf::member(doc, "units", root), jf::child(root, "units"));
+  const double scale = units_to_mm(part.source_units, jf::child(root, "units"));
+  const std::string faces_where = jf::child(root, "faces");
+  const json& jfaces = jf::array(jf::member(doc, "faces", root), faces_where);
+  if (jfaces.empty()) throw InputError(faces_where + ": the part has no faces");
+  for (std::size_t f = 0; f < jfaces.size(); ++f) {
+    Face face = parse_face(jfaces[f], jf::child(faces_where, f), scale);
+    if (part.find_face(face.name()))
+      throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name \"" +
+                       face.name() + "\"");
+    part.faces.push_back(std::move(face));
+  }
+  return part;
+}
+
+Part read_part_json(const std::string& path) {
+  return parse_part_json(jf::read_text(path), path);
+}
+
+Part read_part(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs")
+    throw InputError(path + ": STEP/IGES import is not part of this build; convert the part to "
+                            "Furrow's part JSON");
+  return read_part_json(path);
+}
+
+std::string part_to_json_text(const Part& part) {
+  json jfaces = json::array();
+  for (const Face& face : part.faces) {
+    const NurbsSurface& s = face.surface();
+    json jf_face;
+    jf_face["name"] = face.name();
+    if (!face.source_type().empty()) jf_face["source_type"] = face.source_type();
+    jf_face["degree_u"] = s.degree_u();
+    jf_face["degree_v"] = s.degree_v();
+    jf_face["knots_u"] = s.knots_u();
+    jf_face["knots_v"] = s.knots_v();
+    json net = json::array();
+    json weights = json::array();
+    for (int i = 0; i < s.num_u(); ++i) {
+      json row = json::array();
+      json wrow = json::array();
+      for (int j = 0; j < s.num_v(); ++j) {
+        row.push_back(jf::vector_json(s.control_point(i, j)));
+        wrow.push_back(s.weight(i, j));
+      }
+      net.push_back(std::move(row));
+      weights.push_back(std::move(wrow));
+    }
+    jf_face["control_points"] = std::move(net);
+    if (s.is_rational()) jf_face["weights"] = std::move(weights);
+    if (!face.trim().empty()) {
+      json loops = json::array();
+      for (const UvLoop& loop : face.trim().loops()) {
+        json jl = json::array();
+        for (const auto& p : loop) jl.push_back(jf::vector_json(p));
+        loops.push_back(std::move(jl));
+      }
+      jf_face["trim"] = std::move(loops);
+    }
+    if (face.reversed()) jf_face["reversed"] = true;
+    jfaces.push_back(std::move(jf_face));
+  }
+  json doc;
+  doc["units"] = "mm";
+  doc["faces"] = std::move(jfaces);
+  return jf::to_text(doc);
+}
+
+void write_part_json(const Part& part, const std::string& path) {
+  write_file_atomically(path, part_to_json_text(part));
+}
+
+}  // namespace furrow

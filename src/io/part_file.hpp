@@ -1,0 +1,32 @@
+#pragma once
+// Part files (DESIGN.md "Files", docs/formats.md "Part JSON").
+//
+// Geometry is converted to millimetres at this boundary ("units": "inch"
+// multiplies coordinates by 25.4; knots and weights are unit-free). Writing
+// always produces millimetres, with every double in its shortest exact text,
+// so read(write(part)) reproduces the part bit for bit.
+//
+// Errors are InputError naming the file and the field: "part.json:
+// faces[1].knots_v: expected 9 knots (5 control points + degree 3 + 1), got 8".
+#include <string>
+
+#include "geometry/part.hpp"
+
+namespace furrow {
+
+// Reads a part from any supported file: .json natively, CAD files (.step,
+// .stp, .iges, .igs) through the CAD importer when it is built in.
+Part read_part(const std::string& path);
+
+Part read_part_json(const std::string& path);
+// `name` stands for the source in error messages.
+Part parse_part_json(const std::string& text, const std::string& name);
+
+std::string part_to_json_text(const Part& part);
+void write_part_json(const Part& part, const std::string& path);
+
+// Conversion factor from a units name to millimetres ("mm" -> 1, "inch" ->
+// 25.4); throws InputError naming `where` for anything else.
+double units_to_mm(const std::string& units, const std::string& where);
+
+}  // namespace furrow

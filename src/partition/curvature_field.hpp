@@ -1,0 +1,51 @@
+#pragma once
+// Curvature of one face sampled on a regular (u,v) grid.
+//
+// Samples sit at cell centres: cell (i, j) covers [u0 + i du, u0 + (i+1) du] x
+// [v0 + j dv, v0 + (j+1) dv], so a sample's `area` (area element times du dv)
+// is the midpoint-rule area of its cell and sums of areas integrate over the
+// face. Cells whose centre is trimmed away or whose normal is degenerate are
+// marked and carry no area. Computed in parallel with OpenMP; the result does
+// not depend on the thread count.
+#include <Eigen/Core>
+#include <vector>
+
+#include "geometry/part.hpp"
+#include "partition/classification.hpp"
+
+namespace furrow {
+
+enum class SampleStatus : unsigned char { valid = 0, trimmed = 1, degenerate = 2 };
+
+struct CurvatureSample {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d d1 = Eigen::Vector3d::UnitX();  // principal direction of k1
+  Eigen::Vector3d d2 = Eigen::Vector3d::UnitY();
+  double K = 0, H = 0, k1 = 0, k2 = 0;
+  double area = 0;  // mm^2 of the cell (0 unless valid)
+  SampleStatus status = SampleStatus::trimmed;
+  bool valid() const { return status == SampleStatus::valid; }
+};
+
+struct CurvatureField {
+  int nu = 0, nv = 0;
+  ParameterDomain domain;
+  std::vector<CurvatureSample> samples;  // index i * nv + j (i along u)
+
+  double du() const { return domain.width_u() / nu; }
+  double dv() const { return domain.width_v() / nv; }
+  Eigen::Vector2d uv(int i, int j) const {
+    return {domain.u0 + (i + 0.5) * du(), domain.v0 + (j + 0.5) * dv()};
+  }
+  const CurvatureSample& at(int i, int j) const { return samples[static_cast<std::size_t>(i) * nv + j]; }
+};
+
+// Preconditions: nu, nv >= 1 (InputError otherwise).
+CurvatureField compute_curvature_field(const Face& face, int nu, int nv);
+
+// Area of each curvature class over the valid samples [mm^2], indexed by
+// CurvatureClass.
+std::vector<double> class_areas(const CurvatureField& field, double eps);
+
+}  // namespace furrow
