@@ -2,6 +2,7 @@
 // Runs the built furrow executable as a user would and captures its exit
 // status, standard output and standard error (end-to-end CLI tests).
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -39,8 +40,10 @@ inline std::string scratch_dir(const std::string& name) {
 }
 
 inline CliResult run_furrow(const std::vector<std::string>& args, const std::string& stdin_file = "") {
+  // pid + counter: ctest -j runs test cases as concurrent processes.
   static int counter = 0;
-  const std::string base = scratch_dir("cli-capture-" + std::to_string(counter++));
+  const std::string base =
+      scratch_dir("cli-capture-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::string cmd = shell_quote(FURROW_CLI);
   for (const auto& a : args) cmd += " " + shell_quote(a);
   cmd += " < " + shell_quote(stdin_file.empty() ? "/dev/null" : stdin_file);
