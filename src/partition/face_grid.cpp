@@ -66,9 +66,13 @@ GridSize grid_for_spacing(const FaceExtent& extent, double spacing, const std::s
     s << "the sampling spacing must be a positive number of mm, got " << spacing;
     throw InputError(s.str());
   }
-  // Counted in double first: a tiny spacing must not overflow int.
-  const double cu = std::max<double>(kMinCellsPerDirection, std::ceil(extent.length_u / spacing));
-  const double cv = std::max<double>(kMinCellsPerDirection, std::ceil(extent.length_v / spacing));
+  // Counted in double first: a tiny spacing must not overflow int. The slack
+  // keeps a length that is a whole multiple of the spacing up to round-off
+  // (90 mm at 0.5 mm) from getting one cell more.
+  auto cells = [spacing](double length) {
+    return std::max<double>(kMinCellsPerDirection, std::ceil(length / spacing * (1 - 1e-9)));
+  };
+  const double cu = cells(extent.length_u), cv = cells(extent.length_v);
   if (cu > kMaxCellsPerDirection || cv > kMaxCellsPerDirection ||
       cu * cv > static_cast<double>(kMaxCellsPerFace)) {
     std::ostringstream s;

@@ -45,8 +45,9 @@ FaceExtent face_extent(const Face& face);
 // has zero extent.
 double default_spacing(const std::vector<FaceExtent>& extents);
 
-// Cells for one face at `spacing` mm: ceil(length / spacing) per direction,
-// raised to kMinCellsPerDirection. Throws InputError naming `face_name` when
+// Cells for one face at `spacing` mm: ceil(length / spacing) per direction
+// (a relative 1e-9 below a whole count rounds down), raised to
+// kMinCellsPerDirection. Throws InputError naming `face_name` when
 // the result exceeds the limits, or when spacing is not a positive number.
 GridSize grid_for_spacing(const FaceExtent& extent, double spacing, const std::string& face_name);
 
