@@ -72,8 +72,6 @@ int run_partition(Args& args) {
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (image_path && lower_extension(*image_path) != ".png")
     args.fail("--image " + *image_path + ": expected a .png file name");
-  if (image_path && std::filesystem::absolute(*image_path) == std::filesystem::absolute(out_path))
-    args.fail("--out and --image name the same file");
   check_not_overwriting_input(out_path, part_path);
   if (image_path) check_not_overwriting_input(*image_path, part_path);
 

@@ -10,6 +10,7 @@
 #include "io/part_file.hpp"
 #include "partition/curvature_field.hpp"
 #include "partition/partition.hpp"
+#include "partition/region_checks.hpp"
 #include "partition/regions_file.hpp"
 #include "partition/test_faces.hpp"
 #include "support/run_cli.hpp"
@@ -69,9 +70,53 @@ TEST_CASE("mould: seven regions at every resolution, on the dome, the dimple and
   const double dimple_kmax = base.map.regions[*dimple].k1.max;
   CHECK(dimple_kmax == doctest::Approx(part.faces[0].geometry(0.72, 30.0 / 80).k1).epsilon(0.05));
   CHECK(1 / dimple_kmax == doctest::Approx(9.0).epsilon(0.1));
-  // Every region's interior point lies in it.
+  // Every region's interior point lies in it; every cell is found in its region.
   for (const Region& r : base.map.regions)
     CHECK(base.map.region_at(0, r.interior_uv.x(), r.interior_uv.y()) == r.id);
+  check_region_at_matches_labels(base);
+}
+
+TEST_CASE("mould with a trim hole: trimmed cells belong to no region, region_at agrees everywhere") {
+  const Part mould = read_part(source_path("examples/parts/mould.json"));
+  UvLoop hole;
+  for (int k = 0; k < 24; ++k)
+    hole.emplace_back(0.4 + 0.08 * std::cos(k * M_PI / 12), 0.6 + 0.1 * std::sin(k * M_PI / 12));
+  const Trim trim({{{0.05, 0.05}, {0.95, 0.05}, {0.95, 0.95}, {0.05, 0.95}}, hole});
+  Part part;
+  part.faces.emplace_back("mould", mould.faces[0].surface(), trim);
+  const PartitionResult res = partition_part(part, grid(250, 200));
+  const RegionFace& info = res.map.faces[0];
+  CHECK(info.trimmed_cells > 0);
+  int labelled_outside = 0, unlabelled_inside = 0;
+  for (int i = 0; i < info.nu; ++i)
+    for (int j = 0; j < info.nv; ++j) {
+      // The field's own cell-centre formula (u0 + (i + 0.5) du), bit for bit.
+      const Eigen::Vector2d uv((i + 0.5) * (1.0 / info.nu), (j + 0.5) * (1.0 / info.nv));
+      const bool kept = trim.contains(uv);
+      labelled_outside += !kept && res.cells[0].labels.at(i, j) >= 0;
+      unlabelled_inside += kept && res.cells[0].labels.at(i, j) < 0;
+    }
+  CHECK(labelled_outside == 0);
+  CHECK(unlabelled_inside == 0);
+  CHECK(std::fabs(region_total(res.map) - info.area) <= 1e-9 * info.area);
+  // Nothing is found in the hole (it cuts into the dome).
+  CHECK(!res.map.region_at(0, 0.4, 0.6).has_value());
+  check_region_at_matches_labels(res);
+}
+
+TEST_CASE("a face trimmed away entirely has no regions and is no error") {
+  const Part mould = read_part(source_path("examples/parts/mould.json"));
+  Part part;
+  part.faces.emplace_back("gone", mould.faces[0].surface(), Trim({{{2, 2}, {3, 2}, {3, 3}}}));
+  part.faces.emplace_back("kept", mould.faces[0].surface());
+  const PartitionResult res = partition_part(part, grid(40, 32));
+  CHECK(res.map.faces[0].regions.empty());
+  CHECK(res.map.faces[0].valid_cells == 0);
+  CHECK(res.map.faces[0].area == 0.0);
+  CHECK(!res.map.faces[1].regions.empty());
+  CHECK(res.map.regions[0].face == 1);
+  // It survives the file round trip.
+  CHECK(parse_regions_json(regions_to_json_text(res.map), "r.json").faces[0].regions.empty());
 }
 
 TEST_CASE("a speck below min-area disappears into its neighbour; total area conserved to 1e-9") {
