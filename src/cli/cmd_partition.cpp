@@ -2,6 +2,7 @@
 // face into convex / concave / saddle / planar regions (issue 3).
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -21,6 +22,12 @@ std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+std::string number_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
 }
 
 void print_summary(std::ostream& out, const std::string& path, const PartitionResult& result) {
@@ -62,12 +69,12 @@ int run_partition(Args& args) {
     const auto [nu, nv] = parse_grid(*grid, "grid");
     options.grid = GridSize{nu, nv};
   }
-  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + std::to_string(*spacing));
+  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + number_text(*spacing));
   options.spacing = spacing;
-  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + std::to_string(*eps));
+  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + number_text(*eps));
   options.eps = eps;
   if (min_area && *min_area < 0)
-    args.fail("--min-area must not be negative, got " + std::to_string(*min_area));
+    args.fail("--min-area must not be negative, got " + number_text(*min_area));
   options.min_area = min_area;
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (image_path && lower_extension(*image_path) != ".png")
