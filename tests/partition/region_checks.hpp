@@ -1,10 +1,23 @@
 #pragma once
-// Checks shared by the partition tests.
+// Helpers and checks shared by the partition tests.
 #include <doctest/doctest.h>
 
 #include "partition/partition.hpp"
 
 namespace furrow::test {
+
+// The same cell counts on every face.
+inline PartitionOptions grid(int nu, int nv) {
+  PartitionOptions o;
+  o.grid = GridSize{nu, nv};
+  return o;
+}
+
+inline double total_region_area(const RegionMap& map) {
+  double a = 0;
+  for (const Region& r : map.regions) a += r.area;
+  return a;
+}
 
 // Every cell centre is found by region_at in the region it was labelled with,
 // and cells without a region are found in none.

@@ -21,18 +21,6 @@ Part single(Face face) {
   return p;
 }
 
-PartitionOptions grid(int nu, int nv) {
-  PartitionOptions o;
-  o.grid = GridSize{nu, nv};
-  return o;
-}
-
-double total_region_area(const RegionMap& map) {
-  double a = 0;
-  for (const Region& r : map.regions) a += r.area;
-  return a;
-}
-
 }  // namespace
 
 TEST_CASE("sphere cap: one convex region with outward normal, concave when reversed") {

@@ -20,23 +20,11 @@ using namespace furrow::test;
 
 namespace {
 
-PartitionOptions grid(int nu, int nv) {
-  PartitionOptions o;
-  o.grid = GridSize{nu, nv};
-  return o;
-}
-
 std::vector<CurvatureClass> sorted_classes(const RegionMap& map) {
   std::vector<CurvatureClass> c;
   for (const Region& r : map.regions) c.push_back(r.curvature_class);
   std::sort(c.begin(), c.end());
   return c;
-}
-
-double region_total(const RegionMap& map) {
-  double a = 0;
-  for (const Region& r : map.regions) a += r.area;
-  return a;
 }
 
 }  // namespace
@@ -98,7 +86,7 @@ TEST_CASE("mould with a trim hole: trimmed cells belong to no region, region_at 
     }
   CHECK(labelled_outside == 0);
   CHECK(unlabelled_inside == 0);
-  CHECK(std::fabs(region_total(res.map) - info.area) <= 1e-9 * info.area);
+  CHECK(std::fabs(total_region_area(res.map) - info.area) <= 1e-9 * info.area);
   // Nothing is found in the hole (it cuts into the dome).
   CHECK(!res.map.region_at(0, 0.4, 0.6).has_value());
   check_region_at_matches_labels(res);
@@ -150,7 +138,7 @@ TEST_CASE("a speck below min-area disappears into its neighbour; total area cons
   CHECK(plate.curvature_class == CurvatureClass::planar);
   CHECK(plate.merged_components == static_cast<int>(specks.map.regions.size()));
   CHECK(std::fabs(plate.area - field_area) <= 1e-9 * field_area);
-  CHECK(std::fabs(region_total(specks.map) - field_area) <= 1e-9 * field_area);
+  CHECK(std::fabs(total_region_area(specks.map) - field_area) <= 1e-9 * field_area);
   // What was absorbed is exactly the area of the non-planar cells.
   CHECK(plate.absorbed_area == doctest::Approx(non_planar).epsilon(1e-9));
   // The bump's cells are now found in the plate.
