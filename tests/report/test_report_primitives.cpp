@@ -46,3 +46,46 @@ TEST_CASE("the diverging scale is white at zero, blue below, red above, saturate
     CHECK(lightness(diverging_colour(-t)) < lightness(diverging_colour(-t + 0.1)));
   }
 }
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "report/figures.hpp"
+
+namespace {
+
+cv::Mat decode(const std::vector<unsigned char>& png) { return cv::imdecode(png, cv::IMREAD_COLOR); }
+
+// Count pixels close to an sRGB colour.
+int count_colour(const cv::Mat& img, const Rgb& c) {
+  int n = 0;
+  for (int y = 0; y < img.rows; ++y)
+    for (int x = 0; x < img.cols; ++x) {
+      const cv::Vec3b p = img.at<cv::Vec3b>(y, x);
+      if (std::abs(p[2] - c[0]) <= 2 && std::abs(p[1] - c[1]) <= 2 && std::abs(p[0] - c[2]) <= 2) ++n;
+    }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("figures are valid, deterministic PNGs that show their data") {
+  std::vector<MapPoint> pts;
+  for (int k = 0; k < 50; ++k) pts.push_back({Eigen::Vector2d(k, k % 7), (k - 25) * 0.004, k == 3});
+  const ToleranceLimits tol{-0.05, 0.05};
+  const auto map = deviation_map_png("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true);
+  CHECK(map == deviation_map_png("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true));
+  const cv::Mat img = decode(map);
+  REQUIRE_FALSE(img.empty());
+  CHECK(img.cols == 900);
+  // The most negative point is the saturated dark blue of the scale's end
+  // (range = max(tol, max |value|) = 0.1 mm, value -0.1).
+  CHECK(count_colour(img, diverging_colour(-1.0)) > 20);
+  const std::vector<double> values = {-0.01, 0.0, 0.01, 0.02, 0.02, 0.03};
+  const cv::Mat hist = decode(histogram_png("h", values, tol));
+  REQUIRE_FALSE(hist.empty());
+  const cv::Mat sc = decode(scatter_png("s", {0.0, 0.01}, {0.001, 0.012}, {0.002, 0.002}));
+  REQUIRE_FALSE(sc.empty());
+  const cv::Mat st = decode(status_map_png("g", {{Eigen::Vector2d(1, 1), {}, "G1", "CONFIRMED"}}, {}, {}, "x", "y"));
+  REQUIRE_FALSE(st.empty());
+  CHECK(count_colour(st, status_colour("CONFIRMED")) > 50);
+}
