@@ -442,6 +442,23 @@ std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods)
   return wires;
 }
 
+// A periodic range from pcurve boxes is off by rounding (e.g. [-4e-13, 2 pi]);
+// OpenCASCADE's conversions of a full turn need it exact: ends within 1e-9 of
+// the period of a multiple of the period are moved onto it, and a range of
+// a period (or a hair more) is made exactly one period.
+void snap_to_period(double& a, double& b, double period, const char* direction) {
+  const double eps = 1e-9 * period;
+  auto snap = [&](double& x) {
+    const double multiple = std::round(x / period) * period;
+    if (std::abs(x - multiple) <= eps) x = multiple;
+  };
+  snap(a);
+  snap(b);
+  if (b - a > period + eps)
+    throw FaceFailure(std::string("its boundary spans more than one period in ") + direction);
+  if (b - a > period - eps) b = a + period;
+}
+
 // Parameter rectangle of the face: the union of its pcurves' exact boxes,
 // at most one period wide, inside the surface's own bounds.
 ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>& wires,
@@ -466,14 +483,8 @@ ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>&
   surface->Bounds(su0, su1, sv0, sv1);
   if (!periods.u) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
   if (!periods.v) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-  if (periods.u && u1 - u0 > periods.du) {
-    if (u1 - u0 > periods.du * (1 + 1e-9)) throw FaceFailure("its boundary spans more than one period in u");
-    u1 = u0 + periods.du;
-  }
-  if (periods.v && v1 - v0 > periods.dv) {
-    if (v1 - v0 > periods.dv * (1 + 1e-9)) throw FaceFailure("its boundary spans more than one period in v");
-    v1 = v0 + periods.dv;
-  }
+  if (periods.u) snap_to_period(u0, u1, periods.du, "u");
+  if (periods.v) snap_to_period(v0, v1, periods.dv, "v");
   if (!(std::abs(u0) < 1e50 && std::abs(u1) < 1e50 && std::abs(v0) < 1e50 && std::abs(v1) < 1e50))
     throw FaceFailure("it is unbounded (an infinite surface without a boundary)");
   if (!(u1 > u0 && v1 > v0)) throw FaceFailure("its parameter rectangle is empty");

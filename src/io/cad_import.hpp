@@ -48,7 +48,7 @@ namespace furrow {
 struct CadImportOptions {
   // Trim polygons: at the parameter midpoint of every polygon edge the true
   // boundary point must lie within this 3-D distance [mm] of the polygon ...
-  double trim_chord_tolerance = 1e-5;
+  double trim_chord_tolerance = 1e-6;
   // ... and within this fraction of the domain's width/height of it in (s,t)
   // (guards the corners of the parameter plane that 3-D hardly sees: poles).
   double trim_uv_tolerance = 1e-4;
