@@ -64,6 +64,7 @@
 
 #include "geometry/error.hpp"
 #include "io/cad_parameter_map.hpp"
+#include "io/cad_trim_polygon.hpp"
 
 namespace furrow {
 
@@ -491,118 +492,6 @@ ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>&
   return {u0, u1, v0, v1};
 }
 
-// Turns pcurves into polygons in the NURBS's (s,t): each edge starts as a few
-// polygon edges, and a polygon edge is halved while the boundary point at its
-// parameter midpoint lies too far from it (3-D distance between that point and
-// the polygon point nearest to it in (s,t), and the (s,t) distance itself).
-class LoopSampler {
- public:
-  LoopSampler(const NurbsSurface& nurbs, ParameterMap& map, const CadImportOptions& options)
-      : nurbs_(nurbs), map_(map), options_(options) {
-    const ParameterDomain& d = nurbs.domain();
-    scale_ = {d.width_u(), d.width_v()};
-  }
-
-  UvLoop sample(const WireUse& wire) {
-    UvLoop loop;
-    for (const EdgeUse& e : wire) {
-      const int pieces = e.degenerate ? 1 : 4;
-      Sample a = at(e, e.from);
-      append(loop, a.st);
-      for (int k = 1; k <= pieces; ++k) {
-        const Sample b = at(e, e.from + (e.to - e.from) * k / pieces);
-        refine(e, a, b, 0, loop);
-        a = b;
-      }
-    }
-    if (loop.size() > 1 && close(loop.back(), loop.front())) loop.pop_back();
-    return loop;
-  }
-
-  double worst_deviation() const { return worst_; }
-  bool tolerance_met() const { return met_; }
-
- private:
-  struct Sample {
-    double t;
-    Eigen::Vector2d st;
-  };
-  Sample at(const EdgeUse& e, double t) {
-    const Eigen::Vector2d uv = e.uv(t);
-    return {t, map_(uv.x(), uv.y())};
-  }
-  bool close(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
-    return std::abs(a.x() - b.x()) <= 1e-12 * scale_.x() && std::abs(a.y() - b.y()) <= 1e-12 * scale_.y();
-  }
-  void append(UvLoop& loop, const Eigen::Vector2d& st) {
-    if (loop.empty() || !close(loop.back(), st)) loop.push_back(st);
-  }
-  void refine(const EdgeUse& e, const Sample& a, const Sample& b, int depth, UvLoop& loop) {
-    const Sample m = at(e, 0.5 * (a.t + b.t));
-    const Eigen::Vector2d ab = b.st - a.st;
-    const double len2 = ab.squaredNorm();
-    const double lambda = len2 > 0 ? std::clamp((m.st - a.st).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    const Eigen::Vector2d foot = a.st + lambda * ab;
-    const double uv_off = ((m.st - foot).array() / scale_.array()).abs().maxCoeff();
-    const double off_3d = (nurbs_.point(foot.x(), foot.y()) - nurbs_.point(m.st.x(), m.st.y())).norm();
-    if (off_3d > options_.trim_chord_tolerance || uv_off > options_.trim_uv_tolerance) {
-      if (depth < options_.trim_max_subdivisions) {
-        refine(e, a, m, depth + 1, loop);
-        refine(e, m, b, depth + 1, loop);
-        return;
-      }
-      met_ = false;
-    }
-    worst_ = std::max(worst_, off_3d);
-    append(loop, b.st);
-  }
-
-  const NurbsSurface& nurbs_;
-  ParameterMap& map_;
-  const CadImportOptions& options_;
-  Eigen::Array2d scale_;
-  double worst_ = 0;
-  bool met_ = true;
-};
-
-// Drops vertices lying on the segment between their neighbours (the straight
-// edges were sampled like curves).
-void drop_collinear(UvLoop& loop, const Eigen::Array2d& scale) {
-  if (loop.size() < 4) return;
-  UvLoop kept;
-  const std::size_t n = loop.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector2d& prev = kept.empty() ? loop[n - 1] : kept.back();
-    const Eigen::Vector2d& cur = loop[k];
-    const Eigen::Vector2d& next = loop[(k + 1) % n];
-    const Eigen::Vector2d ab = ((next - prev).array() / scale).matrix();
-    const Eigen::Vector2d ac = ((cur - prev).array() / scale).matrix();
-    const double cross = ab.x() * ac.y() - ab.y() * ac.x();
-    const double along = ab.squaredNorm() > 0 ? ac.dot(ab) / ab.squaredNorm() : -1;
-    const bool between = along > 0 && along < 1;
-    if (!(between && std::abs(cross) <= 1e-13 * ab.norm())) kept.push_back(cur);
-  }
-  if (kept.size() >= 3) loop = std::move(kept);
-}
-
-// True when the only loop is the domain rectangle itself (a full periodic
-// face, a face bounded by iso-lines): the face needs no trim.
-bool is_domain_rectangle(const std::vector<UvLoop>& loops, const ParameterDomain& d) {
-  if (loops.size() != 1) return false;
-  const double eu = 1e-12 * d.width_u(), ev = 1e-12 * d.width_v();
-  double twice_area = 0;
-  const UvLoop& loop = loops[0];
-  for (std::size_t k = 0; k < loop.size(); ++k) {
-    const Eigen::Vector2d& p = loop[k];
-    const Eigen::Vector2d& q = loop[(k + 1) % loop.size()];
-    const bool on_edge = std::abs(p.x() - d.u0) <= eu || std::abs(p.x() - d.u1) <= eu ||
-                         std::abs(p.y() - d.v0) <= ev || std::abs(p.y() - d.v1) <= ev;
-    if (!on_edge) return false;
-    twice_area += p.x() * q.y() - q.x() * p.y();
-  }
-  return std::abs(twice_area) / 2 >= (1 - 1e-9) * d.width_u() * d.width_v();
-}
-
 // ---------------------------------------------------------------- faces
 
 struct ConvertedFace {
@@ -650,23 +539,32 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
                       " surface by " + number_text(report.deviation) + " mm (allowed " +
                       number_text(allowed) + " mm)");
 
-  LoopSampler sampler(nurbs, map, options);
+  TrimPolygonOptions polygon_options;
+  polygon_options.chord_tolerance = options.trim_chord_tolerance;
+  polygon_options.uv_tolerance = options.trim_uv_tolerance;
+  polygon_options.max_subdivisions = options.trim_max_subdivisions;
+  TrimPolygonBuilder polygons(nurbs, polygon_options);
   std::vector<UvLoop> loops;
-  const ParameterDomain& d = nurbs.domain();
   for (const WireUse& wire : wires) {
-    UvLoop loop = sampler.sample(wire);
-    drop_collinear(loop, Eigen::Array2d(d.width_u(), d.width_v()));
+    std::vector<BoundaryCurve> curves;
+    for (const EdgeUse& e : wire)
+      curves.push_back({[&e, &map](double t) {
+                          const Eigen::Vector2d uv = e.uv(t);
+                          return map(uv.x(), uv.y());
+                        },
+                        e.from, e.to, e.degenerate});
+    UvLoop loop = polygons.loop(curves);
     if (loop.size() >= 3) loops.push_back(std::move(loop));
   }
   if (map.failures() > 0)
     throw FaceFailure("its trim could not be carried into the NURBS parameters (" +
                       std::to_string(map.failures()) + " points did not converge, worst residual " +
                       number_text(map.worst_residual()) + " mm)");
-  if (is_domain_rectangle(loops, d)) loops.clear();
+  if (is_domain_rectangle(loops, nurbs.domain())) loops.clear();
   report.loops = static_cast<int>(loops.size());
   for (const auto& loop : loops) report.trim_vertices += static_cast<int>(loop.size());
-  report.trim_deviation = sampler.worst_deviation();
-  report.trim_tolerance_met = sampler.tolerance_met();
+  report.trim_deviation = polygons.worst_sag();
+  report.trim_tolerance_met = polygons.tolerance_met();
 
   // Orientation: compare Su x Sv of the NURBS with OpenCASCADE's D1U x D1V at
   // the check point where the original is least degenerate.

@@ -11,7 +11,8 @@
 //   the face report says so. Each conversion is checked against OpenCASCADE's
 //   own surface on a grid and the largest deviation is reported per face.
 // - its boundary wires become uv loops of a Trim (even-odd), sampled until the
-//   polygon is within options.trim_chord_tolerance of the true boundary in 3-D.
+//   polygon is within options.trim_chord_tolerance of the true boundary in 3-D
+//   (balanced so that areas come out unbiased: cad_trim_polygon.hpp).
 //   Loops are moved into the NURBS parameters (the conversion reparametrises
 //   circles; see cad_parameter_map.hpp) and unwrapped across periodic seams,
 //   so a closed cylinder, sphere or torus face is one continuous patch whose
@@ -46,14 +47,14 @@
 namespace furrow {
 
 struct CadImportOptions {
-  // Trim polygons: at the parameter midpoint of every polygon edge the true
-  // boundary point must lie within this 3-D distance [mm] of the polygon ...
-  double trim_chord_tolerance = 1e-6;
-  // ... and within this fraction of the domain's width/height of it in (s,t)
-  // (guards the corners of the parameter plane that 3-D hardly sees: poles).
+  // Trim polygons (cad_trim_polygon.hpp): largest 3-D chord sag [mm] of a
+  // polygon edge, measured at the boundary curve's parameter midpoint; the
+  // area-balanced polygon stays within about 2/3 of it on either side ...
+  double trim_chord_tolerance = 1e-5;
+  // ... and largest (s,t) sag as a fraction of the domain's width/height
+  // (guards corners of the parameter plane that 3-D hardly sees: poles).
   double trim_uv_tolerance = 1e-4;
-  // Each boundary edge starts as 4 polygon edges (1 for a collapsed edge) and
-  // a polygon edge is halved at most this many times.
+  // Halvings of a polygon edge before the tolerance is given up (reported).
   int trim_max_subdivisions = 24;
   // Surfaces with no exact NURBS form are approximated to this 3-D tolerance
   // [mm] with at most this degree and number of segments per direction.
@@ -79,7 +80,7 @@ struct CadFaceReport {
   double approximation_bound = 0;  // OpenCASCADE's error bound of an approximation [mm]
   int loops = 0;                 // trim loops kept (0 = untrimmed rectangle)
   int trim_vertices = 0;
-  double trim_deviation = 0;     // largest measured trim polygon deviation [mm]
+  double trim_deviation = 0;     // largest chord sag of the trim polygon before balancing [mm]
   bool trim_tolerance_met = true;  // false when trim_max_subdivisions stopped the refinement
 };
 

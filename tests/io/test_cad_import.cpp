@@ -157,8 +157,9 @@ void check_round_trip(const CadImportResult& result, bool expect_source_types) {
     CHECK(report.trim_tolerance_met);
 
     // Area: Green's-theorem quadrature over our trimmed domain vs OpenCASCADE.
+    // The issue asks for 1e-6 relative; balanced trim polygons give ~1e-11.
     const double expected_area = occt_area(ref[i]);
-    CHECK(std::abs(trimmed_area(face) - expected_area) <= 1e-6 * expected_area);
+    CHECK(std::abs(trimmed_area(face) - expected_area) <= 1e-9 * expected_area);
 
     const std::vector<Eigen::Vector2d> samples = interior_samples(face, 7);
     CHECK(samples.size() >= 10);
