@@ -36,7 +36,7 @@
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
 #include <StepBasic_Product.hxx>
-#include <StepShape_Face.hxx>
+#include <StepShape_FaceSurface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -185,6 +185,7 @@ std::string entity_problems(const Handle(Interface_InterfaceModel)& model,
   auto collect = [&](const Handle(Interface_Check)& check) {
     if (check.IsNull()) return;
     for (int k = 1; k <= check->NbFails(); ++k) messages.push_back(trimmed(check->CFail(k)));
+    for (int k = 1; k <= check->NbWarnings(); ++k) messages.push_back(trimmed(check->CWarning(k)));
   };
   const int number = model->Number(entity);
   if (number > 0) {
@@ -195,6 +196,16 @@ std::string entity_problems(const Handle(Interface_InterfaceModel)& model,
   std::string text;
   for (const auto& m : messages) text += (text.empty() ? "" : "; ") + m;
   return text.empty() ? "OpenCASCADE could not translate it" : text;
+}
+
+// Whether OpenCASCADE tried to translate the entity (or could not even read
+// it). A face no transferred shape refers to is neither, and is not an error.
+bool attempted(const Handle(Interface_InterfaceModel)& model,
+               const Handle(Transfer_TransientProcess)& process,
+               const Handle(Standard_Transient)& entity) {
+  const int number = model->Number(entity);
+  const Handle(Interface_Check)& syntax = model->Check(number, true);
+  return process->IsBound(entity) || (!syntax.IsNull() && syntax->HasFailed());
 }
 
 std::string unit_name(const std::string& occt_unit) {
@@ -250,7 +261,9 @@ LoadedFile read_file(const std::string& path, Format format) {
         file.products.push_back(hstring(product->Name()));
         continue;
       }
-      const auto face = Handle(StepShape_Face)::DownCast(entity);
+      // Faces with geometry (ADVANCED_FACE, FACE_SURFACE); an ORIENTED_FACE
+      // only points at one of those.
+      const auto face = Handle(StepShape_FaceSurface)::DownCast(entity);
       if (face.IsNull()) continue;
       name = hstring(face->Name());
     } else {
@@ -262,7 +275,7 @@ LoadedFile read_file(const std::string& path, Format format) {
     const TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
     if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
       file.origins.emplace(result.TShape().get(), FaceOrigin{name, entity_label(model, entity)});
-    } else if (result.IsNull() && format == Format::step) {
+    } else if (result.IsNull() && format == Format::step && attempted(model, process, entity)) {
       file.untranslated.push_back({name, entity_label(model, entity),
                                    entity_problems(model, process, entity)});
     }

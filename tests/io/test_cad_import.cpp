@@ -415,6 +415,21 @@ TEST_CASE("CAD import: face names in the file are kept, duplicates made unique")
   CHECK(result.faces[0].entity.rfind("#", 0) == 0);
 }
 
+TEST_CASE("CAD import: a face entity that no shape refers to is not an error") {
+  // A copy of an ADVANCED_FACE under a new id, in no shell: exporters leave
+  // such leftovers; OpenCASCADE does not translate them and neither do we.
+  std::string text = slurp(model_file("step"));
+  const auto start = text.find("= ADVANCED_FACE(");
+  REQUIRE(start != std::string::npos);
+  const auto end = text.find(";", start);
+  text.insert(text.rfind("ENDSEC;"), "#900100 " + text.substr(start, end - start + 1) + "\n");
+  const std::string path = scratch_dir("cad-orphan") + "/orphan.step";
+  write_text(path, text);
+  const CadImportResult result = import_cad(path);
+  CHECK(result.part.faces.size() == faces_of(model().shape).size());
+  CHECK(result.skipped.empty());
+}
+
 TEST_CASE("CAD import: offset surfaces - exact through an elementary equivalent, else approximated and reported") {
   // Offset of a cylinder: a cylinder again, converted exactly.
   const Handle(Geom_Surface) cylinder = new Geom_CylindricalSurface(gp_Ax3(), 10);
