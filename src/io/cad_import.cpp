@@ -421,7 +421,10 @@ struct Periods {
 std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods) {
   std::vector<WireUse> wires;
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
-    if (it.Value().ShapeType() != TopAbs_WIRE) continue;
+    // Internal and external wires (imprinted lines, construction curves) do
+    // not bound the face.
+    const TopAbs_Orientation o = it.Value().Orientation();
+    if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL) continue;
     const TopoDS_Wire& wire = TopoDS::Wire(it.Value());
     int edges_in_wire = 0;
     for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edges_in_wire;

@@ -19,6 +19,8 @@
 #include <filesystem>
 #include <map>
 
+#include <unistd.h>
+
 #include "geometry/error.hpp"
 #include "io/cad_import.hpp"
 #include "io/cad_reference.hpp"
@@ -46,12 +48,23 @@ int solids_containing(const Eigen::Vector3d& p) {
   return classifier.containing(p);
 }
 
-// The reference model written once per format into the scratch folder.
+// The reference model written once per format and process (ctest runs test
+// cases as concurrent processes) into a scratch folder removed at exit.
+struct ModelFiles {
+  std::map<std::string, std::string> paths;
+  std::string dir = scratch_dir("cad-model-" + std::to_string(getpid()));
+  ~ModelFiles() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
 const std::string& model_file(const std::string& ext) {
-  static std::map<std::string, std::string> files;
+  static ModelFiles files_;
+  auto& files = files_.paths;
   auto it = files.find(ext);
   if (it != files.end()) return it->second;
-  const std::string path = scratch_dir("cad-model-" + ext) + "/model." + ext;
+  const std::string path = files_.dir + "/model." + ext;
   if (ext == "step")
     write_step(model().shape, path);
   else
@@ -567,5 +580,15 @@ TEST_CASE("CAD import: furrow import writes the part JSON; furrow info reads CAD
   CHECK(contains_text(bad.err, dir + "/bad.step: not a STEP file"));
   CHECK_FALSE(std::filesystem::exists(dir + "/bad.json"));
   CHECK(run_furrow({"import", model_file("step")}).status == 2);  // --out is required
+  CHECK(run_furrow({"import", model_file("step"), "--out", model_file("step")}).status == 2);
+
+  // Same input, same bytes; a coarser trim tolerance gives fewer vertices.
+  CHECK(run_furrow({"import", model_file("step"), "--out", dir + "/again.json"}).status == 0);
+  CHECK(slurp(dir + "/again.json") == slurp(dir + "/part.json"));
+  CHECK(run_furrow({"import", model_file("step"), "--out", dir + "/coarse.json", "--trim-tolerance",
+                    "1e-3"}).status == 0);
+  CHECK(slurp(dir + "/coarse.json").size() < slurp(dir + "/part.json").size() / 3);
+  CHECK(run_furrow({"import", model_file("step"), "--out", dir + "/x.json", "--trim-tolerance", "0"})
+            .status == 2);
   CHECK(run_furrow({"info", dir + "/bad.step"}).status == 2);
 }
