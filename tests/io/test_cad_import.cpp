@@ -2,11 +2,14 @@
 // the test, written to STEP and IGES, imported back and compared with
 // OpenCASCADE's own answers and with analytic geometry.
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <GeomConvert.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_OffsetSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <TopoDS_Edge.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Cylinder.hxx>
@@ -18,8 +21,6 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-
-#include <unistd.h>
 
 #include "geometry/error.hpp"
 #include "io/cad_import.hpp"
@@ -327,43 +328,52 @@ TEST_CASE("CAD import: closed faces are one continuous patch across their seams"
   CHECK(closed >= 5);  // boss, dimple, ball, ring, cone, vase
 }
 
-TEST_CASE("CAD import: a cylindrical face across the surface's seam is imported as one patch") {
-  // Angles 5..7 rad straddle the cylinder's u = 2 pi seam.
+TEST_CASE("CAD import: a face across its surface's periodic seam is imported as one patch") {
+  // Parameters 5..7 straddle the seam at 2 pi of a cylinder and of the same
+  // cylinder as a periodic (rational) B-spline surface.
   const double radius = 12, height = 20;
   const Handle(Geom_Surface) cylinder = new Geom_CylindricalSurface(gp_Ax3(), radius);
-  const TopoDS_Face face = BRepBuilderAPI_MakeFace(cylinder, 5.0, 7.0, 0.0, height, 1e-7).Face();
-  for (const std::string ext : {"step", "igs"}) {
-    CAPTURE(ext);
-    const std::string path = scratch_dir("cad-seam-" + ext) + "/wrap." + ext;
-    if (ext == "step")
-      write_step(face, path);
-    else
-      write_iges(face, path);
-    const CadImportResult result = import_cad(path);
-    REQUIRE(result.part.faces.size() == 1);
-    const Face& f = result.part.faces[0];
-    CHECK(result.free_faces == 1);
-    CHECK(trimmed_area(f) == doctest::Approx(radius * 2.0 * height).epsilon(1e-9));
-    // Walking along u at mid-height: the angle grows continuously over 2 rad
-    // (through 2 pi), and every point is kept.
-    const ParameterDomain& d = f.domain();
-    const double t = d.v0 + 0.5 * d.width_v();
-    double previous = 0, swept = 0;
-    for (int k = 0; k <= 400; ++k) {
-      const double s = d.u0 + d.width_u() * k / 400;
-      const Eigen::Vector3d p = f.surface().point(s, t);
-      CHECK(std::abs(std::hypot(p.x(), p.y()) - radius) <= 1e-9);
-      if (k > 0 && k < 400) CHECK(f.contains(s, t));
-      const double angle = std::atan2(p.y(), p.x());
-      if (k > 0) {
-        const double step = std::remainder(angle - previous, 2 * M_PI);
-        CHECK(std::abs(step) < 0.01);
-        swept += step;
+  const Handle(Geom_BSplineSurface) periodic = GeomConvert::SurfaceToBSplineSurface(
+      new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2 * M_PI, 0.0, height));
+  periodic->SetUPeriodic();
+  REQUIRE(periodic->IsUPeriodic());
+  for (const Handle(Geom_Surface)& surface : {cylinder, Handle(Geom_Surface)(periodic)})
+    for (const std::string ext : {"step", "igs"}) {
+      const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 5.0, 7.0, 0.0, height, 1e-7).Face();
+      const std::string kind = surface == cylinder ? "cylinder" : "periodic-bspline";
+      CAPTURE(kind);
+      CAPTURE(ext);
+      const std::string path = scratch_dir("cad-seam-" + kind + "-" + ext) + "/wrap." + ext;
+      if (ext == "step")
+        write_step(face, path);
+      else
+        write_iges(face, path);
+      const CadImportResult result = import_cad(path);
+      REQUIRE(result.part.faces.size() == 1);
+      const Face& f = result.part.faces[0];
+      CHECK(result.free_faces == 1);
+      const double area = occt_area(face);
+      CHECK(trimmed_area(f) == doctest::Approx(area).epsilon(1e-9));
+      // Walking along s at mid-height: the angle changes continuously
+      // (through 2 pi) over the face's whole angle, and every point is kept.
+      const ParameterDomain& d = f.domain();
+      const double t = d.v0 + 0.5 * d.width_v();
+      double previous = 0, swept = 0;
+      for (int k = 0; k <= 400; ++k) {
+        const double s = d.u0 + d.width_u() * k / 400;
+        const Eigen::Vector3d p = f.surface().point(s, t);
+        CHECK(std::abs(std::hypot(p.x(), p.y()) - radius) <= 1e-9);
+        if (k > 0 && k < 400) CHECK(f.contains(s, t));
+        const double angle = std::atan2(p.y(), p.x());
+        if (k > 0) {
+          const double step = std::remainder(angle - previous, 2 * M_PI);
+          CHECK(std::abs(step) < 0.01);
+          swept += step;
+        }
+        previous = angle;
       }
-      previous = angle;
+      CHECK(std::abs(swept) == doctest::Approx(area / (radius * height)).epsilon(1e-9));
     }
-    CHECK(std::abs(swept) == doctest::Approx(2.0).epsilon(1e-12));
-  }
 }
 
 TEST_CASE("CAD import: an inch STEP file is imported in millimetres") {
