@@ -55,6 +55,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -409,7 +410,30 @@ struct EdgeUse {
     return Eigen::Vector2d(p.X(), p.Y()) + shift;
   }
 };
-using WireUse = std::vector<EdgeUse>;
+struct WireUse {
+  std::vector<EdgeUse> edges;
+  bool outer = false;  // the face's outer boundary (BRepTools::OuterWire)
+};
+
+// Exact (u,v) box of a wire's pcurves, unwrapping shifts included.
+Bnd_Box2d wire_box(const WireUse& wire) {
+  Bnd_Box2d box;
+  for (const EdgeUse& e : wire.edges) {
+    Bnd_Box2d edge_box;
+    BndLib_Add2dCurve::AddOptimal(e.pcurve, std::min(e.from, e.to), std::max(e.from, e.to), 0.0,
+                                  edge_box);
+    double a, b, c, d;
+    edge_box.Get(a, b, c, d);
+    box.Update(a + e.shift.x(), b + e.shift.y(), c + e.shift.x(), d + e.shift.y());
+  }
+  return box;
+}
+
+Eigen::Vector2d box_centre(const Bnd_Box2d& box) {
+  double a, b, c, d;
+  box.Get(a, b, c, d);
+  return {0.5 * (a + c), 0.5 * (b + d)};
+}
 
 struct Periods {
   bool u = false, v = false;
@@ -420,6 +444,7 @@ struct Periods {
 // continuous in (u,v) even where it crosses a periodic surface's seam.
 std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods) {
   std::vector<WireUse> wires;
+  const TopoDS_Wire outer = BRepTools::OuterWire(face);
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
     // Internal and external wires (imprinted lines, construction curves) do
     // not bound the face.
@@ -428,7 +453,9 @@ std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods)
     const TopoDS_Wire& wire = TopoDS::Wire(it.Value());
     int edges_in_wire = 0;
     for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edges_in_wire;
-    WireUse chain;
+    WireUse use;
+    use.outer = !outer.IsNull() && wire.IsSame(outer);
+    std::vector<EdgeUse>& chain = use.edges;
     for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) {
       const TopoDS_Edge& edge = we.Current();
       double first = 0, last = 0;
@@ -454,9 +481,47 @@ std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods)
         (periods.v && std::abs(gap.y()) > 0.5 * periods.dv))
       throw FaceFailure("a boundary wire winds around the periodic surface without a seam edge "
                         "(heal the model, e.g. re-export it as a solid)");
-    wires.push_back(std::move(chain));
+    wires.push_back(std::move(use));
+  }
+  // Inner wires may come a period away from the outer one (pcurves projected
+  // into [0, 2 pi) each on their own): move each next to the outer wire.
+  const auto reference = std::find_if(wires.begin(), wires.end(), [](const WireUse& w) { return w.outer; });
+  if (reference != wires.end() && (periods.u || periods.v)) {
+    const Eigen::Vector2d centre = box_centre(wire_box(*reference));
+    for (WireUse& w : wires) {
+      if (w.outer) continue;
+      const Eigen::Vector2d offset = centre - box_centre(wire_box(w));
+      Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+      if (periods.u) shift.x() = std::round(offset.x() / periods.du) * periods.du;
+      if (periods.v) shift.y() = std::round(offset.y() / periods.dv) * periods.dv;
+      for (EdgeUse& e : w.edges) e.shift += shift;
+    }
   }
   return wires;
+}
+
+// A hole that crosses the seam of a face closed around a period lies partly
+// beyond the face's rectangle; its copy one period over covers the rest.
+// (The parts of both copies outside the rectangle are clamped onto its edge
+// when sampled, so each copy cuts out exactly its share.)
+void add_seam_copies(std::vector<WireUse>& wires, const ParameterDomain& b, const Periods& periods) {
+  const std::size_t count = wires.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    if (wires[k].outer) continue;
+    double u0, v0, u1, v1;
+    wire_box(wires[k]).Get(u0, v0, u1, v1);
+    Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+    const bool full_u = periods.u && b.width_u() >= periods.du * (1 - 1e-12);
+    const bool full_v = periods.v && b.width_v() >= periods.dv * (1 - 1e-12);
+    if (full_u && u1 > b.u1) shift.x() = -periods.du;
+    if (full_u && u0 < b.u0) shift.x() = periods.du;
+    if (full_v && v1 > b.v1) shift.y() = -periods.dv;
+    if (full_v && v0 < b.v0) shift.y() = periods.dv;
+    if (shift.isZero()) continue;
+    WireUse copy = wires[k];
+    for (EdgeUse& e : copy.edges) e.shift += shift;
+    wires.push_back(std::move(copy));
+  }
 }
 
 // A periodic range from pcurve boxes is off by rounding (e.g. [-4e-13, 2 pi]);
@@ -476,24 +541,19 @@ void snap_to_period(double& a, double& b, double period, const char* direction) 
   if (b - a > period - eps) b = a + period;
 }
 
-// Parameter rectangle of the face: the union of its pcurves' exact boxes,
-// at most one period wide, inside the surface's own bounds.
+// Parameter rectangle of the face: the exact box of its outer wire's
+// pcurves, at most one period wide, inside the surface's own bounds.
 ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>& wires,
                             const Handle(Geom_Surface)& surface, const Periods& periods) {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   if (wires.empty()) {
     BRepTools::UVBounds(face, u0, u1, v0, v1);
   } else {
+    // The outer wire bounds the face (holes lie inside it); without one, all do.
+    const bool has_outer = std::any_of(wires.begin(), wires.end(), [](const WireUse& w) { return w.outer; });
     Bnd_Box2d box;
-    for (const auto& wire : wires)
-      for (const auto& e : wire) {
-        Bnd_Box2d edge_box;
-        BndLib_Add2dCurve::AddOptimal(e.pcurve, std::min(e.from, e.to), std::max(e.from, e.to), 0.0,
-                                      edge_box);
-        double a, b, c, d;
-        edge_box.Get(a, b, c, d);
-        box.Update(a + e.shift.x(), b + e.shift.y(), c + e.shift.x(), d + e.shift.y());
-      }
+    for (const WireUse& wire : wires)
+      if (wire.outer || !has_outer) box.Add(wire_box(wire));
     box.Get(u0, v0, u1, v1);
   }
   double su0, su1, sv0, sv1;
@@ -529,8 +589,9 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
   periods.v = basis->IsVPeriodic();
   if (periods.u) periods.du = basis->UPeriod();
   if (periods.v) periods.dv = basis->VPeriod();
-  const std::vector<WireUse> wires = face_wires(face, periods);
+  std::vector<WireUse> wires = face_wires(face, periods);
   const ParameterDomain bounds = face_bounds(face, wires, basis, periods);
+  add_seam_copies(wires, bounds, periods);
 
   const Conversion conversion = convert_surface(basis, bounds, options);
   report.exact = conversion.exact;
@@ -563,10 +624,11 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
   std::vector<UvLoop> loops;
   for (const WireUse& wire : wires) {
     std::vector<BoundaryCurve> curves;
-    for (const EdgeUse& e : wire)
-      curves.push_back({[&e, &map](double t) {
+    for (const EdgeUse& e : wire.edges)
+      curves.push_back({[&e, &map, &bounds](double t) {
                           const Eigen::Vector2d uv = e.uv(t);
-                          return map(uv.x(), uv.y());
+                          return map(std::clamp(uv.x(), bounds.u0, bounds.u1),
+                                     std::clamp(uv.y(), bounds.v0, bounds.v1));
                         },
                         e.from, e.to, e.degenerate});
     UvLoop loop = polygons.loop(curves);

@@ -9,9 +9,11 @@
 // quadrature error far below 1e-9 relative: the only difference from the true
 // face's area is the trim polygon's own distance from the true boundary.
 // Even-odd loops: each loop's integral is signed by its orientation; its
-// magnitude counts with the sign (-1)^depth, depth = number of loops around it.
+// magnitude counts with the sign (-1)^depth, depth = number of loops around it
+// (loops may touch but not cross).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "geometry/part.hpp"
@@ -64,6 +66,16 @@ inline bool in_polygon(const UvLoop& loop, const Eigen::Vector2d& p) {
   return inside;
 }
 
+inline double distance_to_polygon(const UvLoop& loop, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0, n = loop.size(); k < n; ++k) {
+    const Eigen::Vector2d a = loop[k], ab = loop[(k + 1) % n] - a;
+    const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * ab - p).norm());
+  }
+  return best;
+}
+
 }  // namespace trimmed_area_detail
 
 // Area [mm^2] of the face's kept region (the whole domain when untrimmed).
@@ -113,9 +125,23 @@ inline double trimmed_area(const Face& face) {
   if (loops.empty()) loops.push_back({{d.u0, d.v0}, {d.u1, d.v0}, {d.u1, d.v1}, {d.u0, d.v1}});
   double area = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
+    // The nesting depth is read at the loop's vertex farthest from the other
+    // loops (loops may touch, e.g. along the domain's edge).
+    Eigen::Vector2d probe = loops[l][0];
+    double clearance = -1;
+    const std::size_t stride = std::max<std::size_t>(1, loops[l].size() / 64);
+    for (std::size_t k = 0; k < loops[l].size(); k += stride) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t m = 0; m < loops.size(); ++m)
+        if (m != l) nearest = std::min(nearest, distance_to_polygon(loops[m], loops[l][k]));
+      if (nearest > clearance) {
+        clearance = nearest;
+        probe = loops[l][k];
+      }
+    }
     int depth = 0;
     for (std::size_t m = 0; m < loops.size(); ++m)
-      if (m != l && in_polygon(loops[m], loops[l][0])) ++depth;
+      if (m != l && in_polygon(loops[m], probe)) ++depth;
     area += (depth % 2 == 0 ? 1 : -1) * std::abs(loop_integral(loops[l]));
   }
   return area;
