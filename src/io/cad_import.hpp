@@ -16,8 +16,8 @@
 //   Loops are moved into the NURBS parameters (the conversion reparametrises
 //   circles; see cad_parameter_map.hpp) and unwrapped across periodic seams,
 //   so a closed cylinder, sphere or torus face is one continuous patch whose
-//   seam lies on the domain edge. A loop that is the whole rectangle gives
-//   an untrimmed face.
+//   seam lies on the domain edge (a hole across that seam is cut out on both
+//   sides). A loop that is the whole rectangle gives an untrimmed face.
 // - its normal points out of the material: OpenCASCADE's face orientation
 //   (REVERSED flips Su x Sv) is carried into Face::reversed(). Faces outside
 //   any closed solid keep the orientation the file gives them.
