@@ -77,6 +77,16 @@ const std::string& model_file(const std::string& ext) {
   return files[ext] = path;
 }
 
+// Writes a shape to STEP or IGES ("step"/"igs") in a fresh scratch folder and imports it.
+CadImportResult round_trip(const TopoDS_Shape& shape, const std::string& folder, const std::string& ext) {
+  const std::string path = scratch_dir(folder + "-" + ext) + "/shape." + ext;
+  if (ext == "step")
+    write_step(shape, path);
+  else
+    write_iges(shape, path);
+  return import_cad(path);
+}
+
 std::string expected_type(const TopoDS_Face& face) {
   switch (BRepAdaptor_Surface(face).GetType()) {
     case GeomAbs_Plane: return "plane";
@@ -347,12 +357,7 @@ TEST_CASE("CAD import: a face across its surface's periodic seam is imported as 
       const std::string kind = surface == cylinder ? "cylinder" : "periodic-bspline";
       CAPTURE(kind);
       CAPTURE(ext);
-      const std::string path = scratch_dir("cad-seam-" + kind + "-" + ext) + "/wrap." + ext;
-      if (ext == "step")
-        write_step(face, path);
-      else
-        write_iges(face, path);
-      const CadImportResult result = import_cad(path);
+      const CadImportResult result = round_trip(face, "cad-seam-" + kind, ext);
       REQUIRE(result.part.faces.size() == 1);
       const Face& f = result.part.faces[0];
       CHECK(result.free_faces == 1);
@@ -404,12 +409,7 @@ TEST_CASE("CAD import: holes near and across the seam of a cylindrical face") {
     for (const std::string ext : {"step", "igs"}) {
       CAPTURE(c.u0);
       CAPTURE(ext);
-      const std::string path = scratch_dir("cad-seam-hole-" + ext) + "/hole." + ext;
-      if (ext == "step")
-        write_step(face, path);
-      else
-        write_iges(face, path);
-      const CadImportResult result = import_cad(path);
+      const CadImportResult result = round_trip(face, "cad-seam-hole", ext);
       REQUIRE(result.part.faces.size() == 1);
       const Face& f = result.part.faces[0];
       // The hole reaches the file as an approximation (a 3-D B-spline built to
