@@ -1,5 +1,6 @@
 #include "geometry/closest_point.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -29,6 +30,7 @@ struct Candidate {
   bool on_trim = false;
   bool converged = false;
   int iterations = 0;
+  Eigen::Vector2d cell_lo = Eigen::Vector2d::Zero(), cell_hi = Eigen::Vector2d::Zero();
 };
 
 void check_options(const ClosestPointOptions& o) {
@@ -64,6 +66,15 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
   } else if (best.face == cell.face && std::isfinite(best.squared_distance) &&
              in_box(best.uv, cell.lo, cell.hi)) {
     start = best.uv;  // continue from the best foot (typically on the shared edge)
+  } else if (cell.sample_kept == 0x1f) {
+    // q's projection on the tangent plane at the middle: Newton's first step
+    // from there, for free.
+    Eigen::Matrix<double, 3, 2> J;
+    J << cell.middle_su, cell.middle_sv;
+    const Eigen::Matrix2d JtJ = J.transpose() * J;
+    start = cell.sample_uv[4];
+    if (JtJ.determinant() > 1e-12 * JtJ.trace() * JtJ.trace())
+      start += JtJ.inverse() * (J.transpose() * (q - cell.sample_point[4]));
   } else {
     double nearest = std::numeric_limits<double>::infinity();
     start = cell.sample_uv[4];
@@ -78,6 +89,8 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
   }
   Candidate c;
   c.face = cell.face;
+  c.cell_lo = cell.lo;
+  c.cell_hi = cell.hi;
   const LocalFoot in_box_foot =
       foot_point_in_box(face.surface(), q, start, cell.lo, cell.hi, options);
   if (!cell.cut_by_trim || face.trim().contains(in_box_foot.uv)) {
@@ -103,13 +116,18 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
   if (c.squared_distance < best.squared_distance) best = c;
 }
 
-// Unit normal at the foot; at a degenerate point (pole, collapsed edge) the
-// normal of a point nudged into the domain is the limit a user expects.
+// Unit normal at the foot (Su x Sv, flipped for a reversed face); at a
+// degenerate point (pole, collapsed edge) the normal of a point nudged into
+// the domain is the limit a user expects.
 Eigen::Vector3d foot_normal(const Face& face, const Eigen::Vector2d& uv) {
+  const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
+  const Eigen::Vector3d n = d.Su.cross(d.Sv);
+  if (n.norm() > kDegenerateRelativeTolerance * d.Su.norm() * d.Sv.norm() && n.norm() > 0)
+    return face.reversed() ? Eigen::Vector3d(-n.normalized()) : Eigen::Vector3d(n.normalized());
   DifferentialGeometry g = face.geometry(uv.x(), uv.y());
   if (!g.degenerate) return g.normal;
-  const ParameterDomain& d = face.domain();
-  const Eigen::Vector2d middle(0.5 * (d.u0 + d.u1), 0.5 * (d.v0 + d.v1));
+  const ParameterDomain& dom = face.domain();
+  const Eigen::Vector2d middle(0.5 * (dom.u0 + dom.u1), 0.5 * (dom.v0 + dom.v1));
   for (double step : {1e-9, 1e-7, 1e-5, 1e-3}) {
     const Eigen::Vector2d nudged = uv + step * (middle - uv);
     g = face.geometry(nudged.x(), nudged.y());
@@ -155,38 +173,44 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     }
   }
 
-  // Depth-first branch and bound over the sphere tree, nearer child first.
-  auto lower_bound = [&](const Eigen::Vector3d& c, double r) { return (q - c).norm() - r; };
+  // Depth-first branch and bound over the box tree, nearer child first.
+  // Squared distances to boxes: no square roots on the way down.
   std::int32_t stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const SeedNode& node = nodes[stack[--top]];
-    const double bound = std::sqrt(best.squared_distance);
-    if (lower_bound(node.centre, node.radius) >= bound) continue;
+    if (node.box.squaredExteriorDistance(q) >= best.squared_distance) continue;
     if (node.left < 0) {
-      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-        if (static_cast<int>(k) == hint_cell) continue;
-        if (lower_bound(cells[k].centre, cells[k].radius) >= std::sqrt(best.squared_distance))
-          continue;
-        solve_cell(*part_, grid, cells[k], q, nullptr, options_, best);
+      // Cells of the leaf nearest first (at most four).
+      std::pair<double, std::uint32_t> order[4];
+      const std::uint32_t n = node.count;
+      for (std::uint32_t k = 0; k < n; ++k)
+        order[k] = {cells[node.first + k].lower_bound(q), node.first + k};
+      std::sort(order, order + n);
+      for (std::uint32_t k = 0; k < n; ++k) {
+        if (static_cast<int>(order[k].second) == hint_cell) continue;
+        if (order[k].first >= std::sqrt(best.squared_distance)) break;
+        solve_cell(*part_, grid, cells[order[k].second], q, nullptr, options_, best);
         ++examined;
       }
       continue;
     }
-    const double bl = lower_bound(nodes[node.left].centre, nodes[node.left].radius);
-    const double br = lower_bound(nodes[node.right].centre, nodes[node.right].radius);
+    const double bl = nodes[node.left].box.squaredExteriorDistance(q);
+    const double br = nodes[node.right].box.squaredExteriorDistance(q);
     const bool left_first = bl <= br;
     const std::int32_t near = left_first ? node.left : node.right;
     const std::int32_t far = left_first ? node.right : node.left;
-    if (std::max(bl, br) < bound) stack[top++] = far;
-    if (std::min(bl, br) < bound) stack[top++] = near;
+    if (std::max(bl, br) < best.squared_distance) stack[top++] = far;
+    if (std::min(bl, br) < best.squared_distance) stack[top++] = near;
   }
 
   const Face& face = part_->faces[best.face];
   const ParameterDomain& dom = face.domain();
-  if (!best.on_trim) {
-    // The best cell minimum can sit on a cell's edge; one solve over the whole
+  const bool inside_cell = (best.uv.array() > best.cell_lo.array()).all() &&
+                           (best.uv.array() < best.cell_hi.array()).all();
+  if (!best.on_trim && !(inside_cell && best.converged)) {
+    // The best cell minimum sits on a cell's edge; one solve over the whole
     // face from there confirms it is stationary for the face (or improves it).
     const LocalFoot polish = foot_point_in_box(face.surface(), q, best.uv, {dom.u0, dom.v0},
                                                {dom.u1, dom.v1}, options_);

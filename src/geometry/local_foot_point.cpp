@@ -131,6 +131,10 @@ Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<
                                               opt.step_tolerance, negative_curvature);
     const double full_step = (jet.J * delta).norm();
     if (!negative_curvature && full_step <= opt.step_tolerance) {
+      // Take this last, tiny step too: after it the error is of order its square.
+      x = (x + delta).cwiseMax(lo).cwiseMin(hi);
+      jet = evaluate(x);
+      r = jet.S - q;
       out.converged = true;
       break;
     }

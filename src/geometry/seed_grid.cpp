@@ -37,25 +37,35 @@ bool clip_segment(Eigen::Vector2d& a, Eigen::Vector2d& b, const Eigen::Vector2d&
   return true;
 }
 
-// Smallest sphere (centre, radius) found by the box-midpoint rule that
-// encloses the given spheres.
-template <class Range, class Get>
-void enclose(const Range& items, const Get& get, Eigen::Vector3d& centre, double& radius) {
-  Eigen::AlignedBox3d box;
-  for (const auto& item : items) {
-    const auto [c, r] = get(item);
-    box.extend(c - Eigen::Vector3d::Constant(r));
-    box.extend(c + Eigen::Vector3d::Constant(r));
-  }
-  centre = box.center();
-  radius = 0;
-  for (const auto& item : items) {
-    const auto [c, r] = get(item);
-    radius = std::max(radius, (c - centre).norm() + r);
-  }
+// Axis-aligned box of a cell's oriented box.
+Eigen::AlignedBox3d cell_box(const SeedCell& c) {
+  const Eigen::Vector3d reach = c.axes.transpose().cwiseAbs() * c.half_extent;
+  return Eigen::AlignedBox3d(c.centre - reach, c.centre + reach);
+}
+
+// Orthonormal rows (tangent along Su, second tangent, normal) at a point;
+// any frame where the tangents degenerate (the box is then just less tight).
+Eigen::Matrix3d tangent_frame(const SurfaceDerivatives& d) {
+  Eigen::Vector3d n = d.Su.cross(d.Sv);
+  Eigen::Vector3d t1 = d.Su;
+  if (!(n.norm() > 1e-300) || !(t1.norm() > 1e-300)) return Eigen::Matrix3d::Identity();
+  n.normalize();
+  t1.normalize();
+  Eigen::Matrix3d axes;
+  axes.row(0) = t1;
+  axes.row(1) = n.cross(t1);
+  axes.row(2) = n;
+  return axes;
 }
 
 }  // namespace
+
+double SeedCell::lower_bound(const Eigen::Vector3d& q) const {
+  const Eigen::Vector3d d = q - centre;
+  const double sphere = d.norm() - radius;
+  const Eigen::Vector3d excess = ((axes * d).cwiseAbs() - half_extent).cwiseMax(0.0);
+  return std::max(sphere, excess.norm());
+}
 
 std::vector<double> seed_breaks(const std::vector<double>& knots, double lo, double hi,
                                 const ClosestPointOptions& options) {
@@ -153,12 +163,22 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
           max_vv = std::max(max_vv, d.Svv.norm());
         }
       cell.centre = box.center();
+      const SurfaceDerivatives middle = s.evaluate(mid.x(), mid.y(), 1);
+      cell.middle_su = middle.Su;
+      cell.middle_sv = middle.Sv;
+      cell.axes = tangent_frame(middle);
       double r = 0;
+      Eigen::Vector3d extent = Eigen::Vector3d::Zero();
       for (auto& row : pts)
-        for (auto& p : row) r = std::max(r, (p - cell.centre).norm());
+        for (auto& p : row) {
+          r = std::max(r, (p - cell.centre).norm());
+          extent = extent.cwiseMax((cell.axes * (p - cell.centre)).cwiseAbs());
+        }
       const double bulge =
           2.0 * (h.x() * h.x() * max_uu + 2 * h.x() * h.y() * max_uv + h.y() * h.y() * max_vv) / 8;
-      cell.radius = r + bulge + 1e-12 * (1 + cell.centre.norm());
+      const double slack = bulge + 1e-12 * (1 + cell.centre.norm());
+      cell.radius = r + slack;
+      cell.half_extent = extent.array() + slack;
       const int corner[5][2] = {{0, 0}, {kSub, 0}, {0, kSub}, {kSub, kSub}, {kSub / 2, kSub / 2}};
       cell.sample_kept = 0;
       for (int k = 0; k < 5; ++k) {
@@ -182,9 +202,7 @@ std::int32_t SeedGrid::build_tree(std::vector<std::uint32_t>& order, std::uint32
     SeedNode leaf;
     leaf.first = first;
     leaf.count = count;
-    enclose(std::vector<std::uint32_t>(begin, end),
-            [&](std::uint32_t c) { return std::make_pair(cells_[c].centre, cells_[c].radius); },
-            leaf.centre, leaf.radius);
+    for (auto it = begin; it != end; ++it) leaf.box.extend(cell_box(cells_[*it]));
     nodes_[node] = leaf;
     return node;
   }
@@ -201,10 +219,7 @@ std::int32_t SeedGrid::build_tree(std::vector<std::uint32_t>& order, std::uint32
   SeedNode inner;
   inner.left = left;
   inner.right = right;
-  const std::int32_t children[2] = {left, right};
-  enclose(children,
-          [&](std::int32_t c) { return std::make_pair(nodes_[c].centre, nodes_[c].radius); },
-          inner.centre, inner.radius);
+  inner.box = nodes_[left].box.merged(nodes_[right].box);
   nodes_[node] = inner;
   return node;
 }

@@ -1,17 +1,18 @@
 #pragma once
 // Seed cells for the global closest-point search (closest_point.hpp): every
-// face of a part cut into small (u,v) boxes, each with a bounding sphere of
-// its piece of surface, and a binary tree of spheres over all cells.
+// face of a part cut into small (u,v) boxes, each with a bounding sphere and
+// an oriented bounding box of its piece of surface, and a binary tree of
+// axis-aligned boxes over all cells.
 //
 // Cells follow the knot spans (ClosestPointOptions::cells_per_span per span
 // and direction, at least min_cells and at most max_cells per direction), so
 // a cell is polynomial and small against the surface's features.
 //
-// Bounding spheres are conservative: the radius is the largest distance from
-// the centre to a 5 x 5 sub-sample of the cell plus a bound on how far the
-// surface can bulge between sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| +
-// hv^2 |Svv|) / 8 with the sampled maxima doubled. The lower bound
-// |q - centre| - radius on the distance to the cell is what lets the search
+// Bounding volumes are conservative: spheres and oriented boxes hold a 5 x 5
+// sub-sample of the cell grown by a bound on how far the surface can bulge
+// between sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| + hv^2 |Svv|) / 8 with the
+// sampled maxima doubled. The distance from q to a cell's box (or sphere) is
+// a lower bound on the distance to its surface; that is what lets the search
 // skip cells safely.
 //
 // Trims: cells wholly trimmed away are dropped; cells cut by a trim loop keep
@@ -31,12 +32,22 @@ struct SeedCell {
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // (u,v) box
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // bounding sphere
   double radius = 0;
+  // Oriented bounding box about `centre`: rows of `axes` are the unit
+  // tangents and normal at the middle, `half_extent` the half sizes along
+  // them. Much tighter than the sphere across a nearly flat cell.
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half_extent = Eigen::Vector3d::Zero();
+  // Tangent plane at the middle sample: seeds Newton at q's projection on it.
+  Eigen::Vector3d middle_su = Eigen::Vector3d::Zero(), middle_sv = Eigen::Vector3d::Zero();
   // Corners (lo, (hi.u, lo.v), (lo.u, hi.v), hi) and the middle, in (u,v) and 3-D.
   Eigen::Vector2d sample_uv[5];
   Eigen::Vector3d sample_point[5];
   std::uint8_t sample_kept = 0x1f;  // bit k: sample k is kept by the trim
   bool cut_by_trim = false;
   std::uint32_t first_segment = 0, segment_count = 0;  // into SeedGrid::trim_segments()
+
+  // Lower bound on the distance from q to any surface point of the cell.
+  double lower_bound(const Eigen::Vector3d& q) const;
 };
 
 // A trim loop segment clipped to one cell, in (u,v).
@@ -44,10 +55,10 @@ struct TrimSegment {
   Eigen::Vector2d a, b;
 };
 
-// Node of the sphere tree. Leaves cover cells [first, first + count).
+// Node of the box tree: an axis-aligned box holding the oriented boxes of
+// its cells. Leaves cover cells [first, first + count).
 struct SeedNode {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double radius = 0;
+  Eigen::AlignedBox3d box;
   std::int32_t left = -1, right = -1;  // children; -1 for a leaf
   std::uint32_t first = 0, count = 0;
 };
