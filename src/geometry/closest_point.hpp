@@ -6,12 +6,14 @@
 // evolute of a dimple, beyond a face edge or over a sharp edge between faces
 // has several local minima of the distance; plain Newton from one seed can
 // converge to a wrong one and nobody notices. Here every face is cut into
-// small (u,v) cells (SeedGrid), each with a bounding sphere; a query walks the
-// sphere tree best-first and solves the box-constrained problem in every cell
-// whose sphere could still hold something nearer than the best foot found so
-// far (branch and bound). The answer is therefore the minimum over all cells,
-// up to the assumption that the distance has one local minimum per cell
-// (cells are a fraction of a knot span; see ClosestPointOptions).
+// small (u,v) cells (seed_grid.hpp), each with conservative bounding volumes;
+// a query walks a box tree nearest-first and solves the box-constrained
+// problem in every cell whose bounding volume could still hold something
+// nearer than the best foot found so far (branch and bound). The answer is
+// therefore the minimum over all cells, up to the assumption that the
+// distance has one local minimum per cell (cells are a fraction of a knot
+// span; see ClosestPointOptions). Typical cost: 2 cells and 3 Newton steps,
+// about 3 us per point on the mould example (bench_projection).
 //
 // Within a cell: projected Newton on (u,v) with an active set (a parameter at
 // its bound whose gradient pushes outward is fixed, so on a domain edge the
