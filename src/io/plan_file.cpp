@@ -20,6 +20,12 @@ std::optional<std::size_t> InspectionPlan::find(const std::string& id) const {
   return std::nullopt;
 }
 
+std::unordered_map<std::string, std::size_t> InspectionPlan::index_by_id() const {
+  std::unordered_map<std::string, std::size_t> index;
+  for (std::size_t k = 0; k < points.size(); ++k) index.emplace(points[k].id, k);
+  return index;
+}
+
 namespace {
 
 void check_id(const std::string& id, const std::string& where) {

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/part.hpp"
@@ -53,8 +54,10 @@ struct InspectionPlan {
   ProbeDefinition probe;
   std::vector<PlannedPoint> points;
 
-  // Index of the point with that id, or nullopt.
+  // Index of the point with that id, or nullopt (linear search).
   std::optional<std::size_t> find(const std::string& id) const;
+  // id -> index of every point, for matching many ids.
+  std::unordered_map<std::string, std::size_t> index_by_id() const;
 };
 
 InspectionPlan read_plan(const std::string& path);
