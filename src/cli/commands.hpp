@@ -21,5 +21,7 @@ struct Command {
 };
 
 extern const Command kInfoCommand;
+extern const Command kCompareCommand;
+extern const Command kSimulateMeasurementCommand;
 
 }  // namespace furrow::cli

@@ -221,10 +221,13 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
     return median(d);
   };
 
-  std::vector<Candidate> screened;
-  for (const Eigen::Isometry3d& start : starts) {
-    const Eigen::Isometry3d t = run_icp(screen, start, options.screen_iterations, diagonal / 4);
-    screened.push_back({t, screen_score(t)});
+  // Candidates are independent (read-only tree): screen them in parallel,
+  // each into its own slot, so the outcome does not depend on scheduling.
+  std::vector<Candidate> screened(starts.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const Eigen::Isometry3d t = run_icp(screen, starts[k], options.screen_iterations, diagonal / 4);
+    screened[k] = {t, screen_score(t)};
   }
   std::stable_sort(screened.begin(), screened.end(),
                    [](const Candidate& a, const Candidate& b) { return a.score < b.score; });

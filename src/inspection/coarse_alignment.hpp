@@ -41,10 +41,10 @@ struct CoarseOptions {
   int min_matches = 3;                   // id pairs needed for Umeyama
   double fallback_median = 0.5;          // [mm] an id start worse than this is checked globally
   std::size_t surface_samples = 20000;   // ICP target cloud size
-  std::size_t screen_points = 300;       // measured points in the short ICP of every candidate
+  std::size_t screen_points = 200;       // measured points in the short ICP of every candidate
   std::size_t refine_points = 1000;      // measured points in the long ICP
-  int screen_iterations = 12;            // ICP iterations per candidate
-  int refine_iterations = 60;            // ICP iterations for the best candidates
+  int screen_iterations = 10;            // ICP iterations per candidate
+  int refine_iterations = 30;            // ICP iterations for the best candidates
   int refine_candidates = 4;             // how many candidates get the long ICP
   double ambiguity_ratio = 1.5;          // a runner-up within this factor of the best median ...
   double ambiguity_angle_deg = 5;        // ... and rotated at least this much from it is reported

@@ -21,25 +21,6 @@ Eigen::Isometry3d Misalignment::part_to_cmm() const {
   return m;
 }
 
-Misalignment Misalignment::parse(const std::string& text, const std::string& where) {
-  std::vector<double> v;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, comma - start);
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(x))
-      throw InputError(where + ": \"" + item + "\" is not a number (expected rx,ry,rz,tx,ty,tz)");
-    v.push_back(x);
-    start = comma + 1;
-  }
-  if (v.size() != 6)
-    throw InputError(where + ": expected 6 numbers rx,ry,rz,tx,ty,tz (degrees, mm), got " +
-                     std::to_string(v.size()));
-  return Misalignment{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-}
-
 SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const SimulationOptions& o,
                                           const std::string& name) {
   const std::size_t n = plan.points.size();

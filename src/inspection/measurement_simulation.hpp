@@ -30,8 +30,6 @@ struct Misalignment {
   Eigen::Vector3d rotation_deg = Eigen::Vector3d::Zero();
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // [mm]
   Eigen::Isometry3d part_to_cmm() const;
-  // "rx,ry,rz,tx,ty,tz" (degrees, mm). Throws InputError naming `where`.
-  static Misalignment parse(const std::string& text, const std::string& where);
 };
 
 // Deviation of the machined surface from the nominal along the nominal

@@ -123,6 +123,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     throw InputError(set.source + ": " + std::to_string(n) + " points cannot fix " +
                      std::to_string(dof) + " degrees of freedom");
   RegistrationResult result;
+  auto note = [&](const std::string& what) {
+    if (options.progress) options.progress(what);
+  };
+  note("coarse start");
   if (options.dof.all_free()) {
     result.coarse = coarse_alignment(finder, set, plan, options.coarse);
   } else {
@@ -158,6 +162,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     result.converged = false;
     for (int outer = 1; outer <= options.max_outer_iterations; ++outer) {
       ++result.outer_iterations;
+      note("fit " + std::to_string(pass) + "." + std::to_string(outer));
       const Eigen::Matrix<double, 6, 1> before = fit.parameters();
       std::size_t active = 0;
       for (std::size_t i = 0; i < n; ++i) active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
@@ -231,6 +236,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
   // the final transform: re-base the points on it first.
   if (options.dof.all_free()) fit.rebase();
   result.covariance_status = "not computed";
+  note("covariance");
   if (options.compute_covariance) {
     if (auto c = fit.covariance(result.covariance_status)) {
       result.covariance = (*c) * (result.sigma * result.sigma);

@@ -50,6 +50,7 @@
 // thrown. InputError only for unusable input (fewer points than free DOF).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +86,9 @@ struct RegistrationOptions {
   bool flag_outliers = true;          // false: every point stays in the fit
   bool compute_covariance = true;
   CoarseOptions coarse;
+  // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
+  // so a terminal can show progress; empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 struct RegisteredPoint {

@@ -234,8 +234,9 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
     original.erase(std::remove_if(original.begin(), original.end(), [](unsigned char c) { return std::isspace(c); }), original.end());
     const std::string label = original.substr(actual ? 3 : 2, close - (actual ? 3 : 2));
     if (label.empty()) fail(name, st.number, "empty feature label");
-    const std::vector<std::string> fields = split(body.substr(11), ',');
-    if (fields.empty() || fields[0] != "CART")
+    // Values from the statement as written (messages quote the user's text).
+    const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
+    if (fields.empty() || lower(fields[0]) != "cart")
       fail(name, st.number, "only CART points are supported, got \"" +
                                 (fields.empty() ? std::string() : fields[0]) + "\"");
     if (fields.size() != 7)
