@@ -11,6 +11,7 @@
 //   ./build/bench_registration          (both sizes, coarse start by plan ids)
 //   ./build/bench_registration --global (also the id-free global search, 10 000)
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -44,27 +45,39 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
   RegistrationOptions o;
   o.loss_scale = 0.025;
   o.outlier_floor = 0.025;
+  // Stage times from the progress notes: coarse start, fit setup (Ceres
+  // problem, first projection of every point), fit, covariance.
+  double stage[4] = {0, 0, 0, 0};
+  int current = -1;
+  Clock::time_point mark;
+  o.progress = [&](const std::string& what) {
+    const int next = what == "coarse start" ? 0 : what == "fit setup" ? 1 : what == "covariance" ? 3 : 2;
+    const Clock::time_point now = Clock::now();
+    if (current >= 0) stage[current] += std::chrono::duration<double>(now - mark).count();
+    current = next;
+    mark = now;
+  };
   t0 = Clock::now();
-  const CoarseResult coarse = coarse_alignment(finder, m.set, &plan, o.coarse);
-  const double coarse_time = seconds_since(t0);
-  t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
   const RegistrationResult r = register_measurements(finder, m.set, &plan, o);
   const double total = seconds_since(t0);
+  const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  stage[current] += std::chrono::duration<double>(Clock::now() - mark).count();
 
   const Eigen::Isometry3d e = r.transform * sim.misalignment.part_to_cmm();
   double displacement = 0;
   for (const PlannedPoint& p : plan.points) displacement = std::max(displacement, (e * p.xyz - p.xyz).norm());
   std::size_t flagged = 0;
   for (const RegisteredPoint& p : r.points) flagged += p.outlier != OutlierReason::none;
-  std::printf("%8zu points  %-13s  %7.2f s (coarse %.2f s)  outer %2d  ceres %3d  %s\n", plan.points.size(),
-              to_string(r.coarse.method), total, coarse_time, r.outer_iterations, r.solver_iterations,
-              r.status.c_str());
+  std::printf("%8zu points  %-13s  %6.2f s wall, %6.2f s cpu (coarse %.2f, setup %.2f, fit %.2f, covariance %.2f)"
+              "  outer %d  ceres %d  %s\n",
+              plan.points.size(), to_string(r.coarse.method), total, cpu, stage[0], stage[1], stage[2], stage[3],
+              r.outer_iterations, r.solver_iterations, r.status.c_str());
   std::printf("          error %.2e mm / %.2e rad; sigma %.2f um; flagged %zu of %d blunders;"
               " 1-sigma rz %.1e rad, tx %.2e mm; simulation %.1f s\n",
               displacement, Eigen::AngleAxisd(e.linear()).angle(), 1e3 * r.sigma, flagged, sim.blunders,
               r.covariance ? std::sqrt((*r.covariance)(2, 2)) : NAN,
               r.covariance ? std::sqrt((*r.covariance)(3, 3)) : NAN, prepare);
-  (void)coarse;
 }
 
 }  // namespace

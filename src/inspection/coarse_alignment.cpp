@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <unordered_map>
 
 #include "inspection/surface_sampling.hpp"
 
@@ -56,9 +58,11 @@ bool fit_pairs(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen
       a.col(k) = from[keep[k]];
       b.col(k) = to[keep[k]];
     }
+    // Collinear (or coincident) targets leave a rotation free: the second
+    // principal variance must not vanish against the first.
     const Eigen::Matrix3Xd centred = b.colwise() - b.rowwise().mean();
-    const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred);
-    if (!(svd.singularValues()(1) > 1e-6 * svd.singularValues()(0))) return false;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(centred * centred.transpose());
+    if (!(es.eigenvalues()(1) > 1e-12 * es.eigenvalues()(2))) return false;
     out = Eigen::Isometry3d(Eigen::Matrix4d(Eigen::umeyama(a, b, false)));
     std::vector<double> residual(keep.size());
     for (std::size_t k = 0; k < keep.size(); ++k) residual[k] = (out * a.col(k) - b.col(k)).norm();
@@ -262,13 +266,20 @@ CoarseResult coarse_alignment(const ClosestPointFinder& finder, const Measuremen
                               const InspectionPlan* plan, const CoarseOptions& options) {
   std::vector<Eigen::Vector3d> from, to;
   CoarseMethod method = CoarseMethod::identity;
+  // A closed-form start needs no more than a few thousand pairs: match the
+  // ids of an evenly spread subset (a small index, one pass over the plan).
+  const std::vector<std::size_t> subset = stride_subset(set.points.size(), options.max_id_pairs);
   if (set.ids_from_file && plan) {
-    const auto index = plan->index_by_id();
-    for (const MeasuredPoint& p : set.points) {
-      const auto k = index.find(p.id);
-      if (k == index.end()) continue;
-      const PlannedPoint& n = plan->points[k->second];
-      from.push_back(p.xyz);
+    std::unordered_map<std::string, std::size_t> wanted;
+    wanted.reserve(subset.size());
+    for (std::size_t k : subset) wanted.emplace(set.points[k].id, k);
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // measured, planned
+    for (std::size_t j = 0; j < plan->points.size(); ++j)
+      if (const auto it = wanted.find(plan->points[j].id); it != wanted.end()) pairs.emplace_back(it->second, j);
+    std::sort(pairs.begin(), pairs.end());
+    for (const auto& [k, j] : pairs) {
+      const PlannedPoint& n = plan->points[j];
+      from.push_back(set.points[k].xyz);
       to.push_back(set.kind == ProbePointKind::probe_centre ? n.centre(set.probe_radius) : n.xyz);
     }
     method = CoarseMethod::plan_ids;
@@ -276,7 +287,8 @@ CoarseResult coarse_alignment(const ClosestPointFinder& finder, const Measuremen
   if (from.size() < 3) {
     from.clear();
     to.clear();
-    for (const MeasuredPoint& p : set.points) {
+    for (std::size_t k : subset) {
+      const MeasuredPoint& p = set.points[k];
       if (!p.nominal) continue;
       from.push_back(p.xyz);
       const Eigen::Vector3d n = p.nominal_ijk.value_or(Eigen::Vector3d::Zero());

@@ -39,6 +39,7 @@ const char* to_string(CoarseMethod method);
 
 struct CoarseOptions {
   int min_matches = 3;                   // id pairs needed for Umeyama
+  std::size_t max_id_pairs = 20000;      // an even subset of the points is matched by id
   double fallback_median = 0.5;          // [mm] an id start worse than this is checked globally
   std::size_t surface_samples = 20000;   // ICP target cloud size
   std::size_t screen_points = 200;       // measured points in the short ICP of every candidate
@@ -53,7 +54,7 @@ struct CoarseOptions {
 struct CoarseResult {
   CoarseMethod method = CoarseMethod::identity;
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // CMM -> part
-  std::size_t matched = 0;       // id pairs used (ids methods)
+  std::size_t matched = 0;       // id pairs used (ids methods; at most max_id_pairs)
   int candidates = 0;            // orientations tried (global search)
   double median_distance = 0;    // median |point-to-surface distance - probe radius| [mm]
   bool ambiguous = false;        // another orientation fits about as well

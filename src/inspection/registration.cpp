@@ -134,6 +134,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     result.coarse.median_distance = median_surface_distance(finder, set, Eigen::Isometry3d::Identity(),
                                                             options.coarse.refine_points);
   }
+  note("fit setup");
   std::vector<Eigen::Vector3d> y(n);
   double reach = 0;
   for (std::size_t i = 0; i < n; ++i) {

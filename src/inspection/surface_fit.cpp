@@ -63,6 +63,9 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
                                                              ceres::TAKE_OWNERSHIP);
   ceres::Problem::Options po;
   po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  // One parameter block and well-formed residuals: the per-block checks only
+  // cost time (seconds for a million points).
+  po.disable_all_safety_checks = true;
   impl_->problem = std::make_unique<ceres::Problem>(po);
   impl_->costs.reserve(points_.size());
   for (const Point& p : points_) {
@@ -97,12 +100,20 @@ double SurfaceFit::residual(std::size_t i) const {
 }
 
 Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
+  Eigen::Matrix<double, 1, 6> j;
+  if (parameters_.head<3>().isZero()) {
+    // At r = 0: d(R(r) y)/dr = -[y]x, so d(n.(R y))/dr = y x n; d/dt = n.
+    const Point& p = points_[i];
+    j << p.y.cross(p.normal).transpose(), p.normal.transpose();
+    for (int k = 0; k < 6; ++k)
+      if (!dof_.free[k]) j(k) = 0;
+    return j;
+  }
   Point p = points_[i];
   p.active = true;
   ceres::AutoDiffCostFunction<PointToPlane, 1, 6> cost(new PointToPlane{&p, probe_radius_});
   const double* params[1] = {parameters_.data()};
   double r = 0;
-  Eigen::Matrix<double, 1, 6> j;
   double* jac[1] = {j.data()};
   cost.Evaluate(params, &r, jac);
   for (int k = 0; k < 6; ++k)

@@ -22,6 +22,7 @@ std::optional<std::size_t> InspectionPlan::find(const std::string& id) const {
 
 std::unordered_map<std::string, std::size_t> InspectionPlan::index_by_id() const {
   std::unordered_map<std::string, std::size_t> index;
+  index.reserve(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) index.emplace(points[k].id, k);
   return index;
 }
