@@ -87,12 +87,13 @@ double oracle_distance(const NurbsSurface& s, const std::vector<Eigen::Vector3d>
   std::size_t best = 0;
   for (std::size_t k = 1; k < grid.size(); ++k)
     if ((grid[k] - q).squaredNorm() < (grid[best] - q).squaredNorm()) best = k;
-  Eigen::Vector2d uv(static_cast<double>(best / (n + 1)) / n, static_cast<double>(best % (n + 1)) / n);
+  Eigen::Vector2d uv(static_cast<double>(best / (n + 1)) / n,
+                     static_cast<double>(best % (n + 1)) / n);
   double f = (grid[best] - q).squaredNorm();
   for (double step = 1.0 / n; step > 1e-15;) {
     bool moved = false;
-    for (const Eigen::Vector2d& d : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1),
-                                    Eigen::Vector2d(0, -1)}) {
+    for (const Eigen::Vector2d& d : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0),
+                                     Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
       const Eigen::Vector2d p = (uv + step * d).cwiseMax(0.0).cwiseMin(1.0);
       const double fp = (s.point(p.x(), p.y()) - q).squaredNorm();
       if (fp < f) {
@@ -124,8 +125,8 @@ double best_seconds(int repeats, F&& run) {
 }
 
 void report(const char* name, double seconds, std::size_t n, const std::vector<Foot>& feet,
-            const std::vector<Foot>& other, const Face& face, const std::vector<Eigen::Vector3d>& pts,
-            const std::vector<double>& oracle) {
+            const std::vector<Foot>& other, const Face& face,
+            const std::vector<Eigen::Vector3d>& pts, const std::vector<double>& oracle) {
   double tang = 0, vs_oracle = -1e300;
   int worse = 0, missing = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -139,8 +140,10 @@ void report(const char* name, double seconds, std::size_t n, const std::vector<F
     if (other[k].found && other[k].distance < feet[k].distance - 1e-9) ++worse;
     if (k < oracle.size()) vs_oracle = std::max(vs_oracle, feet[k].distance - oracle[k]);
   }
-  std::printf("  %-34s %9.0f pts/s  %8.2f us/pt  tangential %.1e  vs oracle %+.1e  worse %5d  no answer %5d\n",
-              name, n / seconds, 1e6 * seconds / n, tang, vs_oracle, worse, missing);
+  std::printf(
+      "  %-34s %9.0f pts/s  %8.2f us/pt  tangential %.1e  vs oracle %+.1e  worse %5d  no answer "
+      "%5d\n",
+      name, n / seconds, 1e6 * seconds / n, tang, vs_oracle, worse, missing);
 }
 
 }  // namespace
@@ -166,7 +169,8 @@ int main() {
   for (int k = 0; k < 1000; ++k) {
     const double u = (k % 37) / 36.0, v = (k % 29) / 28.0;
     const gp_Pnt p = occt->Value(u, v);
-    same = std::max(same, (face.surface().point(u, v) - Eigen::Vector3d(p.X(), p.Y(), p.Z())).norm());
+    same =
+        std::max(same, (face.surface().point(u, v) - Eigen::Vector3d(p.X(), p.Y(), p.Z())).norm());
   }
   std::printf("mould.json bicubic 21x17; %zu points per set, single thread, best of 3\n", count);
   std::printf("seed grid: %zu cells, built in %.2f ms; max |S_furrow - S_occt| = %.1e mm\n\n",
@@ -188,7 +192,8 @@ int main() {
       }
     }
     std::vector<double> oracle(oracle_points);
-    for (int k = 0; k < oracle_points; ++k) oracle[k] = oracle_distance(face.surface(), grid, oracle_grid, pts[k]);
+    for (int k = 0; k < oracle_points; ++k)
+      oracle[k] = oracle_distance(face.surface(), grid, oracle_grid, pts[k]);
 
     std::vector<Foot> ours(count), grad(count), tree(count);
     const double t_ours = best_seconds(3, [&] {

@@ -11,10 +11,10 @@
 //   ./build/bench_registration          (both sizes, coarse start by plan ids)
 //   ./build/bench_registration --global (also the id-free global search, 10 000)
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/registration.hpp"
@@ -51,7 +51,10 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
   int current = -1;
   Clock::time_point mark;
   o.progress = [&](const std::string& what) {
-    const int next = what == "coarse start" ? 0 : what == "fit setup" ? 1 : what == "covariance" ? 3 : 2;
+    const int next = what == "coarse start" ? 0
+                     : what == "fit setup"  ? 1
+                     : what == "covariance" ? 3
+                                            : 2;
     const Clock::time_point now = Clock::now();
     if (current >= 0) stage[current] += std::chrono::duration<double>(now - mark).count();
     current = next;
@@ -66,18 +69,22 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
 
   const Eigen::Isometry3d e = r.transform * sim.misalignment.part_to_cmm();
   double displacement = 0;
-  for (const PlannedPoint& p : plan.points) displacement = std::max(displacement, (e * p.xyz - p.xyz).norm());
+  for (const PlannedPoint& p : plan.points)
+    displacement = std::max(displacement, (e * p.xyz - p.xyz).norm());
   std::size_t flagged = 0;
   for (const RegisteredPoint& p : r.points) flagged += p.outlier != OutlierReason::none;
-  std::printf("%8zu points  %-13s  %6.2f s wall, %6.2f s cpu (coarse %.2f, setup %.2f, fit %.2f, covariance %.2f)"
-              "  outer %d  ceres %d  %s\n",
-              plan.points.size(), to_string(r.coarse.method), total, cpu, stage[0], stage[1], stage[2], stage[3],
-              r.outer_iterations, r.solver_iterations, r.status.c_str());
-  std::printf("          error %.2e mm / %.2e rad; sigma %.2f um; flagged %zu of %d blunders;"
-              " 1-sigma rz %.1e rad, tx %.2e mm; simulation %.1f s\n",
-              displacement, Eigen::AngleAxisd(e.linear()).angle(), 1e3 * r.sigma, flagged, sim.blunders,
-              r.covariance ? std::sqrt((*r.covariance)(2, 2)) : NAN,
-              r.covariance ? std::sqrt((*r.covariance)(3, 3)) : NAN, prepare);
+  std::printf(
+      "%8zu points  %-13s  %6.2f s wall, %6.2f s cpu (coarse %.2f, setup %.2f, fit %.2f, "
+      "covariance %.2f)"
+      "  outer %d  ceres %d  %s\n",
+      plan.points.size(), to_string(r.coarse.method), total, cpu, stage[0], stage[1], stage[2],
+      stage[3], r.outer_iterations, r.solver_iterations, r.status.c_str());
+  std::printf(
+      "          error %.2e mm / %.2e rad; sigma %.2f um; flagged %zu of %d blunders;"
+      " 1-sigma rz %.1e rad, tx %.2e mm; simulation %.1f s\n",
+      displacement, Eigen::AngleAxisd(e.linear()).angle(), 1e3 * r.sigma, flagged, sim.blunders,
+      r.covariance ? std::sqrt((*r.covariance)(2, 2)) : NAN,
+      r.covariance ? std::sqrt((*r.covariance)(3, 3)) : NAN, prepare);
 }
 
 }  // namespace
@@ -86,7 +93,8 @@ int main(int argc, char** argv) {
   const bool global = argc > 1 && std::strcmp(argv[1], "--global") == 0;
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const ClosestPointFinder finder(part);
-  std::printf("registration on mould.json, misalignment 10 deg / 20 mm, noise 2 um, 5%% blunders\n");
+  std::printf(
+      "registration on mould.json, misalignment 10 deg / 20 mm, noise 2 um, 5%% blunders\n");
   run(finder, 100, 100, false);
   if (global) run(finder, 100, 100, true);
   run(finder, 1000, 1000, false);

@@ -32,7 +32,8 @@ int run_compare(Args& args) {
   args.finish();
 
   CompareOptions options;
-  options.tolerance = ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
+  options.tolerance =
+      ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
   RegistrationOptions& reg = options.registration;
   reg.dof = DegreesOfFreedom::parse(dof, "--dof");
   reg.loss = parse_robust_loss(loss, "--loss");
@@ -41,7 +42,9 @@ int run_compare(Args& args) {
   reg.outlier_sigma = sigmas;
   reg.flag_outliers = !keep_all;
   if (isatty(STDERR_FILENO))
-    reg.progress = [](const std::string& what) { std::fprintf(stderr, "\rcompare: %-24s", what.c_str()); };
+    reg.progress = [](const std::string& what) {
+      std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
+    };
 
   for (const std::string* input : {&part_path, &measurements})
     check_not_overwriting_input(out, *input);
@@ -62,13 +65,15 @@ int run_compare(Args& args) {
   const ClosestPointFinder finder(part);
   const Comparison c = compare_measurements(finder, set, plan ? &*plan : nullptr, options);
   if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
-  write_file_atomically(out, comparison_to_json_text(c, set, part, options,
-                                                     {part_path, measurements, plan_path.value_or("")}));
+  write_file_atomically(out,
+                        comparison_to_json_text(c, set, part, options,
+                                                {part_path, measurements, plan_path.value_or("")}));
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
   std::printf("registration: %s (%s start), rms %.4f -> %.4f mm, %zu of %zu points in the fit\n",
-              r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit, s.points);
+              r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit,
+              s.points);
   std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n",
               s.deviations.min, s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
   std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers -> %s\n",

@@ -13,9 +13,12 @@ namespace furrow {
 
 const char* to_string(FootLocation location) {
   switch (location) {
-    case FootLocation::interior: return "interior";
-    case FootLocation::domain_edge: return "domain_edge";
-    case FootLocation::trim_edge: return "trim_edge";
+    case FootLocation::interior:
+      return "interior";
+    case FootLocation::domain_edge:
+      return "domain_edge";
+    case FootLocation::trim_edge:
+      return "trim_edge";
   }
   return "?";
 }
@@ -212,8 +215,8 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   if (!best.on_trim && !(inside_cell && best.converged)) {
     // The best cell minimum sits on a cell's edge; one solve over the whole
     // face from there confirms it is stationary for the face (or improves it).
-    const LocalFoot polish = foot_point_in_box(face.surface(), q, best.uv, {dom.u0, dom.v0},
-                                               {dom.u1, dom.v1}, options_);
+    const LocalFoot polish =
+        foot_point_in_box(face.surface(), q, best.uv, {dom.u0, dom.v0}, {dom.u1, dom.v1}, options_);
     if (polish.squared_distance <= best.squared_distance && face.trim().contains(polish.uv)) {
       best.uv = polish.uv;
       best.point = polish.point;

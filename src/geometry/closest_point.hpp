@@ -68,17 +68,17 @@ enum class FootLocation {
 const char* to_string(FootLocation location);
 
 struct ClosestPoint {
-  std::size_t face = 0;                                // index into Part::faces
-  Eigen::Vector2d uv = Eigen::Vector2d::Zero();        // foot parameters
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // foot point S(u,v) [mm]
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // unit, out of the material
-  double distance = 0;         // |q - point| [mm]
+  std::size_t face = 0;                               // index into Part::faces
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();       // foot parameters
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // foot point S(u,v) [mm]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, out of the material
+  double distance = 0;                                // |q - point| [mm]
   double signed_distance = 0;  // distance, negative when q is inside the material
                                // ((q - point) . normal < 0)
   FootLocation location = FootLocation::interior;
-  bool converged = false;      // the local solve that produced the foot converged
-  int iterations = 0;          // Newton iterations of that solve
-  int cells_examined = 0;      // local solves run for this query (cost indicator)
+  bool converged = false;  // the local solve that produced the foot converged
+  int iterations = 0;      // Newton iterations of that solve
+  int cells_examined = 0;  // local solves run for this query (cost indicator)
 };
 
 class SeedGrid;

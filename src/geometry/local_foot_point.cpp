@@ -127,8 +127,8 @@ Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<
       break;
     }
     bool negative_curvature = false;
-    const Vec<N> delta = descent_direction<N>(H, JtJ, g, free, box_size, jet.J,
-                                              opt.step_tolerance, negative_curvature);
+    const Vec<N> delta = descent_direction<N>(H, JtJ, g, free, box_size, jet.J, opt.step_tolerance,
+                                              negative_curvature);
     const double full_step = (jet.J * delta).norm();
     if (!negative_curvature && full_step <= opt.step_tolerance) {
       // Take this last, tiny step too: after it the error is of order its square.
@@ -156,9 +156,8 @@ Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<
         // phi's rounding comes from r = S - q, whose error scales with |S|, |q|.
         const double floor = 64 * std::numeric_limits<double>::epsilon() *
                              (r.norm() * (jet.S.norm() + q.norm()) + phi);
-        sufficient = phin <= phi + floor &&
-                     tangential_residual<N>(trial.J, rn, xn, lo, hi) <=
-                         0.5 * tangential_residual<N>(jet.J, r, x, lo, hi);
+        sufficient = phin <= phi + floor && tangential_residual<N>(trial.J, rn, xn, lo, hi) <=
+                                                0.5 * tangential_residual<N>(jet.J, r, x, lo, hi);
       }
       if (sufficient) {
         moved = (trial.S - jet.S).norm();
@@ -230,8 +229,8 @@ LocalFoot foot_point_on_segment(const NurbsSurface& surface, const Eigen::Vector
     }
   }
   LocalFoot out;
-  const Vec<1> t = projected_newton<1>(evaluate, q, Vec<1>(best_t), Vec<1>(0.0), Vec<1>(1.0),
-                                       options, out);
+  const Vec<1> t =
+      projected_newton<1>(evaluate, q, Vec<1>(best_t), Vec<1>(0.0), Vec<1>(1.0), options, out);
   out.uv = a + t(0) * e;
   return out;
 }

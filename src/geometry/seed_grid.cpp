@@ -26,8 +26,10 @@ bool clip_segment(Eigen::Vector2d& a, Eigen::Vector2d& b, const Eigen::Vector2d&
         continue;
       }
       const double t = q[s] / p[s];
-      if (p[s] < 0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
+      if (p[s] < 0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
     }
   }
   if (t0 > t1) return false;
@@ -155,7 +157,8 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       const Eigen::Vector2d h = (cell.hi - cell.lo) / kSub;
       for (int a = 0; a <= kSub; ++a)
         for (int b = 0; b <= kSub; ++b) {
-          const SurfaceDerivatives d = s.evaluate(cell.lo.x() + a * h.x(), cell.lo.y() + b * h.y(), 2);
+          const SurfaceDerivatives d =
+              s.evaluate(cell.lo.x() + a * h.x(), cell.lo.y() + b * h.y(), 2);
           pts[a][b] = d.S;
           box.extend(d.S);
           max_uu = std::max(max_uu, d.Suu.norm());

@@ -30,7 +30,7 @@ namespace furrow {
 struct SeedCell {
   std::uint32_t face = 0;
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // (u,v) box
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // bounding sphere
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();                            // bounding sphere
   double radius = 0;
   // Oriented bounding box about `centre`: rows of `axes` are the unit
   // tangents and normal at the middle, `half_extent` the half sizes along

@@ -17,10 +17,14 @@ namespace furrow {
 
 const char* to_string(CoarseMethod method) {
   switch (method) {
-    case CoarseMethod::identity: return "identity";
-    case CoarseMethod::plan_ids: return "plan ids";
-    case CoarseMethod::dmis_nominals: return "dmis nominals";
-    case CoarseMethod::global_search: return "global search";
+    case CoarseMethod::identity:
+      return "identity";
+    case CoarseMethod::plan_ids:
+      return "plan ids";
+    case CoarseMethod::dmis_nominals:
+      return "dmis nominals";
+    case CoarseMethod::global_search:
+      return "global search";
   }
   return "?";
 }
@@ -105,7 +109,8 @@ std::vector<Eigen::Matrix3d> cube_rotations() {
 Cloud::Ptr to_cloud(const std::vector<Eigen::Vector3d>& pts) {
   Cloud::Ptr cloud(new Cloud);
   cloud->reserve(pts.size());
-  for (const auto& p : pts) cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  for (const auto& p : pts)
+    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
   return cloud;
 }
 
@@ -237,10 +242,11 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
                    [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
 
   std::vector<Candidate> refined;
-  const std::size_t n_refine =
-      std::min<std::size_t>(screened.size(), static_cast<std::size_t>(std::max(1, options.refine_candidates)));
+  const std::size_t n_refine = std::min<std::size_t>(
+      screened.size(), static_cast<std::size_t>(std::max(1, options.refine_candidates)));
   for (std::size_t k = 0; k < n_refine; ++k) {
-    Eigen::Isometry3d t = run_icp(refine, screened[k].transform, options.refine_iterations, diagonal / 10);
+    Eigen::Isometry3d t =
+        run_icp(refine, screened[k].transform, options.refine_iterations, diagonal / 10);
     t = run_icp(refine, t, options.refine_iterations, diagonal / 50);
     refined.push_back({t, median_surface_distance(finder, set, t, options.refine_points)});
   }
@@ -254,7 +260,8 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   out.candidates = static_cast<int>(starts.size());
   const double angle_limit = options.ambiguity_angle_deg * M_PI / 180;
   for (std::size_t k = 1; k < refined.size(); ++k) {
-    if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit) continue;
+    if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit)
+      continue;
     out.runner_up_median = refined[k].score;
     out.ambiguous = refined[k].score <= options.ambiguity_ratio * out.median_distance + 1e-3;
     break;
@@ -275,7 +282,8 @@ CoarseResult coarse_alignment(const ClosestPointFinder& finder, const Measuremen
     for (std::size_t k : subset) wanted.emplace(set.points[k].id, k);
     std::vector<std::pair<std::size_t, std::size_t>> pairs;  // measured, planned
     for (std::size_t j = 0; j < plan->points.size(); ++j)
-      if (const auto it = wanted.find(plan->points[j].id); it != wanted.end()) pairs.emplace_back(it->second, j);
+      if (const auto it = wanted.find(plan->points[j].id); it != wanted.end())
+        pairs.emplace_back(it->second, j);
     std::sort(pairs.begin(), pairs.end());
     for (const auto& [k, j] : pairs) {
       const PlannedPoint& n = plan->points[j];
@@ -292,7 +300,8 @@ CoarseResult coarse_alignment(const ClosestPointFinder& finder, const Measuremen
       if (!p.nominal) continue;
       from.push_back(p.xyz);
       const Eigen::Vector3d n = p.nominal_ijk.value_or(Eigen::Vector3d::Zero());
-      to.push_back(*p.nominal + (set.kind == ProbePointKind::probe_centre ? set.probe_radius : 0.0) * n);
+      to.push_back(*p.nominal +
+                   (set.kind == ProbePointKind::probe_centre ? set.probe_radius : 0.0) * n);
     }
     method = CoarseMethod::dmis_nominals;
   }

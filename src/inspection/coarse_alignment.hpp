@@ -38,27 +38,27 @@ enum class CoarseMethod { identity, plan_ids, dmis_nominals, global_search };
 const char* to_string(CoarseMethod method);
 
 struct CoarseOptions {
-  int min_matches = 3;                   // id pairs needed for Umeyama
-  std::size_t max_id_pairs = 20000;      // an even subset of the points is matched by id
-  double fallback_median = 0.5;          // [mm] an id start worse than this is checked globally
-  std::size_t surface_samples = 20000;   // ICP target cloud size
-  std::size_t screen_points = 200;       // measured points in the short ICP of every candidate
-  std::size_t refine_points = 1000;      // measured points in the long ICP
-  int screen_iterations = 10;            // ICP iterations per candidate
-  int refine_iterations = 30;            // ICP iterations for the best candidates
-  int refine_candidates = 4;             // how many candidates get the long ICP
-  double ambiguity_ratio = 1.5;          // a runner-up within this factor of the best median ...
-  double ambiguity_angle_deg = 5;        // ... and rotated at least this much from it is reported
+  int min_matches = 3;                  // id pairs needed for Umeyama
+  std::size_t max_id_pairs = 20000;     // an even subset of the points is matched by id
+  double fallback_median = 0.5;         // [mm] an id start worse than this is checked globally
+  std::size_t surface_samples = 20000;  // ICP target cloud size
+  std::size_t screen_points = 200;      // measured points in the short ICP of every candidate
+  std::size_t refine_points = 1000;     // measured points in the long ICP
+  int screen_iterations = 10;           // ICP iterations per candidate
+  int refine_iterations = 30;           // ICP iterations for the best candidates
+  int refine_candidates = 4;            // how many candidates get the long ICP
+  double ambiguity_ratio = 1.5;         // a runner-up within this factor of the best median ...
+  double ambiguity_angle_deg = 5;       // ... and rotated at least this much from it is reported
 };
 
 struct CoarseResult {
   CoarseMethod method = CoarseMethod::identity;
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // CMM -> part
-  std::size_t matched = 0;       // id pairs used (ids methods; at most max_id_pairs)
-  int candidates = 0;            // orientations tried (global search)
-  double median_distance = 0;    // median |point-to-surface distance - probe radius| [mm]
-  bool ambiguous = false;        // another orientation fits about as well
-  double runner_up_median = 0;   // its median distance [mm] (global search)
+  std::size_t matched = 0;      // id pairs used (ids methods; at most max_id_pairs)
+  int candidates = 0;           // orientations tried (global search)
+  double median_distance = 0;   // median |point-to-surface distance - probe radius| [mm]
+  bool ambiguous = false;       // another orientation fits about as well
+  double runner_up_median = 0;  // its median distance [mm] (global search)
 };
 
 // Chooses and runs the methods above. `plan` may be null.

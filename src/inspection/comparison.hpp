@@ -37,9 +37,9 @@ struct RegionStatistics {
 struct ComparisonSummary {
   std::size_t points = 0, in_fit = 0, evaluated = 0, outliers = 0;
   std::size_t in_tolerance = 0, out_of_tolerance = 0;
-  DeviationStatistics deviations;  // over evaluated points
-  double profile = 0;              // 2 max |d| over evaluated points [mm]
-  bool pass = false;               // every evaluated point in the zone
+  DeviationStatistics deviations;         // over evaluated points
+  double profile = 0;                     // 2 max |d| over evaluated points [mm]
+  bool pass = false;                      // every evaluated point in the zone
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids
 };
 

@@ -26,7 +26,8 @@ json placement_json(const Eigen::Isometry3d& cmm_to_part) {
   const Eigen::Isometry3d m = cmm_to_part.inverse();
   const Eigen::Matrix3d& r = m.linear();
   const double deg = 180 / M_PI;
-  const Eigen::Vector3d angles(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+  const Eigen::Vector3d angles(std::atan2(r(2, 1), r(2, 2)),
+                               std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
                                std::atan2(r(1, 0), r(0, 0)));
   return {{"rotation_deg", jf::vector_json(Eigen::Vector3d(angles * deg))},
           {"translation", jf::vector_json(Eigen::Vector3d(m.translation()))}};
@@ -112,8 +113,9 @@ json point_json(const Comparison& c, const MeasurementSet& set, const Part& part
 
 }  // namespace
 
-std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& set, const Part& part,
-                                    const CompareOptions& options, const ComparisonSources& sources) {
+std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& set,
+                                    const Part& part, const CompareOptions& options,
+                                    const ComparisonSources& sources) {
   const ComparisonSummary& s = c.summary;
   json doc;
   doc["version"] = 1;
@@ -156,7 +158,8 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
   }
   points += c.registration.points.empty() ? "]\n" : "\n  ]\n";
   std::size_t end_of_last = close;
-  while (end_of_last > 0 && (text[end_of_last - 1] == '\n' || text[end_of_last - 1] == ' ')) --end_of_last;
+  while (end_of_last > 0 && (text[end_of_last - 1] == '\n' || text[end_of_last - 1] == ' '))
+    --end_of_last;
   return text.substr(0, end_of_last) + points + "}\n";
 }
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "geometry/error.hpp"
+#include "inspection/surface_sampling.hpp"
 
 namespace furrow {
 
@@ -82,28 +83,20 @@ InspectionPlan grid_plan(const Part& part, int nu, int nv, const ProbeDefinition
   plan.probe = probe;
   int order = 0;
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
-    const Face& face = part.faces[f];
-    const ParameterDomain& d = face.domain();
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) {
-        const double u = d.u0 + (i + 0.5) / nu * d.width_u();
-        const double v = d.v0 + (j + 0.5) / nv * d.width_v();
-        if (!face.contains(u, v)) continue;
-        const DifferentialGeometry g = face.geometry(u, v);
-        if (g.degenerate) continue;
-        PlannedPoint p;
-        p.order = ++order;
-        char id[32];
-        std::snprintf(id, sizeof id, "P%05d", p.order);
-        p.id = id;
-        p.face = face.name();
-        p.face_index = f;
-        p.uv = {u, v};
-        p.xyz = g.point;
-        p.ijk = g.normal;
-        p.approach = p.retract = g.point + (probe.radius() + clearance) * g.normal;
-        plan.points.push_back(p);
-      }
+    for (const SurfaceSample& s : sample_face_grid(part, f, nu, nv)) {
+      PlannedPoint p;
+      p.order = ++order;
+      char id[32];
+      std::snprintf(id, sizeof id, "P%05d", p.order);
+      p.id = id;
+      p.face = part.faces[f].name();
+      p.face_index = f;
+      p.uv = s.uv;
+      p.xyz = s.point;
+      p.ijk = s.normal;
+      p.approach = p.retract = s.point + (probe.radius() + clearance) * s.normal;
+      plan.points.push_back(p);
+    }
   }
   return plan;
 }

@@ -38,25 +38,26 @@ using SurfaceOffset = std::function<double(const PlannedPoint&)>;
 
 struct SimulationOptions {
   Misalignment misalignment;
-  double noise_sigma = 0.002;          // [mm] along the normal
-  int blunders = 0;                    // how many points get a blunder
+  double noise_sigma = 0.002;                   // [mm] along the normal
+  int blunders = 0;                             // how many points get a blunder
   double blunder_min = 0.1, blunder_max = 1.0;  // [mm] blunder size range (random sign)
   std::uint32_t seed = 1;
   ProbePointKind kind = ProbePointKind::probe_centre;
-  bool anonymous = false;              // no ids, points shuffled (as an unplanned scan)
-  SurfaceOffset surface_offset;        // empty: the nominal surface
+  bool anonymous = false;        // no ids, points shuffled (as an unplanned scan)
+  SurfaceOffset surface_offset;  // empty: the nominal surface
 };
 
 struct SimulatedMeasurement {
-  MeasurementSet set;                   // CMM frame, probe from the plan
-  std::vector<std::string> plan_ids;    // plan id of each measured point (also when anonymous)
-  std::vector<bool> blunder;            // per measured point
-  std::vector<double> true_deviation;   // offset + noise + blunder along the normal [mm]
+  MeasurementSet set;                  // CMM frame, probe from the plan
+  std::vector<std::string> plan_ids;   // plan id of each measured point (also when anonymous)
+  std::vector<bool> blunder;           // per measured point
+  std::vector<double> true_deviation;  // offset + noise + blunder along the normal [mm]
 };
 
 // Throws InputError for a negative noise, more blunders than points or a
 // bad blunder range.
-SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const SimulationOptions& options,
+SimulatedMeasurement simulate_measurement(const InspectionPlan& plan,
+                                          const SimulationOptions& options,
                                           const std::string& name = "simulated");
 
 // A plan of nu x nv points on an even (u,v) grid of every face (cell

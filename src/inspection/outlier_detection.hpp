@@ -21,9 +21,9 @@ enum class OutlierReason;
 
 struct OutlierRule {
   double sigmas = 5;
-  double floor = 0.025;   // [mm]
+  double floor = 0.025;  // [mm]
   int confirm = 3;
-  double radius = 10;     // [mm]
+  double radius = 10;  // [mm]
 };
 
 struct OutlierVerdict {

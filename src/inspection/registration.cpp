@@ -12,9 +12,12 @@ namespace furrow {
 
 const char* to_string(RobustLoss loss) {
   switch (loss) {
-    case RobustLoss::none: return "none";
-    case RobustLoss::huber: return "huber";
-    case RobustLoss::cauchy: return "cauchy";
+    case RobustLoss::none:
+      return "none";
+    case RobustLoss::huber:
+      return "huber";
+    case RobustLoss::cauchy:
+      return "cauchy";
   }
   return "?";
 }
@@ -28,18 +31,23 @@ RobustLoss parse_robust_loss(const std::string& text, const std::string& where) 
 
 const char* to_string(OutlierReason reason) {
   switch (reason) {
-    case OutlierReason::none: return "none";
-    case OutlierReason::beyond_edge: return "beyond_edge";
-    case OutlierReason::no_foot_point: return "no_foot_point";
-    case OutlierReason::blunder: return "blunder";
-    case OutlierReason::large_deviation: return "large_deviation";
+    case OutlierReason::none:
+      return "none";
+    case OutlierReason::beyond_edge:
+      return "beyond_edge";
+    case OutlierReason::no_foot_point:
+      return "no_foot_point";
+    case OutlierReason::blunder:
+      return "blunder";
+    case OutlierReason::large_deviation:
+      return "large_deviation";
   }
   return "?";
 }
 
 std::size_t RegistrationResult::in_fit_count() const {
-  return static_cast<std::size_t>(
-      std::count_if(points.begin(), points.end(), [](const RegisteredPoint& p) { return p.in_fit; }));
+  return static_cast<std::size_t>(std::count_if(points.begin(), points.end(),
+                                                [](const RegisteredPoint& p) { return p.in_fit; }));
 }
 
 namespace {
@@ -76,7 +84,8 @@ struct Workspace {
       const Eigen::Vector3d x = fit.moved(i);
       feet[i] = projected_once ? finder.project(x, feet[i]) : finder.project(x);
       OutlierReason reason = OutlierReason::none;
-      if (!feet[i].converged) reason = OutlierReason::no_foot_point;
+      if (!feet[i].converged)
+        reason = OutlierReason::no_foot_point;
       else if (feet[i].location != FootLocation::interior &&
                sideways(x, feet[i]) > options.edge_tolerance)
         reason = OutlierReason::beyond_edge;
@@ -85,7 +94,6 @@ struct Workspace {
     }
     projected_once = true;
   }
-
 };
 
 // The correction x = R(r) y + t of a parameter vector (r, t).
@@ -114,8 +122,8 @@ double rms(const std::vector<double>& v) {
 
 }  // namespace
 
-RegistrationResult register_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
-                                         const InspectionPlan* plan,
+RegistrationResult register_measurements(const ClosestPointFinder& finder,
+                                         const MeasurementSet& set, const InspectionPlan* plan,
                                          const RegistrationOptions& options) {
   const std::size_t n = set.points.size();
   const int dof = options.dof.count();
@@ -131,8 +139,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     result.coarse = coarse_alignment(finder, set, plan, options.coarse);
   } else {
     result.coarse.method = CoarseMethod::identity;
-    result.coarse.median_distance = median_surface_distance(finder, set, Eigen::Isometry3d::Identity(),
-                                                            options.coarse.refine_points);
+    result.coarse.median_distance = median_surface_distance(
+        finder, set, Eigen::Isometry3d::Identity(), options.coarse.refine_points);
   }
   note("fit setup");
   std::vector<Eigen::Vector3d> y(n);
@@ -143,8 +151,13 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
   }
   SurfaceFit fit(y, set.probe_radius, options.dof, options.loss, options.loss_scale,
                  options.max_solver_iterations);
-  Workspace ws{finder, set, options, fit, std::vector<ClosestPoint>(n),
-               std::vector<OutlierReason>(n, OutlierReason::none), std::vector<bool>(n, false)};
+  Workspace ws{finder,
+               set,
+               options,
+               fit,
+               std::vector<ClosestPoint>(n),
+               std::vector<OutlierReason>(n, OutlierReason::none),
+               std::vector<bool>(n, false)};
 
   ws.project();
   {
@@ -166,7 +179,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
       note("fit " + std::to_string(pass) + "." + std::to_string(outer));
       const Eigen::Matrix<double, 6, 1> before = fit.parameters();
       std::size_t active = 0;
-      for (std::size_t i = 0; i < n; ++i) active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
+      for (std::size_t i = 0; i < n; ++i)
+        active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
       if (static_cast<int>(active) < dof)
         throw InputError(set.source + ": only " + std::to_string(active) +
                          " points lie on the part after alignment; " + std::to_string(dof) +
@@ -190,7 +204,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     }
     numbers = classify_deviations(positions, deviation, usable, rule, verdict);
     std::vector<bool> excluded(n);
-    for (std::size_t i = 0; i < n; ++i) excluded[i] = usable[i] && verdict[i] != OutlierReason::none;
+    for (std::size_t i = 0; i < n; ++i)
+      excluded[i] = usable[i] && verdict[i] != OutlierReason::none;
     if (excluded == ws.excluded) break;
     if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) < dof) break;
     ws.excluded = excluded;
@@ -199,8 +214,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
       fit.set_foot(i, ws.feet[i].point, ws.feet[i].normal, usable[i] && !excluded[i]);
   }
   result.status = !solver_message.empty() ? "solver failed: " + solver_message
-                  : result.converged       ? "converged"
-                                           : "outer iteration limit reached";
+                  : result.converged      ? "converged"
+                                          : "outer iteration limit reached";
 
   // Results per point at the final transform.
   result.points.resize(n);
@@ -221,10 +236,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     else if (p.outlier == OutlierReason::no_foot_point)
       p.outlier_detail = "closest-point search did not converge";
     else if (p.outlier != OutlierReason::none)
-      p.outlier_detail = "|d - median| = " + number(std::abs(p.deviation - numbers.median)) +
-                         " mm > " + number(numbers.limit) + " mm (" + number(options.outlier_sigma) +
-                         " x robust sigma " + number(numbers.robust_sigma) + " mm, floor " +
-                         number(options.outlier_floor) + " mm)";
+      p.outlier_detail =
+          "|d - median| = " + number(std::abs(p.deviation - numbers.median)) + " mm > " +
+          number(numbers.limit) + " mm (" + number(options.outlier_sigma) + " x robust sigma " +
+          number(numbers.robust_sigma) + " mm, floor " + number(options.outlier_floor) + " mm)";
     if (p.in_fit) fitted.push_back(p.deviation);
   }
   result.rms_after = rms(fitted);
@@ -243,7 +258,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
       result.covariance = (*c) * (result.sigma * result.sigma);
       for (std::size_t i = 0; i < n; ++i) {
         const Eigen::Matrix<double, 1, 6> j = fit.jacobian(i);
-        result.points[i].uncertainty = std::sqrt(std::max(0.0, (j * (*result.covariance) * j.transpose())(0)));
+        result.points[i].uncertainty =
+            std::sqrt(std::max(0.0, (j * (*result.covariance) * j.transpose())(0)));
       }
     }
   }

@@ -73,17 +73,17 @@ const char* to_string(OutlierReason reason);
 struct RegistrationOptions {
   DegreesOfFreedom dof;
   RobustLoss loss = RobustLoss::cauchy;
-  double loss_scale = 0.025;          // [mm] (the CLI uses half the tolerance)
-  int max_outer_iterations = 50;      // re-projections of all points
-  int max_solver_iterations = 5;      // Ceres iterations per outer iteration
-  double motion_tolerance = 1e-10;    // [mm] stop when no point moves more than this
-  double outlier_sigma = 5;           // robust sigmas for a large residual
-  double outlier_floor = 0.025;       // [mm] smallest |d - median| called large
-  double edge_tolerance = 0.05;       // [mm] sideways offset of a beyond-edge point
-  int confirm_neighbours = 3;         // agreeing neighbours (of 6) that make a large deviation real
-  double neighbour_radius = 10;       // [mm]
-  int max_outlier_passes = 4;         // fit / flag rounds
-  bool flag_outliers = true;          // false: every point stays in the fit
+  double loss_scale = 0.025;        // [mm] (the CLI uses half the tolerance)
+  int max_outer_iterations = 50;    // re-projections of all points
+  int max_solver_iterations = 5;    // Ceres iterations per outer iteration
+  double motion_tolerance = 1e-10;  // [mm] stop when no point moves more than this
+  double outlier_sigma = 5;         // robust sigmas for a large residual
+  double outlier_floor = 0.025;     // [mm] smallest |d - median| called large
+  double edge_tolerance = 0.05;     // [mm] sideways offset of a beyond-edge point
+  int confirm_neighbours = 3;       // agreeing neighbours (of 6) that make a large deviation real
+  double neighbour_radius = 10;     // [mm]
+  int max_outlier_passes = 4;       // fit / flag rounds
+  bool flag_outliers = true;        // false: every point stays in the fit
   bool compute_covariance = true;
   CoarseOptions coarse;
   // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
@@ -94,8 +94,8 @@ struct RegistrationOptions {
 struct RegisteredPoint {
   Eigen::Vector3d registered = Eigen::Vector3d::Zero();  // T p, part frame [mm]
   ClosestPoint foot;                                     // of `registered`
-  double deviation = 0;      // d = n.(x - f) - r_probe [mm]; + material left, - removed
-  double uncertainty = 0;    // 1-sigma of d from the transform's covariance [mm]
+  double deviation = 0;    // d = n.(x - f) - r_probe [mm]; + material left, - removed
+  double uncertainty = 0;  // 1-sigma of d from the transform's covariance [mm]
   OutlierReason outlier = OutlierReason::none;
   std::string outlier_detail;  // numbers behind the decision
   bool in_fit = true;          // took part in the final fit
@@ -103,7 +103,7 @@ struct RegisteredPoint {
 };
 
 struct RegistrationResult {
-  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // CMM -> part
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();                   // CMM -> part
   Eigen::Matrix<double, 6, 1> parameters = Eigen::Matrix<double, 6, 1>::Zero();  // last correction
   CoarseResult coarse;
   double rms_before = 0;  // RMS deviation of the points at the coarse start [mm]
@@ -113,16 +113,16 @@ struct RegistrationResult {
   int solver_iterations = 0;
   int outlier_passes = 0;
   bool converged = false;
-  std::string status;     // "converged" or why not
+  std::string status;                                     // "converged" or why not
   std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
-  std::string covariance_status;  // "ok", "not computed", or why it is missing
+  std::string covariance_status;        // "ok", "not computed", or why it is missing
   std::vector<RegisteredPoint> points;  // same order as the measurement set
   std::size_t in_fit_count() const;
 };
 
 // Throws InputError when fewer points than free DOF remain. `plan` may be null.
-RegistrationResult register_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
-                                         const InspectionPlan* plan,
+RegistrationResult register_measurements(const ClosestPointFinder& finder,
+                                         const MeasurementSet& set, const InspectionPlan* plan,
                                          const RegistrationOptions& options);
 
 }  // namespace furrow

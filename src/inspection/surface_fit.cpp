@@ -36,9 +36,12 @@ struct PointToPlane {
 
 ceres::LossFunction* make_loss(RobustLoss loss, double scale) {
   switch (loss) {
-    case RobustLoss::none: return nullptr;
-    case RobustLoss::huber: return new ceres::HuberLoss(scale);
-    case RobustLoss::cauchy: return new ceres::CauchyLoss(scale);
+    case RobustLoss::none:
+      return nullptr;
+    case RobustLoss::huber:
+      return new ceres::HuberLoss(scale);
+    case RobustLoss::cauchy:
+      return new ceres::CauchyLoss(scale);
   }
   return nullptr;
 }
@@ -55,7 +58,9 @@ struct SurfaceFit::Impl {
 SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
                        const DegreesOfFreedom& dof, RobustLoss loss, double loss_scale,
                        int max_iterations)
-    : probe_radius_(probe_radius), dof_(dof), max_iterations_(max_iterations),
+    : probe_radius_(probe_radius),
+      dof_(dof),
+      max_iterations_(max_iterations),
       impl_(std::make_unique<Impl>()) {
   points_.resize(y.size());
   for (std::size_t i = 0; i < y.size(); ++i) points_[i].y = y[i];
@@ -69,7 +74,8 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
   impl_->problem = std::make_unique<ceres::Problem>(po);
   impl_->costs.reserve(points_.size());
   for (const Point& p : points_) {
-    auto* cost = new ceres::AutoDiffCostFunction<PointToPlane, 1, 6>(new PointToPlane{&p, probe_radius_});
+    auto* cost =
+        new ceres::AutoDiffCostFunction<PointToPlane, 1, 6>(new PointToPlane{&p, probe_radius_});
     impl_->costs.push_back(cost);
     impl_->problem->AddResidualBlock(cost, impl_->loss.get(), parameters_.data());
   }
@@ -172,14 +178,16 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   Eigen::MatrixXd scaled(free.size(), free.size());
   for (std::size_t a = 0; a < free.size(); ++a)
     for (std::size_t b = 0; b < free.size(); ++b)
-      scaled(a, b) = info(free[a], free[b]) / ((free[a] < 3 ? lever : 1.0) * (free[b] < 3 ? lever : 1.0));
+      scaled(a, b) =
+          info(free[a], free[b]) / ((free[a] < 3 ? lever : 1.0) * (free[b] < 3 ? lever : 1.0));
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(scaled);
   if (!(es.eigenvalues()(0) > 1e-10 * es.eigenvalues().maxCoeff())) {
     const Eigen::VectorXd null = es.eigenvectors().col(0);
     Eigen::Index worst = 0;
     null.cwiseAbs().maxCoeff(&worst);
     status = std::string("rank deficient: the measured surface does not fix ") +
-             dof_name(free[worst]) + " (and what moves with it); lock it or measure more of the part";
+             dof_name(free[worst]) +
+             " (and what moves with it); lock it or measure more of the part";
     return std::nullopt;
   }
   ceres::Covariance::Options o;

@@ -28,7 +28,7 @@ enum class RobustLoss;
 class SurfaceFit {
  public:
   struct Point {
-    Eigen::Vector3d y = Eigen::Vector3d::Zero();       // point before the correction
+    Eigen::Vector3d y = Eigen::Vector3d::Zero();  // point before the correction
     Eigen::Vector3d foot = Eigen::Vector3d::Zero();
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     bool active = false;
@@ -44,7 +44,8 @@ class SurfaceFit {
   const Eigen::Matrix<double, 6, 1>& parameters() const { return parameters_; }
   // R(r) y_i + t with the current parameters.
   Eigen::Vector3d moved(std::size_t i) const;
-  void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal, bool active);
+  void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
+                bool active);
   // Signed residual n . (moved - foot) - r_probe of point i (active or not).
   double residual(std::size_t i) const;
   // d(residual_i) / d(rx, ry, rz, tx, ty, tz) at the current parameters

@@ -40,20 +40,27 @@ std::vector<SurfaceSample> sample_part_surface(const Part& part, std::size_t tar
   std::vector<SurfaceSample> samples;
   samples.reserve(target_count + target_count / 4);
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
-    const Face& face = part.faces[f];
-    const ParameterDomain& d = face.domain();
     const int nu = std::clamp(static_cast<int>(std::ceil(lu[f] / spacing)), 2, 4000);
     const int nv = std::clamp(static_cast<int>(std::ceil(lv[f] / spacing)), 2, 4000);
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) {
-        const double u = d.u0 + (i + 0.5) / nu * d.width_u();
-        const double v = d.v0 + (j + 0.5) / nv * d.width_v();
-        if (!face.contains(u, v)) continue;
-        const DifferentialGeometry g = face.geometry(u, v);
-        if (g.degenerate) continue;
-        samples.push_back({g.point, g.normal, f, {u, v}});
-      }
+    const std::vector<SurfaceSample> face = sample_face_grid(part, f, nu, nv);
+    samples.insert(samples.end(), face.begin(), face.end());
   }
+  return samples;
+}
+
+std::vector<SurfaceSample> sample_face_grid(const Part& part, std::size_t f, int nu, int nv) {
+  const Face& face = part.faces[f];
+  const ParameterDomain& d = face.domain();
+  std::vector<SurfaceSample> samples;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = d.u0 + (i + 0.5) / nu * d.width_u();
+      const double v = d.v0 + (j + 0.5) / nv * d.width_v();
+      if (!face.contains(u, v)) continue;
+      const DifferentialGeometry g = face.geometry(u, v);
+      if (g.degenerate) continue;
+      samples.push_back({g.point, g.normal, f, {u, v}});
+    }
   return samples;
 }
 

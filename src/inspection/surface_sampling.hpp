@@ -18,6 +18,10 @@ struct SurfaceSample {
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
 };
 
+// Samples at the centres of an nu x nv (u,v) grid of face `face` (cells
+// trimmed away and degenerate points skipped), in grid order.
+std::vector<SurfaceSample> sample_face_grid(const Part& part, std::size_t face, int nu, int nv);
+
 // About `target_count` samples over all faces (fewer where trims remove
 // surface; degenerate points are skipped).
 std::vector<SurfaceSample> sample_part_surface(const Part& part, std::size_t target_count);

@@ -17,7 +17,8 @@ ToleranceZone ToleranceZone::make(double width, double outside, const std::strin
   if (!std::isfinite(width) || !(width > 0))
     throw InputError(where + ": the tolerance must be a positive width in mm");
   if (!std::isfinite(outside) || outside < 0 || outside > width)
-    throw InputError(where + ": the outside part of the zone must lie between 0 and the tolerance " +
+    throw InputError(where +
+                     ": the outside part of the zone must lie between 0 and the tolerance " +
                      std::to_string(width));
   return ToleranceZone{width, outside};
 }

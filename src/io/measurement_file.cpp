@@ -97,11 +97,13 @@ void add_point(MeasurementSet& set, std::map<std::string, int>& seen, MeasuredPo
                const std::string& name) {
   const auto [it, inserted] = seen.emplace(p.id, p.line);
   if (!inserted)
-    fail(name, p.line, "duplicate id \"" + p.id + "\" (first on line " + std::to_string(it->second) + ")");
+    fail(name, p.line,
+         "duplicate id \"" + p.id + "\" (first on line " + std::to_string(it->second) + ")");
   set.points.push_back(std::move(p));
 }
 
-void parse_csv(const std::string& text, const std::string& name, double scale, MeasurementSet& set) {
+void parse_csv(const std::string& text, const std::string& name, double scale,
+               MeasurementSet& set) {
   const std::vector<Line> lines = content_lines(text, "#");
   if (lines.empty()) throw InputError(name + ": no header line (expected id,x,y,z[,i,j,k])");
   const char* known[] = {"id", "x", "y", "z", "i", "j", "k"};
@@ -118,7 +120,8 @@ void parse_csv(const std::string& text, const std::string& name, double scale, M
   for (const char* c : {"x", "y", "z"})
     if (!column.count(c))
       fail(name, lines[0].number, std::string("missing column \"") + c + "\" (need x, y, z)");
-  const int directions = static_cast<int>(column.count("i") + column.count("j") + column.count("k"));
+  const int directions =
+      static_cast<int>(column.count("i") + column.count("j") + column.count("k"));
   if (directions != 0 && directions != 3)
     fail(name, lines[0].number, "columns i, j, k come together or not at all");
   set.ids_from_file = column.count("id") > 0;
@@ -128,8 +131,9 @@ void parse_csv(const std::string& text, const std::string& name, double scale, M
     const Line& line = lines[l];
     const std::vector<std::string> fields = split(line.text, ',');
     if (fields.size() != header.size())
-      fail(name, line.number, "expected " + std::to_string(header.size()) + " fields, got " +
-                                  std::to_string(fields.size()));
+      fail(name, line.number,
+           "expected " + std::to_string(header.size()) + " fields, got " +
+               std::to_string(fields.size()));
     MeasuredPoint p;
     p.line = line.number;
     auto number = [&](const char* col) {
@@ -148,7 +152,8 @@ void parse_csv(const std::string& text, const std::string& name, double scale, M
   }
 }
 
-void parse_xyz(const std::string& text, const std::string& name, double scale, MeasurementSet& set) {
+void parse_xyz(const std::string& text, const std::string& name, double scale,
+               MeasurementSet& set) {
   std::size_t columns = 0;
   int first_line = 0;
   std::map<std::string, int> seen;
@@ -158,13 +163,15 @@ void parse_xyz(const std::string& text, const std::string& name, double scale, M
     for (std::string f; in >> f;) fields.push_back(f);
     if (columns == 0) {
       if (fields.size() != 3 && fields.size() != 6)
-        fail(name, line.number, "expected \"x y z\" or \"x y z i j k\", got " +
-                                    std::to_string(fields.size()) + " fields");
+        fail(name, line.number,
+             "expected \"x y z\" or \"x y z i j k\", got " + std::to_string(fields.size()) +
+                 " fields");
       columns = fields.size();
       first_line = line.number;
     } else if (fields.size() != columns) {
-      fail(name, line.number, "expected " + std::to_string(columns) + " fields like line " +
-                                  std::to_string(first_line) + ", got " + std::to_string(fields.size()));
+      fail(name, line.number,
+           "expected " + std::to_string(columns) + " fields like line " +
+               std::to_string(first_line) + ", got " + std::to_string(fields.size()));
     }
     double v[6];
     for (std::size_t c = 0; c < columns; ++c)
@@ -212,13 +219,19 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
   std::map<std::string, int> seen;
   for (const Line& st : dmis_statements(text)) {
     std::string up = st.text;
-    std::transform(up.begin(), up.end(), up.begin(), [](unsigned char c) { return std::toupper(c); });
-    up.erase(std::remove_if(up.begin(), up.end(), [](unsigned char c) { return std::isspace(c); }), up.end());
+    std::transform(up.begin(), up.end(), up.begin(),
+                   [](unsigned char c) { return std::toupper(c); });
+    up.erase(std::remove_if(up.begin(), up.end(), [](unsigned char c) { return std::isspace(c); }),
+             up.end());
     if (up.rfind("UNITS/", 0) == 0) {
-      const std::string unit = up.substr(6, up.find(',') == std::string::npos ? std::string::npos : up.find(',') - 6);
-      if (unit == "MM") scale = 1;
-      else if (unit == "INCH") scale = 25.4;
-      else fail(name, st.number, "UNITS/" + unit + " is not supported (MM or INCH)");
+      const std::string unit =
+          up.substr(6, up.find(',') == std::string::npos ? std::string::npos : up.find(',') - 6);
+      if (unit == "MM")
+        scale = 1;
+      else if (unit == "INCH")
+        scale = 25.4;
+      else
+        fail(name, st.number, "UNITS/" + unit + " is not supported (MM or INCH)");
       continue;
     }
     const bool actual = up.rfind("FA(", 0) == 0;
@@ -231,25 +244,32 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
     if (body.rfind("FEAT/POINT,", 0) != 0) continue;  // other feature types are not ours
     // The label as written (case kept), from the original text.
     std::string original = st.text;
-    original.erase(std::remove_if(original.begin(), original.end(), [](unsigned char c) { return std::isspace(c); }), original.end());
+    original.erase(std::remove_if(original.begin(), original.end(),
+                                  [](unsigned char c) { return std::isspace(c); }),
+                   original.end());
     const std::string label = original.substr(actual ? 3 : 2, close - (actual ? 3 : 2));
     if (label.empty()) fail(name, st.number, "empty feature label");
     // Values from the statement as written (messages quote the user's text).
     const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
     if (fields.empty() || lower(fields[0]) != "cart")
-      fail(name, st.number, "only CART points are supported, got \"" +
-                                (fields.empty() ? std::string() : fields[0]) + "\"");
+      fail(name, st.number,
+           "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) +
+               "\"");
     if (fields.size() != 7)
-      fail(name, st.number, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " +
-                                std::to_string(fields.size() - 1));
+      fail(name, st.number,
+           "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " +
+               std::to_string(fields.size() - 1));
     double v[6];
-    for (int c = 0; c < 6; ++c) v[c] = parse_number(fields[c + 1], name, st.number, "value " + std::to_string(c + 1));
+    for (int c = 0; c < 6; ++c)
+      v[c] = parse_number(fields[c + 1], name, st.number, "value " + std::to_string(c + 1));
     const Eigen::Vector3d xyz = scale * Eigen::Vector3d(v[0], v[1], v[2]);
     const Eigen::Vector3d ijk = unit_direction({v[3], v[4], v[5]}, name, st.number, "i, j, k");
     if (!actual) {
       const auto [it, inserted] = nominal_line.emplace(label, st.number);
       if (!inserted)
-        fail(name, st.number, "duplicate nominal F(" + label + ") (first on line " + std::to_string(it->second) + ")");
+        fail(name, st.number,
+             "duplicate nominal F(" + label + ") (first on line " + std::to_string(it->second) +
+                 ")");
       nominals[label] = {xyz, ijk};
       continue;
     }
@@ -275,7 +295,8 @@ MeasurementFormat measurement_format_from_path(const std::string& path) {
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   if (ext == ".csv") return MeasurementFormat::csv;
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
-  if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res") return MeasurementFormat::dmis;
+  if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res")
+    return MeasurementFormat::dmis;
   throw InputError(path + ": unknown measurement file type \"" + ext +
                    "\" (expected .csv, .xyz/.txt or DMIS .dmi/.dmis/.dmo/.res)");
 }
@@ -286,20 +307,27 @@ MeasurementSet parse_measurements(const std::string& text, const std::string& na
   set.source = name;
   const double scale = units_to_mm(options.units, name + ": units");
   switch (format) {
-    case MeasurementFormat::csv: parse_csv(text, name, scale, set); break;
-    case MeasurementFormat::xyz: parse_xyz(text, name, scale, set); break;
-    case MeasurementFormat::dmis: parse_dmis_results(text, name, set); break;
+    case MeasurementFormat::csv:
+      parse_csv(text, name, scale, set);
+      break;
+    case MeasurementFormat::xyz:
+      parse_xyz(text, name, scale, set);
+      break;
+    case MeasurementFormat::dmis:
+      parse_dmis_results(text, name, set);
+      break;
     case MeasurementFormat::automatic:
       throw std::logic_error("parse_measurements: resolve the format first");
   }
   if (set.points.empty()) throw InputError(name + ": no measured points in the file");
-  set.kind = options.kind.value_or(format == MeasurementFormat::dmis ? ProbePointKind::contact
-                                                                     : ProbePointKind::probe_centre);
+  set.kind = options.kind.value_or(
+      format == MeasurementFormat::dmis ? ProbePointKind::contact : ProbePointKind::probe_centre);
   if (!std::isfinite(options.probe_diameter) || options.probe_diameter < 0)
     throw InputError(name + ": the probe diameter must be a non-negative number");
   if (set.kind == ProbePointKind::probe_centre && !(options.probe_diameter > 0))
-    throw InputError(name + ": the points are probe centres, so the probe diameter is needed "
-                            "(--probe-diameter, or a plan with a probe)");
+    throw InputError(name +
+                     ": the points are probe centres, so the probe diameter is needed "
+                     "(--probe-diameter, or a plan with a probe)");
   set.probe_radius = set.kind == ProbePointKind::probe_centre ? options.probe_diameter / 2 : 0.0;
   return set;
 }
@@ -324,18 +352,21 @@ std::string shortest(double v) {
 }  // namespace
 
 std::string measurements_to_csv(const MeasurementSet& set) {
-  const bool directions = !set.points.empty() &&
-                          std::all_of(set.points.begin(), set.points.end(),
-                                      [](const MeasuredPoint& p) { return p.ijk.has_value(); });
+  const bool directions =
+      !set.points.empty() && std::all_of(set.points.begin(), set.points.end(),
+                                         [](const MeasuredPoint& p) { return p.ijk.has_value(); });
   std::ostringstream out;
   out << "# " << (set.kind == ProbePointKind::probe_centre ? "probe centres" : "contact points");
-  if (set.kind == ProbePointKind::probe_centre) out << ", probe diameter " << shortest(2 * set.probe_radius) << " mm";
+  if (set.kind == ProbePointKind::probe_centre)
+    out << ", probe diameter " << shortest(2 * set.probe_radius) << " mm";
   out << ", units mm\n";
   out << (directions ? "id,x,y,z,i,j,k\n" : "id,x,y,z\n");
   for (const MeasuredPoint& p : set.points) {
-    out << p.id << ',' << shortest(p.xyz.x()) << ',' << shortest(p.xyz.y()) << ',' << shortest(p.xyz.z());
+    out << p.id << ',' << shortest(p.xyz.x()) << ',' << shortest(p.xyz.y()) << ','
+        << shortest(p.xyz.z());
     if (directions)
-      out << ',' << shortest(p.ijk->x()) << ',' << shortest(p.ijk->y()) << ',' << shortest(p.ijk->z());
+      out << ',' << shortest(p.ijk->x()) << ',' << shortest(p.ijk->y()) << ','
+          << shortest(p.ijk->z());
     out << '\n';
   }
   return out.str();

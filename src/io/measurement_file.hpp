@@ -53,7 +53,7 @@ struct MeasurementSet {
   std::string source;  // file name, for messages and reports
   std::vector<MeasuredPoint> points;
   ProbePointKind kind = ProbePointKind::probe_centre;
-  double probe_radius = 0;  // [mm]; 0 for contact points
+  double probe_radius = 0;     // [mm]; 0 for contact points
   bool ids_from_file = false;  // false when ids were generated (XYZ, CSV without id)
 };
 

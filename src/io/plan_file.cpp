@@ -81,14 +81,16 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
       throw InputError(jf::child(root, "version") + ": version " + std::to_string(version) +
                        " is not supported (this Furrow reads version 1)");
   }
-  const double scale = units_to_mm(jf::string(jf::member(doc, "units", root), jf::child(root, "units")),
-                                   jf::child(root, "units"));
+  const double scale =
+      units_to_mm(jf::string(jf::member(doc, "units", root), jf::child(root, "units")),
+                  jf::child(root, "units"));
   InspectionPlan plan;
   if (const json* jpart = jf::optional_member(doc, "part", root))
     plan.part = jf::string(*jpart, jf::child(root, "part"));
   const std::string probe_where = jf::child(root, "probe");
   const json& jprobe = jf::object(jf::member(doc, "probe", root), probe_where);
-  plan.probe.name = jf::string(jf::member(jprobe, "name", probe_where), jf::child(probe_where, "name"));
+  plan.probe.name =
+      jf::string(jf::member(jprobe, "name", probe_where), jf::child(probe_where, "name"));
   plan.probe.diameter = scale * jf::positive_number(jf::member(jprobe, "diameter", probe_where),
                                                     jf::child(probe_where, "diameter"));
 
@@ -150,12 +152,12 @@ void check_plan_against_part(const InspectionPlan& plan, const Part& part, const
     const PlannedPoint& p = plan.points[k];
     const std::string where = name + ": points[" + std::to_string(k) + "] (id " + p.id + ")";
     if (p.face_index >= part.faces.size())
-      throw InputError(where + ": face_index " + std::to_string(p.face_index) + " but the part has " +
-                       std::to_string(part.faces.size()) + " faces");
+      throw InputError(where + ": face_index " + std::to_string(p.face_index) +
+                       " but the part has " + std::to_string(part.faces.size()) + " faces");
     const Face& face = part.faces[p.face_index];
     if (face.name() != p.face)
-      throw InputError(where + ": face \"" + p.face + "\" but face " + std::to_string(p.face_index) +
-                       " of the part is \"" + face.name() + "\"");
+      throw InputError(where + ": face \"" + p.face + "\" but face " +
+                       std::to_string(p.face_index) + " of the part is \"" + face.name() + "\"");
     const double off = (face.surface().point(p.uv.x(), p.uv.y()) - p.xyz).norm();
     if (!(off <= tolerance))
       throw InputError(where + ": xyz is " + std::to_string(off) +

@@ -28,15 +28,15 @@
 namespace furrow {
 
 struct ProbeDefinition {
-  std::string name;      // free text ("TESASTAR 2 mm ruby")
-  double diameter = 0;   // ball diameter [mm], > 0
+  std::string name;     // free text ("TESASTAR 2 mm ruby")
+  double diameter = 0;  // ball diameter [mm], > 0
   double radius() const { return diameter / 2; }
 };
 
 struct PlannedPoint {
-  std::string id;         // unique, non-empty, no ',' or white space (also a DMIS label)
-  int order = 0;          // execution order, unique, >= 1
-  std::string face;       // Face::name() of the face it lies on
+  std::string id;    // unique, non-empty, no ',' or white space (also a DMIS label)
+  int order = 0;     // execution order, unique, >= 1
+  std::string face;  // Face::name() of the face it lies on
   std::size_t face_index = 0;
   std::optional<int> region;  // region index in the partition, if the plan has regions
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();

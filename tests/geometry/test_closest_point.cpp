@@ -32,9 +32,12 @@ struct Oracle {
 void compass(const Face& face, const Eigen::Vector3d& q, Eigen::Vector2d uv, double step,
              std::size_t face_index, Oracle& best) {
   const ParameterDomain& d = face.domain();
-  auto value = [&](const Eigen::Vector2d& p) { return (face.surface().point(p.x(), p.y()) - q).squaredNorm(); };
+  auto value = [&](const Eigen::Vector2d& p) {
+    return (face.surface().point(p.x(), p.y()) - q).squaredNorm();
+  };
   double f = value(uv);
-  const Eigen::Vector2d dirs[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+  const Eigen::Vector2d dirs[8] = {{1, 0}, {-1, 0}, {0, 1},  {0, -1},
+                                   {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   while (step > 1e-15) {
     bool moved = false;
     for (const auto& dir : dirs) {
@@ -71,9 +74,17 @@ void golden(const Face& face, const Eigen::Vector3d& q, const Eigen::Vector2d& a
   double f1 = value(x1), f2 = value(x2);
   for (int it = 0; it < 200; ++it) {
     if (f1 < f2) {
-      t_hi = x2; x2 = x1; f2 = f1; x1 = t_hi - g * (t_hi - t_lo); f1 = value(x1);
+      t_hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = t_hi - g * (t_hi - t_lo);
+      f1 = value(x1);
     } else {
-      t_lo = x1; x1 = x2; f1 = f2; x2 = t_lo + g * (t_hi - t_lo); f2 = value(x2);
+      t_lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = t_lo + g * (t_hi - t_lo);
+      f2 = value(x2);
     }
   }
   for (double t : {t_lo, t_hi, 0.5 * (t_lo + t_hi)}) {
@@ -93,11 +104,14 @@ Oracle brute_force(const Part& part, const Eigen::Vector3d& q, int n = 240) {
     const Face& face = part.faces[fi];
     const ParameterDomain& d = face.domain();
     std::vector<double> f((n + 1) * (n + 1), std::numeric_limits<double>::infinity());
-    auto at = [&](int i, int j) { return Eigen::Vector2d(d.u0 + d.width_u() * i / n, d.v0 + d.width_v() * j / n); };
+    auto at = [&](int i, int j) {
+      return Eigen::Vector2d(d.u0 + d.width_u() * i / n, d.v0 + d.width_v() * j / n);
+    };
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) {
         const Eigen::Vector2d uv = at(i, j);
-        if (face.trim().contains(uv)) f[i * (n + 1) + j] = (face.surface().point(uv.x(), uv.y()) - q).norm();
+        if (face.trim().contains(uv))
+          f[i * (n + 1) + j] = (face.surface().point(uv.x(), uv.y()) - q).norm();
       }
     // Discrete local minima, best few refined.
     std::vector<std::pair<double, int>> minima;
@@ -110,14 +124,17 @@ Oracle brute_force(const Part& part, const Eigen::Vector3d& q, int n = 240) {
           for (int b = -1; b <= 1; ++b) {
             const int ii = i + a, jj = j + b;
             if (ii < 0 || jj < 0 || ii > n || jj > n || (a == 0 && b == 0)) continue;
-            if (f[ii * (n + 1) + jj] < v) { is_min = false; break; }
+            if (f[ii * (n + 1) + jj] < v) {
+              is_min = false;
+              break;
+            }
           }
         if (is_min) minima.push_back({v, i * (n + 1) + j});
       }
     std::sort(minima.begin(), minima.end());
     for (std::size_t k = 0; k < std::min<std::size_t>(6, minima.size()); ++k)
-      compass(face, q, at(minima[k].second / (n + 1), minima[k].second % (n + 1)),
-              d.width_u() / n, fi, best);
+      compass(face, q, at(minima[k].second / (n + 1), minima[k].second % (n + 1)), d.width_u() / n,
+              fi, best);
     // Trim loops: dense samples per segment, golden section around the best.
     for (const UvLoop& loop : face.trim().loops())
       for (std::size_t k = 0; k < loop.size(); ++k) {
@@ -128,9 +145,13 @@ Oracle brute_force(const Part& part, const Eigen::Vector3d& q, int n = 240) {
         for (int s = 0; s <= m; ++s) {
           const Eigen::Vector2d p = a + (static_cast<double>(s) / m) * (b - a);
           const double v = (face.surface().point(p.x(), p.y()) - q).norm();
-          if (v < best_f) { best_f = v; best_s = s; }
+          if (v < best_f) {
+            best_f = v;
+            best_s = s;
+          }
         }
-        golden(face, q, a, b, std::max(0, best_s - 1) / double(m), std::min(m, best_s + 1) / double(m), fi, best);
+        golden(face, q, a, b, std::max(0, best_s - 1) / double(m),
+               std::min(m, best_s + 1) / double(m), fi, best);
       }
   }
   return best;
@@ -222,7 +243,8 @@ TEST_CASE("concave cylinder: points on and near the axis get the true minimum") 
       CHECK(c.location == FootLocation::interior);
     }
   }
-  SUBCASE("just above the axis: the interior stationary point is a maximum, the feet are the edges") {
+  SUBCASE(
+      "just above the axis: the interior stationary point is a maximum, the feet are the edges") {
     for (double e : {1e-6, 1e-3, 2.0}) {
       const Eigen::Vector3d q(0.1 * e, 20, e);  // slightly toward +x: the t = 2 pi edge is nearer
       const ClosestPoint c = finder.project(q);
@@ -250,7 +272,10 @@ TEST_CASE("mould: points along the normal of the dimple through its centre of cu
   for (int i = 1; i < 100; ++i)
     for (int j = 1; j < 100; ++j) {
       const DifferentialGeometry g = face.geometry(i / 100.0, j / 100.0);
-      if (g.k1 > best_k) { best_k = g.k1; best_uv = {i / 100.0, j / 100.0}; }
+      if (g.k1 > best_k) {
+        best_k = g.k1;
+        best_uv = {i / 100.0, j / 100.0};
+      }
     }
   REQUIRE(best_k > 0.05);
   const DifferentialGeometry g = face.geometry(best_uv.x(), best_uv.y());
@@ -266,9 +291,9 @@ TEST_CASE("mould: points along the normal of the dimple through its centre of cu
 TEST_CASE("mould: points beyond the domain edges and corners") {
   const Part part = mould();
   const ClosestPointFinder finder(part);
-  for (const Eigen::Vector3d& q : {Eigen::Vector3d(-10, 40, 25), Eigen::Vector3d(110, 20, 10),
-                                  Eigen::Vector3d(50, -8, 40), Eigen::Vector3d(30, 90, 22),
-                                  Eigen::Vector3d(-5, -5, 30), Eigen::Vector3d(108, 85, 15)}) {
+  for (const Eigen::Vector3d& q :
+       {Eigen::Vector3d(-10, 40, 25), Eigen::Vector3d(110, 20, 10), Eigen::Vector3d(50, -8, 40),
+        Eigen::Vector3d(30, 90, 22), Eigen::Vector3d(-5, -5, 30), Eigen::Vector3d(108, 85, 15)}) {
     const ClosestPoint c = finder.project(q);
     CHECK(c.location == FootLocation::domain_edge);
     check_against_oracle(finder, q);
@@ -325,7 +350,8 @@ TEST_CASE("trimmed plane with a hole: the foot is on the hole's boundary polygon
       const UvLoop& hole = trim.loops()[1];
       for (std::size_t s = 0; s < hole.size(); ++s) {
         const Eigen::Vector3d a(100 * hole[s].x(), 80 * hole[s].y(), 0);
-        const Eigen::Vector3d b(100 * hole[(s + 1) % hole.size()].x(), 80 * hole[(s + 1) % hole.size()].y(), 0);
+        const Eigen::Vector3d b(100 * hole[(s + 1) % hole.size()].x(),
+                                80 * hole[(s + 1) % hole.size()].y(), 0);
         const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
         exact = std::min(exact, (a + t * (b - a) - q).norm());
       }

@@ -19,14 +19,17 @@ using namespace furrow;
 
 TEST_CASE("degrees of freedom: names, lists, refusals") {
   CHECK(DegreesOfFreedom::parse("all", "--dof").all_free());
-  CHECK(DegreesOfFreedom::parse("translation", "--dof").free == std::array<bool, 6>{false, false, false, true, true, true});
+  CHECK(DegreesOfFreedom::parse("translation", "--dof").free ==
+        std::array<bool, 6>{false, false, false, true, true, true});
   CHECK(DegreesOfFreedom::parse("rotation", "--dof").to_string() == "rotation");
   const DegreesOfFreedom d = DegreesOfFreedom::parse("tz,rx", "--dof");
   CHECK(d.count() == 2);
   CHECK(d.to_string() == "rx,tz");
   CHECK(DegreesOfFreedom::parse("rx,ry,rz,tx,ty,tz", "--dof").to_string() == "all");
-  CHECK_THROWS_WITH_AS(DegreesOfFreedom::parse("tx,tx", "--dof"), "--dof: \"tx\" is listed twice", InputError);
-  CHECK_THROWS_WITH_AS(DegreesOfFreedom::parse("", "--dof"), "--dof: no degree of freedom left to fit", InputError);
+  CHECK_THROWS_WITH_AS(DegreesOfFreedom::parse("tx,tx", "--dof"), "--dof: \"tx\" is listed twice",
+                       InputError);
+  CHECK_THROWS_WITH_AS(DegreesOfFreedom::parse("", "--dof"),
+                       "--dof: no degree of freedom left to fit", InputError);
 }
 
 TEST_CASE("tolerance zones: bilateral, unilateral, unequal; limits are in") {
@@ -58,8 +61,9 @@ TEST_CASE("statistics and the summary: evaluated points only, per region, profil
   Comparison c;
   c.tolerance = ToleranceZone::make(0.05, 0.025, "t");
   const double d[6] = {0.01, -0.02, 0.03, -0.2, 0.5, 0.0};
-  const OutlierReason why[6] = {OutlierReason::none, OutlierReason::none, OutlierReason::none,
-                                OutlierReason::large_deviation, OutlierReason::blunder, OutlierReason::none};
+  const OutlierReason why[6] = {OutlierReason::none,    OutlierReason::none,
+                                OutlierReason::none,    OutlierReason::large_deviation,
+                                OutlierReason::blunder, OutlierReason::none};
   for (int k = 0; k < 6; ++k) {
     RegisteredPoint p;
     p.deviation = d[k];
@@ -75,7 +79,8 @@ TEST_CASE("statistics and the summary: evaluated points only, per region, profil
   CHECK(s2.in_fit == 4);
   CHECK(s2.evaluated == 5);
   CHECK(s2.outliers == 2);
-  CHECK(s2.out_of_tolerance == 2);  // 0.03 and the large deviation -0.2; the blunder is not evaluated
+  CHECK(s2.out_of_tolerance ==
+        2);  // 0.03 and the large deviation -0.2; the blunder is not evaluated
   CHECK_FALSE(s2.pass);
   CHECK(s2.profile == doctest::Approx(0.4));
   REQUIRE(s2.regions.size() == 2);
@@ -115,7 +120,8 @@ TEST_CASE("simulation: centres one probe radius out along the normal, then place
   CHECK_THROWS_AS(simulate_measurement(plan, o), InputError);
 }
 
-TEST_CASE("outliers: an isolated spike is a blunder, a patch of agreeing points a large deviation") {
+TEST_CASE(
+    "outliers: an isolated spike is a blunder, a patch of agreeing points a large deviation") {
   std::vector<Eigen::Vector3d> pos;
   std::vector<double> d;
   std::mt19937 rng(1);
@@ -126,10 +132,11 @@ TEST_CASE("outliers: an isolated spike is a blunder, a patch of agreeing points 
       const bool patch = std::hypot(i - 20, j - 20) < 2.5;
       d.push_back(noise(rng) + (patch ? -0.1 : 0.0));
     }
-  d[5 * 30 + 5] += 0.4;    // spike
-  d[5 * 30 + 7] += -0.3;   // another spike nearby, other sign
+  d[5 * 30 + 5] += 0.4;   // spike
+  d[5 * 30 + 7] += -0.3;  // another spike nearby, other sign
   std::vector<OutlierReason> why(d.size(), OutlierReason::none);
-  const OutlierVerdict v = classify_deviations(pos, d, std::vector<bool>(d.size(), true), OutlierRule{}, why);
+  const OutlierVerdict v =
+      classify_deviations(pos, d, std::vector<bool>(d.size(), true), OutlierRule{}, why);
   CHECK(v.robust_sigma == doctest::Approx(0.002).epsilon(0.25));
   CHECK(v.limit == doctest::Approx(0.025));  // the floor, 5 sigma being less
   CHECK(why[5 * 30 + 5] == OutlierReason::blunder);
@@ -142,7 +149,8 @@ TEST_CASE("outliers: an isolated spike is a blunder, a patch of agreeing points 
         CHECK(why[i * 30 + j] == OutlierReason::large_deviation);
       }
   CHECK(patch >= 13);
-  CHECK(std::count(why.begin(), why.end(), OutlierReason::none) == static_cast<long>(d.size()) - patch - 2);
+  CHECK(std::count(why.begin(), why.end(), OutlierReason::none) ==
+        static_cast<long>(d.size()) - patch - 2);
 }
 
 TEST_CASE("surface sampling: about the requested count, even spacing, trims respected") {
@@ -154,7 +162,8 @@ TEST_CASE("surface sampling: about the requested count, even spacing, trims resp
   CHECK(std::abs(s[1].point.y() - s[0].point.y()) == doctest::Approx(0.5).epsilon(0.05));
   Part holed;
   holed.faces.emplace_back("plate", make_plane({0, 0, 0}, {100, 0, 0}, {0, 100, 0}),
-                           Trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}}}));
+                           Trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+                                 {{0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}}}));
   const std::vector<SurfaceSample> h = sample_part_surface(holed, 10000);
   CHECK(h.size() == doctest::Approx(7500).epsilon(0.05));
   for (const SurfaceSample& p : h) CHECK(holed.faces[0].trim().contains(p.uv));

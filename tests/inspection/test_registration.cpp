@@ -26,10 +26,12 @@ struct TransformError {
   double displacement;  // [mm]
   double angle;         // [rad]
 };
-TransformError error_of(const RegistrationResult& r, const Misalignment& truth, const InspectionPlan& plan) {
+TransformError error_of(const RegistrationResult& r, const Misalignment& truth,
+                        const InspectionPlan& plan) {
   const Eigen::Isometry3d e = r.transform * truth.part_to_cmm();  // identity when exact
   TransformError out{0, Eigen::AngleAxisd(e.linear()).angle()};
-  for (const PlannedPoint& p : plan.points) out.displacement = std::max(out.displacement, (e * p.xyz - p.xyz).norm());
+  for (const PlannedPoint& p : plan.points)
+    out.displacement = std::max(out.displacement, (e * p.xyz - p.xyz).norm());
   return out;
 }
 
@@ -63,15 +65,16 @@ RegistrationOptions options_for(double tolerance) {
   return o;
 }
 
-
 // Largest displacement between two transforms over the plan's points [mm].
-double difference(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const InspectionPlan& plan) {
+double difference(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                  const InspectionPlan& plan) {
   double out = 0;
   for (const PlannedPoint& p : plan.points) out = std::max(out, (a * p.xyz - b * p.xyz).norm());
   return out;
 }
 
-SimulationOptions misaligned_with_blunders(const InspectionPlan& plan, double noise, std::uint32_t seed) {
+SimulationOptions misaligned_with_blunders(const InspectionPlan& plan, double noise,
+                                           std::uint32_t seed) {
   SimulationOptions sim;
   sim.misalignment = {{4, -6, 10}, {20, -12, 15}};  // up to 10 degrees and 20 mm
   sim.noise_sigma = noise;
@@ -140,7 +143,8 @@ TEST_CASE("robust fit with blunders = plain least squares without them") {
   const Part part = mould();
   const ClosestPointFinder finder(part);
   const InspectionPlan plan = grid_plan(part, 45, 36, {"ball", 2});
-  const SimulatedMeasurement m = simulate_measurement(plan, misaligned_with_blunders(plan, 0.002, 9));
+  const SimulatedMeasurement m =
+      simulate_measurement(plan, misaligned_with_blunders(plan, 0.002, 9));
   const RegistrationResult robust = register_measurements(finder, m.set, &plan, options_for(0.05));
   MeasurementSet clean = m.set;
   clean.points.clear();
@@ -166,8 +170,10 @@ TEST_CASE("without ids, a part turned 90 or 180 degrees on the table gives the i
     sim.anonymous = true;
     const SimulatedMeasurement anonymous = simulate_measurement(plan, sim);
     CAPTURE(turn);
-    const RegistrationResult by_ids = register_measurements(finder, with_ids.set, &plan, options_for(0.05));
-    const RegistrationResult global = register_measurements(finder, anonymous.set, &plan, options_for(0.05));
+    const RegistrationResult by_ids =
+        register_measurements(finder, with_ids.set, &plan, options_for(0.05));
+    const RegistrationResult global =
+        register_measurements(finder, anonymous.set, &plan, options_for(0.05));
     CHECK(by_ids.coarse.method == CoarseMethod::plan_ids);
     CHECK(global.coarse.method == CoarseMethod::global_search);
     CHECK_FALSE(global.coarse.ambiguous);
@@ -246,7 +252,8 @@ TEST_CASE("covariance: standard deviations halve when the points quadruple") {
   }
 }
 
-TEST_CASE("a real gouge is a large deviation, evaluated; isolated blunders are not; edges are refused") {
+TEST_CASE(
+    "a real gouge is a large deviation, evaluated; isolated blunders are not; edges are refused") {
   const Part part = mould();
   const ClosestPointFinder finder(part);
   InspectionPlan plan = grid_plan(part, 40, 32, {"ball", 2});

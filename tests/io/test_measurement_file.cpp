@@ -62,12 +62,13 @@ TEST_CASE("CSV without ids numbers the points; contact points need no probe") {
 }
 
 TEST_CASE("XYZ text: three or six numbers per line, consistently") {
-  const MeasurementSet set = parse_measurements("# scan\n1 2 3\n4\t5  6\n", "scan.xyz",
-                                                MeasurementFormat::xyz, centres());
+  const MeasurementSet set =
+      parse_measurements("# scan\n1 2 3\n4\t5  6\n", "scan.xyz", MeasurementFormat::xyz, centres());
   CHECK(set.points.size() == 2);
   CHECK(set.points[1].xyz == Eigen::Vector3d(4, 5, 6));
   CHECK_FALSE(set.points[0].ijk.has_value());
-  const MeasurementSet six = parse_measurements("1 2 3 0 0 2\n", "scan.xyz", MeasurementFormat::xyz, centres());
+  const MeasurementSet six =
+      parse_measurements("1 2 3 0 0 2\n", "scan.xyz", MeasurementFormat::xyz, centres());
   CHECK(*six.points[0].ijk == Eigen::Vector3d(0, 0, 1));
   CHECK(error_of("1 2 3\n1 2 3 0 0 1\n", MeasurementFormat::xyz) ==
         "m.csv:2: expected 3 fields like line 1, got 6");
@@ -116,8 +117,10 @@ TEST_CASE("bad CSV files: one error naming file and line") {
   const auto csv = MeasurementFormat::csv;
   CHECK(error_of("id,x,y,z\nA,1,2,3\nB,1,2,3\nA,4,5,6\n", csv) ==
         "m.csv:4: duplicate id \"A\" (first on line 2)");
-  CHECK(error_of("id,x,y,z\nA,1,nan,3\n", csv) == "m.csv:2: column y: \"nan\" is not a finite number");
-  CHECK(error_of("id,x,y,z\nA,1,2,inf\n", csv) == "m.csv:2: column z: \"inf\" is not a finite number");
+  CHECK(error_of("id,x,y,z\nA,1,nan,3\n", csv) ==
+        "m.csv:2: column y: \"nan\" is not a finite number");
+  CHECK(error_of("id,x,y,z\nA,1,2,inf\n", csv) ==
+        "m.csv:2: column z: \"inf\" is not a finite number");
   CHECK(error_of("id,x,y,z\nA,1,2mm,3\n", csv) == "m.csv:2: column y: \"2mm\" is not a number");
   CHECK(error_of("id,x,y,z\nA,1,,3\n", csv) == "m.csv:2: column y: \"\" is not a number");
   CHECK(error_of("id,x,y\nA,1,2\n", csv) == "m.csv:1: missing column \"z\" (need x, y, z)");

@@ -109,10 +109,12 @@ TEST_CASE("bad plans: one error naming the file and the field") {
         "plan.json: points[1].order: duplicate order 2 (also points[0])");
   CHECK(error_of(replace(kPlan, "\"P2\"", "\"P1\"")) ==
         "plan.json: points[1].id: duplicate id \"P1\" (also points[0])");
-  CHECK(error_of(replace(kPlan, "\"P2\"", "\"P 2\"")).find("plan.json: points[1].id: id \"P 2\" contains") == 0);
+  CHECK(error_of(replace(kPlan, "\"P2\"", "\"P 2\""))
+            .find("plan.json: points[1].id: id \"P 2\" contains") == 0);
   CHECK(error_of(replace(kPlan, "[0, 1, 0]", "[0, 0, 0]")) ==
         "plan.json: points[1].ijk: zero length (a direction is needed)");
-  CHECK(error_of(replace(kPlan, "\"diameter\": 2", "\"diameter\": 0")).find("plan.json: probe.diameter") == 0);
+  CHECK(error_of(replace(kPlan, "\"diameter\": 2", "\"diameter\": 0"))
+            .find("plan.json: probe.diameter") == 0);
   CHECK(error_of(replace(kPlan, "\"version\": 1", "\"version\": 2")) ==
         "plan.json: version: version 2 is not supported (this Furrow reads version 1)");
   CHECK(error_of(replace(kPlan, "\"u\": 0.1, ", "")) == "plan.json: points[1].u: missing");
@@ -128,13 +130,15 @@ TEST_CASE("a plan is checked against the part it is used with") {
   for (PlannedPoint& p : plan.points) p.xyz = part.faces[0].surface().point(p.uv.x(), p.uv.y());
   CHECK_NOTHROW(check_plan_against_part(plan, part, "plan.json"));
   plan.points[1].face = "dome";
-  CHECK_THROWS_WITH_AS(check_plan_against_part(plan, part, "plan.json"),
-                       "plan.json: points[1] (id P2): face \"dome\" but face 0 of the part is \"mould\"",
-                       InputError);
+  CHECK_THROWS_WITH_AS(
+      check_plan_against_part(plan, part, "plan.json"),
+      "plan.json: points[1] (id P2): face \"dome\" but face 0 of the part is \"mould\"",
+      InputError);
   plan.points[1].face = "mould";
   plan.points[1].face_index = 1;
   CHECK_THROWS_WITH_AS(check_plan_against_part(plan, part, "plan.json"),
-                       "plan.json: points[1] (id P2): face_index 1 but the part has 1 faces", InputError);
+                       "plan.json: points[1] (id P2): face_index 1 but the part has 1 faces",
+                       InputError);
   plan.points[1].face_index = 0;
   plan.points[1].xyz.z() += 0.01;
   CHECK_THROWS_WITH_AS(check_plan_against_part(plan, part, "plan.json"),
