@@ -213,7 +213,7 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
       const Eigen::Isometry3d next(Eigen::Matrix4d(Eigen::umeyama(a, b, false)));
       const double change = (next.matrix() - t.matrix()).norm();
       t = next;
-      if (change < 1e-12) break;
+      if (change < options.icp_tolerance) break;
     }
     return t;
   };

@@ -47,6 +47,7 @@ struct CoarseOptions {
   int screen_iterations = 10;           // ICP iterations per candidate
   int refine_iterations = 30;           // ICP iterations for the best candidates
   int refine_candidates = 4;            // how many candidates get the long ICP
+  double icp_tolerance = 1e-12;         // ICP stops when the 4x4 matrix changes less than this
   double ambiguity_ratio = 1.5;         // a runner-up within this factor of the best median ...
   double ambiguity_angle_deg = 5;       // ... and rotated at least this much from it is reported
 };
