@@ -30,6 +30,7 @@ struct Candidate {
   std::size_t face = 0;
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d su = Eigen::Vector3d::Zero(), sv = Eigen::Vector3d::Zero();  // zero: unknown
   bool on_trim = false;
   bool converged = false;
   int iterations = 0;
@@ -100,6 +101,8 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
     c.squared_distance = in_box_foot.squared_distance;
     c.uv = in_box_foot.uv;
     c.point = in_box_foot.point;
+    c.su = in_box_foot.su;
+    c.sv = in_box_foot.sv;
     c.converged = in_box_foot.converged;
     c.iterations = in_box_foot.iterations;
   } else {
@@ -119,13 +122,19 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
   if (c.squared_distance < best.squared_distance) best = c;
 }
 
-// Unit normal at the foot (Su x Sv, flipped for a reversed face); at a
-// degenerate point (pole, collapsed edge) the normal of a point nudged into
-// the domain is the limit a user expects.
-Eigen::Vector3d foot_normal(const Face& face, const Eigen::Vector2d& uv) {
-  const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
-  const Eigen::Vector3d n = d.Su.cross(d.Sv);
-  if (n.norm() > kDegenerateRelativeTolerance * d.Su.norm() * d.Sv.norm() && n.norm() > 0)
+// Unit normal at the foot: Su x Sv (from the solve when it gave them, else
+// evaluated), flipped for a reversed face. At a degenerate point (pole,
+// collapsed edge) the normal of a point nudged into the domain is the limit
+// a user expects.
+Eigen::Vector3d foot_normal(const Face& face, const Eigen::Vector2d& uv, Eigen::Vector3d su,
+                            Eigen::Vector3d sv) {
+  if (su.isZero() && sv.isZero()) {
+    const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
+    su = d.Su;
+    sv = d.Sv;
+  }
+  const Eigen::Vector3d n = su.cross(sv);
+  if (n.norm() > 0 && n.norm() > kDegenerateRelativeTolerance * su.norm() * sv.norm())
     return face.reversed() ? Eigen::Vector3d(-n.normalized()) : Eigen::Vector3d(n.normalized());
   DifferentialGeometry g = face.geometry(uv.x(), uv.y());
   if (!g.degenerate) return g.normal;
@@ -220,6 +229,8 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     if (polish.squared_distance <= best.squared_distance && face.trim().contains(polish.uv)) {
       best.uv = polish.uv;
       best.point = polish.point;
+      best.su = polish.su;
+      best.sv = polish.sv;
       best.squared_distance = polish.squared_distance;
       best.converged = polish.converged;
       best.iterations += polish.iterations;
@@ -230,7 +241,7 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   out.face = best.face;
   out.uv = best.uv;
   out.point = best.point;
-  out.normal = foot_normal(face, best.uv);
+  out.normal = foot_normal(face, best.uv, best.su, best.sv);
   out.distance = (q - best.point).norm();
   out.signed_distance = (q - best.point).dot(out.normal) < 0 ? -out.distance : out.distance;
   const bool on_domain_edge = best.uv.x() <= dom.u0 || best.uv.x() >= dom.u1 ||

@@ -96,10 +96,10 @@ double tangential_residual(const Eigen::Matrix<double, 3, N>& J, const Eigen::Ve
 // Projected Newton with active set and Armijo backtracking on
 // phi = |S(x) - q|^2 / 2 over lo <= x <= hi. Returns the final parameters;
 // fills everything but `uv` of `out`.
-template <int N, class Evaluate>
-Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<N> x,
-                        const Vec<N>& lo, const Vec<N>& hi, const ClosestPointOptions& opt,
-                        LocalFoot& out) {
+template <int N, class Evaluate, class PointAt>
+Vec<N> projected_newton(const Evaluate& evaluate, const PointAt& point_at, const Eigen::Vector3d& q,
+                        Vec<N> x, const Vec<N>& lo, const Vec<N>& hi,
+                        const ClosestPointOptions& opt, LocalFoot& out) {
   x = x.cwiseMax(lo).cwiseMin(hi);
   Jet<N> jet = evaluate(x);
   Eigen::Vector3d r = jet.S - q;
@@ -132,8 +132,9 @@ Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<
     const double full_step = (jet.J * delta).norm();
     if (!negative_curvature && full_step <= opt.step_tolerance) {
       // Take this last, tiny step too: after it the error is of order its square.
+      // Only the point is needed: the derivatives change by ~1e-11 relative.
       x = (x + delta).cwiseMax(lo).cwiseMin(hi);
-      jet = evaluate(x);
+      jet.S = point_at(x);
       r = jet.S - q;
       out.converged = true;
       break;
@@ -183,6 +184,10 @@ Vec<N> projected_newton(const Evaluate& evaluate, const Eigen::Vector3d& q, Vec<
   }
   out.point = jet.S;
   out.squared_distance = r.squaredNorm();
+  if constexpr (N == 2) {
+    out.su = jet.J.col(0);
+    out.sv = jet.J.col(1);
+  }
   return x;
 }
 
@@ -199,8 +204,9 @@ LocalFoot foot_point_in_box(const NurbsSurface& surface, const Eigen::Vector3d& 
     jet.D2 << d.Suu, d.Suv, d.Suv, d.Svv;
     return jet;
   };
+  auto point_at = [&](const Vec<2>& x) { return surface.point(x(0), x(1)); };
   LocalFoot out;
-  out.uv = projected_newton<2>(evaluate, q, seed, lo, hi, options, out);
+  out.uv = projected_newton<2>(evaluate, point_at, q, seed, lo, hi, options, out);
   return out;
 }
 
@@ -217,6 +223,10 @@ LocalFoot foot_point_on_segment(const NurbsSurface& surface, const Eigen::Vector
     jet.D2 = d.Suu * (e.x() * e.x()) + 2.0 * d.Suv * (e.x() * e.y()) + d.Svv * (e.y() * e.y());
     return jet;
   };
+  auto point_at = [&](const Vec<1>& t) {
+    const Eigen::Vector2d uv = a + t(0) * e;
+    return surface.point(uv.x(), uv.y());
+  };
   const int samples = std::max(1, options.trim_samples_per_segment);
   double best_t = 0, best = std::numeric_limits<double>::infinity();
   for (int k = 0; k <= samples; ++k) {
@@ -229,8 +239,8 @@ LocalFoot foot_point_on_segment(const NurbsSurface& surface, const Eigen::Vector
     }
   }
   LocalFoot out;
-  const Vec<1> t =
-      projected_newton<1>(evaluate, q, Vec<1>(best_t), Vec<1>(0.0), Vec<1>(1.0), options, out);
+  const Vec<1> t = projected_newton<1>(evaluate, point_at, q, Vec<1>(best_t), Vec<1>(0.0),
+                                       Vec<1>(1.0), options, out);
   out.uv = a + t(0) * e;
   return out;
 }

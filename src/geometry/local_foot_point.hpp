@@ -28,6 +28,9 @@ struct LocalFoot {
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   double squared_distance = 0;  // |S(uv) - q|^2 [mm^2]
+  // Su and Sv at the foot (box solve; zero from the segment solve), so that
+  // the caller gets the normal without another evaluation.
+  Eigen::Vector3d su = Eigen::Vector3d::Zero(), sv = Eigen::Vector3d::Zero();
   int iterations = 0;
   bool converged = false;
 };
