@@ -50,7 +50,8 @@ void summarize(Comparison& c) {
   }
   s.deviations = deviation_statistics(evaluated);
   s.profile = 2 * max_abs;
-  s.pass = s.evaluated > 0 && s.out_of_tolerance == 0;
+  // An alignment that did not converge cannot certify anything.
+  s.pass = c.registration.converged && s.evaluated > 0 && s.out_of_tolerance == 0;
   for (const auto& [region, values] : by_region)
     s.regions.push_back({region, deviation_statistics(values), region_out[region]});
   c.summary = s;
