@@ -39,7 +39,7 @@ struct ComparisonSummary {
   std::size_t in_tolerance = 0, out_of_tolerance = 0;
   DeviationStatistics deviations;         // over evaluated points
   double profile = 0;                     // 2 max |d| over evaluated points [mm]
-  bool pass = false;                      // every evaluated point in the zone
+  bool pass = false;  // registration converged and every evaluated point in the zone
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids
 };
 
