@@ -23,5 +23,7 @@ struct Command {
 extern const Command kInfoCommand;
 extern const Command kPartitionCommand;
 extern const Command kImportCommand;
+extern const Command kCompareCommand;
+extern const Command kSimulateMeasurementCommand;
 
 }  // namespace furrow::cli

@@ -1,5 +1,6 @@
 // furrow: command-line entry point. Thin by design: it finds the subcommand,
 // maps exceptions to exit statuses and prints errors once, on stderr.
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -17,6 +18,8 @@ const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
     &furrow::cli::kPartitionCommand,
     &furrow::cli::kImportCommand,
+    &furrow::cli::kCompareCommand,
+    &furrow::cli::kSimulateMeasurementCommand,
 };
 
 const Command* find_command(const std::string& name) {
@@ -31,7 +34,7 @@ void print_overview(std::ostream& out) {
          "usage: furrow COMMAND [options]\n\ncommands:\n";
   for (const Command* c : kCommands) {
     std::string name = c->name;
-    name.resize(18, ' ');
+    name.resize(std::max<std::size_t>(18, name.size() + 2), ' ');
     out << "  " << name << c->summary << "\n";
   }
   out << "\n'furrow help COMMAND' shows a command's options.\n"

@@ -1,0 +1,115 @@
+// furrow compare PART --measurements M: register CMM points to the part,
+// deviations against a profile tolerance, comparison.json.
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "geometry/closest_point.hpp"
+#include "inspection/comparison_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/part_file.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+int run_compare(Args& args) {
+  const std::string measurements = args.required_option("measurements");
+  const auto plan_path = args.option("plan");
+  const std::string out = args.required_option("out");
+  const double tolerance = args.positive_or("tolerance", 0.05);
+  const auto outside = args.number("outside");
+  const std::string dof = args.option_or("dof", "all");
+  const std::string loss = args.option_or("loss", "cauchy");
+  const auto points = args.option("points");
+  const auto probe_diameter = args.number("probe-diameter");
+  const std::string units = args.option_or("units", "mm");
+  const double sigmas = args.positive_or("outlier-sigma", 5);
+  const bool keep_all = args.flag("no-outlier-rejection");
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+
+  CompareOptions options;
+  options.tolerance =
+      ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
+  RegistrationOptions& reg = options.registration;
+  reg.dof = DegreesOfFreedom::parse(dof, "--dof");
+  reg.loss = parse_robust_loss(loss, "--loss");
+  reg.loss_scale = tolerance / 2;
+  reg.outlier_floor = tolerance / 2;
+  reg.outlier_sigma = sigmas;
+  reg.flag_outliers = !keep_all;
+  if (isatty(STDERR_FILENO))
+    reg.progress = [](const std::string& what) {
+      std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
+    };
+
+  for (const std::string* input : {&part_path, &measurements})
+    check_not_overwriting_input(out, *input);
+  if (plan_path) check_not_overwriting_input(out, *plan_path);
+
+  const Part part = read_part(part_path);
+  std::optional<InspectionPlan> plan;
+  if (plan_path) {
+    plan = read_plan(*plan_path);
+    check_plan_against_part(*plan, part, *plan_path);
+  }
+  MeasurementReadOptions read;
+  read.units = units;
+  if (points) read.kind = parse_probe_point_kind(*points, "--points");
+  read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
+  const MeasurementSet set = read_measurements(measurements, read);
+
+  const ClosestPointFinder finder(part);
+  const Comparison c = compare_measurements(finder, set, plan ? &*plan : nullptr, options);
+  if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
+  write_file_atomically(out,
+                        comparison_to_json_text(c, set, part, options,
+                                                {part_path, measurements, plan_path.value_or("")}));
+
+  const ComparisonSummary& s = c.summary;
+  const RegistrationResult& r = c.registration;
+  std::printf("registration: %s (%s start), rms %.4f -> %.4f mm, %zu of %zu points in the fit\n",
+              r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit,
+              s.points);
+  std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n",
+              s.deviations.min, s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
+  std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers -> %s\n",
+              c.tolerance.width, c.tolerance.lower(), c.tolerance.upper(), s.in_tolerance,
+              s.out_of_tolerance, s.outliers, s.pass ? "PASS" : "FAIL");
+  return s.pass ? kExitOk : kExitFail;
+}
+
+}  // namespace
+
+const Command kCompareCommand = {
+    "compare", "register CMM points to the part, deviations against a profile tolerance",
+    "usage: furrow compare PART --measurements FILE --out comparison.json [options]\n"
+    "\n"
+    "Registers measured points (CSV, XYZ text or DMIS results; docs/formats.md)\n"
+    "to PART by a robust best fit with probe compensation, computes each point's\n"
+    "signed deviation along the nominal normal (+ material left, - removed) and\n"
+    "checks it against a surface profile tolerance. Writes comparison.json; exit\n"
+    "status 0 when every evaluated point is in tolerance, 1 otherwise.\n"
+    "\n"
+    "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res)\n"
+    "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"
+    "  --tolerance T        profile tolerance zone width in mm (default 0.05)\n"
+    "  --outside A          part of the zone on the + side in mm (default T/2 =\n"
+    "                       bilateral; T unilateral outside, 0 unilateral inside)\n"
+    "  --dof D              all (default), translation, rotation, or a list of\n"
+    "                       rx,ry,rz,tx,ty,tz to fit; locked ones stay at zero and\n"
+    "                       the fit starts from the CMM frame as is\n"
+    "  --loss L             cauchy (default), huber or none (first fit; the final\n"
+    "                       fit after outlier rejection is least squares)\n"
+    "  --points K           centre (default for CSV/XYZ) or contact (default DMIS)\n"
+    "  --probe-diameter D   ball diameter in mm (default: the plan's probe)\n"
+    "  --units U            mm (default) or inch, for CSV and XYZ coordinates\n"
+    "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
+    "  --no-outlier-rejection  keep every point in the fit\n"
+    "  --out FILE           comparison.json to write\n",
+    run_compare};
+
+}  // namespace furrow::cli

@@ -1,0 +1,90 @@
+#include "inspection/outlier_detection.hpp"
+
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "inspection/registration.hpp"
+
+namespace furrow {
+
+namespace {
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + v.size() / 2;
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions,
+                                   const std::vector<double>& deviation,
+                                   const std::vector<bool>& usable, const OutlierRule& rule,
+                                   std::vector<OutlierReason>& reasons) {
+  OutlierVerdict v;
+  std::vector<double> d;
+  std::vector<std::size_t> index;  // usable point -> original index
+  for (std::size_t i = 0; i < deviation.size(); ++i)
+    if (usable[i]) {
+      d.push_back(deviation[i]);
+      index.push_back(i);
+    }
+  if (d.empty()) return v;
+  v.median = median_of(d);
+  std::vector<double> spread(d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) spread[k] = std::abs(d[k] - v.median);
+  v.robust_sigma = 1.4826 * median_of(spread);
+  v.limit = std::max(rule.sigmas * v.robust_sigma, rule.floor);
+
+  std::vector<bool> large(d.size());
+  bool any = false;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    large[k] = spread[k] > v.limit;
+    any = any || large[k];
+    reasons[index[k]] = OutlierReason::none;
+  }
+  if (!any) return v;
+
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const Eigen::Vector3d& p = positions[index[k]];
+    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  }
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud);
+  // Agreeing neighbours of each large point: large too, same side, within
+  // the limit of its value, among its six nearest within the radius.
+  std::vector<std::vector<std::size_t>> agree(d.size());
+  std::vector<int> nearest;
+  std::vector<float> squared;
+  const double radius2 = rule.radius * rule.radius;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (!large[k]) continue;
+    const int found = tree.nearestKSearch(static_cast<int>(k), 7, nearest, squared);  // self + 6
+    for (int m = 0; m < found; ++m) {
+      const auto j = static_cast<std::size_t>(nearest[m]);
+      if (j == k || squared[m] > radius2 || !large[j]) continue;
+      const bool same_side = (d[j] - v.median) * (d[k] - v.median) > 0;
+      if (same_side && std::abs(d[j] - d[k]) <= v.limit) agree[k].push_back(j);
+    }
+  }
+  // Cores have `confirm` agreeing neighbours; a large point agreeing with a
+  // core belongs to the same real deviation (its rim).
+  std::vector<bool> core(d.size(), false);
+  for (std::size_t k = 0; k < d.size(); ++k)
+    core[k] = large[k] && static_cast<int>(agree[k].size()) >= rule.confirm;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (!large[k]) continue;
+    bool real = core[k];
+    for (std::size_t j : agree[k]) real = real || core[j];
+    reasons[index[k]] = real ? OutlierReason::large_deviation : OutlierReason::blunder;
+  }
+  return v;
+}
+
+}  // namespace furrow

@@ -1,0 +1,128 @@
+#pragma once
+// Registration of measured CMM points to the nominal part: the rigid
+// transform T (CMM frame -> part frame) minimising the robust sum of signed
+// point-to-surface distances, with probe compensation, outlier flagging and
+// the transform's covariance (DESIGN.md "Inspection").
+//
+// Model. Point i (CMM) is moved to x_i = R(r) y_i + t with y_i = T0 p_i, T0
+// the coarse start (coarse_alignment.hpp; the identity for constrained DOF,
+// see degrees_of_freedom.hpp), r a rotation vector about the part origin and
+// t a translation: the six parameters (rx, ry, rz, tx, ty, tz). The residual
+// is the signed deviation
+//     d_i = n_i . (x_i - f_i) - r_probe
+// with f_i the closest point of x_i on the part and n_i the outward normal
+// there (r_probe = 0 for contact points): probe compensation along the
+// nominal normal, re-evaluated with every foot point.
+//
+// Solution (defended in docs/registration.md): foot points are re-projected
+// globally (closest_point.hpp) in every outer iteration and held fixed while
+// Ceres minimises sum rho(d_i^2) over the parameters (point-to-tangent-plane,
+// analytic derivatives by autodiff). At the fixed point of this loop the
+// gradient is exactly that of the true point-to-surface problem (the foot
+// point moves tangentially, to first order it does not change d_i), so the
+// answer is the true robust minimum - without (u,v) unknowns per point, and
+// with face changes and trim boundaries handled by the projection.
+//
+// Robustness: a Cauchy (default) or Huber loss with a scale from the
+// tolerance carries the first fit; then outliers are flagged and excluded and
+// the fit repeated, by plain least squares on the remaining points (the
+// Gaussian best fit a CMM reports, and the estimator whose covariance is
+// meaningful), until the flagged set is stable. Outliers:
+//   beyond_edge        foot on a face or trim boundary with the point more
+//                      than edge_tolerance beside the surface (not on it);
+//   no_foot_point      the projection did not converge;
+//   blunder            |d - median d| > max(outlier_sigma * robust sigma,
+//                      outlier_floor), and its neighbours do not agree;
+//   large_deviation    the same size, but neighbours deviate alike (see
+//                      outlier_detection.hpp): a real form error (a gouge)
+//                      - left out of the fit, yet evaluated against the
+//                      tolerance, never hidden.
+//
+// Uncertainty: the 6x6 covariance of the parameters at the optimum from
+// ceres::Covariance, scaled by the residual variance of the points in the
+// fit (sum d^2 / (n - dof)); with all six DOF free the parameters are
+// re-based on the final transform first, so it is the covariance of a small
+// rigid correction applied in the part frame (rotation about the part
+// origin). Each point's 1-sigma deviation uncertainty is sqrt(J C J^T) with
+// J = d(d_i)/d(parameters): how much the alignment alone could move it.
+//
+// Non-convergence is reported (converged == false, status text), never
+// thrown. InputError only for unusable input (fewer points than free DOF).
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/closest_point.hpp"
+#include "inspection/coarse_alignment.hpp"
+#include "inspection/degrees_of_freedom.hpp"
+#include "io/measurement_file.hpp"
+#include "io/plan_file.hpp"
+
+namespace furrow {
+
+enum class RobustLoss { none, huber, cauchy };
+const char* to_string(RobustLoss loss);
+RobustLoss parse_robust_loss(const std::string& text, const std::string& where);
+
+enum class OutlierReason { none, beyond_edge, no_foot_point, blunder, large_deviation };
+const char* to_string(OutlierReason reason);
+
+struct RegistrationOptions {
+  DegreesOfFreedom dof;
+  RobustLoss loss = RobustLoss::cauchy;
+  double loss_scale = 0.025;        // [mm] (the CLI uses half the tolerance)
+  int max_outer_iterations = 50;    // re-projections of all points
+  int max_solver_iterations = 5;    // Ceres iterations per outer iteration
+  double motion_tolerance = 1e-10;  // [mm] stop when no point moves more than this
+  double outlier_sigma = 5;         // robust sigmas for a large residual
+  double outlier_floor = 0.025;     // [mm] smallest |d - median| called large
+  double edge_tolerance = 0.05;     // [mm] sideways offset of a beyond-edge point
+  int confirm_neighbours = 3;       // agreeing neighbours (of 6) that make a large deviation real
+  double neighbour_radius = 10;     // [mm]
+  int max_outlier_passes = 4;       // fit / flag rounds
+  bool flag_outliers = true;        // false: every point stays in the fit
+  bool compute_covariance = true;
+  CoarseOptions coarse;
+  // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
+  // so a terminal can show progress; empty: silent.
+  std::function<void(const std::string&)> progress;
+};
+
+struct RegisteredPoint {
+  Eigen::Vector3d registered = Eigen::Vector3d::Zero();  // T p, part frame [mm]
+  ClosestPoint foot;                                     // of `registered`
+  double deviation = 0;    // d = n.(x - f) - r_probe [mm]; + material left, - removed
+  double uncertainty = 0;  // 1-sigma of d from the transform's covariance [mm]
+  OutlierReason outlier = OutlierReason::none;
+  std::string outlier_detail;  // numbers behind the decision
+  bool in_fit = true;          // took part in the final fit
+  bool evaluated = true;       // counts for the tolerance (false for blunders, edges, no foot)
+};
+
+struct RegistrationResult {
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();                   // CMM -> part
+  Eigen::Matrix<double, 6, 1> parameters = Eigen::Matrix<double, 6, 1>::Zero();  // last correction
+  CoarseResult coarse;
+  double rms_before = 0;  // RMS deviation of the points at the coarse start [mm]
+  double rms_after = 0;   // RMS deviation of the points in the final fit [mm]
+  double sigma = 0;       // residual standard deviation sqrt(sum d^2 / (n - dof)) [mm]
+  int outer_iterations = 0;
+  int solver_iterations = 0;
+  int outlier_passes = 0;
+  bool converged = false;
+  std::string status;                                     // "converged" or why not
+  std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
+  std::string covariance_status;        // "ok", "not computed", or why it is missing
+  std::vector<RegisteredPoint> points;  // same order as the measurement set
+  std::size_t in_fit_count() const;
+};
+
+// Throws InputError when fewer points than free DOF remain. `plan` may be null.
+RegistrationResult register_measurements(const ClosestPointFinder& finder,
+                                         const MeasurementSet& set, const InspectionPlan* plan,
+                                         const RegistrationOptions& options);
+
+}  // namespace furrow

@@ -1,0 +1,82 @@
+#pragma once
+// The inner problem of registration.hpp: with every point's foot point and
+// normal held fixed, find the rigid correction (r, t) minimising
+// sum rho((n_i . (R(r) y_i + t - f_i) - r_probe)^2) with Ceres, some of the
+// six parameters possibly locked; and the covariance of (r, t) at the
+// optimum with ceres::Covariance.
+//
+// One Ceres problem lives for the whole registration: the residual blocks
+// read the feet from this object, so the outer loop only updates them
+// (set_foot) and solves again, warm-started. Points left out of the fit keep
+// their block and contribute zero (active = false).
+//
+// Ceres runs single-threaded: its multi-threaded cost reduction sums in a
+// scheduling-dependent order, and Furrow's outputs must be bit-identical run
+// to run. The expensive part (projection) is parallel in the caller.
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inspection/degrees_of_freedom.hpp"
+
+namespace furrow {
+
+enum class RobustLoss;
+
+class SurfaceFit {
+ public:
+  struct Point {
+    Eigen::Vector3d y = Eigen::Vector3d::Zero();  // point before the correction
+    Eigen::Vector3d foot = Eigen::Vector3d::Zero();
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+    bool active = false;
+  };
+
+  SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius, const DegreesOfFreedom& dof,
+             RobustLoss loss, double loss_scale, int max_iterations);
+  ~SurfaceFit();
+  SurfaceFit(const SurfaceFit&) = delete;
+  SurfaceFit& operator=(const SurfaceFit&) = delete;
+
+  std::size_t size() const { return points_.size(); }
+  const Eigen::Matrix<double, 6, 1>& parameters() const { return parameters_; }
+  // R(r) y_i + t with the current parameters.
+  Eigen::Vector3d moved(std::size_t i) const;
+  void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
+                bool active);
+  // Signed residual n . (moved - foot) - r_probe of point i (active or not).
+  double residual(std::size_t i) const;
+  // d(residual_i) / d(rx, ry, rz, tx, ty, tz) at the current parameters
+  // (zero in locked components).
+  Eigen::Matrix<double, 1, 6> jacobian(std::size_t i) const;
+
+  // Replaces the robust loss (the outlier-free final fit is plain least
+  // squares, see registration.hpp).
+  void set_loss(RobustLoss loss, double loss_scale);
+
+  // Solves from the current parameters; returns the Ceres iterations used.
+  // `message` receives Ceres' termination text when it is not a success.
+  int solve(std::string& message);
+
+  // Moves every y_i by the current correction and zeroes the parameters, so
+  // that the covariance is that of a small correction on the final transform.
+  void rebase();
+
+  // (J^T J)^-1 of the active residuals at the current parameters (unit
+  // residual variance; the caller scales). nullopt with `status` saying why
+  // (rank deficiency: the surface does not fix every free parameter).
+  std::optional<Eigen::Matrix<double, 6, 6>> covariance(std::string& status) const;
+
+ private:
+  struct Impl;
+  std::vector<Point> points_;
+  double probe_radius_;
+  DegreesOfFreedom dof_;
+  int max_iterations_;
+  Eigen::Matrix<double, 6, 1> parameters_ = Eigen::Matrix<double, 6, 1>::Zero();
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace furrow

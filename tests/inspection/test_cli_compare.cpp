@@ -1,0 +1,162 @@
+// End-to-end: furrow simulate-measurement and furrow compare as a user runs
+// them; bad input files of each kind end with one error naming file:line
+// (or the JSON field), exit status 2 and no output written.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include "inspection/measurement_simulation.hpp"
+#include "io/json_fields.hpp"
+#include "io/part_file.hpp"
+#include "io/plan_file.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kMould = test::source_path("examples/parts/mould.json");
+
+// A grid plan of the mould in a fresh scratch folder.
+std::string write_mould_plan(const std::string& dir, int nu = 24, int nv = 20) {
+  const Part part = read_part(kMould);
+  InspectionPlan plan = grid_plan(part, nu, nv, {"ruby 2 mm", 2});
+  plan.part = kMould;
+  write_plan(plan, dir + "/plan.json");
+  return dir + "/plan.json";
+}
+
+// Runs compare on a measurement file that must be refused.
+void expect_refused(const std::string& dir, const std::string& file, const std::string& text,
+                    const std::string& message) {
+  const std::string path = dir + "/" + file;
+  test::write_text(path, text);
+  const std::string out = dir + "/refused.json";
+  const auto r = test::run_furrow(
+      {"compare", kMould, "--measurements", path, "--probe-diameter", "2", "--out", out});
+  CAPTURE(text);
+  CHECK(r.status == 2);
+  CHECK(r.err == "error: " + path + message + "\n");
+  CHECK(test::line_count(r.err) == 1);
+  CHECK_FALSE(fs::exists(out));
+}
+
+}  // namespace
+
+TEST_CASE("simulate-measurement then compare: the misalignment comes back, same bytes every run") {
+  const std::string dir = test::scratch_dir("cli-compare-roundtrip");
+  const std::string plan = write_mould_plan(dir);
+  const auto sim = test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--misalign",
+                                     "2,-3,90,120,-40,15", "--outliers", "12", "--seed", "3",
+                                     "--out", dir + "/m.csv"});
+  REQUIRE(sim.status == 0);
+  const auto a = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan",
+                                   plan, "--tolerance", "0.05", "--out", dir + "/a.json"});
+  CHECK(a.status == 0);
+  CHECK(a.out.find("PASS") != std::string::npos);
+  const json_fields::json doc = json_fields::load_file(dir + "/a.json");
+  CHECK(doc["summary"]["pass"] == true);
+  CHECK(doc["summary"]["outliers"] == 12);
+  CHECK(doc["points"].size() == 480);
+  const auto placement = doc["registration"]["placement"];
+  CHECK(placement["rotation_deg"][2].get<double>() == doctest::Approx(90).epsilon(1e-3));
+  CHECK(placement["translation"][0].get<double>() == doctest::Approx(120).epsilon(1e-4));
+  CHECK(doc["registration"]["coarse"]["method"] == "plan ids");
+  // Deterministic output, also without the plan's ids (global search).
+  const auto b = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan",
+                                   plan, "--tolerance", "0.05", "--out", dir + "/b.json"});
+  CHECK(test::slurp(dir + "/a.json") == test::slurp(dir + "/b.json"));
+  const auto anon = test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--misalign",
+                                      "2,-3,180,120,-40,15", "--seed", "3", "--anonymous", "--out",
+                                      dir + "/anon.csv"});
+  REQUIRE(anon.status == 0);
+  const auto c = test::run_furrow({"compare", kMould, "--measurements", dir + "/anon.csv",
+                                   "--probe-diameter", "2", "--out", dir + "/c.json"});
+  CHECK(c.status == 0);
+  const json_fields::json cdoc = json_fields::load_file(dir + "/c.json");
+  CHECK(cdoc["registration"]["coarse"]["method"] == "global search");
+  CHECK(std::abs(std::abs(cdoc["registration"]["placement"]["rotation_deg"][2].get<double>()) -
+                 180) < 0.05);
+}
+
+TEST_CASE("compare: out of tolerance is exit status 1; locked DOF and loss options are honoured") {
+  const std::string dir = test::scratch_dir("cli-compare-fail");
+  const std::string plan = write_mould_plan(dir);
+  REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--noise", "0.004",
+                            "--out", dir + "/m.csv"})
+              .status == 0);
+  const auto tight =
+      test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", plan,
+                        "--tolerance", "0.005", "--out", dir + "/t.json"});
+  CHECK(tight.status == 1);
+  CHECK(tight.out.find("FAIL") != std::string::npos);
+  const auto locked =
+      test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", plan,
+                        "--dof", "tx,ty,rz", "--loss", "huber", "--out", dir + "/l.json"});
+  CHECK(locked.status == 0);
+  const json_fields::json doc = json_fields::load_file(dir + "/l.json");
+  CHECK(doc["registration"]["dof"] == json_fields::json({"rz", "tx", "ty"}));
+  CHECK(doc["registration"]["transform"][2][3].get<double>() == 0.0);
+  CHECK(doc["registration"]["coarse"]["method"] == "identity");
+}
+
+TEST_CASE("bad measurement files: file:line, exit 2, nothing written") {
+  const std::string dir = test::scratch_dir("cli-compare-bad-measurements");
+  expect_refused(dir, "dup.csv", "id,x,y,z\nA,1,2,3\nA,4,5,6\n",
+                 ":3: duplicate id \"A\" (first on line 2)");
+  expect_refused(dir, "nan.csv", "id,x,y,z\nA,1,NaN,3\n",
+                 ":2: column y: \"NaN\" is not a finite number");
+  expect_refused(dir, "cols.csv", "id,x,z\nA,1,3\n", ":1: missing column \"y\" (need x, y, z)");
+  expect_refused(dir, "text.csv", "id,x,y,z\nA,1,two,3\n", ":2: column y: \"two\" is not a number");
+  expect_refused(dir, "short.csv", "id,x,y,z\nA,1,2\n", ":2: expected 4 fields, got 3");
+  expect_refused(dir, "scan.xyz", "1 2 3\n4 5 x\n", ":2: field 3: \"x\" is not a number");
+  expect_refused(
+      dir, "run.res",
+      "UNITS/MM\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\n",
+      ":3: duplicate id \"P1\" (first on line 2)");
+  expect_refused(dir, "nan.res", "FA(P1)=FEAT/POINT,CART,1,nan,3,0,0,1\n",
+                 ":1: value 2: \"nan\" is not a finite number");
+}
+
+TEST_CASE("bad plans, options and outputs: one error, exit 2, nothing written") {
+  const std::string dir = test::scratch_dir("cli-compare-bad-other");
+  const std::string plan = write_mould_plan(dir, 6, 5);
+  REQUIRE(
+      test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--out", dir + "/m.csv"})
+          .status == 0);
+  const std::string out = dir + "/out.json";
+  auto refused = [&](const std::vector<std::string>& args, const std::string& message) {
+    const auto r = test::run_furrow(args);
+    CAPTURE(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK(test::line_count(r.err) == 1);
+    CHECK_FALSE(fs::exists(out));
+  };
+  std::string text = test::slurp(plan);
+  text.replace(text.find("\"order\": 2"), 10, "\"order\": 1");
+  test::write_text(dir + "/dup_order.json", text);
+  refused({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", dir + "/dup_order.json",
+           "--out", out},
+          "dup_order.json: points[1].order: duplicate order 1 (also points[0])");
+  refused({"compare", test::source_path("examples/parts/two_face.json"), "--measurements",
+           dir + "/m.csv", "--plan", plan, "--out", out},
+          "face \"mould\" but face 0 of the part is \"valley_wall\"");
+  refused({"compare", kMould, "--measurements", dir + "/m.csv", "--out", out},
+          "the probe diameter is needed");
+  refused({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", plan, "--dof", "tx,tw",
+           "--out", out},
+          "--dof: \"tw\" is not a degree of freedom");
+  refused({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", plan, "--outside", "0.2",
+           "--out", out},
+          "the outside part of the zone must lie between 0 and the tolerance");
+  refused({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", plan, "--out",
+           dir + "/m.csv"},
+          "m.csv");
+  refused({"compare", kMould, "--plan", plan, "--out", out}, "--measurements");
+  refused({"simulate-measurement", kMould, "--plan", plan, "--misalign", "1,2,3", "--out", out},
+          "--misalign expects 6 comma-separated numbers");
+  refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", out},
+          "31 blunders but the plan has 30 points");
+}
