@@ -16,40 +16,21 @@ struct SidePoint {
   Eigen::Vector3d C, Ct, Ctt;
 };
 
-Eigen::Vector2d side_uv(const ParameterDomain& d, unsigned side, double t) {
-  switch (side) {
-    case kSideUMin: return {d.u0, t};
-    case kSideUMax: return {d.u1, t};
-    case kSideVMin: return {t, d.v0};
-    default: return {t, d.v1};
-  }
-}
-
 SidePoint side_point(const Face& face, unsigned side, double t) {
   const Eigen::Vector2d uv = side_uv(face.domain(), side, t);
   const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 2);
-  const bool along_v = side == kSideUMin || side == kSideUMax;
+  const bool along_v = runs_along_v(side);
   return {d.S, along_v ? d.Sv : d.Su, along_v ? d.Svv : d.Suu};
 }
 
 }  // namespace
 
-unsigned domain_sides(const ParameterDomain& d, const Eigen::Vector2d& uv, double tol) {
-  unsigned sides = 0;
-  const double tu = tol * d.width_u(), tv = tol * d.width_v();
-  if (std::abs(uv.x() - d.u0) <= tu) sides |= kSideUMin;
-  else if (std::abs(uv.x() - d.u1) <= tu) sides |= kSideUMax;
-  if (std::abs(uv.y() - d.v0) <= tv) sides |= kSideVMin;
-  else if (std::abs(uv.y() - d.v1) <= tv) sides |= kSideVMax;
-  return sides;
-}
-
 int inward_directions(const SurfaceDerivatives& d, const Eigen::Vector3d& normal, unsigned sides,
                       std::array<Eigen::Vector3d, 2>& out) {
   int count = 0;
-  for (const unsigned side : {kSideUMin, kSideUMax, kSideVMin, kSideVMax}) {
+  for (const unsigned side : kAllSides) {
     if (!(sides & side)) continue;
-    const bool u_side = side == kSideUMin || side == kSideUMax;
+    const bool u_side = runs_along_v(side);
     const Eigen::Vector3d edge = u_side ? d.Sv : d.Su;                  // along the edge
     const Eigen::Vector3d across = (side == kSideUMin) ? d.Su          // into the face
                                    : (side == kSideUMax) ? Eigen::Vector3d(-d.Su)
@@ -70,9 +51,8 @@ BorderLocator::BorderLocator(const Part& part, const BorderOptions& options)
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
     const Face& face = part.faces[f];
     const ParameterDomain& d = face.domain();
-    for (const unsigned side : {kSideUMin, kSideUMax, kSideVMin, kSideVMax}) {
-      const bool along_v = side == kSideUMin || side == kSideUMax;
-      const double lo = along_v ? d.v0 : d.u0, hi = along_v ? d.v1 : d.u1;
+    for (const unsigned side : kAllSides) {
+      const auto [lo, hi] = side_range(d, side);
       Side s{f, side, {}, 0.0};
       for (int k = 0; k < n; ++k) {
         const double t = grid_parameter(lo, hi, k, n);

@@ -35,12 +35,10 @@
 #include <vector>
 
 #include "geometry/part.hpp"
+#include "machining/domain_sides.hpp"
 #include "machining/local_gouge.hpp"
 
 namespace furrow {
-
-// Sides of a face's parameter rectangle (bit flags).
-enum DomainSide : unsigned { kSideUMin = 1, kSideUMax = 2, kSideVMin = 4, kSideVMax = 8 };
 
 struct BorderOptions {
   // (u,v) within this fraction of the domain width of a side lies on it.
@@ -53,9 +51,6 @@ struct BorderOptions {
   int side_samples = 64;
   int max_iterations = 30;
 };
-
-unsigned domain_sides(const ParameterDomain& domain, const Eigen::Vector2d& uv,
-                      double relative_tolerance);
 
 // Unit tangent directions across each side in `sides` (at most two, a
 // corner), perpendicular to the edge and pointing into the face. Returns the

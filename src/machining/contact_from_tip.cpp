@@ -1,13 +1,21 @@
 #include "machining/contact_from_tip.hpp"
 
+#include "machining/domain_sides.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace furrow {
 
 const char* to_string(ContactKind kind) {
-  return kind == ContactKind::corner ? "corner" : "flat_bottom";
+  switch (kind) {
+    case ContactKind::corner: return "corner";
+    case ContactKind::flat_bottom: return "flat_bottom";
+    case ContactKind::edge: return "edge";
+  }
+  return "?";
 }
 
 const char* to_string(TipContactStatus status) {
@@ -104,6 +112,18 @@ TipContactFinder::TipContactFinder(const Part& part, const Cutter& cutter,
           seed.offset_xy += tip_offset(cutter, s.normal, options.location).head<2>();
         seeds_.push_back(seed);
       }
+    }
+    const Face& face = part.faces[f];
+    const int m = std::max(3, options.edge_samples);
+    for (const unsigned side : kAllSides) {
+      const auto [lo, hi] = side_range(face.domain(), side);
+      Edge edge{f, side, {}};
+      for (int k = 0; k < m; ++k) {
+        const double t = grid_parameter(lo, hi, k, m);
+        const Eigen::Vector2d uv = side_uv(face.domain(), side, t);
+        edge.samples.push_back({t, face.surface().point(uv.x(), uv.y())});
+      }
+      edges_.push_back(std::move(edge));
     }
   }
 }
@@ -233,6 +253,61 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
       const Evaluation ev = evaluate(face, uv);
       if ((ev.g.point.head<2>() - txy).norm() <= rho0 + options_.tolerance)
         keep(seed.face, uv, ev, ContactKind::flat_bottom, iterations);
+    }
+  }
+
+  // Edge contacts: along each side, the local maxima (among its samples under
+  // the cutter) of how far the side sticks up into the lowered cutter,
+  // refined by golden-section search between the neighbouring samples.
+  const double R = cutter_.radius();
+  for (const Edge& edge : edges_) {
+    const Face& face = part_.faces[edge.face];
+    auto rise = [&](double t) {  // side height minus envelope height: the tip height
+      const Eigen::Vector2d uv = side_uv(face.domain(), edge.side, t);
+      const Eigen::Vector3d p = face.surface().point(uv.x(), uv.y());
+      const double rho = (p.head<2>() - txy).norm();
+      return rho <= R ? p.z() - cutter_.height_at(rho) : -std::numeric_limits<double>::infinity();
+    };
+    const std::vector<EdgeSample>& smp = edge.samples;
+    std::vector<double> value(smp.size());
+    for (std::size_t k = 0; k < smp.size(); ++k) {
+      const double rho = (smp[k].point.head<2>() - txy).norm();
+      value[k] = rho <= R ? smp[k].point.z() - cutter_.height_at(rho)
+                          : -std::numeric_limits<double>::infinity();
+    }
+    for (std::size_t k = 0; k < smp.size(); ++k) {
+      const double left = k > 0 ? value[k - 1] : -std::numeric_limits<double>::infinity();
+      const double right = k + 1 < smp.size() ? value[k + 1] : -std::numeric_limits<double>::infinity();
+      if (!std::isfinite(value[k]) || value[k] < left || value[k] <= right) continue;
+      double a = smp[k > 0 ? k - 1 : k].t, b = smp[k + 1 < smp.size() ? k + 1 : k].t;
+      const double stop = options_.edge_tolerance * std::abs(smp.back().t - smp.front().t);
+      const double g = 0.5 * (std::sqrt(5.0) - 1);
+      double c = b - g * (b - a), d = a + g * (b - a), fc = rise(c), fd = rise(d);
+      for (int it = 0; it < 200 && std::abs(b - a) > stop; ++it) {
+        if (fc >= fd) {
+          b = d, d = c, fd = fc, c = b - g * (b - a), fc = rise(c);
+        } else {
+          a = c, c = d, fc = fd, d = a + g * (b - a), fd = rise(d);
+        }
+      }
+      // The sample itself may be the maximum (an end of the side).
+      double t = fc >= fd ? c : d, best = std::max(fc, fd);
+      if (value[k] > best) t = smp[k].t, best = value[k];
+      const Eigen::Vector2d uv = side_uv(face.domain(), edge.side, t);
+      if (!face.contains(uv.x(), uv.y())) continue;
+      TipContact contact;
+      contact.face = edge.face;
+      contact.uv = uv;
+      const DifferentialGeometry geom = face.geometry(uv.x(), uv.y());
+      contact.point = geom.point;
+      contact.normal = geom.normal;
+      contact.kind = ContactKind::edge;
+      contact.tip_z = best;
+      bool duplicate = false;
+      for (const TipContact& other : found)
+        duplicate |= (other.point - contact.point).norm() <= options_.duplicate_distance &&
+                     std::abs(other.tip_z - contact.tip_z) <= options_.duplicate_distance;
+      if (!duplicate) found.push_back(contact);
     }
   }
 

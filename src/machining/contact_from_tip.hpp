@@ -4,14 +4,19 @@
 // import uses it to turn G-code tips back into contact points and (u,v).
 //
 // The tip's xy fixes the axis; the cutter touches the surface wherever it is
-// tangent to it with that axis. Two kinds of tangency exist for the end mill
-// of cutter.hpp:
+// tangent to it with that axis, or where it sits on a face's edge. Three
+// kinds of contact exist for the end mill of cutter.hpp:
 //   corner       the corner arc touches: S_xy(u,v) + o_xy(n(u,v)) = T_xy, with
 //                o(n) the tip offset of cutter_location.hpp, n_z > 0;
 //   flat_bottom  the flat bottom touches a point with a horizontal tangent
 //                plane (n = +z) within R - r of the axis (a dome's top under
-//                a flat or bull-nose cutter).
-// Each tangency implies a tip height `tip_z` (the cutter lowered at that xy
+//                a flat or bull-nose cutter);
+//   edge         the cutter sits on a side of a face's parameter rectangle
+//                (the rim of a pocket, the far wall of a narrow trough): the
+//                highest point of the side curve relative to the cutter's
+//                lower envelope, found by golden-section search between
+//                side samples.
+// Each contact implies a tip height `tip_z` (the cutter lowered at that xy
 // until it touches there). Lowered from above, the cutter rests on the
 // highest of them, so contacts are sorted by tip_z, highest first, and
 // `gap` = T_z - contacts[0].tip_z: 0 for a tip on the cutter-location
@@ -25,13 +30,14 @@
 // residual; clamped to the parameter rectangle) from the seeds whose offset
 // positions are nearest the tip in xy, from the seeds that stick up highest
 // into the cutter's envelope (where a lowered cutter rests), and for flat
-// bottoms from the highest seeds under the bottom disc. Converged solutions
+// bottoms from the highest seeds under the bottom disc; edges from their
+// samples under the cutter that are local maxima. Converged solutions
 // closer than `duplicate_distance` are merged. Starts that stall or hit the
 // cap inside a face are counted as failed (a start that runs off the face's
 // edge is not: its tangency is not on this face); with no contact and a
 // failed start the status is not_converged.
-// Contacts on face edges or trim curves (the cutter resting on an edge) are
-// not tangencies and are not reported.
+// Trim curves are not treated as edges: a cutter resting on a trim curve is
+// not reported.
 #include <Eigen/Core>
 #include <vector>
 
@@ -48,10 +54,14 @@ struct TipContactOptions {
   int max_iterations = 40;  // per start
   double tolerance = 1e-9;  // [mm] xy residual of a corner contact at convergence
   double duplicate_distance = 1e-6;  // [mm] contacts closer than this are one
+  int edge_samples = 129;   // samples per face side for edge contacts
+  // Golden-section search on a side stops below this fraction of its
+  // parameter range (or after 200 steps).
+  double edge_tolerance = 1e-13;
   CutterLocationOptions location;
 };
 
-enum class ContactKind : unsigned char { corner, flat_bottom };
+enum class ContactKind : unsigned char { corner, flat_bottom, edge };
 const char* to_string(ContactKind kind);
 
 struct TipContact {
@@ -97,6 +107,16 @@ class TipContactFinder {
   const Cutter& cutter_;
   TipContactOptions options_;
   std::vector<Seed> seeds_;
+  struct EdgeSample {
+    double t;
+    Eigen::Vector3d point;
+  };
+  struct Edge {
+    std::size_t face;
+    unsigned side;  // DomainSide of compound_border.hpp
+    std::vector<EdgeSample> samples;
+  };
+  std::vector<Edge> edges_;
   double seed_spacing_ = 0;  // largest distance between neighbouring seeds [mm]
 };
 

@@ -13,9 +13,11 @@ using namespace furrow;
 namespace {
 
 // The mould is a height field: its control points sit at the Greville
-// abscissae, so x = 100 u and y = 80 v exactly and z(x, y) = S(x/100, y/80).z.
+// abscissae, so x = 100 u and y = 80 v exactly and z(x, y) = S(x/100, y/80).z
+// over [0, 100] x [0, 80] (no surface outside).
 double mould_height(const Face& mould, double x, double y) {
-  return mould.surface().point(std::clamp(x / 100, 0.0, 1.0), std::clamp(y / 80, 0.0, 1.0)).z();
+  if (x < 0 || x > 100 || y < 0 || y > 80) return -1e300;
+  return mould.surface().point(x / 100, y / 80).z();
 }
 
 // Brute-force drop cutter: the tip height at which the cutter, lowered at
@@ -46,6 +48,31 @@ double drop_cutter(const Face& mould, const Cutter& cutter, double x, double y) 
       }
     half_rho *= 0.3;
     half_phi *= 0.3;
+  }
+  // The part's edges, where a cutter hanging over them rests: each edge line
+  // sampled densely, then zoomed into.
+  for (int e = 0; e < 4; ++e) {
+    auto point = [&](double s) -> Eigen::Vector2d {
+      return e == 0 ? Eigen::Vector2d(0, s) : e == 1 ? Eigen::Vector2d(100, s)
+           : e == 2 ? Eigen::Vector2d(s, 0) : Eigen::Vector2d(s, 80);
+    };
+    const double length = e < 2 ? 80 : 100;
+    auto edge_value = [&](double s) {
+      const Eigen::Vector2d p = point(std::clamp(s, 0.0, length));
+      const double rho = std::hypot(p.x() - x, p.y() - y);
+      return rho > R ? -1e300 : mould_height(mould, p.x(), p.y()) - cutter.height_at(rho);
+    };
+    double s_best = 0, v_best = -1e300;
+    for (int k = 0; k <= 4000; ++k) {
+      const double v = edge_value(length * k / 4000);
+      if (v > v_best) v_best = v, s_best = length * k / 4000;
+    }
+    for (double half = length / 4000; half > 1e-13; half *= 0.3)
+      for (int k = -10; k <= 10; ++k) {
+        const double v = edge_value(s_best + half * k / 10);
+        if (v > v_best) v_best = v, s_best = std::clamp(s_best + half * k / 10, 0.0, length);
+      }
+    best = std::max(best, v_best);
   }
   return best;
 }
@@ -111,6 +138,27 @@ TEST_CASE("contact from tip: a ball too big for the dimple rests on its rim, the
   bool has_p = false;
   for (const TipContact& c : r.contacts) has_p |= (c.point - g.point).norm() < 1e-6;
   CHECK(has_p);  // the fold of the offset surface is listed too
+}
+
+TEST_CASE("contact from tip: a cutter hanging over the mould's edge rests on the edge") {
+  const Part part = read_part(test::source_path("examples/parts/mould.json"));
+  const Face& mould = part.faces[0];
+  for (const Cutter& cutter : {Cutter("ball", 4, 4), Cutter("bull", 5, 1), Cutter("flat", 3, 0)}) {
+    const TipContactFinder finder(part, cutter);
+    const double off = 0.8 * cutter.radius();  // mostly off the part: it sits on the edge
+    for (const Eigen::Vector2d& xy : {Eigen::Vector2d(100 + off, 40), Eigen::Vector2d(-off, 17),
+                                      Eigen::Vector2d(50, 80 + off), Eigen::Vector2d(-1, 30),
+                                      Eigen::Vector2d(99, 79)}) {
+      CAPTURE(cutter.name());
+      CAPTURE(xy.x());
+      CAPTURE(xy.y());
+      const TipContactResult r = finder.find(Eigen::Vector3d(xy.x(), xy.y(), 60));
+      REQUIRE(r.status == TipContactStatus::found);
+      // Beyond x = 100 the part rises toward its edge: the cutter sits on it.
+      if (xy.x() > 100) CHECK(r.contacts[0].kind == ContactKind::edge);
+      CHECK(r.contacts[0].tip_z == doctest::Approx(drop_cutter(mould, cutter, xy.x(), xy.y())).epsilon(1e-9).scale(1));
+    }
+  }
 }
 
 TEST_CASE("contact from tip: a flat bottom rests on the dome's top") {
