@@ -21,5 +21,7 @@ struct Command {
 };
 
 extern const Command kInfoCommand;
+extern const Command kGougeCommand;
+extern const Command kSelectToolCommand;
 
 }  // namespace furrow::cli

@@ -15,6 +15,8 @@ using furrow::cli::Command;
 
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
+    &furrow::cli::kGougeCommand,
+    &furrow::cli::kSelectToolCommand,
 };
 
 const Command* find_command(const std::string& name) {
