@@ -42,17 +42,17 @@ int run_gouge(Args& args) {
 
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
-  std::vector<ContactSite> sites;
-  if (points_path) {
-    PointSiteOptions site_options;
-    site_options.max_distance = max_distance;
-    sites = sites_from_points(part, read_contact_points(*points_path, units), *points_path, site_options);
-  } else {
-    sites = grid_sites(part, static_cast<int>(grid));
-  }
+  PointSiteOptions site_options;
+  site_options.max_distance = max_distance;
+  const std::vector<ContactSite> sites = load_contact_sites(
+      part, points_path.value_or(""), units, static_cast<int>(grid), site_options);
 
   GougeScanOptions options;
   options.gouge.curvature_tolerance = tolerance;
+  // Every point gets its exact largest excess (the margin where it is
+  // negative); the quick path would give only a bound, and evaluating the
+  // surface costs far more than the comparison anyway.
+  options.gouge.quick_accept = false;
   const bool show_progress = ::isatty(2) && sites.size() > 50000;
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (show_progress) std::cerr << "\rgouge: " << (100 * done / total) << "%" << std::flush;

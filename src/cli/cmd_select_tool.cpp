@@ -41,14 +41,10 @@ int run_select_tool(Args& args) {
   const Part part = read_part(part_path);
   std::vector<Cutter> library;
   for (const ToolSpec& spec : read_tool_library(library_path)) library.emplace_back(spec);
-  std::vector<ContactSite> sites;
-  if (points_path) {
-    PointSiteOptions site_options;
-    site_options.max_distance = max_distance;
-    sites = sites_from_points(part, read_contact_points(*points_path, units), *points_path, site_options);
-  } else {
-    sites = grid_sites(part, static_cast<int>(grid));
-  }
+  PointSiteOptions site_options;
+  site_options.max_distance = max_distance;
+  const std::vector<ContactSite> sites = load_contact_sites(
+      part, points_path.value_or(""), units, static_cast<int>(grid), site_options);
 
   ToolSelectionOptions options;
   options.scan.gouge.curvature_tolerance = tolerance;

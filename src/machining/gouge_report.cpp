@@ -48,8 +48,9 @@ json point_json(const Part& part, const GougePoint& p) {
   j["contact_normal"] = sj::rounded(g.cutter.normal, sj::kUnitQuantum, "normal");
   j["tip"] = sj::rounded(p.tip, sj::kLengthQuantum, "tip");
   j["cutter"] = cutter_json(g);
-  j["quick"] = g.quick;
-  if (!g.quick) {
+  if (g.quick) {
+    j["max_excess_bound"] = sj::rounded(g.max_excess, sj::kCurvatureQuantum, "excess");
+  } else {
     j["max_excess"] = sj::rounded(g.max_excess, sj::kCurvatureQuantum, "excess");
     j["max_excess_angle_deg"] = sj::rounded(g.max_excess_angle * kRadToDeg, sj::kAngleQuantum, "angle");
   }

@@ -83,8 +83,10 @@ TEST_CASE("furrow gouge on the mould with a bull-nose: every point carries the i
   const json doc = json::parse(slurp(dir + "/g.json"));
   int gouging = 0;
   for (const json& p : doc["points"]) {
-    for (const char* key : {"position", "normal", "k1", "k2", "cutter", "tip", "gouge_ranges_deg", "status"})
+    for (const char* key : {"position", "normal", "k1", "k2", "cutter", "tip", "gouge_ranges_deg", "status", "max_excess"})
       REQUIRE(p.contains(key));
+    // Exact excess everywhere: a gouge exactly where it exceeds the tolerance.
+    CHECK((p["status"] == "gouge") == (p["max_excess"].get<double>() > 1e-6));
     CHECK(p["cutter"]["k_max"].get<double>() == doctest::Approx(0.5));  // 1 / corner radius
     const double k_min = p["cutter"]["k_min"].get<double>();
     const double s = std::sin(p["cutter"]["contact_angle_deg"].get<double>() * M_PI / 180);
