@@ -15,7 +15,7 @@ namespace furrow::cli {
 
 namespace {
 
-constexpr long kMaxGrid = 400;
+constexpr long kMaxGrid = 250;  // 62 500 points per face: the JSON lists every one
 
 int run_gouge(Args& args) {
   const std::string tool_path = args.required_option("tool");
@@ -92,7 +92,7 @@ const Command kGougeCommand = {
     "  --points cc.csv   contact points x,y,z[,nx,ny,nz] (on the part, within\n"
     "                    --max-distance); n_z <= 0 is an error\n"
     "  --grid N          instead: N x N nodes per face, edges included (default 50,\n"
-    "                    at most 400); points facing down are listed as unreachable\n"
+    "                    at most 250); points facing down are listed as unreachable\n"
     "  --out FILE        the gouge JSON (required)\n"
     "  --map FILE        a PNG map of gouge-prone areas over each face's uv domain\n"
     "  --tolerance K     curvature excess that counts as a gouge, 1/mm (default 1e-6;\n"

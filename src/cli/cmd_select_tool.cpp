@@ -15,7 +15,7 @@ namespace furrow::cli {
 
 namespace {
 
-constexpr long kMaxGrid = 400;
+constexpr long kMaxGrid = 200;  // every site checks every tool, with interference
 
 int run_select_tool(Args& args) {
   const std::string library_path = args.required_option("library");
@@ -84,7 +84,7 @@ const Command kSelectToolCommand = {
     "\n"
     "  --library FILE    the tool library (required)\n"
     "  --points cc.csv   contact points x,y,z[,nx,ny,nz] (see furrow gouge)\n"
-    "  --grid N          instead: N x N nodes per face (default 30, at most 400)\n"
+    "  --grid N          instead: N x N nodes per face (default 30, at most 200)\n"
     "  --out FILE        the selection as JSON (a summary is always printed)\n"
     "  --tolerance K     curvature excess that counts as a gouge, 1/mm (default 1e-6)\n"
     "  --local-only      skip the interference check away from the contact\n"

@@ -10,6 +10,7 @@
 // and a check combines at most two surfaces times two cutter pieces
 // (compound_border.hpp, cutter_curvature.hpp), normalising in between.
 // Exceeding the capacity is a programming error (std::logic_error).
+#include <cmath>
 #include <cstddef>
 
 namespace furrow {
@@ -21,6 +22,9 @@ struct AngularRange {
   double width;  // [rad], in [0, 2 pi]
   double end() const { return start + width; }  // may exceed 2 pi
   bool contains(double angle) const;            // any angle; wraps
+  // The same in degrees, as reports give them.
+  double start_deg() const { return start * (180 / M_PI); }
+  double end_deg() const { return end() * (180 / M_PI); }
 };
 
 // Angle reduced to [0, 2 pi).

@@ -56,8 +56,8 @@ json point_json(const Part& part, const GougePoint& p) {
   }
   json ranges = json::array();
   for (const AngularRange& r : g.ranges)
-    ranges.push_back(json::array({sj::rounded(r.start * kRadToDeg, sj::kAngleQuantum, "range"),
-                                  sj::rounded(r.end() * kRadToDeg, sj::kAngleQuantum, "range")}));
+    ranges.push_back(json::array({sj::rounded(r.start_deg(), sj::kAngleQuantum, "range"),
+                                  sj::rounded(r.end_deg(), sj::kAngleQuantum, "range")}));
   j["gouge_ranges_deg"] = std::move(ranges);
   if (g.gouges())
     j["max_excess_direction"] = sj::rounded(g.direction(g.max_excess_angle), sj::kUnitQuantum, "dir");

@@ -185,7 +185,7 @@ TEST_CASE("bad input to gouge and select-tool: exit 2, one line, no output") {
       {{"gouge", part, "--tool", ball, "--points", dir + "/off.csv", "--grid", "5", "--out", out}, "either --points or --grid"},
       {{"gouge", part, "--out", out}, "--tool is required"},
       {{"gouge", part, "--tool", ball}, "--out is required"},
-      {{"gouge", part, "--tool", ball, "--grid", "1", "--out", out}, "--grid must be between 2 and 400"},
+      {{"gouge", part, "--tool", ball, "--grid", "1", "--out", out}, "--grid must be between 2 and 250"},
       {{"gouge", part, "--tool", ball, "--out", part}, "the output would overwrite the input"},
       {{"select-tool", part, "--library", ball, "--out", out}, "expected a tool library (a JSON array of tools)"},
       {{"select-tool", part, "--library", dir + "/absent.json"}, "absent.json: cannot open the file"},
