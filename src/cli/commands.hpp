@@ -25,5 +25,7 @@ extern const Command kPartitionCommand;
 extern const Command kImportCommand;
 extern const Command kCompareCommand;
 extern const Command kSimulateMeasurementCommand;
+extern const Command kGougeCommand;
+extern const Command kSelectToolCommand;
 
 }  // namespace furrow::cli

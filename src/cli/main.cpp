@@ -20,6 +20,8 @@ const Command* const kCommands[] = {
     &furrow::cli::kImportCommand,
     &furrow::cli::kCompareCommand,
     &furrow::cli::kSimulateMeasurementCommand,
+    &furrow::cli::kGougeCommand,
+    &furrow::cli::kSelectToolCommand,
 };
 
 const Command* find_command(const std::string& name) {
