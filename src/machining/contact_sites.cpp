@@ -42,14 +42,14 @@ std::vector<ContactSite> sites_from_points(const Part& part,
                                            const std::vector<ContactPointRecord>& points,
                                            const std::string& source,
                                            const PointSiteOptions& options) {
-  const PartProjector projector(part, options.projection);
+  const ClosestPointFinder projector(part, options.projection);
   const double cos_limit = std::cos(options.max_normal_deviation_deg * M_PI / 180);
   std::vector<ContactSite> sites;
   sites.reserve(points.size());
   for (const ContactPointRecord& p : points) {
     const std::string where = source + ":" + std::to_string(p.line);
-    const FootPoint foot = projector.project(p.position);
-    if (!foot.found)
+    const ClosestPoint foot = projector.project(p.position);
+    if (!foot.converged)
       throw InputError(where + ": no foot point on the part for " + vec_text(p.position) +
                        " (the projection did not converge)");
     if (foot.distance > options.max_distance) {

@@ -8,7 +8,7 @@
 
 #include "geometry/part.hpp"
 #include "io/contact_point_file.hpp"
-#include "machining/closest_point.hpp"
+#include "geometry/closest_point.hpp"
 
 namespace furrow {
 

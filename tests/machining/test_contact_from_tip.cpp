@@ -4,7 +4,6 @@
 #include <random>
 
 #include "io/part_file.hpp"
-#include "machining/closest_point.hpp"
 #include "machining/contact_from_tip.hpp"
 #include "cutter_reference.hpp"
 #include "support/run_cli.hpp"
@@ -157,30 +156,4 @@ TEST_CASE("contact from tip: a flat bottom rests on the dome's top") {
   const TipContactResult off = finder.find(Eigen::Vector3d(400, 400, 50));
   CHECK(off.status == TipContactStatus::no_contact);
   CHECK(off.contacts.empty());
-}
-
-TEST_CASE("closest point: foot points of points off the mould and the two-face part") {
-  for (const char* file : {"examples/parts/mould.json", "examples/parts/two_face.json"}) {
-    const Part part = read_part(test::source_path(file));
-    const PartProjector projector(part);
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.8, 0.8);
-    for (int k = 0; k < 60; ++k) {
-      CAPTURE(file);
-      const std::size_t f = k % part.faces.size();
-      const Eigen::Vector2d uv(0.05 + 0.9 * unit(rng), 0.05 + 0.9 * unit(rng));
-      const DifferentialGeometry g = part.faces[f].geometry(uv.x(), uv.y());
-      const double d = offset(rng);
-      const FootPoint foot = projector.project(g.point + d * g.normal);
-      REQUIRE(foot.found);
-      CHECK(foot.distance == doctest::Approx(std::abs(d)).epsilon(1e-9).scale(1));
-      CHECK((foot.point - g.point).norm() < 1e-7);
-      CHECK(foot.face == f);
-    }
-    // A point beyond a face edge projects onto the edge.
-    const Eigen::Vector3d corner = part.faces[0].surface().point(0, 0);
-    const FootPoint edge = projector.project(corner + Eigen::Vector3d(-3, -4, 0));
-    REQUIRE(edge.found);
-    CHECK((edge.point - corner).norm() < 1e-6);
-  }
 }
