@@ -1,7 +1,7 @@
 #pragma once
 // A regular sample of a face (points and normals at grid nodes over its
 // parameter rectangle, domain edges included), used to seed the Newton
-// solvers of closest_point.hpp and contact_from_tip.hpp: a seed near the
+// solvers of contact_from_tip.hpp and the border search: a seed near the
 // answer is what makes those iterations converge to the right root.
 #include <Eigen/Core>
 #include <vector>
