@@ -1,0 +1,388 @@
+#include "io/toolpath_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "geometry/error.hpp"
+#include "io/json_fields.hpp"
+#include "io/part_file.hpp"
+
+namespace furrow {
+
+std::size_t Toolpath::point_count() const {
+  std::size_t n = 0;
+  for (const auto& p : passes) n += p.points.size();
+  return n;
+}
+
+std::size_t Toolpath::move_count() const {
+  std::size_t n = 0;
+  for (const auto& p : passes) n += p.points.size() - 1;
+  return n;
+}
+
+namespace {
+
+[[noreturn]] void fail_line(const std::string& name, int line, const std::string& what) {
+  throw InputError(name + ":" + std::to_string(line) + ": " + what);
+}
+
+bool parse_number(const std::string& text, double& out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// ---------------------------------------------------------------- G-code
+
+// Removes comments: "( ... )" anywhere and everything after ';'.
+std::string strip_comments(const std::string& line, const std::string& name, int number) {
+  std::string out;
+  int depth = 0;
+  for (char c : line) {
+    if (c == ';' && depth == 0) break;
+    if (c == '(') {
+      ++depth;
+      continue;
+    }
+    if (c == ')') {
+      if (depth == 0) fail_line(name, number, "')' without a matching '('");
+      --depth;
+      continue;
+    }
+    if (depth == 0) out += c;
+  }
+  if (depth != 0) fail_line(name, number, "comment '(' is not closed on this line");
+  return out;
+}
+
+struct Word {
+  char letter;
+  std::string text;  // number as written
+  double value;
+};
+
+std::vector<Word> split_words(const std::string& code, const std::string& name, int number) {
+  std::vector<Word> words;
+  std::size_t i = 0;
+  while (i < code.size()) {
+    const char c = code[i];
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+      continue;
+    }
+    if (!std::isalpha(static_cast<unsigned char>(c)))
+      fail_line(name, number, std::string("unexpected character '") + c + "'");
+    Word w{static_cast<char>(std::toupper(static_cast<unsigned char>(c))), "", 0.0};
+    ++i;
+    while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
+    while (i < code.size() && (std::isdigit(static_cast<unsigned char>(code[i])) || code[i] == '.' ||
+                               code[i] == '-' || code[i] == '+'))
+      w.text += code[i++];
+    if (!parse_number(w.text, w.value))
+      fail_line(name, number, std::string("word '") + w.letter + w.text + "' has no valid number");
+    words.push_back(w);
+  }
+  return words;
+}
+
+bool is_ignored_g(double g) {
+  static const double kIgnored[] = {17, 40, 49, 54, 55, 56, 57, 58, 59, 61, 64, 80, 94};
+  for (double x : kIgnored)
+    if (g == x) return true;
+  return false;
+}
+
+}  // namespace
+
+Toolpath parse_gcode(const std::string& text, const std::string& name,
+                     const ToolpathReadOptions& options) {
+  Toolpath path;
+  path.kind = ToolpathKind::tool_tips;
+  path.source = name;
+  double scale = units_to_mm(options.units, name + ": units");
+  bool absolute = true;
+  int motion = -1;  // 0 rapid, 1 linear, -1 none yet
+  double feed = 0;
+  double position[3] = {0, 0, 0};
+  bool known[3] = {false, false, false};
+  ToolpathPass current;
+  auto close_pass = [&]() {
+    if (current.points.size() >= 2) path.passes.push_back(std::move(current));
+    current = ToolpathPass{};
+  };
+
+  const std::vector<std::string> lines = split_lines(text);
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int number = static_cast<int>(k) + 1;
+    std::string code = strip_comments(lines[k], name, number);
+    const auto first = code.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    if (code[first] == '%') continue;  // program delimiters
+    const std::vector<Word> words = split_words(code, name, number);
+
+    double target[3];
+    bool axis_given[3] = {false, false, false};
+    bool motion_word = false;
+    for (const Word& w : words) {
+      switch (w.letter) {
+        case 'N':
+        case 'O': break;  // line and program numbers
+        case 'G':
+          if (w.value == 0 || w.value == 1) {
+            motion = static_cast<int>(w.value);
+            motion_word = true;
+          } else if (w.value == 20) {
+            scale = 25.4;
+          } else if (w.value == 21) {
+            scale = 1.0;
+          } else if (w.value == 90) {
+            absolute = true;
+          } else if (w.value == 91) {
+            absolute = false;
+          } else if (is_ignored_g(w.value)) {
+            path.ignored.push_back({number, "G" + w.text});
+          } else {
+            fail_line(name, number, "G" + w.text + " is not supported (only G0, G1, G20, G21, G90, G91 "
+                                    "move the tool here; arcs, compensation and homing would change the "
+                                    "cut)");
+          }
+          break;
+        case 'X':
+        case 'Y':
+        case 'Z': {
+          const int a = w.letter - 'X';
+          if (axis_given[a]) fail_line(name, number, std::string(1, w.letter) + " is given twice");
+          axis_given[a] = true;
+          target[a] = w.value;
+          break;
+        }
+        case 'F':
+          if (!(w.value > 0)) fail_line(name, number, "feed F" + w.text + " must be positive");
+          feed = w.value;
+          break;
+        case 'M':
+        case 'S':
+        case 'T':
+        case 'H':
+        case 'D':
+          path.ignored.push_back({number, std::string(1, w.letter) + w.text});
+          break;
+        default:
+          fail_line(name, number, std::string("word ") + w.letter + w.text +
+                                      " is not supported (no arcs or rotary axes in 3-axis paths)");
+      }
+    }
+    const bool moves = axis_given[0] || axis_given[1] || axis_given[2];
+    if (!moves) {
+      (void)motion_word;
+      continue;
+    }
+    if (motion < 0) fail_line(name, number, "coordinates before any motion mode (G0 or G1)");
+    // Unit and mode changes on this line apply to its own coordinates
+    // (they were read above, in any word order).
+    double next[3];
+    for (int a = 0; a < 3; ++a) {
+      if (!axis_given[a]) {
+        next[a] = position[a];
+        continue;
+      }
+      const double value = target[a] * scale;
+      if (absolute) {
+        next[a] = value;
+      } else {
+        if (!known[a])
+          fail_line(name, number, std::string("relative move in ") + char('X' + a) +
+                                      " before the position is known (give an absolute position first)");
+        next[a] = position[a] + value;
+      }
+    }
+    for (int a = 0; a < 3; ++a) known[a] = known[a] || axis_given[a];
+    if (motion == 1) {
+      if (!(known[0] && known[1] && known[2]))
+        fail_line(name, number, "cutting move before X, Y and Z are all known");
+      if (current.points.empty())
+        current.points.push_back({Eigen::Vector3d(position[0], position[1], position[2]),
+                                  Eigen::Vector3d::Zero(), feed, number});
+      const Eigen::Vector3d p(next[0], next[1], next[2]);
+      if ((p - current.points.back().position).norm() > 0)  // zero-length moves add nothing
+        current.points.push_back({p, Eigen::Vector3d::Zero(), feed, number});
+    } else {
+      close_pass();
+    }
+    for (int a = 0; a < 3; ++a) position[a] = next[a];
+  }
+  close_pass();
+  if (path.passes.empty()) throw InputError(name + ": no cutting moves (G1) in the file");
+  return path;
+}
+
+// ---------------------------------------------------------------- CSV
+
+Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
+                            const ToolpathReadOptions& options) {
+  Toolpath path;
+  path.source = name;
+  const double scale = units_to_mm(options.units, name + ": units");
+  const std::vector<std::string> lines = split_lines(text);
+  std::map<std::string, int> column;  // name -> index, from the header
+  int columns = -1;
+  int pass_column = -1;
+  long last_pass = 0;
+  ToolpathPass current;
+  auto close_pass = [&](int line) {
+    if (current.points.size() == 1)
+      fail_line(name, line, "a pass needs at least 2 points");
+    if (current.points.size() >= 2) path.passes.push_back(std::move(current));
+    current = ToolpathPass{};
+  };
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int number = static_cast<int>(k) + 1;
+    std::string line = lines[k];
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line = line.substr(0, hash);
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    std::string field;
+    while (std::getline(ss, field, ',')) {
+      field.erase(0, field.find_first_not_of(" \t"));
+      field.erase(field.find_last_not_of(" \t") + 1);
+      fields.push_back(field);
+    }
+    const bool blank = std::all_of(fields.begin(), fields.end(), [](const std::string& f) { return f.empty(); });
+    if (blank) {
+      if (pass_column < 0 && !current.points.empty()) close_pass(number);
+      continue;
+    }
+    double probe = 0;
+    if (columns < 0 && !parse_number(fields[0], probe)) {
+      // Header line.
+      for (std::size_t c = 0; c < fields.size(); ++c) {
+        std::string key = fields[c];
+        std::transform(key.begin(), key.end(), key.begin(), [](unsigned char ch) { return std::tolower(ch); });
+        if (column.count(key)) fail_line(name, number, "column \"" + key + "\" appears twice");
+        column[key] = static_cast<int>(c);
+      }
+      for (const char* needed : {"x", "y", "z"})
+        if (!column.count(needed)) fail_line(name, number, std::string("the header has no \"") + needed + "\" column");
+      const int normals = static_cast<int>(column.count("nx") + column.count("ny") + column.count("nz"));
+      if (normals != 0 && normals != 3) fail_line(name, number, "give all of nx, ny, nz or none");
+      path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
+      if (column.count("pass")) pass_column = column["pass"];
+      columns = static_cast<int>(fields.size());
+      continue;
+    }
+    if (columns < 0) {
+      // No header: 3 columns are tips, 6 contact points with normals.
+      if (fields.size() != 3 && fields.size() != 6)
+        fail_line(name, number, "expected 3 columns (x,y,z) or 6 (x,y,z,nx,ny,nz), found " +
+                                    std::to_string(fields.size()));
+      columns = static_cast<int>(fields.size());
+      const char* names[] = {"x", "y", "z", "nx", "ny", "nz"};
+      for (int c = 0; c < columns; ++c) column[names[c]] = c;
+      path.kind = columns == 6 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
+    }
+    if (static_cast<int>(fields.size()) != columns)
+      fail_line(name, number, "expected " + std::to_string(columns) + " columns, found " +
+                                  std::to_string(fields.size()));
+    auto value = [&](const char* key) {
+      double x = 0;
+      const std::string& f = fields[column.at(key)];
+      if (!parse_number(f, x)) fail_line(name, number, std::string(key) + " \"" + f + "\" is not a finite number");
+      return x;
+    };
+    if (pass_column >= 0) {
+      double pv = 0;
+      if (!parse_number(fields[pass_column], pv) || pv != std::floor(pv))
+        fail_line(name, number, "pass \"" + fields[pass_column] + "\" is not a whole number");
+      const long pass = static_cast<long>(pv);
+      if (!current.points.empty() && pass != last_pass) {
+        if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");
+        close_pass(number);
+      }
+      last_pass = pass;
+    }
+    ToolpathPoint p;
+    p.line = number;
+    p.position = scale * Eigen::Vector3d(value("x"), value("y"), value("z"));
+    if (path.kind == ToolpathKind::contact_points) {
+      const Eigen::Vector3d n(value("nx"), value("ny"), value("nz"));
+      if (!(n.norm() > 1e-9)) fail_line(name, number, "the normal (nx, ny, nz) is zero");
+      p.normal = n.normalized();
+    }
+    current.points.push_back(p);
+  }
+  if (!current.points.empty()) close_pass(static_cast<int>(lines.size()));
+  if (path.passes.empty()) throw InputError(name + ": no tool-path points in the file");
+  return path;
+}
+
+Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& options) {
+  const std::string text = json_fields::read_text(path);
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path + ": the file is empty");
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".csv" || ext == ".txt") return parse_toolpath_csv(text, path, options);
+  return parse_gcode(text, path, options);
+}
+
+std::string toolpath_to_gcode(const Toolpath& path, double safe_z, double feed,
+                              const std::string& header_comment) {
+  auto coord = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4f", x);
+    std::string s = buf;
+    if (s == "-0.0000") s = "0.0000";
+    return s;
+  };
+  std::ostringstream out;
+  out << "%\n";
+  std::istringstream comment(header_comment);
+  std::string line;
+  while (std::getline(comment, line)) {
+    std::replace(line.begin(), line.end(), '(', '[');
+    std::replace(line.begin(), line.end(), ')', ']');
+    out << "(" << line << ")\n";
+  }
+  out << "G21 G90 G17\n";
+  char fbuf[32];
+  std::snprintf(fbuf, sizeof fbuf, "%.0f", feed);
+  bool first_move = true;
+  for (const ToolpathPass& pass : path.passes) {
+    const Eigen::Vector3d& s = pass.points.front().position;
+    out << "G0 Z" << coord(safe_z) << "\n";
+    out << "G0 X" << coord(s.x()) << " Y" << coord(s.y()) << "\n";
+    out << "G0 Z" << coord(s.z()) << "\n";
+    for (std::size_t k = 1; k < pass.points.size(); ++k) {
+      const Eigen::Vector3d& p = pass.points[k].position;
+      out << "G1 X" << coord(p.x()) << " Y" << coord(p.y()) << " Z" << coord(p.z());
+      if (first_move) out << " F" << fbuf;
+      first_move = false;
+      out << "\n";
+    }
+  }
+  out << "G0 Z" << coord(safe_z) << "\nM30\n%\n";
+  return out.str();
+}
+
+}  // namespace furrow
