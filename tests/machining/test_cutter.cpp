@@ -1,69 +1,16 @@
 #include <doctest/doctest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <random>
 
 #include "geometry/error.hpp"
 #include "machining/cutter.hpp"
 #include "machining/cutter_curvature.hpp"
+#include "cutter_reference.hpp"
 
 using namespace furrow;
 
-namespace {
-
-// The cutter's corner surface as an explicit surface of revolution, tip at
-// the origin: X(phi, theta) = rho(theta) (cos phi, sin phi, 0) + h(theta) z.
-// Written from the profile description, not from Cutter's code.
-Eigen::Vector3d corner_point(double R, double r, double phi, double theta) {
-  const double rho = (R - r) + r * std::sin(theta);
-  return {rho * std::cos(phi), rho * std::sin(phi), r - r * std::cos(theta)};
-}
-
-struct FdCurvature {
-  double k_max, k_min;
-  Eigen::Vector3d dir_max, dir_min, normal;
-  // Normal curvature in a tangent direction t (from the fundamental forms).
-  Eigen::Matrix2d I, II;
-  Eigen::Vector3d Xp, Xt;
-  double along(const Eigen::Vector3d& t) const {
-    // Express t in (Xp, Xt) coordinates by least squares (t is tangent).
-    Eigen::Matrix<double, 3, 2> J;
-    J << Xp, Xt;
-    const Eigen::Vector2d c = (J.transpose() * J).ldlt().solve(J.transpose() * t);
-    return c.dot(II * c) / c.dot(I * c);
-  }
-};
-
-// Principal curvatures of the corner surface at (phi, theta) by central
-// finite differences, with the part's sign convention: the normal is the
-// part's, i.e. minus the cutter's outward normal (pointing into the cutter).
-FdCurvature fd_curvature(double R, double r, double phi, double theta) {
-  const double h = 1e-4;
-  auto X = [&](double p, double t) { return corner_point(R, r, p, t); };
-  const Eigen::Vector3d Xp = (X(phi + h, theta) - X(phi - h, theta)) / (2 * h);
-  const Eigen::Vector3d Xt = (X(phi, theta + h) - X(phi, theta - h)) / (2 * h);
-  const Eigen::Vector3d Xpp = (X(phi + h, theta) - 2 * X(phi, theta) + X(phi - h, theta)) / (h * h);
-  const Eigen::Vector3d Xtt = (X(phi, theta + h) - 2 * X(phi, theta) + X(phi, theta - h)) / (h * h);
-  const Eigen::Vector3d Xpt = (X(phi + h, theta + h) - X(phi + h, theta - h) - X(phi - h, theta + h) +
-                               X(phi - h, theta - h)) / (4 * h * h);
-  FdCurvature c;
-  Eigen::Vector3d n = Xp.cross(Xt).normalized();
-  if (n.z() < 0) n = -n;  // the part normal points up, into the cutter
-  c.normal = n;
-  c.Xp = Xp;
-  c.Xt = Xt;
-  c.I << Xp.dot(Xp), Xp.dot(Xt), Xp.dot(Xt), Xt.dot(Xt);
-  c.II << Xpp.dot(n), Xpt.dot(n), Xpt.dot(n), Xtt.dot(n);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> eig(c.II, c.I);
-  c.k_min = eig.eigenvalues()(0);
-  c.k_max = eig.eigenvalues()(1);
-  c.dir_min = (eig.eigenvectors()(0, 0) * Xp + eig.eigenvectors()(1, 0) * Xt).normalized();
-  c.dir_max = (eig.eigenvectors()(0, 1) * Xp + eig.eigenvectors()(1, 1) * Xt).normalized();
-  return c;
-}
-
-}  // namespace
+using namespace furrow::test;
 
 TEST_CASE("cutter: ball, flat and bull-nose are values of R and r") {
   CHECK(Cutter("b", 5, 5).type() == ToolType::ball);
@@ -125,7 +72,7 @@ TEST_CASE("cutter curvature: formulas agree with finite differences of the torus
         // cutter (radially outward = -e).
         const Eigen::Vector3d e(std::cos(azimuth), std::sin(azimuth), 0);
         const Eigen::Vector3d n = std::sin(theta0) * e + std::cos(theta0) * Eigen::Vector3d::UnitZ();
-        const FdCurvature fd = fd_curvature(R, r, azimuth + M_PI, theta0);
+        const FdCurvature fd = fd_corner_curvature(R, r, azimuth + M_PI, theta0);
         REQUIRE((fd.normal - n).norm() < 1e-7);
 
         const CutterCurvature c = cutter_curvature(cutter, n);
@@ -139,8 +86,8 @@ TEST_CASE("cutter curvature: formulas agree with finite differences of the torus
         // Directions in part coordinates (up to sign, except at the ball's
         // umbilic where any frame is principal).
         if (r < R) {
-          CHECK(std::abs(c.dir_max.dot(fd.dir_max)) == doctest::Approx(1).epsilon(1e-6));
-          CHECK(std::abs(c.dir_min.dot(fd.dir_min)) == doctest::Approx(1).epsilon(1e-6));
+          CHECK(c.dir_max.dot(fd.dir_max) == doctest::Approx(1).epsilon(1e-6));
+          CHECK(c.dir_min.dot(fd.dir_min) == doctest::Approx(1).epsilon(1e-6));
         }
         CHECK(c.dir_max.dot(n) == doctest::Approx(0).scale(1).epsilon(1e-12));
         CHECK(c.dir_max.cross(c.dir_min).dot(n) == doctest::Approx(1).epsilon(1e-12));
