@@ -69,6 +69,31 @@ EnvelopePoint SweptEnvelope::evaluate(double x, double y) const {
   return result;
 }
 
+void SweptEnvelope::row(double y, double x0, double dx, int n, double* out) const {
+  if (!ball_ || plunge_) {
+    for (int k = 0; k < n; ++k) out[k] = height_at(x0 + k * dx, y);
+    return;
+  }
+  const double radius = cutter_->radius(), r2 = radius * radius;
+  const double wy = y - from_.y(), bx = x0 - from_.x();
+  const double ux = ux_, uy = uy_, travel = travel_, k_rho = dz_over_length_;
+  const double base = from_.z() + radius, slope = slope_;
+  for (int k = 0; k < n; ++k) {
+    const double wx = bx + k * dx;
+    const double t = wx * ux + wy * uy;
+    const double delta = wy * ux - wx * uy;
+    const double rho2 = r2 - delta * delta;
+    const double rho = std::sqrt(rho2 > 0 ? rho2 : 0.0);
+    double sigma = t - k_rho * rho;
+    sigma = sigma < 0 ? 0 : sigma;
+    sigma = sigma > travel ? travel : sigma;
+    const double xc = sigma - t;
+    const double rem = rho2 - xc * xc;
+    const double z = base + sigma * slope - std::sqrt(rem > 0 ? rem : 0.0);
+    out[k] = (rho2 < 0 || rem < 0) ? kInf : z;
+  }
+}
+
 namespace {
 
 // Intersects [lo, hi] with {x : a x + b in [c0, c1]}; false when empty.

@@ -68,6 +68,10 @@ class SweptEnvelope {
   // With the parameter of the lowest position and the search's status.
   EnvelopePoint evaluate(double x, double y) const;
 
+  // z_env at the n points (x0 + k dx, y), k = 0..n-1, into out[k]: the z-map's
+  // inner loop (the ball's closed form runs branch-free, so it vectorises).
+  void row(double y, double x0, double dx, int n, double* out) const;
+
   // The x interval of the shadow on the row y: false when the row misses it.
   bool row_span(double y, double& x_lo, double& x_hi) const;
   // Bounding box of the shadow (the two end discs).
