@@ -21,5 +21,6 @@ struct Command {
 };
 
 extern const Command kInfoCommand;
+extern const Command kPredictCommand;
 
 }  // namespace furrow::cli
