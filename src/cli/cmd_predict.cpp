@@ -59,12 +59,20 @@ void print_summary(std::ostream& out, const Prediction& p) {
   extreme("max overcut: ", s.max_overcut);
   out << "max scallop between passes: " << um(s.max_scallop) << " over " << p.scallops.size() << " pass pairs\n";
   out << "gouge sites (overcut beyond " << um(p.gouge_threshold) << "): " << s.gouge_sites << "\n";
-  for (const GougeSiteRecord& g : p.gouge_sites) {
+  std::vector<const GougeSiteRecord*> deepest;
+  for (const GougeSiteRecord& g : p.gouge_sites) deepest.push_back(&g);
+  std::stable_sort(deepest.begin(), deepest.end(),
+                   [](const GougeSiteRecord* a, const GougeSiteRecord* b) { return a->depth > b->depth; });
+  if (deepest.size() > 10) deepest.resize(10);
+  for (const GougeSiteRecord* site : deepest) {
+    const GougeSiteRecord& g = *site;
     char buf[200];
     std::snprintf(buf, sizeof buf, "  #%d on %s: depth %s, area %.3f mm^2, deepest at (%.3f, %.3f, %.3f)\n", g.id,
                   g.face.c_str(), um(g.depth).c_str(), g.area, g.deepest.xyz.x(), g.deepest.xyz.y(), g.deepest.xyz.z());
     out << buf;
   }
+  if (p.gouge_sites.size() > deepest.size())
+    out << "  ... and " << p.gouge_sites.size() - deepest.size() << " shallower sites (all in the prediction file)\n";
   out << "contact points with local gouging: " << s.local_gouge_points << "\n";
 }
 
@@ -76,7 +84,7 @@ int run_predict(Args& args) {
   const auto regions = args.option("regions");
   PathPredictionOptions options;
   options.tolerance = args.positive_or("tolerance", 0.01);
-  options.gouge_threshold = args.positive_or("gouge-threshold", options.tolerance);
+  options.gouge_threshold = args.positive_or("gouge-threshold", 2 * options.tolerance);
   const auto resolution = args.number("resolution");
   options.map.cell_size = args.positive_or("cell", 1.0);
   const double scale_um = args.positive_or("map-scale", 2000 * options.tolerance);
@@ -147,7 +155,8 @@ const Command kPredictCommand = {
     "  --out FILE            prediction to write (.json, required)\n"
     "  --map FILE            also draw the error map per face (.png, colour scale in um)\n"
     "  --tolerance MM        steps are compared with it (default 0.01)\n"
-    "  --gouge-threshold MM  overcut deeper than this is a gouge site (default: the tolerance)\n"
+    "  --gouge-threshold MM  overcut deeper than this is a gouge site (default: twice the\n"
+    "                        tolerance; a path planned to the tolerance overcuts up to it)\n"
     "  --resolution MM       z-map node spacing (default from the tool and tolerance:\n"
     "                        a tenth of the flat side step whose scallop is the\n"
     "                        tolerance, rounded to 1/2/5; ball 6 mm at 0.01: 0.05)\n"

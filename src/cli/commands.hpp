@@ -22,5 +22,6 @@ struct Command {
 
 extern const Command kInfoCommand;
 extern const Command kPredictCommand;
+extern const Command kToolpathCommand;
 
 }  // namespace furrow::cli

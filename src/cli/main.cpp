@@ -15,6 +15,7 @@ using furrow::cli::Command;
 
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
+    &furrow::cli::kToolpathCommand,
     &furrow::cli::kPredictCommand,
 };
 

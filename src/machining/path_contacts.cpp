@@ -109,7 +109,7 @@ PathGeometry locate_path(const Part& part, const Cutter& cutter, const Toolpath&
       ++geometry.points;
       geometry.without_contact += !p.contact.valid;
       geometry.in_air += p.in_air;
-      if (p.contact.valid && p.gap < -1e-6) {
+      if (p.contact.valid && p.gap < -options.below_margin) {
         ++geometry.below_surface;
         geometry.lowest_gap = std::min(geometry.lowest_gap, p.gap);
       }

@@ -32,6 +32,10 @@ struct PathContactOptions {
   ClosestPointOptions projection;
   double max_contact_distance = 0.01;  // [mm]
   double air_gap = 1.0;                // [mm]
+  // A tip lower than this under its resting position counts as below the
+  // surface [mm]: G-code coordinates have 4 decimals, so a tip written from
+  // an exact cutter location may sit up to 0.05 um off it per axis.
+  double below_margin = 1e-4;
   CutterLocationOptions location;
 };
 
@@ -46,7 +50,7 @@ struct PathPoint {
 struct PathGeometry {
   std::vector<std::vector<PathPoint>> passes;
   std::size_t points = 0, without_contact = 0, in_air = 0;
-  std::size_t below_surface = 0;  // tips with gap < -1e-6 mm
+  std::size_t below_surface = 0;  // tips with gap < -below_margin
   double lowest_gap = 0;          // [mm] most negative gap (0 when none)
 };
 

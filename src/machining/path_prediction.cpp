@@ -40,7 +40,7 @@ PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpa
     throw InputError("predict: the gouge threshold must not be negative");
   PathPrediction r;
   r.resolution = options.resolution > 0 ? options.resolution : default_zmap_resolution(cutter, options.tolerance);
-  r.gouge_threshold = options.gouge_threshold > 0 ? options.gouge_threshold : options.tolerance;
+  r.gouge_threshold = options.gouge_threshold > 0 ? options.gouge_threshold : 2 * options.tolerance;
 
   r.geometry = locate_path(part, cutter, path, options.contacts, stage(progress, "locating path"));
   const VerticalProjector projector(part);
@@ -106,8 +106,7 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
       rec.chord_deviation = st.chord.deviation;
       const double magnitude = st.error.magnitude();
       s.max_step_error = std::max(s.max_step_error, magnitude);
-      // An explicit margin: a step planned to the tolerance ties with it.
-      if (magnitude > options.tolerance * (1 + 1e-9)) ++s.steps_over_tolerance;
+      if (magnitude > options.tolerance + options.comparison_margin) ++s.steps_over_tolerance;
     }
     p.steps.push_back(rec);
   }

@@ -21,7 +21,14 @@ namespace furrow {
 
 struct PathPredictionOptions {
   double tolerance = 0.01;     // [mm] steps are compared with it
-  double gouge_threshold = 0;  // [mm] overcut deeper than this is a gouge site; 0: the tolerance
+  // Overcut deeper than this is a gouge site [mm]; 0: twice the tolerance (a
+  // path planned to the tolerance overcuts up to it by design on convex
+  // stretches, and a little more where its passes meet in a saddle).
+  double gouge_threshold = 0;
+  // Errors exceed the tolerance only by more than this [mm]: a step planned
+  // to the tolerance ties with it, and the 4-decimal G-code moves a tip by
+  // up to 0.05 um per axis.
+  double comparison_margin = 1e-4;
   double resolution = 0;       // [mm] z-map node spacing; 0: default_zmap_resolution()
   PathContactOptions contacts;
   FurrowStepOptions step;
