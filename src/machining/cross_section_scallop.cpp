@@ -35,10 +35,11 @@ struct Section {
   }
 };
 
-// Tip of the cutter touching at p with normal n; `away` is the side (+-1) to
-// put the axis on at a horizontal contact.
-Eigen::Vector2d tip_at(const Cutter& c, const Eigen::Vector2d& p, const Eigen::Vector2d& n, double away) {
-  const double side = std::fabs(n.x()) > 1e-12 ? (n.x() > 0 ? 1.0 : -1.0) : away;
+// Tip of the cutter touching at p with normal n (cutter_location.hpp in the
+// plane); at a horizontal contact the axis goes to +x, the same side for
+// both passes, as cutter_location's fixed horizontal side does.
+Eigen::Vector2d tip_at(const Cutter& c, const Eigen::Vector2d& p, const Eigen::Vector2d& n) {
+  const double side = std::fabs(n.x()) > 1e-12 ? (n.x() > 0 ? 1.0 : -1.0) : 1.0;
   return p + c.corner_radius() * n + Eigen::Vector2d(c.flat_radius() * side, -c.corner_radius());
 }
 
@@ -53,7 +54,7 @@ std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, doub
   s.at(-0.5 * w, pa, na);
   s.at(0.5 * w, pb, nb);
   if (!(na.y() > 0) || !(nb.y() > 0)) return std::nullopt;
-  const Eigen::Vector2d ta = tip_at(cutter, pa, na, -1), tb = tip_at(cutter, pb, nb, +1);
+  const Eigen::Vector2d ta = tip_at(cutter, pa, na), tb = tip_at(cutter, pb, nb);
   const double R = cutter.radius();
   auto envelope = [&](double x, double) {
     const double da = std::fabs(x - ta.x()), db = std::fabs(x - tb.x());
@@ -80,7 +81,35 @@ std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, doub
     if (e > best) best = e, best_k = i;
   }
   if (!ridge) return std::nullopt;  // the two cutters leave a gap between them
-  const double lo = -0.5 * w + w * std::max(best_k - 1, 0) / n, hi = -0.5 * w + w * std::min(best_k + 1, n) / n;
+  double centre = -0.5 * w + w * best_k / n;
+  // The ridge is where the two envelopes cross; it can be narrower than the
+  // samples (a bull-nose's flat bottoms leave only a sliver): find it
+  // directly and refine around it if it beats the samples.
+  if (ta.x() < tb.x()) {
+    auto diff = [&](double x) {
+      const double za = ta.y() + cutter.height_at(std::min(std::fabs(x - ta.x()), R));
+      const double zb = tb.y() + cutter.height_at(std::min(std::fabs(x - tb.x()), R));
+      return za - zb;
+    };
+    double lo = ta.x(), hi = tb.x();
+    if (diff(lo) <= 0 && diff(hi) >= 0) {
+      for (int it = 0; it < 200 && hi - lo > 1e-12 * R; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (diff(mid) <= 0 ? lo : hi) = mid;
+      }
+      double a = -0.5 * w, b = 0.5 * w;  // the arc point under the ridge (x grows along the arc)
+      for (int it = 0; it < 200 && b - a > 1e-12 * w; ++it) {
+        const double mid = 0.5 * (a + b);
+        Eigen::Vector2d p, nn;
+        s.at(mid, p, nn);
+        (p.x() < lo ? a : b) = mid;
+      }
+      const double e = error(0.5 * (a + b));
+      if (e > best) best = e, centre = 0.5 * (a + b);
+    }
+  }
+  const double h = w / n;
+  const double lo = std::max(-0.5 * w, centre - h), hi = std::min(0.5 * w, centre + h);
   const ScalarSearchResult r = minimize_unimodal([&](double sigma) { return -error(sigma); }, lo, hi,
                                                  {options.ridge_tolerance, 100});
   return std::max(best, -r.value);

@@ -8,8 +8,9 @@
 // `tilt` from the vertical within the cross-section; the two contact points
 // lie an arc w apart, symmetric about the middle. Each cutter is located at
 // its contact (cutter_location.hpp in the plane; at a horizontal contact of
-// a flat-bottomed cutter the axis is placed away from the other pass, the
-// conservative choice), its lower envelope in the plane is
+// a flat-bottomed cutter both axes go to the same side, as
+// cutter_location's fixed horizontal side puts them), its lower envelope in
+// the plane is
 // tip.z + height_at(|x - tip.x|), and the scallop is the largest error
 // (normal_error.hpp) of the arc between the contacts under the lower of the
 // two envelopes.
