@@ -95,36 +95,68 @@ std::vector<Interval> usable_intervals(const Family& f, double level, double min
   return result;
 }
 
-// Smallest level increment, over the usable samples of the pass at `level`,
-// that keeps the scallop at the target; +inf when no sample is usable.
-double side_step(const Family& f, const Cutter& cutter, double level, const ContactPlanOptions& o) {
-  const PassCurve c = f.pass(level, f.t0, f.t1);
+// The side step w (arc across the pass) at a surface point whose pass runs
+// along `along`, and the across direction.
+double side_step_at(const Family& f, const Cutter& cutter, const SurfacePoint& p, const ContactPlanOptions& o,
+                    double flat_w, Eigen::Vector3d& across) {
+  const Face& face = f.part->faces[p.face];
+  const DifferentialGeometry g = face.geometry(p.uv.x(), p.uv.y());
+  if (g.degenerate) return kInf;
+  Eigen::Vector3d along;
+  if (f.face >= 0) {
+    const SurfaceDerivatives sd = face.surface().evaluate(p.uv.x(), p.uv.y(), 1);
+    along = (f.along_u ? sd.Su : sd.Sv).normalized();
+  } else {
+    along = Eigen::Vector3d(f.m.x(), f.m.y(), 0).cross(g.normal).normalized();
+    if (along.head<2>().dot(f.d) < 0) along = -along;
+  }
+  across = g.normal.cross(along);
+  const double k_across = g.normal_curvature(across);
+  const Eigen::Vector2d across_h = across.head<2>();
+  const double tilt =
+      across_h.norm() > 1e-12 ? std::atan2(g.normal.head<2>().dot(across_h.normalized()), g.normal.z()) : 0.0;
+  const SideStepResult s = cutter_side_step_for_scallop(cutter, k_across, tilt, o.scallop, o.cross_section);
+  return s.feasible && s.side_step > 0 ? s.side_step : flat_w;
+}
+
+// Level increment from `level` to the next pass that keeps the scallop at
+// the target at every usable sample: the side step from the curvature at
+// both passes (`probe` is the candidate next level; NaN: this pass only),
+// converted with the surface's mean rate across between them (the arc
+// length across). +inf when no sample is usable.
+double side_step(const Family& f, const Cutter& cutter, double level, double probe, const ContactPlanOptions& o) {
+  const PassCurve here = f.pass(level, f.t0, f.t1);
+  const bool two = std::isfinite(probe);
+  const PassCurve there = f.pass(two ? probe : level, f.t0, f.t1);
   const double flat_w = cutter_side_step_for_scallop(cutter, 0.0, 0.0, o.scallop, o.cross_section).side_step;
   double best = kInf;
   for (int k = 0; k <= f.samples; ++k) {
-    const SurfacePoint p = c.at(f.t(k));
+    const SurfacePoint p = here.at(f.t(k));
     if (!usable(*f.part, p, o.min_normal_z)) continue;
-    const Face& face = f.part->faces[p.face];
-    const DifferentialGeometry g = face.geometry(p.uv.x(), p.uv.y());
-    if (g.degenerate) continue;
-    const SurfaceDerivatives sd = face.surface().evaluate(p.uv.x(), p.uv.y(), 1);
-    Eigen::Vector3d along;
-    if (f.face >= 0) {
-      along = (f.along_u ? sd.Su : sd.Sv).normalized();
-    } else {
-      along = Eigen::Vector3d(f.m.x(), f.m.y(), 0).cross(g.normal).normalized();
-      if (along.head<2>().dot(f.d) < 0) along = -along;
+    Eigen::Vector3d across;
+    double w = side_step_at(f, cutter, p, o, flat_w, across);
+    if (!std::isfinite(w)) continue;
+    if (two) {
+      const SurfacePoint q = there.at(f.t(k));
+      Eigen::Vector3d unused;
+      if (usable(*f.part, q, o.min_normal_z)) w = std::min(w, side_step_at(f, cutter, q, o, flat_w, unused));
     }
-    const Eigen::Vector3d across = g.normal.cross(along);
-    const double k_across = g.normal_curvature(across);
-    const Eigen::Vector2d across_h = across.head<2>();
-    const double tilt = across_h.norm() > 1e-12 ? std::atan2(g.normal.head<2>().dot(across_h.normalized()), g.normal.z())
-                                                : 0.0;
-    const SideStepResult s = cutter_side_step_for_scallop(cutter, k_across, tilt, o.scallop, o.cross_section);
-    const double w = s.feasible && s.side_step > 0 ? s.side_step : flat_w;
     double rate;  // level units per mm across
     if (f.face >= 0) {
-      const double speed = std::fabs((f.along_u ? sd.Sv : sd.Su).dot(across));
+      // Mean rate between the two passes (composite midpoint rule: the
+      // surface's speed may change slope at a knot between them).
+      constexpr int kPieces = 8;
+      const double span = two ? probe - level : 0.0;
+      double speed = 0;
+      for (int piece = 0; piece < kPieces; ++piece) {
+        const double l = level + span * (piece + 0.5) / kPieces;
+        const Eigen::Vector2d uv = f.along_u ? Eigen::Vector2d(p.uv.x(), l) : Eigen::Vector2d(l, p.uv.y());
+        const SurfaceDerivatives sd = f.part->faces[p.face].surface().evaluate(uv.x(), uv.y(), 1);
+        // The level derivative's part perpendicular to the pass direction.
+        const Eigen::Vector3d along = (f.along_u ? sd.Su : sd.Sv).normalized();
+        const Eigen::Vector3d level_dir = f.along_u ? sd.Sv : sd.Su;
+        speed += (level_dir - level_dir.dot(along) * along).norm() / kPieces;
+      }
       if (!(speed > 1e-12)) continue;
       rate = 1 / speed;
     } else {
@@ -203,11 +235,14 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
         piece_face.push_back(f.face);
       }
       if (level >= f.level1) break;
-      double step = side_step(f, cutter, level, options);
+      // From this pass alone, then twice from both passes (the next one may
+      // be tighter, and the rate across is taken between them).
+      double step = side_step(f, cutter, level, NAN, options);
       if (!std::isfinite(step)) step = fallback;
-      const double next = std::min(f.level1, level + step);
-      const double again = side_step(f, cutter, next, options);  // the next pass may be tighter
-      if (std::isfinite(again)) step = std::min(step, again);
+      for (int it = 0; it < 2; ++it) {
+        const double again = side_step(f, cutter, level, std::min(f.level1, level + step), options);
+        if (std::isfinite(again)) step = again;
+      }
       step = std::max(step, 1e-9 * std::max(span, 1.0));
       level = std::min(f.level1, level + step);
     }

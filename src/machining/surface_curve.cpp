@@ -13,6 +13,7 @@ SurfaceCurve iso_parametric_curve(const Part& part, int face, const Eigen::Vecto
 
 SurfaceCurve vertical_section_curve(const VerticalProjector& projector, const SurfacePoint& from,
                                     const SurfacePoint& to) {
+  if (!from.valid || !to.valid) return [](double) { return SurfacePoint{}; };
   const Eigen::Vector2d a = from.point.head<2>(), b = to.point.head<2>();
   if ((b - a).norm() < 1e-9 && from.face == to.face)
     return iso_parametric_curve(projector.part(), from.face, from.uv, to.uv);

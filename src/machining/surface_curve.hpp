@@ -25,7 +25,8 @@ using SurfaceCurve = std::function<SurfacePoint(double lambda)>;
 SurfaceCurve iso_parametric_curve(const Part& part, int face, const Eigen::Vector2d& uv0,
                                   const Eigen::Vector2d& uv1);
 
-// Between two valid surface points. Falls back to the iso-parametric line
+// Between two surface points (an invalid one gives a curve of invalid
+// samples). Falls back to the iso-parametric line
 // when the two points are (almost) vertically above each other on one face.
 // The projector must outlive the curve.
 SurfaceCurve vertical_section_curve(const VerticalProjector& projector, const SurfacePoint& from,
