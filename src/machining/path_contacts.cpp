@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <sstream>
 
@@ -109,7 +110,7 @@ PathGeometry locate_path(const Part& part, const Cutter& cutter, const Toolpath&
       ++geometry.points;
       geometry.without_contact += !p.contact.valid;
       geometry.in_air += p.in_air;
-      if (p.contact.valid && p.gap < -options.below_margin) {
+      if (p.contact.valid && p.gap < -options.below_margin / std::max(p.contact.at.normal.z(), 0.05)) {
         ++geometry.below_surface;
         geometry.lowest_gap = std::min(geometry.lowest_gap, p.gap);
       }

@@ -33,8 +33,10 @@ struct PathContactOptions {
   double max_contact_distance = 0.01;  // [mm]
   double air_gap = 1.0;                // [mm]
   // A tip lower than this under its resting position counts as below the
-  // surface [mm]: G-code coordinates have 4 decimals, so a tip written from
-  // an exact cutter location may sit up to 0.05 um off it per axis.
+  // surface [mm], divided by the contact's n_z (the gap is vertical, and a
+  // horizontal offset on a slope shows as a vertical one): G-code
+  // coordinates have 4 decimals, so a tip written from an exact cutter
+  // location may sit up to 0.05 um off it per axis.
   double below_margin = 1e-4;
   CutterLocationOptions location;
 };
@@ -50,7 +52,7 @@ struct PathPoint {
 struct PathGeometry {
   std::vector<std::vector<PathPoint>> passes;
   std::size_t points = 0, without_contact = 0, in_air = 0;
-  std::size_t below_surface = 0;  // tips with gap < -below_margin
+  std::size_t below_surface = 0;  // tips with gap < -below_margin / n_z
   double lowest_gap = 0;          // [mm] most negative gap (0 when none)
 };
 

@@ -48,7 +48,14 @@ PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpa
 
   // The z-map covers the part and every move's shadow on it.
   r.zmap.emplace(part_xy_extent(part), r.resolution, options.zmap);
-  r.zmap->cut(cutter, moves_from_toolpath(path), stage(progress, "z-map"));
+  // The moves run between the located tips: for contact-point input these
+  // are the cutter locations, not the file's positions.
+  std::vector<ZMapMove> moves;
+  for (std::size_t p = 0; p < r.geometry.passes.size(); ++p)
+    for (std::size_t k = 1; k < r.geometry.passes[p].size(); ++k)
+      moves.push_back({r.geometry.passes[p][k - 1].tip, r.geometry.passes[p][k].tip, static_cast<int>(p),
+                       static_cast<int>(k - 1)});
+  r.zmap->cut(cutter, moves, stage(progress, "z-map"));
   r.map = compute_error_map(part, *r.zmap, options.map, stage(progress, "error map"));
   r.scallops = pass_pair_scallops(projector, *r.zmap, cutter.diameter(), path_contacts(r.geometry), options.scallops);
   r.sites = find_gouge_sites(part, *r.zmap, r.map, {r.gouge_threshold}, options.map);
