@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake
   libeigen3-dev libceres-dev libpcl-dev libopencv-dev nlohmann-json3-dev doctest-dev
-  libocct-data-exchange-dev libocct-modeling-algorithms-dev mpi-default-dev
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev mpi-default-dev libssl-dev
 )
 
 missing=()

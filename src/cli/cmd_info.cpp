@@ -93,7 +93,7 @@ const Command kInfoCommand = {
     "info", "describe a part: faces, extent, curvature ranges, class shares",
     "usage: furrow info PART [--json] [--grid N] [--eps K] [--out FILE]\n"
     "\n"
-    "Lists each face of PART (part JSON, or STEP/IGES when CAD import is built):\n"
+    "Lists each face of PART (part JSON, STEP or IGES) with its original surface type:\n"
     "degrees, control net, parameter domain, extent, area, the sampled ranges of\n"
     "K, H, k1, k2 and the share of convex/concave/saddle/planar area.\n"
     "\n"

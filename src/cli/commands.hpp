@@ -21,6 +21,8 @@ struct Command {
 };
 
 extern const Command kInfoCommand;
+extern const Command kPartitionCommand;
+extern const Command kImportCommand;
 extern const Command kPredictCommand;
 extern const Command kToolpathCommand;
 

@@ -15,6 +15,8 @@ using furrow::cli::Command;
 
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
+    &furrow::cli::kPartitionCommand,
+    &furrow::cli::kImportCommand,
     &furrow::cli::kToolpathCommand,
     &furrow::cli::kPredictCommand,
 };

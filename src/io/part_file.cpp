@@ -1,11 +1,8 @@
 #include "io/part_file.hpp"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
 #include "geometry/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/cad_import.hpp"
 #include "io/json_fields.hpp"
 
 namespace furrow {
@@ -108,11 +105,7 @@ Part read_part_json(const std::string& path) {
 }
 
 Part read_part(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs")
-    throw InputError(path + ": STEP/IGES import is not part of this build; convert the part to "
-                            "Furrow's part JSON");
+  if (is_cad_file(path)) return import_cad(path).part;
   return read_part_json(path);
 }
 

@@ -15,7 +15,8 @@
 namespace furrow {
 
 // Reads a part from any supported file: .json natively, CAD files (.step,
-// .stp, .iges, .igs) through the CAD importer when it is built in.
+// .stp, .iges, .igs) through the CAD importer with its default options
+// (cad_import.hpp).
 Part read_part(const std::string& path);
 
 Part read_part_json(const std::string& path);

@@ -1,5 +1,6 @@
 #include "partition/curvature_field.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "geometry/error.hpp"
@@ -41,6 +42,8 @@ CurvatureField compute_curvature_field(const Face& face, int nu, int nv) {
       s.k1 = g.k1;
       s.k2 = g.k2;
       s.area = g.area_element * cell;
+      s.length_u = std::sqrt(g.E) * field.du();
+      s.length_v = std::sqrt(g.G) * field.dv();
     }
   }
   return field;

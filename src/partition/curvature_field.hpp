@@ -24,6 +24,9 @@ struct CurvatureSample {
   Eigen::Vector3d d2 = Eigen::Vector3d::UnitY();
   double K = 0, H = 0, k1 = 0, k2 = 0;
   double area = 0;  // mm^2 of the cell (0 unless valid)
+  // Side lengths of the cell on the surface [mm]: |Su| du and |Sv| dv at the
+  // centre (0 unless valid). They weigh shared borders when regions merge.
+  double length_u = 0, length_v = 0;
   SampleStatus status = SampleStatus::trimmed;
   bool valid() const { return status == SampleStatus::valid; }
 };

@@ -1,0 +1,135 @@
+// Benchmark: importing a 150-face STEP part (issue target: under 2 s).
+//
+// The part is built here with OpenCASCADE: a 250 x 190 x 20 mm plate with 36
+// cylindrical bosses, 36 through-holes and 36 spherical dimples (6 + 72 + 36 +
+// 36 = 150 faces: planes with 108 circular trim loops, cylinders, spheres),
+// written to STEP (and IGES), then imported with the default options. Prints
+// the median wall time of several imports, OpenCASCADE's own share (reading
+// and translating the file without converting anything), and the trim sizes.
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <IGESControl_Writer.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/cad_import.hpp"
+
+namespace {
+
+TopoDS_Shape make_plate() {
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(250, 190, 20).Shape();
+  TopTools_ListOfShape plate_list, cutters, bosses;
+  plate_list.Append(plate);
+  int k = 0;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 9; ++j, ++k) {
+      const double x = 15 + 20 * i, y = 15 + 20 * j;
+      if (k % 3 == 0)
+        bosses.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, 20), gp::DZ()), 5, 10).Shape());
+      else if (k % 3 == 1)
+        cutters.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, -1), gp::DZ()), 4, 22).Shape());
+      else
+        cutters.Append(BRepPrimAPI_MakeSphere(gp_Pnt(x, y, 23), 6).Shape());
+    }
+  BRepAlgoAPI_Cut cut;
+  cut.SetArguments(plate_list);
+  cut.SetTools(cutters);
+  cut.Build();
+  TopTools_ListOfShape cut_list;
+  cut_list.Append(cut.Shape());
+  BRepAlgoAPI_Fuse fuse;
+  fuse.SetArguments(cut_list);
+  fuse.SetTools(bosses);
+  fuse.Build();
+  return fuse.Shape();
+}
+
+double median_seconds(int runs, const std::function<void()>& work) {
+  std::vector<double> times;
+  for (int r = 0; r < runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    work();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+}  // namespace
+
+int main() {
+  Message::DefaultMessenger()->ChangePrinters().Clear();
+  const std::string dir = (std::filesystem::temp_directory_path() / "furrow_bench_cad_import").string();
+  std::filesystem::create_directories(dir);
+  const std::string step = dir + "/plate.step", iges = dir + "/plate.igs";
+
+  const TopoDS_Shape part = make_plate();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(part, TopAbs_FACE, faces);
+  STEPControl_Writer writer;
+  writer.Transfer(part, STEPControl_AsIs);
+  writer.Write(step.c_str());
+  IGESControl_Writer iges_writer("MM", 0);
+  iges_writer.AddShape(part);
+  iges_writer.ComputeModel();
+  iges_writer.Write(iges.c_str());
+  std::printf("part: %d faces (plate with 36 bosses, 36 holes, 36 dimples), STEP %.1f MB\n",
+              faces.Extent(), std::filesystem::file_size(step) / 1e6);
+
+  const int runs = 5;
+  furrow::CadImportResult result;
+  const double t_step = median_seconds(runs, [&] { result = furrow::import_cad(step); });
+  std::map<std::string, int> types;
+  long vertices = 0;
+  int trimmed = 0, exact = 0;
+  double worst_trim = 0, worst_deviation = 0;
+  for (const auto& f : result.faces) {
+    ++types[f.source_type];
+    vertices += f.trim_vertices;
+    trimmed += f.loops > 0;
+    exact += f.exact;
+    worst_trim = std::max(worst_trim, f.trim_deviation);
+    worst_deviation = std::max(worst_deviation, f.deviation);
+  }
+  std::printf("import STEP: %zu faces in %.3f s (median of %d; target < 2 s)\n", result.part.faces.size(),
+              t_step, runs);
+  std::printf("  types:");
+  for (const auto& [type, count] : types) std::printf(" %s %d", type.c_str(), count);
+  std::printf("\n  %d exact, largest conversion deviation %.2g mm\n", exact, worst_deviation);
+  std::printf("  %d trimmed faces, %ld trim vertices, largest trim deviation %.2g mm (tolerance %.0e)\n",
+              trimmed, vertices, worst_trim, furrow::CadImportOptions().trim_chord_tolerance);
+
+  const double t_occt = median_seconds(runs, [&] {
+    STEPControl_Reader reader;
+    reader.ReadFile(step.c_str());
+    reader.TransferRoots();
+  });
+  std::printf("  of which OpenCASCADE reading and translating the STEP file: %.3f s\n", t_occt);
+
+  furrow::CadImportOptions fine;
+  fine.trim_chord_tolerance = 1e-6;
+  const double t_fine = median_seconds(runs, [&] { furrow::import_cad(step, fine); });
+  std::printf("  with trim tolerance 1e-6 mm instead: %.3f s\n", t_fine);
+
+  const double t_iges = median_seconds(runs, [&] { result = furrow::import_cad(iges); });
+  std::printf("import IGES: %zu faces in %.3f s (median of %d)\n", result.part.faces.size(), t_iges, runs);
+  std::filesystem::remove_all(dir);
+  return 0;
+}

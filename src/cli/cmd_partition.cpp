@@ -1,0 +1,128 @@
+// furrow partition PART --out regions.json [--image regions.png]: split every
+// face into convex / concave / saddle / planar regions (issue 3).
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
+#include "io/part_file.hpp"
+#include "partition/partition.hpp"
+#include "partition/region_image.hpp"
+#include "partition/regions_file.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string number_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+void print_summary(std::ostream& out, const std::string& path, const PartitionResult& result) {
+  const RegionMap& map = result.map;
+  char line[200];
+  out << "partition of " << path << ": " << map.faces.size()
+      << (map.faces.size() == 1 ? " face, " : " faces, ") << map.regions.size() << " regions\n";
+  for (std::size_t f = 0; f < map.faces.size(); ++f) {
+    const RegionFace& face = map.faces[f];
+    std::snprintf(line, sizeof line,
+                  "face %zu \"%s\": grid %dx%d, eps %.3g 1/mm (%s), min area %.4g mm^2, "
+                  "area %.4f mm^2\n",
+                  f, face.name.c_str(), face.nu, face.nv, face.eps,
+                  face.eps_from_user ? "--eps" : "default", face.min_area, face.area);
+    out << line;
+    for (int id : face.regions) {
+      const Region& r = map.regions[static_cast<std::size_t>(id)];
+      std::snprintf(line, sizeof line, "  region %3d  %-8s %12.4f mm^2  %5.1f%%  H [%.4g, %.4g] 1/mm\n",
+                    r.id, to_string(r.curvature_class), r.area,
+                    face.area > 0 ? 100.0 * r.area / face.area : 0.0, r.H.min, r.H.max);
+      out << line;
+    }
+  }
+}
+
+int run_partition(Args& args) {
+  const auto grid = args.option("grid");
+  const auto spacing = args.number("spacing");
+  const auto eps = args.number("eps");
+  const auto min_area = args.number("min-area");
+  const std::string out_path = args.required_option("out");
+  const auto image_path = args.option("image");
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+
+  PartitionOptions options;
+  if (grid && spacing) args.fail("--grid and --spacing exclude each other");
+  if (grid) {
+    const auto [nu, nv] = parse_grid(*grid, "grid");
+    options.grid = GridSize{nu, nv};
+  }
+  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + number_text(*spacing));
+  options.spacing = spacing;
+  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + number_text(*eps));
+  options.eps = eps;
+  if (min_area && *min_area < 0)
+    args.fail("--min-area must not be negative, got " + number_text(*min_area));
+  options.min_area = min_area;
+  if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
+  if (image_path && lower_extension(*image_path) != ".png")
+    args.fail("--image " + *image_path + ": expected a .png file name");
+  check_not_overwriting_input(out_path, part_path);
+  if (image_path) check_not_overwriting_input(*image_path, part_path);
+
+  const Part part = read_part(part_path);
+  const bool show_progress = ::isatty(2) && part.faces.size() > 1;
+  const PartitionResult result = partition_part(part, options, [&](std::size_t done, std::size_t total) {
+    if (show_progress) std::cerr << "\rpartition: face " << done << "/" << total << std::flush;
+  });
+  if (show_progress) std::cerr << "\n";
+
+  // The image is rendered before anything is written, so a failure there
+  // leaves neither file behind.
+  std::vector<unsigned char> png;
+  if (image_path) png = region_image_png(part, result);
+  write_regions(result.map, out_path);
+  if (image_path) write_file_atomically(*image_path, std::string(png.begin(), png.end()));
+
+  print_summary(std::cout, part_path, result);
+  std::cout << "wrote " << out_path << (image_path ? " and " + *image_path : std::string()) << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+const Command kPartitionCommand = {
+    "partition", "split faces into convex/concave/saddle/planar regions",
+    "usage: furrow partition PART --out REGIONS.json [--image REGIONS.png]\n"
+    "                        [--grid NUxNV | --spacing MM] [--eps K] [--min-area MM2]\n"
+    "\n"
+    "Samples the curvature of every face of PART on a (u,v) grid, classifies each\n"
+    "sample as convex, concave, saddle or planar (normal out of the material:\n"
+    "convex bulges toward the tool), groups equal neighbours into regions, merges\n"
+    "regions smaller than the minimum area into the neighbour sharing the longest\n"
+    "border and writes the regions with their areas, curvature statistics and\n"
+    "borders (uv and xyz) to REGIONS.json (docs/formats.md, docs/partition.md).\n"
+    "\n"
+    "  --out FILE       regions file to write (.json, required)\n"
+    "  --image FILE     also draw the regions per face (.png)\n"
+    "  --grid NUxNV     cells per face along u and v (or N for NxN)\n"
+    "  --spacing MM     cell size on the surface instead (default: the largest face\n"
+    "                   gets 400 cells along its longest side)\n"
+    "  --eps K          curvature tolerance in 1/mm (default per face:\n"
+    "                   max(1e-4, 1% of the face's 90th-percentile |k|))\n"
+    "  --min-area MM2   smallest region kept (default 0.5% of each face's area)\n",
+    run_partition};
+
+}  // namespace furrow::cli

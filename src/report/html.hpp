@@ -1,0 +1,20 @@
+#pragma once
+// Small building blocks for the self-contained HTML report: escaping text
+// for HTML, and embedding PNG figures as data URIs so the page opens offline
+// with no side files.
+#include <string>
+#include <vector>
+
+namespace furrow::html {
+
+// Escapes & < > " ' for use in text and attribute values.
+std::string escape(const std::string& text);
+
+// RFC 4648 base64 (with padding).
+std::string base64(const std::vector<unsigned char>& bytes);
+
+// <img> element with the PNG embedded: src="data:image/png;base64,...".
+std::string embedded_png(const std::vector<unsigned char>& png, const std::string& alt,
+                         const std::string& id = "");
+
+}  // namespace furrow::html
