@@ -25,5 +25,7 @@ extern const Command kPartitionCommand;
 extern const Command kImportCommand;
 extern const Command kPredictCommand;
 extern const Command kToolpathCommand;
+extern const Command kGougeCommand;
+extern const Command kSelectToolCommand;
 
 }  // namespace furrow::cli

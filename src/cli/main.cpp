@@ -19,6 +19,8 @@ const Command* const kCommands[] = {
     &furrow::cli::kImportCommand,
     &furrow::cli::kToolpathCommand,
     &furrow::cli::kPredictCommand,
+    &furrow::cli::kGougeCommand,
+    &furrow::cli::kSelectToolCommand,
 };
 
 const Command* find_command(const std::string& name) {

@@ -43,11 +43,11 @@ void AngularRanges::add_clipped(const AngularRange& arc, const AngularRange& win
 
 void AngularRanges::normalize() {
   if (count_ <= 1) return;
-  std::sort(arcs_.begin(), arcs_.begin() + count_,
+  std::sort(arcs_, arcs_ + count_,
             [](const AngularRange& a, const AngularRange& b) {
               return a.start < b.start || (a.start == b.start && a.width > b.width);
             });
-  std::array<AngularRange, kCapacity> merged{};
+  AngularRange merged[kCapacity];
   std::size_t m = 0;
   for (std::size_t i = 0; i < count_; ++i) {
     const AngularRange& a = arcs_[i];
@@ -62,11 +62,11 @@ void AngularRanges::normalize() {
     AngularRange& last = merged[m - 1];
     const double end = std::max(last.end(), merged[0].end() + kTwoPi);
     last.width = std::min(kTwoPi, end - last.start);
-    std::copy(merged.begin() + 1, merged.begin() + m, merged.begin());
+    std::copy(merged + 1, merged + m, merged);
     --m;
   }
   if (m == 1 && merged[0].width >= kTwoPi) merged[0] = AngularRange{0.0, kTwoPi};
-  arcs_ = merged;
+  std::copy(merged, merged + m, arcs_);
   count_ = m;
 }
 

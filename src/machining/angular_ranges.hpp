@@ -10,16 +10,21 @@
 // and a check combines at most two surfaces times two cutter pieces
 // (compound_border.hpp, cutter_curvature.hpp), normalising in between.
 // Exceeding the capacity is a programming error (std::logic_error).
-#include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace furrow {
 
+// No default member initialisers: AngularRanges keeps uninitialised spare
+// slots (zero-filling them cost a fifth of a gouge check).
 struct AngularRange {
-  double start = 0;  // [rad], in [0, 2 pi)
-  double width = 0;  // [rad], in [0, 2 pi]
+  double start;  // [rad], in [0, 2 pi)
+  double width;  // [rad], in [0, 2 pi]
   double end() const { return start + width; }  // may exceed 2 pi
   bool contains(double angle) const;            // any angle; wraps
+  // The same in degrees, as reports give them.
+  double start_deg() const { return start * (180 / M_PI); }
+  double end_deg() const { return end() * (180 / M_PI); }
 };
 
 // Angle reduced to [0, 2 pi).
@@ -29,11 +34,22 @@ class AngularRanges {
  public:
   static constexpr std::size_t kCapacity = 16;
 
+  AngularRanges() = default;
+  // Copies only the arcs in use (the spare slots are never read).
+  AngularRanges(const AngularRanges& other) : count_(other.count_) {
+    for (std::size_t i = 0; i < count_; ++i) arcs_[i] = other.arcs_[i];
+  }
+  AngularRanges& operator=(const AngularRanges& other) {
+    count_ = other.count_;
+    for (std::size_t i = 0; i < count_; ++i) arcs_[i] = other.arcs_[i];
+    return *this;
+  }
+
   bool empty() const { return count_ == 0; }
   std::size_t size() const { return count_; }
   const AngularRange& operator[](std::size_t i) const { return arcs_[i]; }
-  const AngularRange* begin() const { return arcs_.data(); }
-  const AngularRange* end() const { return arcs_.data() + count_; }
+  const AngularRange* begin() const { return arcs_; }
+  const AngularRange* end() const { return arcs_ + count_; }
 
   // Adds an arc (start any angle, wrapped; width clamped to [0, 2 pi]).
   void add(double start, double width);
@@ -46,7 +62,7 @@ class AngularRanges {
   bool contains(double angle) const;
 
  private:
-  std::array<AngularRange, kCapacity> arcs_{};
+  AngularRange arcs_[kCapacity];  // the first count_ are set
   std::size_t count_ = 0;
 };
 

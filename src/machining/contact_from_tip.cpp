@@ -134,11 +134,53 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
   const CutterLocationOptions& loc = options_.location;
   const double rho0 = cutter_.flat_radius(), r = cutter_.corner_radius();
   std::vector<TipContact> found;
-  // Nothing under the cutter at all: no seed within its reach.
+  const double R = cutter_.radius();
+  const std::size_t wanted = static_cast<std::size_t>(std::max(1, options_.max_starts));
+
+  // One pass over the seeds gathers the candidates for every kind of start:
+  // corner seeds by the distance of their axis position from the tip
+  // (tangencies of this very cutter location) and by how far they stick up
+  // into the lowered cutter (where it rests: largest S_z - envelope height);
+  // flat-bottom seeds under the bottom disc by height.
+  std::vector<std::pair<double, std::size_t>> nearest, highest, flat;
   bool under = false;
-  for (const Seed& s : seeds_)
-    under |= (s.point.head<2>() - txy).norm() <= cutter_.radius() + seed_spacing_;
-  if (!under) return result;
+  // Squared distances first: most seeds are far from the cutter.
+  const double reach2 = (R + seed_spacing_) * (R + seed_spacing_);
+  const double flat2 = (rho0 + seed_spacing_) * (rho0 + seed_spacing_);
+  const double near2 = 4 * seed_spacing_ * seed_spacing_;
+  for (std::size_t k = 0; k < seeds_.size(); ++k) {
+    const Seed& seed = seeds_[k];
+    const double offset2 = (seed.offset_xy - txy).squaredNorm();
+    if (seed.corner && (offset2 <= near2 || nearest.size() < wanted))
+      nearest.push_back({std::sqrt(offset2), k});
+    const double rho2 = (seed.point.head<2>() - txy).squaredNorm();
+    if (rho2 > reach2) continue;
+    under = true;
+    if (rho0 > 0 && rho2 <= flat2) flat.push_back({-seed.point.z(), k});
+    const double rho = std::sqrt(rho2);
+    if (seed.corner && rho <= R) highest.push_back({cutter_.height_at(rho) - seed.point.z(), k});
+  }
+  if (!under) return result;  // nothing under the cutter at all
+  // The best few of a list, skipping seeds next to one already taken (they
+  // would converge to the same contact).
+  auto pick = [&](std::vector<std::pair<double, std::size_t>>& list, std::vector<std::size_t>& out) {
+    std::sort(list.begin(), list.end());
+    std::size_t taken = 0;
+    for (const auto& [value, k] : list) {
+      if (taken == wanted) break;
+      bool near = false;
+      for (const std::size_t o : out)
+        near |= seeds_[o].face == seeds_[k].face &&
+                (seeds_[o].point - seeds_[k].point).norm() < 1.5 * seed_spacing_;
+      if (near) continue;
+      out.push_back(k);
+      ++taken;
+    }
+  };
+  std::vector<std::size_t> starts, flat_starts;
+  pick(nearest, starts);
+  pick(highest, starts);
+  pick(flat, flat_starts);
 
   auto keep = [&](std::size_t face, const Eigen::Vector2d& uv, const Evaluation& ev,
                   ContactKind kind, int iterations) {
@@ -158,26 +200,7 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     found.push_back(c);
   };
 
-  // Corner contacts. Starts: the seeds whose axis position is nearest the
-  // tip (tangencies of this very cutter location), and the seeds under the
-  // cutter that stick up highest into it (where a lowered cutter rests:
-  // largest S_z - envelope height).
-  const std::size_t wanted = static_cast<std::size_t>(std::max(1, options_.max_starts));
-  std::vector<std::pair<double, std::size_t>> nearest, highest;
-  for (std::size_t k = 0; k < seeds_.size(); ++k) {
-    if (!seeds_[k].corner) continue;
-    nearest.push_back({(seeds_[k].offset_xy - txy).norm(), k});
-    const double rho = (seeds_[k].point.head<2>() - txy).norm();
-    if (rho <= cutter_.radius()) highest.push_back({cutter_.height_at(rho) - seeds_[k].point.z(), k});
-  }
-  std::vector<std::size_t> starts;
-  for (auto* list : {&nearest, &highest}) {
-    const std::size_t n = std::min(list->size(), wanted);
-    std::partial_sort(list->begin(), list->begin() + n, list->end());
-    for (std::size_t k = 0; k < n; ++k)
-      if (std::find(starts.begin(), starts.end(), (*list)[k].second) == starts.end())
-        starts.push_back((*list)[k].second);
-  }
+  // Corner contacts.
   for (const std::size_t start : starts) {
     const Seed& seed = seeds_[start];
     const Face& face = part_.faces[seed.face];
@@ -193,7 +216,7 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
       normal_derivatives(ev, n_u, n_v);
       bool horizontal = false;
       const Eigen::Vector3d e = axis_side(ev.g.normal, loc, &horizontal);
-      const double nxy = std::hypot(ev.g.normal.x(), ev.g.normal.y());
+      const double nxy = std::sqrt(ev.g.normal.x() * ev.g.normal.x() + ev.g.normal.y() * ev.g.normal.y());
       auto column = [&](const Eigen::Vector3d& Sx, const Eigen::Vector3d& dn) {
         Eigen::Vector2d c = Sx.head<2>() + r * dn.head<2>();
         if (!horizontal && rho0 > 0) {  // d e = (dn_xy - e (e . dn_xy)) / |n_xy|
@@ -217,17 +240,10 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     keep(seed.face, uv, evaluate(face, uv), ContactKind::corner, iterations);
   }
 
-  // Flat-bottom contacts: horizontal tangent planes under the bottom disc,
-  // from the highest seeds there.
+  // Flat-bottom contacts: horizontal tangent planes under the bottom disc.
   if (rho0 > 0) {
-    std::vector<std::pair<double, std::size_t>> high;
-    for (std::size_t k = 0; k < seeds_.size(); ++k)
-      if ((seeds_[k].point.head<2>() - txy).norm() <= rho0 + seed_spacing_)
-        high.push_back({-seeds_[k].point.z(), k});
-    const std::size_t count = std::min(high.size(), wanted);
-    std::partial_sort(high.begin(), high.begin() + count, high.end());
-    for (std::size_t k = 0; k < count; ++k) {
-      const Seed& seed = seeds_[high[k].second];
+    for (const std::size_t start : flat_starts) {
+      const Seed& seed = seeds_[start];
       const Face& face = part_.faces[seed.face];
       Eigen::Vector2d uv = seed.uv;
       auto residual = [&](const Eigen::Vector2d& p, Evaluation& ev, Eigen::Vector2d& F) {
@@ -259,7 +275,6 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
   // Edge contacts: along each side, the local maxima (among its samples under
   // the cutter) of how far the side sticks up into the lowered cutter,
   // refined by golden-section search between the neighbouring samples.
-  const double R = cutter_.radius();
   for (const Edge& edge : edges_) {
     const Face& face = part_.faces[edge.face];
     auto rise = [&](double t) {  // side height minus envelope height: the tip height
@@ -270,11 +285,14 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     };
     const std::vector<EdgeSample>& smp = edge.samples;
     std::vector<double> value(smp.size());
+    bool any = false;
     for (std::size_t k = 0; k < smp.size(); ++k) {
-      const double rho = (smp[k].point.head<2>() - txy).norm();
-      value[k] = rho <= R ? smp[k].point.z() - cutter_.height_at(rho)
-                          : -std::numeric_limits<double>::infinity();
+      const double rho2 = (smp[k].point.head<2>() - txy).squaredNorm();
+      any |= rho2 <= R * R;
+      value[k] = rho2 <= R * R ? smp[k].point.z() - cutter_.height_at(std::sqrt(rho2))
+                               : -std::numeric_limits<double>::infinity();
     }
+    if (!any) continue;
     for (std::size_t k = 0; k < smp.size(); ++k) {
       const double left = k > 0 ? value[k - 1] : -std::numeric_limits<double>::infinity();
       const double right = k + 1 < smp.size() ? value[k + 1] : -std::numeric_limits<double>::infinity();

@@ -50,11 +50,13 @@ namespace furrow {
 
 struct TipContactOptions {
   int seed_grid = 33;       // seed nodes per direction per face
-  int max_starts = 6;       // Newton starts per query and seed kind
+  int max_starts = 3;       // Newton starts per query and seed kind (distinct places)
   int max_iterations = 40;  // per start
   double tolerance = 1e-9;  // [mm] xy residual of a corner contact at convergence
   double duplicate_distance = 1e-6;  // [mm] contacts closer than this are one
-  int edge_samples = 129;   // samples per face side for edge contacts
+  // Samples per face side for edge contacts: an edge is seen where one of
+  // its samples lies under the cutter (so keep the spacing below the radius).
+  int edge_samples = 129;
   // Golden-section search on a side stops below this fraction of its
   // parameter range (or after 200 steps).
   double edge_tolerance = 1e-13;

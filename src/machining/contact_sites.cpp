@@ -85,4 +85,11 @@ std::vector<ContactSite> sites_from_points(const Part& part,
   return sites;
 }
 
+std::vector<ContactSite> load_contact_sites(const Part& part, const std::string& points_file,
+                                            const std::string& units, int grid,
+                                            const PointSiteOptions& options) {
+  if (points_file.empty()) return grid_sites(part, grid);
+  return sites_from_points(part, read_contact_points(points_file, units), points_file, options);
+}
+
 }  // namespace furrow

@@ -42,4 +42,10 @@ std::vector<ContactSite> sites_from_points(const Part& part,
                                            const std::string& source,
                                            const PointSiteOptions& options = {});
 
+// The sites of a command: the points of `points_file` (read in `units`) when
+// it is not empty, else the grid_sites of `grid`.
+std::vector<ContactSite> load_contact_sites(const Part& part, const std::string& points_file,
+                                            const std::string& units, int grid,
+                                            const PointSiteOptions& options = {});
+
 }  // namespace furrow

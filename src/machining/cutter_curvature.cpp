@@ -9,26 +9,34 @@ namespace furrow {
 CutterCurvature cutter_curvature(const Cutter& cutter, const Eigen::Vector3d& normal,
                                  const CutterLocationOptions& options) {
   CutterCurvature c;
-  const double len = normal.norm();
-  if (!std::isfinite(len) || !(len > 0)) return c;
-  const Eigen::Vector3d n = normal / len;
+  // Normals from DifferentialGeometry are unit to rounding: skip the sqrt.
+  const double len2 = normal.squaredNorm();
+  if (!std::isfinite(len2) || !(len2 > 0)) return c;
+  const Eigen::Vector3d n = std::abs(len2 - 1) < 1e-14 ? normal : Eigen::Vector3d(normal / std::sqrt(len2));
   c.normal = n;
   if (!(n.z() > 0)) return c;
   c.reachable = true;
 
-  bool horizontal = false;
-  const Eigen::Vector3d e = axis_side(n, options, &horizontal);
+  // n = sin(theta0) e + cos(theta0) z; at a horizontal contact sin is 0 and e
+  // is the option's (cutter_location.hpp).
+  const double nxy = std::sqrt(n.x() * n.x() + n.y() * n.y());
+  const bool horizontal = !(nxy > options.horizontal_tolerance);
+  const Eigen::Vector3d e = horizontal ? axis_side(n, options) : Eigen::Vector3d(n.x() / nxy, n.y() / nxy, 0.0);
   c.toward_axis = e;
-  // sin(theta0) = |n_xy|, cos(theta0) = n_z; at a horizontal contact exactly 0.
-  const double sin_t = horizontal ? 0.0 : std::min(1.0, std::hypot(n.x(), n.y()));
-  c.contact_angle = horizontal ? 0.0 : std::acos(std::min(1.0, n.z()));
-  // Meridian tangent pointing up the profile (away from the axis at the
-  // bottom, up the wall on the side). Built from the exact normal so that it
-  // stays perpendicular to it even when e was chosen at a horizontal contact.
-  // z - n_z n = sin(theta0) (-cos(theta0) e + sin(theta0) z).
-  c.dir_max = horizontal ? (-e + e.dot(n) * n).normalized()
-                         : (Eigen::Vector3d::UnitZ() - n.z() * n).normalized();
-  c.dir_min = n.cross(c.dir_max);
+  const double sin_t = horizontal ? 0.0 : std::min(1.0, nxy);
+  c.sin_contact = sin_t;
+  c.cos_contact = horizontal ? 1.0 : n.z();
+  // The meridian tangent pointing up the profile (away from the axis at the
+  // bottom, up the wall on the side): -cos(theta0) e + sin(theta0) z, which
+  // is exactly perpendicular to n. At a horizontal contact e was chosen and
+  // n may carry a rounding-level tilt: project to stay perpendicular.
+  if (horizontal) {
+    c.dir_max = (-e + e.dot(n) * n).normalized();
+    c.dir_min = n.cross(c.dir_max);
+  } else {
+    c.dir_max = Eigen::Vector3d(-n.z() * e.x(), -n.z() * e.y(), nxy);
+    c.dir_min = Eigen::Vector3d(e.y(), -e.x(), 0.0);  // n x dir_max = e x z
+  }
 
   const ProfileArc& arc = cutter.corner();
   const double rho_c = arc.centre_rho + arc.radius * sin_t;

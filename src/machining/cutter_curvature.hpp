@@ -24,6 +24,7 @@
 // bottom (R > r) the directions toward the axis lie on the flat bottom,
 // whose curvature is 0 (`flat_bottom`).
 #include <Eigen/Core>
+#include <cmath>
 
 #include "machining/cutter.hpp"
 #include "machining/cutter_location.hpp"
@@ -38,7 +39,8 @@ struct CutterCurvature {
   Eigen::Vector3d dir_min = -Eigen::Vector3d::UnitY();     // circumferential direction (unit)
   double k_max = 0;  // [1/mm] meridian curvature 1/r; +infinity when `sharp`
   double k_min = 0;  // [1/mm] circumferential curvature sin(theta0) / rho_c
-  double contact_angle = 0;  // theta0 [rad]
+  double sin_contact = 0, cos_contact = 1;  // sin, cos of the contact angle theta0
+  double contact_angle() const { return std::atan2(sin_contact, cos_contact); }  // [rad]
   // The contact is on the sharp rim of a flat end mill (r = 0): compare only
   // along dir_min (the cutting circle), see local_gouge.hpp.
   bool sharp = false;

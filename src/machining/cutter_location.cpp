@@ -7,12 +7,12 @@ namespace furrow {
 
 Eigen::Vector3d axis_side(const Eigen::Vector3d& n, const CutterLocationOptions& options,
                           bool* horizontal) {
-  const double nxy = std::hypot(n.x(), n.y());
+  const double nxy = std::sqrt(n.x() * n.x() + n.y() * n.y());
   const bool flat = !(nxy > options.horizontal_tolerance);
   if (horizontal) *horizontal = flat;
   if (!flat) return {n.x() / nxy, n.y() / nxy, 0.0};
   const Eigen::Vector3d& hint = options.horizontal_side;
-  const double hxy = std::hypot(hint.x(), hint.y());
+  const double hxy = std::sqrt(hint.x() * hint.x() + hint.y() * hint.y());
   if (!(hxy > 0) || !std::isfinite(hxy)) return Eigen::Vector3d::UnitX();
   return {hint.x() / hxy, hint.y() / hxy, 0.0};
 }

@@ -60,7 +60,7 @@ Excess excess(const PartInFrame& p, const CutterPiece& piece) {
   e.A = p.mean - 0.5 * (piece.k_max + piece.k_min);
   const double B = p.half_diff * p.cos2phi - 0.5 * (piece.k_max - piece.k_min);
   const double C = p.half_diff * p.sin2phi;
-  e.D = std::hypot(B, C);
+  e.D = std::sqrt(B * B + C * C);  // curvatures: no overflow to guard against
   e.psi = std::atan2(C, B);
   return e;
 }

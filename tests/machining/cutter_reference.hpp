@@ -1,10 +1,14 @@
 #pragma once
 // Reference geometry for cutter tests, written from DESIGN.md's description
 // of the end mill and not from the library's code: the corner surface as an
-// explicit surface of revolution and its curvature by finite differences,
-// and a part's normal curvature straight from its fundamental forms.
+// explicit surface of revolution and its curvature by finite differences, a
+// part's normal curvature straight from its fundamental forms, and the
+// brute-force searches the tests compare with (a dense sweep of directions,
+// a drop cutter by grid search).
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "geometry/differential_geometry.hpp"
 
@@ -83,6 +87,63 @@ inline double part_normal_curvature(const SurfaceDerivatives& d, const Eigen::Ve
   I << d.Su.dot(d.Su), d.Su.dot(d.Sv), d.Su.dot(d.Sv), d.Sv.dot(d.Sv);
   II << d.Suu.dot(normal), d.Suv.dot(normal), d.Suv.dot(normal), d.Svv.dot(normal);
   return c.dot(II * c) / c.dot(I * c);
+}
+
+// Angles (degrees) where g changes sign around the circle: sampled every
+// `step_deg` from an offset (so a boundary exactly at 0 is seen), each sign
+// change refined by bisection.
+template <class G>
+std::vector<double> sign_changes_deg(G g, double step_deg) {
+  std::vector<double> out;
+  const double first = 0.37 * step_deg;
+  const int n = static_cast<int>(std::lround(360.0 / step_deg));
+  double prev = g(first);
+  for (int k = 1; k <= n; ++k) {
+    const double a = first + k * step_deg;
+    const double cur = g(a);
+    if ((prev > 0) != (cur > 0)) {
+      double lo = a - step_deg, hi = a;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        ((g(mid) > 0) == (prev > 0) ? lo : hi) = mid;
+      }
+      out.push_back(std::fmod(0.5 * (lo + hi), 360.0));
+    }
+    prev = cur;
+  }
+  return out;
+}
+
+// Smallest difference of two angles in degrees.
+inline double angle_gap_deg(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+// Brute-force drop cutter over a disc of radius R: the largest value(rho,
+// phi) (a surface height minus the cutter's envelope height at rho) by a
+// polar grid, rim included, then zooming into the best cell repeatedly:
+// derivative-free, independent of the library's Newton solvers.
+template <class Value>
+double maximize_over_disc(double R, Value value, int radii = 60, int angles = 180) {
+  double best = -1e300, best_rho = 0, best_phi = 0;
+  for (int i = 0; i <= radii; ++i)
+    for (int k = 0; k < angles; ++k) {
+      const double rho = R * i / radii, phi = 2 * M_PI * k / angles;
+      const double v = value(rho, phi);
+      if (v > best) best = v, best_rho = rho, best_phi = phi;
+    }
+  double dr = R / radii, dp = 2 * M_PI / angles;
+  for (int level = 0; level < 24; ++level, dr *= 0.4, dp *= 0.4) {
+    const double r0 = best_rho, p0 = best_phi;
+    for (int i = -5; i <= 5; ++i)
+      for (int k = -5; k <= 5; ++k) {
+        const double rho = std::clamp(r0 + dr * i / 5, 0.0, R), phi = p0 + dp * k / 5;
+        const double v = value(rho, phi);
+        if (v > best) best = v, best_rho = rho, best_phi = phi;
+      }
+  }
+  return best;
 }
 
 }  // namespace furrow::test

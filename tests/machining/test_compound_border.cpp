@@ -20,28 +20,6 @@ constexpr double kDeg = M_PI / 180;
 // example's defining formula: z = 10 + 0.02 (50 - x)^2 (1 + 0.5 ((y-30)/30)^2)).
 double valley_curvature_across(double y) { return 0.04 * (1 + 0.5 * std::pow((y - 30) / 30, 2)); }
 
-// Sign changes of g around the circle (degrees), refined by bisection. The
-// sweep is offset from 0 so a boundary exactly at 0 is seen.
-template <class G>
-std::vector<double> boundaries(G g) {
-  std::vector<double> out;
-  const double step = 0.01, first = 0.0037;
-  double prev = g(first);
-  for (double a = first + step; a <= first + 360 + 1e-9; a += step) {
-    const double cur = g(a);
-    if ((prev > 0) != (cur > 0)) {
-      double lo = a - step, hi = a;
-      for (int it = 0; it < 50; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        ((g(mid) > 0) == (prev > 0) ? lo : hi) = mid;
-      }
-      out.push_back(std::fmod(0.5 * (lo + hi), 360.0));
-    }
-    prev = cur;
-  }
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE("two-face part: the border finds the neighbour and compares each face over its own half") {
@@ -101,7 +79,7 @@ TEST_CASE("two-face part: the border finds the neighbour and compares each face 
         if (into_crown) k = part_normal_curvature(dc, c.neighbour_geometry.normal, t);
         return k - 1 / R - tol;
       };
-      const std::vector<double> bounds = boundaries(excess);
+      const std::vector<double> bounds = sign_changes_deg(excess, 0.01);
       std::vector<double> reported;
       for (const AngularRange& range : border.ranges) {
         reported.push_back(range.start / kDeg);
@@ -110,7 +88,7 @@ TEST_CASE("two-face part: the border finds the neighbour and compares each face 
       REQUIRE(reported.size() == bounds.size());
       for (std::size_t i = 0; i < bounds.size(); ++i) {
         double nearest = 360;
-        for (double x : reported) nearest = std::min(nearest, std::min(std::abs(x - bounds[i]), 360 - std::abs(x - bounds[i])));
+        for (double x : reported) nearest = std::min(nearest, angle_gap_deg(x, bounds[i]));
         CHECK(nearest < 0.01);
       }
     }

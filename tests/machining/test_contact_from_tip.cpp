@@ -6,6 +6,7 @@
 #include "io/part_file.hpp"
 #include "machining/closest_point.hpp"
 #include "machining/contact_from_tip.hpp"
+#include "cutter_reference.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -21,34 +22,12 @@ double mould_height(const Face& mould, double x, double y) {
 }
 
 // Brute-force drop cutter: the tip height at which the cutter, lowered at
-// (x, y), first touches the height field. A polar grid over the disc (rim
-// included), then the best cell is zoomed into repeatedly: derivative-free,
-// independent of the Newton solver, accurate to ~1e-10 mm.
+// (x, y), first touches the height field, its edges included.
 double drop_cutter(const Face& mould, const Cutter& cutter, double x, double y) {
-  const double R = cutter.radius();
   auto value = [&](double rho, double phi) {
     return mould_height(mould, x + rho * std::cos(phi), y + rho * std::sin(phi)) - cutter.height_at(rho);
   };
-  double best = -1e300, best_rho = 0, best_phi = 0;
-  const int radii = 120, angles = 360;
-  for (int i = 0; i <= radii; ++i)
-    for (int k = 0; k < angles; ++k) {
-      const double rho = R * i / radii, phi = 2 * M_PI * k / angles;
-      const double z = value(rho, phi);
-      if (z > best) best = z, best_rho = rho, best_phi = phi;
-    }
-  double half_rho = R / radii, half_phi = 2 * M_PI / angles;
-  for (int level = 0; level < 30; ++level) {
-    const double rho0 = best_rho, phi0 = best_phi;
-    for (int i = -10; i <= 10; ++i)
-      for (int k = -10; k <= 10; ++k) {
-        const double rho = std::clamp(rho0 + half_rho * i / 10, 0.0, R), phi = phi0 + half_phi * k / 10;
-        const double z = value(rho, phi);
-        if (z > best) best = z, best_rho = rho, best_phi = phi;
-      }
-    half_rho *= 0.3;
-    half_phi *= 0.3;
-  }
+  double best = test::maximize_over_disc(cutter.radius(), value, 120, 360);
   // The part's edges, where a cutter hanging over them rests: each edge line
   // sampled densely, then zoomed into.
   for (int e = 0; e < 4; ++e) {
@@ -60,7 +39,7 @@ double drop_cutter(const Face& mould, const Cutter& cutter, double x, double y) 
     auto edge_value = [&](double s) {
       const Eigen::Vector2d p = point(std::clamp(s, 0.0, length));
       const double rho = std::hypot(p.x() - x, p.y() - y);
-      return rho > R ? -1e300 : mould_height(mould, p.x(), p.y()) - cutter.height_at(rho);
+      return rho > cutter.radius() ? -1e300 : mould_height(mould, p.x(), p.y()) - cutter.height_at(rho);
     };
     double s_best = 0, v_best = -1e300;
     for (int k = 0; k <= 4000; ++k) {

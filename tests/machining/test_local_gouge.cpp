@@ -40,34 +40,6 @@ NurbsSurface quadratic_height_patch(F f) {
   return NurbsSurface(2, 2, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 1, 1, 1}, net);
 }
 
-// Boundaries (degrees) of {a : g(a) > 0} from a dense sweep, refined by
-// bisection; g is sampled every `step_deg`.
-template <class G>
-std::vector<double> sweep_boundaries(G g, double step_deg) {
-  std::vector<double> out;
-  const int n = static_cast<int>(std::lround(360.0 / step_deg));
-  double prev = g(0.0);
-  for (int k = 1; k <= n; ++k) {
-    const double a = k * step_deg;
-    const double cur = g(a);
-    if ((prev > 0) != (cur > 0)) {
-      double lo = a - step_deg, hi = a;
-      for (int it = 0; it < 60; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        ((g(mid) > 0) == (prev > 0) ? lo : hi) = mid;
-      }
-      out.push_back(std::fmod(0.5 * (lo + hi), 360.0));
-    }
-    prev = cur;
-  }
-  return out;
-}
-
-double angle_gap_deg(double a, double b) {
-  const double d = std::fmod(std::abs(a - b), 360.0);
-  return std::min(d, 360.0 - d);
-}
-
 }  // namespace
 
 TEST_CASE("concave cylinder of radius rho, ball across the axis: gouges exactly when R > rho") {
@@ -167,7 +139,7 @@ TEST_CASE("saddle: principal curvatures say maybe, the directional ranges match 
         const Eigen::Vector3d t = std::cos(a) * fd.dir_max + std::sin(a) * fd.dir_min;
         return part_normal_curvature(d, g.normal, t) - fd.along(t);
       };
-      const std::vector<double> bounds = sweep_boundaries([&](double a) { return excess(a) - tol; }, 0.01);
+      const std::vector<double> bounds = sign_changes_deg([&](double a) { return excess(a) - tol; }, 0.01);
       double brute_max = -1e9;
       for (double a = 0; a < 360; a += 0.01) brute_max = std::max(brute_max, excess(a));
       CHECK(result.max_excess == doctest::Approx(brute_max).epsilon(1e-5));

@@ -9,6 +9,7 @@
 #include "geometry/primitives.hpp"
 #include "io/tool_file.hpp"
 #include "machining/tool_selection.hpp"
+#include "cutter_reference.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -20,33 +21,14 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 // The part as an analytic height field z(x, y), NaN where there is none.
 using HeightField = std::function<double(double, double)>;
 
-// Brute-force drop cutter over a height field (polar grid, then zooming into
-// the best cell): the tip height at which the cutter lowered at (x, y)
-// touches.
+// Brute-force drop cutter over a height field: the tip height at which the
+// cutter lowered at (x, y) touches.
 double drop_cutter(const HeightField& z, double R, double r, double x, double y) {
   const Cutter c("c", R, r);
-  auto value = [&](double rho, double phi) {
+  return test::maximize_over_disc(R, [&](double rho, double phi) {
     const double h = z(x + rho * std::cos(phi), y + rho * std::sin(phi));
     return std::isnan(h) ? -1e300 : h - c.height_at(rho);
-  };
-  double best = -1e300, best_rho = 0, best_phi = 0;
-  for (int i = 0; i <= 60; ++i)
-    for (int k = 0; k < 180; ++k) {
-      const double rho = R * i / 60, phi = 2 * M_PI * k / 180;
-      const double v = value(rho, phi);
-      if (v > best) best = v, best_rho = rho, best_phi = phi;
-    }
-  double dr = R / 60, dp = 2 * M_PI / 180;
-  for (int level = 0; level < 24; ++level, dr *= 0.4, dp *= 0.4) {
-    const double r0 = best_rho, p0 = best_phi;
-    for (int i = -5; i <= 5; ++i)
-      for (int k = -5; k <= 5; ++k) {
-        const double rho = std::clamp(r0 + dr * i / 5, 0.0, R), phi = p0 + dp * k / 5;
-        const double v = value(rho, phi);
-        if (v > best) best = v, best_rho = rho, best_phi = phi;
-      }
-  }
-  return best;
+  });
 }
 
 // The library's pick by the rules written out: local comparison for a part
