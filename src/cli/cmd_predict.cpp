@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
@@ -12,6 +13,9 @@
 #include "machining/error_map_image.hpp"
 #include "machining/path_prediction.hpp"
 #include "machining/prediction_file.hpp"
+#include "machining/region_errors.hpp"
+#include "partition/classification.hpp"
+#include "partition/regions_file.hpp"
 
 namespace furrow::cli {
 
@@ -74,6 +78,21 @@ void print_summary(std::ostream& out, const Prediction& p) {
   if (p.gouge_sites.size() > deepest.size())
     out << "  ... and " << p.gouge_sites.size() - deepest.size() << " shallower sites (all in the prediction file)\n";
   out << "contact points with local gouging: " << s.local_gouge_points << "\n";
+  if (p.has_regions) {
+    out << "by region (" << p.regions_file << "):\n";
+    for (const RegionErrorRecord& r : p.regions) {
+      char buf[200];
+      if (r.reached == 0) {
+        std::snprintf(buf, sizeof buf, "  region %d (%s, %s): not reached\n", r.region, r.curvature_class.c_str(),
+                      r.face.c_str());
+      } else {
+        std::snprintf(buf, sizeof buf, "  region %d (%s, %s): mean %s, max undercut %s, max overcut %s\n", r.region,
+                      r.curvature_class.c_str(), r.face.c_str(), um(r.mean).c_str(), um(r.max_undercut.error).c_str(),
+                      um(r.max_overcut.error).c_str());
+      }
+      out << buf;
+    }
+  }
 }
 
 int run_predict(Args& args) {
@@ -96,9 +115,6 @@ int run_predict(Args& args) {
     if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
     options.resolution = *resolution;
   }
-  if (regions)
-    args.fail("--regions: error summaries by region need the partition's regions.json reader, which is not "
-              "part of this build yet");
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
   for (const std::string* input : {&part_path, &tool_path, &toolpath_path}) {
@@ -107,6 +123,11 @@ int run_predict(Args& args) {
   }
 
   const Part part = read_part(part_path);
+  std::optional<RegionMap> region_map;
+  if (regions) {
+    region_map = read_regions(*regions);
+    region_map->check_belongs_to(part, *regions, part_path);
+  }
   const Cutter cutter(read_tool_file(tool_path));
   const Toolpath path = read_toolpath(toolpath_path, read_options);
   TerminalProgress progress;
@@ -115,7 +136,15 @@ int run_predict(Args& args) {
         progress.update(stage, done, total);
       });
   progress.finish();
-  const Prediction prediction = make_prediction(part, cutter, result, options, part_path, toolpath_path);
+  Prediction prediction = make_prediction(part, cutter, result, options, part_path, toolpath_path);
+  if (region_map) {
+    prediction.has_regions = true;
+    prediction.regions_file = *regions;
+    prediction.regions = errors_by_region(part, result.map, region_map->regions.size(),
+                                          [&](int face, double u, double v) { return region_map->region_at(face, u, v); });
+    for (RegionErrorRecord& r : prediction.regions)
+      r.curvature_class = to_string(region_map->regions[static_cast<std::size_t>(r.region)].curvature_class);
+  }
   // Everything is rendered before anything is written: a failure leaves no
   // output behind.
   const std::string json_text = prediction_to_json_text(prediction);
@@ -133,7 +162,8 @@ int run_predict(Args& args) {
 const Command kPredictCommand = {
     "predict", "machining error of a tool path: per step, z-map error map, scallops, gouges",
     "usage: furrow predict PART --tool TOOL.json --toolpath PATH --out PREDICTION.json\n"
-    "                      [--map ERRORS.png] [--tolerance MM] [--gouge-threshold MM]\n"
+    "                      [--map ERRORS.png] [--regions REGIONS.json] [--tolerance MM]\n"
+    "                      [--gouge-threshold MM]\n"
     "                      [--resolution MM] [--cell MM] [--map-scale UM] [--units mm|inch]\n"
     "\n"
     "Predicts the error a 3-axis finishing path leaves on PART (sign: + material\n"
@@ -154,6 +184,8 @@ const Command kPredictCommand = {
     "  --toolpath FILE       tool path, G-code or CSV (required)\n"
     "  --out FILE            prediction to write (.json, required)\n"
     "  --map FILE            also draw the error map per face (.png, colour scale in um)\n"
+    "  --regions FILE        regions.json of furrow partition for PART: error summary\n"
+    "                        (mean, largest undercut and overcut) per region\n"
     "  --tolerance MM        steps are compared with it (default 0.01)\n"
     "  --gouge-threshold MM  overcut deeper than this is a gouge site (default: twice the\n"
     "                        tolerance; a path planned to the tolerance overcuts up to it)\n"

@@ -72,6 +72,16 @@ struct LocalGougeRecord {
   std::vector<Eigen::Vector2d> directions_deg;  // (start, width) arcs from the cutter's meridian
 };
 
+// Error summary of one region of a partition (regions.json), when given.
+struct RegionErrorRecord {
+  int region = 0;               // region id of the partition
+  std::string face;             // its face
+  std::string curvature_class;  // planar, convex, concave, saddle
+  int samples = 0, reached = 0; // error-map samples in the region, and reached
+  double mean = 0;              // [mm] over the reached samples
+  ErrorAt max_undercut, max_overcut;  // best samples
+};
+
 struct FaceGridRecord {
   std::string name;
   ParameterDomain domain;
@@ -117,6 +127,9 @@ struct Prediction {
   std::vector<ScallopRecord> scallops;
   std::vector<GougeSiteRecord> gouge_sites;
   std::vector<LocalGougeRecord> local_gouges;
+  bool has_regions = false;  // a regions file was given
+  std::string regions_file;
+  std::vector<RegionErrorRecord> regions;
   std::vector<FaceGridRecord> faces;
 
   // The predicted error at (u, v) of a face. Throws InputError for a face

@@ -177,6 +177,22 @@ std::string prediction_to_json_text(const Prediction& p) {
     local.push_back(o);
   }
   j["local_gouges"] = local;
+  if (p.has_regions) {
+    json regions = json::array();
+    for (const RegionErrorRecord& r : p.regions) {
+      json o = json::object();
+      o["region"] = r.region;
+      o["face"] = r.face;
+      o["class"] = r.curvature_class;
+      o["samples"] = r.samples;
+      o["reached"] = r.reached;
+      o["mean"] = r.reached > 0 ? length(r.mean, "mean") : json(nullptr);
+      o["max_undercut"] = error_at(r.max_undercut);
+      o["max_overcut"] = error_at(r.max_overcut);
+      regions.push_back(o);
+    }
+    j["regions"] = {{"file", p.regions_file}, {"by_region", regions}};
+  }
   json faces = json::array();
   for (const FaceGridRecord& f : p.faces) faces.push_back(face_json(f));
   j["faces"] = faces;
@@ -403,6 +419,31 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
     const json& arcs = jf::array(jf::member(local[k], "directions_deg", w), wa);
     for (std::size_t a = 0; a < arcs.size(); ++a) r.directions_deg.push_back(jf::vector2(arcs[a], jf::child(wa, a)));
     p.local_gouges.push_back(r);
+  }
+  if (const json* reg = jf::optional_member(doc, "regions", root)) {
+    const std::string wr = jf::child(root, "regions");
+    jf::object(*reg, wr);
+    p.has_regions = true;
+    p.regions_file = jf::string(jf::member(*reg, "file", wr), jf::child(wr, "file"));
+    const std::string wb = jf::child(wr, "by_region");
+    const json& list = jf::array(jf::member(*reg, "by_region", wr), wb);
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const std::string w = jf::child(wb, k);
+      const json& o = jf::object(list[k], w);
+      RegionErrorRecord r;
+      r.region = jf::integer(jf::member(o, "region", w), jf::child(w, "region"));
+      r.face = jf::string(jf::member(o, "face", w), jf::child(w, "face"));
+      r.curvature_class = jf::string(jf::member(o, "class", w), jf::child(w, "class"));
+      r.samples = jf::integer(jf::member(o, "samples", w), jf::child(w, "samples"));
+      r.reached = jf::integer(jf::member(o, "reached", w), jf::child(w, "reached"));
+      const json& mean = jf::member(o, "mean", w);
+      if ((r.reached > 0) == mean.is_null())
+        throw InputError(jf::child(w, "mean") + ": expected a number exactly when samples were reached");
+      if (r.reached > 0) r.mean = jf::number(mean, jf::child(w, "mean"));
+      r.max_undercut = read_error_at(jf::member(o, "max_undercut", w), jf::child(w, "max_undercut"));
+      r.max_overcut = read_error_at(jf::member(o, "max_overcut", w), jf::child(w, "max_overcut"));
+      p.regions.push_back(r);
+    }
   }
   const std::string wf = jf::child(root, "faces");
   const json& faces = jf::array(jf::member(doc, "faces", root), wf);

@@ -80,6 +80,27 @@ TEST_CASE("furrow predict on a planned path: prediction.json, PNG, within tolera
     CHECK(p.predicted_error_at("semi_cylinder", 0.5, 0.5).reached());
     CHECK(is_png(dir + "/" + input + ".png"));
   }
+  // By region: the semi-cylinder is one convex region; its extremes are the
+  // error map's (sampled, so at most the refinement above them).
+  REQUIRE(run_furrow({"partition", kCylinder, "--out", dir + "/regions.json"}).status == 0);
+  CliResult r = run_furrow({"predict", kCylinder, "--tool", kBall6, "--toolpath", dir + "/cyl.nc", "--resolution",
+                            "0.1", "--regions", dir + "/regions.json", "--out", dir + "/by_region.json"});
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("region 0 (convex, semi_cylinder)") != std::string::npos);
+  const Prediction p = read_prediction(dir + "/by_region.json");
+  REQUIRE(p.has_regions);
+  REQUIRE(p.regions.size() == 1);
+  CHECK(p.regions[0].curvature_class == "convex");
+  CHECK(p.regions[0].reached > 0);
+  CHECK(p.regions[0].max_overcut.error >= p.summary.max_overcut.error - 1e-9);
+  CHECK(p.regions[0].max_overcut.error <= p.summary.max_overcut.error + 1e-6);
+  // A regions file of another part is refused.
+  REQUIRE(run_furrow({"partition", kMould, "--out", dir + "/mould_regions.json"}).status == 0);
+  r = run_furrow({"predict", kCylinder, "--tool", kBall6, "--toolpath", dir + "/cyl.nc", "--regions",
+                  dir + "/mould_regions.json", "--out", dir + "/wrong.json"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("computed for another part") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir + "/wrong.json"));
 }
 
 TEST_CASE("G-code through furrow predict: inch units and relative moves give the metric absolute prediction") {

@@ -52,6 +52,23 @@ Prediction small_prediction() {
   site.uv_box = Eigen::AlignedBox2d(Eigen::Vector2d(0.2, 0.2), Eigen::Vector2d(0.8, 0.9));
   p.gouge_sites.push_back(site);
   p.summary.gouge_sites = 1;
+  p.has_regions = true;
+  p.regions_file = "regions.json";
+  RegionErrorRecord reached;
+  reached.region = 0;
+  reached.face = "f";
+  reached.curvature_class = "convex";
+  reached.samples = 40;
+  reached.reached = 30;
+  reached.mean = -0.002;
+  reached.max_undercut = {true, 0.001, {"f", {1, 1}, {0, 0, 1}}};
+  reached.max_overcut = {true, -0.004, {"f", {2, 1}, {0, 0, 2}}};
+  RegionErrorRecord untouched;
+  untouched.region = 1;
+  untouched.face = "f";
+  untouched.curvature_class = "planar";
+  untouched.samples = 10;
+  p.regions = {reached, untouched};
   return p;
 }
 
@@ -113,6 +130,15 @@ TEST_CASE("prediction.json: written, read back the same, unreached cells are nul
   CHECK(back.faces[0].mean[4] == doctest::Approx(0.011));
   CHECK(back.predicted_error_at("f", 1.0, 1.0).value == doctest::Approx(p.predicted_error_at("f", 1.0, 1.0).value));
   CHECK(back.gouge_sites[0].uv_box.max().y() == doctest::Approx(0.9));
+  REQUIRE(back.regions.size() == 2);
+  CHECK(back.regions[0].max_overcut.error == doctest::Approx(-0.004));
+  CHECK_FALSE(back.regions[1].max_undercut.found);  // null: nothing reached there
+  // Without a regions file there is no "regions" member at all.
+  Prediction plain = p;
+  plain.has_regions = false;
+  const std::string plain_text = prediction_to_json_text(plain);
+  CHECK(plain_text.find("\"regions\"") == std::string::npos);
+  CHECK_FALSE(parse_prediction_json(plain_text, "p.json").has_regions);
 }
 
 TEST_CASE("prediction.json reader: errors name the field") {
