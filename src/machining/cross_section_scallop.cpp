@@ -131,15 +131,11 @@ SideStepResult cutter_side_step_for_scallop(const Cutter& cutter, double k, doub
   double lo = 0, hi = 2 * cutter.radius();
   while (below(hi) && hi < 64 * cutter.radius()) lo = hi, hi *= 2;
   result.feasible = true;
-  for (result.iterations = 0; result.iterations < options.max_iterations; ++result.iterations) {
-    if (hi - lo <= options.side_step_tolerance) {
-      result.converged = true;
-      break;
-    }
-    const double mid = 0.5 * (lo + hi);
-    (below(mid) ? lo : hi) = mid;
-  }
-  result.side_step = lo;
+  const ScalarSearchResult s =
+      largest_satisfying(below, lo, hi, {options.side_step_tolerance, options.max_iterations});
+  result.side_step = s.x;
+  result.converged = s.converged;
+  result.iterations = s.iterations;
   return result;
 }
 

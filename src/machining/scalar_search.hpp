@@ -157,4 +157,22 @@ ScalarSearchResult find_bracketed_root(F&& f, double a, double fa, double b, dou
   return res;
 }
 
+// Largest x in [lo, hi] where a monotone predicate still holds (ok(lo)
+// assumed, hi the first guess where it fails): bisection until the bracket
+// is below the tolerance. `x` is the last point known to satisfy it.
+template <class P>
+ScalarSearchResult largest_satisfying(P&& ok, double lo, double hi, const ScalarSearchOptions& options = {}) {
+  ScalarSearchResult res;
+  for (res.iterations = 0; res.iterations < options.max_iterations; ++res.iterations) {
+    if (hi - lo <= options.tolerance) {
+      res.converged = true;
+      break;
+    }
+    const double mid = 0.5 * (lo + hi);
+    (ok(mid) ? lo : hi) = mid;
+  }
+  res.x = lo;
+  return res;
+}
+
 }  // namespace furrow
