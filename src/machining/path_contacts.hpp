@@ -15,8 +15,9 @@
 //     is an InputError naming the file and line: the path does not belong
 //     to this part or cannot be cut from above.
 // Tips more than `air_gap` above the part (approach, retract and link moves
-// written as G1) are marked in_air: the per-step predictor skips moves
-// between two such points (they cut nothing; the z-map still applies them).
+// written as G1) are marked in_air: the per-step predictor skips moves from
+// or to such a point (approach moves are not furrows; the z-map still
+// applies them).
 #include <functional>
 #include <vector>
 

@@ -33,7 +33,7 @@ std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, co
     StepPrediction& s = steps[k];
     const PathPoint& a = geometry.passes[s.pass][s.step];
     const PathPoint& b = geometry.passes[s.pass][s.step + 1];
-    if (a.in_air && b.in_air) {
+    if (a.in_air || b.in_air) {
       s.status = StepStatus::in_air;
     } else if (!a.contact.valid || !b.contact.valid) {
       s.status = StepStatus::no_contact;

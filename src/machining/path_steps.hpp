@@ -13,7 +13,7 @@ namespace furrow {
 
 enum class StepStatus : unsigned char {
   evaluated = 0,
-  in_air = 1,      // both tips above the part by more than the air gap: cuts nothing
+  in_air = 1,      // a tip above the part by more than the air gap: an approach, link or retract
   no_contact = 2,  // a tip has no contact point on the part
   unreachable = 3, // a contact normal has n_z <= 0, or the section leaves the part
 };

@@ -131,6 +131,21 @@ TEST_CASE("G-code through furrow predict: inch units and relative moves give the
     CHECK(std::fabs(p.summary.max_undercut.error - m.summary.max_undercut.error) < 1e-6);
     CHECK(std::fabs(p.summary.max_overcut.error - m.summary.max_overcut.error) < 1e-6);
   }
+  // A plunge cut with G1 from the safe height: the move from the air gets no
+  // per-step error, the others are unchanged.
+  std::string plunge = kMetric;
+  const std::string rapid = "G0 Z21.9\n";
+  plunge.replace(plunge.find(rapid), rapid.size(), "G1 Z21.9 F300\n");
+  write_text(dir + "/plunge.nc", plunge);
+  REQUIRE(run_furrow({"predict", kMould, "--tool", kBall6, "--toolpath", dir + "/plunge.nc", "--resolution", "0.2",
+                      "--out", dir + "/plunge.json"})
+              .status == 0);
+  const Prediction q = read_prediction(dir + "/plunge.json");
+  REQUIRE(q.steps.size() == m.steps.size() + 1);
+  CHECK(q.steps[0].status == "in_air");
+  CHECK(q.summary.points_in_air == 1);
+  for (std::size_t s = 0; s < m.steps.size(); ++s)
+    CHECK(std::fabs(q.steps[s + 1].overcut.error - m.steps[s].overcut.error) < 1e-9);
 }
 
 TEST_CASE("furrow predict and toolpath: bad input is one clear error and status 2, nothing written") {
