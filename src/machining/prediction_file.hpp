@@ -4,7 +4,8 @@
 // Other modules read predictions only through read_prediction() and
 // Prediction::predicted_error_at() (prediction.hpp).
 //
-// The writer is deterministic (json_fields::to_text; error values and
+// Writer in prediction_file.cpp, reader in prediction_reader.cpp. The
+// writer is deterministic (json_fields::to_text; error values and
 // coordinates rounded to 1e-7 mm, parameters to 1e-12), never writes NaN or
 // infinity, and marks cells without a prediction by their status letter with
 // null values. The reader validates everything and throws InputError naming
