@@ -25,6 +25,8 @@ extern const Command kPartitionCommand;
 extern const Command kImportCommand;
 extern const Command kCompareCommand;
 extern const Command kSimulateMeasurementCommand;
+extern const Command kPredictCommand;
+extern const Command kToolpathCommand;
 extern const Command kGougeCommand;
 extern const Command kSelectToolCommand;
 

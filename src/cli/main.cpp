@@ -20,6 +20,8 @@ const Command* const kCommands[] = {
     &furrow::cli::kImportCommand,
     &furrow::cli::kCompareCommand,
     &furrow::cli::kSimulateMeasurementCommand,
+    &furrow::cli::kToolpathCommand,
+    &furrow::cli::kPredictCommand,
     &furrow::cli::kGougeCommand,
     &furrow::cli::kSelectToolCommand,
 };

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "machining/scalar_search.hpp"
+
 namespace furrow {
 
 namespace {
@@ -52,15 +54,10 @@ SideStepResult ball_side_step_for_scallop(double r, double k, double height,
   };
   if (!ball_scallop_height(r, k, 0.0)) return result;  // concave section tighter than the ball
   result.feasible = true;
-  for (result.iterations = 0; result.iterations < options.max_iterations; ++result.iterations) {
-    if (hi - lo <= options.tolerance * r) {
-      result.converged = true;
-      break;
-    }
-    const double mid = 0.5 * (lo + hi);
-    (below(mid) ? lo : hi) = mid;
-  }
-  result.side_step = lo;
+  const ScalarSearchResult s = largest_satisfying(below, lo, hi, {options.tolerance * r, options.max_iterations});
+  result.side_step = s.x;
+  result.converged = s.converged;
+  result.iterations = s.iterations;
   return result;
 }
 

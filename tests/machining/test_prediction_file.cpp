@@ -1,0 +1,255 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "geometry/error.hpp"
+#include "io/part_file.hpp"
+#include "machining/contact_planning.hpp"
+#include "machining/path_prediction.hpp"
+#include "machining/prediction_file.hpp"
+#include "machining/toolpath_generation.hpp"
+
+using namespace furrow;
+
+namespace {
+
+std::string example(const std::string& name) { return std::string(FURROW_SOURCE_DIR) + "/examples/parts/" + name; }
+
+// A 3 x 2 grid on [0, 3] x [0, 2]: means 0.001 * (i + 10 j), band +-0.002;
+// cell (2, 1) not reached.
+Prediction small_prediction() {
+  Prediction p;
+  p.part = "part.json";
+  p.toolpath = "path.nc";
+  p.tool = {"BALL6", ToolType::ball, 6, 3};
+  p.tolerance = 0.01;
+  p.gouge_threshold = 0.02;
+  p.zmap = {0.05, {0, 0}, 61, 41, 10, 2000};
+  FaceGridRecord f;
+  f.name = "f";
+  f.domain = {0, 3, 0, 2};
+  f.cells_u = 3;
+  f.cells_v = 2;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const bool reached = !(i == 2 && j == 1);
+      f.status.push_back(reached ? ErrorCellStatus::reached : ErrorCellStatus::not_reached);
+      const double m = reached ? 0.001 * (i + 10 * j) : 0.0;
+      f.mean.push_back(m);
+      f.max_undercut.push_back(reached ? m + 0.002 : 0.0);
+      f.max_overcut.push_back(reached ? m - 0.002 : 0.0);
+    }
+  p.faces.push_back(f);
+  GougeSiteRecord site;
+  site.id = 1;
+  site.face = "f";
+  site.depth = 0.03;
+  site.deepest = {"f", {0.5, 0.5}, {1, 2, 3}};
+  site.area = 0.5;
+  site.samples = 20;
+  site.centroid = {"f", {0.4, 0.6}, {1, 2, 3}};
+  site.box = Eigen::AlignedBox3d(Eigen::Vector3d(0, 1, 2), Eigen::Vector3d(1, 2, 3));
+  site.uv_box = Eigen::AlignedBox2d(Eigen::Vector2d(0.2, 0.2), Eigen::Vector2d(0.8, 0.9));
+  p.gouge_sites.push_back(site);
+  p.summary.gouge_sites = 1;
+  p.has_regions = true;
+  p.regions_file = "regions.json";
+  RegionErrorRecord reached;
+  reached.region = 0;
+  reached.face = "f";
+  reached.curvature_class = "convex";
+  reached.samples = 40;
+  reached.reached = 30;
+  reached.mean = -0.002;
+  reached.max_undercut = {true, 0.001, {"f", {1, 1}, {0, 0, 1}}};
+  reached.max_overcut = {true, -0.004, {"f", {2, 1}, {0, 0, 2}}};
+  RegionErrorRecord untouched;
+  untouched.region = 1;
+  untouched.face = "f";
+  untouched.curvature_class = "planar";
+  untouched.samples = 10;
+  p.regions = {reached, untouched};
+  return p;
+}
+
+std::string reader_error(const std::string& text) {
+  try {
+    parse_prediction_json(text, "prediction.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void replace(std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("predicted_error_at: the cell's band, means interpolated over reached cells") {
+  const Prediction p = small_prediction();
+  // At a cell centre: that cell's mean.
+  PredictedError e = p.predicted_error_at("f", 1.5, 0.5);
+  CHECK(e.reached());
+  CHECK(e.cell_u == 1);
+  CHECK(e.cell_v == 0);
+  CHECK(e.value == doctest::Approx(0.001).epsilon(1e-12));
+  CHECK(e.max_undercut == doctest::Approx(0.003));
+  CHECK(e.max_overcut == doctest::Approx(-0.001));
+  // Half-way between four reached centres: their average.
+  e = p.predicted_error_at("f", 1.0, 1.0);
+  CHECK(e.value == doctest::Approx((0.0 + 0.001 + 0.010 + 0.011) / 4).epsilon(1e-12));
+  // Next to the unreached cell: only reached cells weigh in.
+  e = p.predicted_error_at("f", 2.0, 1.0);  // cell (2, 1) is not reached; (1,0), (2,0), (1,1) are
+  CHECK(e.status == ErrorCellStatus::not_reached);
+  e = p.predicted_error_at("f", 1.9, 1.1);  // in cell (1, 1)
+  REQUIRE(e.reached());
+  const double a = 0.4, b = 0.6;  // position between the centres (1.5, 0.5) and (2.5, 1.5)
+  const double w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b;
+  CHECK(e.value == doctest::Approx((w00 * 0.001 + w10 * 0.002 + w01 * 0.011) / (w00 + w10 + w01)).epsilon(1e-12));
+  // Outside the domain, an unknown face.
+  CHECK(p.predicted_error_at("f", 3.5, 1.0).status == ErrorCellStatus::outside);
+  CHECK_THROWS_WITH_AS(p.predicted_error_at("g", 1, 1), doctest::Contains("no face \"g\""), InputError);
+  CHECK(p.gouge_sites_at("f", 0.5, 0.5) == std::vector<int>{1});
+  CHECK(p.gouge_sites_at("f", 1.5, 0.5).empty());
+}
+
+TEST_CASE("prediction.json: written, read back the same, unreached cells are null, nothing is NaN") {
+  const Prediction p = small_prediction();
+  const std::string text = prediction_to_json_text(p);
+  CHECK(text.find("nan") == std::string::npos);
+  CHECK(text.find("inf") == std::string::npos);
+  CHECK(text.find("\"RRN\"") != std::string::npos);  // the status row of v cell 1
+  const Prediction back = parse_prediction_json(text, "prediction.json");
+  CHECK(prediction_to_json_text(back) == text);
+  CHECK(back.tool.name == "BALL6");
+  CHECK(back.faces[0].status[5] == ErrorCellStatus::not_reached);
+  CHECK(back.faces[0].mean[4] == doctest::Approx(0.011));
+  CHECK(back.predicted_error_at("f", 1.0, 1.0).value == doctest::Approx(p.predicted_error_at("f", 1.0, 1.0).value));
+  CHECK(back.gouge_sites[0].uv_box.max().y() == doctest::Approx(0.9));
+  REQUIRE(back.regions.size() == 2);
+  CHECK(back.regions[0].max_overcut.error == doctest::Approx(-0.004));
+  CHECK_FALSE(back.regions[1].max_undercut.found);  // null: nothing reached there
+  // Without a regions file there is no "regions" member at all.
+  Prediction plain = p;
+  plain.has_regions = false;
+  const std::string plain_text = prediction_to_json_text(plain);
+  CHECK(plain_text.find("\"regions\"") == std::string::npos);
+  CHECK_FALSE(parse_prediction_json(plain_text, "p.json").has_regions);
+}
+
+TEST_CASE("prediction.json reader: errors name the field") {
+  const std::string good = prediction_to_json_text(small_prediction());
+  std::string t = good;
+  replace(t, "\"furrow-prediction\"", "\"furrow-plan\"");
+  CHECK(reader_error(t).find("prediction.json: format: not a furrow prediction") == 0);
+  t = good;
+  replace(t, "\"version\": 1", "\"version\": 7");
+  CHECK(reader_error(t).find("prediction.json: version: version 7 is not supported") == 0);
+  t = good;
+  replace(t, "\"RRN\"", "\"RRR\"");  // claims a value for the null cell
+  CHECK(reader_error(t).find("faces[0].mean[5]: expected a number for a reached cell, got null") !=
+        std::string::npos);
+  t = good;
+  replace(t, "\"RRN\"", "\"RRX\"");
+  CHECK(reader_error(t).find("faces[0].status[1]: unknown cell status 'X'") != std::string::npos);
+  t = good;
+  replace(t, "\"RRN\"", "\"RR\"");
+  CHECK(reader_error(t).find("faces[0].status[1]: expected 3 cells, got 2") != std::string::npos);
+  t = good;
+  replace(t, "\"tolerance\": 0.01", "\"tolerance\": -1");
+  CHECK(reader_error(t).find("prediction.json: tolerance") == 0);
+  CHECK(reader_error("{}").find("prediction.json: format") == 0);
+  CHECK(reader_error("").find("prediction.json") == 0);
+}
+
+TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, errors queryable where they are") {
+  const Part part = read_part(example("semi_cylinder.json"));
+  const Cutter ball("BALL8", 4, 4);
+  ContactPlanOptions plan_options;
+  plan_options.forward.tolerance = 0.01;
+  plan_options.scallop = 0.01;
+  plan_options.min_normal_z = 0.8;
+  const ContactPlan plan = plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options);
+  Toolpath path = plan_tips(plan);
+  path.source = "planned";
+  PathPredictionOptions options;
+  options.tolerance = 0.01;
+  options.resolution = 0.1;
+  const PathPrediction r = predict_path(part, ball, path, options);
+  const Prediction p = make_prediction(part, ball, r, options, "semi_cylinder.json", "planned");
+  CHECK(p.summary.steps == path.move_count());
+  CHECK(p.summary.steps_evaluated == p.summary.steps);
+  CHECK(p.summary.steps_over_tolerance == 0);
+  CHECK(p.summary.points_without_contact == 0);
+  CHECK(p.summary.local_gouge_points == 0);   // a convex part never gouges locally
+  CHECK(p.summary.gouge_sites == 0);
+  // Convex along the passes: every step overcuts by the tolerance (up to the
+  // line search's precision). Straight across: the scallop target, less
+  // what the steps' own overcut takes off the ridge.
+  CHECK(p.summary.max_step_error == doctest::Approx(0.01).epsilon(0.01));
+  CHECK(p.summary.max_scallop <= 0.01 * 1.001);
+  CHECK(p.summary.max_scallop >= 0.01 * 0.8);
+  // The z-map value at any sample lies in its cell's stored band.
+  const FaceErrorMap& m = r.map.faces[0];
+  int checked = 0;
+  for (int j = 0; j < m.nv; j += 37)
+    for (int i = 0; i < m.nu; i += 41) {
+      if (m.status[m.index(i, j)] != ErrorCellStatus::reached) continue;
+      const PredictedError e = p.predicted_error_at("semi_cylinder", m.u(i), m.v(j));
+      REQUIRE(e.reached());
+      const double z = m.error[m.index(i, j)];
+      CHECK(z >= e.max_overcut - 1e-7);
+      CHECK(z <= e.max_undercut + 1e-7);
+      ++checked;
+    }
+  CHECK(checked > 20);
+  // And the file carries it all.
+  const Prediction back = parse_prediction_json(prediction_to_json_text(p), "p.json");
+  CHECK(back.steps.size() == p.steps.size());
+  CHECK(back.summary.max_scallop == doctest::Approx(p.summary.max_scallop).epsilon(1e-6));
+}
+
+TEST_CASE("a 20 mm ball through the mould's dimple: local gouges at the bottom, gouge sites around it") {
+  const Part part = read_part(example("mould.json"));
+  const VerticalProjector projector(part);
+  const Cutter ball("BALL20", 10, 10);
+  Toolpath path;
+  path.kind = ToolpathKind::contact_points;
+  path.source = "dimple.csv";
+  ToolpathPass pass;
+  for (int k = 0; k <= 40; ++k) {
+    const SurfacePoint s = projector.project(62 + 0.5 * k, 30);
+    ToolpathPoint q;
+    q.position = s.point;
+    q.normal = s.normal;
+    q.line = k + 1;
+    q.has_uv = true;
+    q.uv = s.uv;
+    pass.points.push_back(q);
+  }
+  path.passes.push_back(pass);
+  PathPredictionOptions options;
+  options.tolerance = 0.01;
+  options.gouge_threshold = 0.002;
+  options.resolution = 0.1;
+  const PathPrediction r = predict_path(part, ball, path, options);
+  const Prediction p = make_prediction(part, ball, r, options, "mould.json", "dimple.csv");
+  REQUIRE(p.summary.local_gouge_points > 0);
+  for (const LocalGougeRecord& g : p.local_gouges) {
+    CHECK(g.status == "gouge");
+    CHECK(std::fabs(g.at.xyz.x() - 72) < 1.5);  // where the concave radius is below 10 mm
+    CHECK(g.max_excess > 0);
+    CHECK(!g.directions_deg.empty());
+  }
+  REQUIRE(p.summary.gouge_sites > 0);
+  for (const GougeSiteRecord& s : p.gouge_sites) {
+    CHECK(s.depth > 0.002);
+    CHECK(std::fabs(s.centroid.xyz.x() - 72) < 4);
+    CHECK(p.gouge_sites_at(s.face, s.deepest.uv.x(), s.deepest.uv.y()).size() >= 1);
+    CHECK(p.predicted_error_at(s.face, s.deepest.uv.x(), s.deepest.uv.y()).max_overcut < -0.002);
+  }
+}
