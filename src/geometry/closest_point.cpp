@@ -1,0 +1,244 @@
+#include "geometry/closest_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "geometry/error.hpp"
+#include "geometry/local_foot_point.hpp"
+#include "geometry/seed_grid.hpp"
+
+namespace furrow {
+
+const char* to_string(FootLocation location) {
+  switch (location) {
+    case FootLocation::interior: return "interior";
+    case FootLocation::domain_edge: return "domain_edge";
+    case FootLocation::trim_edge: return "trim_edge";
+  }
+  return "?";
+}
+
+namespace {
+
+struct Candidate {
+  double squared_distance = std::numeric_limits<double>::infinity();
+  std::size_t face = 0;
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  bool on_trim = false;
+  bool converged = false;
+  int iterations = 0;
+  Eigen::Vector2d cell_lo = Eigen::Vector2d::Zero(), cell_hi = Eigen::Vector2d::Zero();
+};
+
+void check_options(const ClosestPointOptions& o) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw InputError("closest point options: " + what);
+  };
+  require(o.cells_per_span >= 1, "cells_per_span must be at least 1");
+  require(o.min_cells >= 1, "min_cells must be at least 1");
+  require(o.max_cells >= o.min_cells && o.max_cells >= o.cells_per_span,
+          "max_cells must be at least min_cells and cells_per_span");
+  require(o.max_newton_iterations >= 1, "max_newton_iterations must be at least 1");
+  require(o.max_line_search_halvings >= 1, "max_line_search_halvings must be at least 1");
+  require(o.step_tolerance > 0 && std::isfinite(o.step_tolerance),
+          "step_tolerance must be positive");
+  require(o.stall_tolerance >= o.step_tolerance && std::isfinite(o.stall_tolerance),
+          "stall_tolerance must be at least step_tolerance");
+  require(o.trim_samples_per_segment >= 1, "trim_samples_per_segment must be at least 1");
+}
+
+bool in_box(const Eigen::Vector2d& uv, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  return (uv.array() >= lo.array()).all() && (uv.array() <= hi.array()).all();
+}
+
+// Solves one cell: the box minimum, replaced by the minimum along the cell's
+// trim segments when the box minimum is trimmed away.
+void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
+                const Eigen::Vector3d& q, const Eigen::Vector2d* seed,
+                const ClosestPointOptions& options, Candidate& best) {
+  const Face& face = part.faces[cell.face];
+  Eigen::Vector2d start;
+  if (seed) {
+    start = *seed;
+  } else if (best.face == cell.face && std::isfinite(best.squared_distance) &&
+             in_box(best.uv, cell.lo, cell.hi)) {
+    start = best.uv;  // continue from the best foot (typically on the shared edge)
+  } else if (cell.sample_kept == 0x1f) {
+    // q's projection on the tangent plane at the middle: Newton's first step
+    // from there, for free.
+    Eigen::Matrix<double, 3, 2> J;
+    J << cell.middle_su, cell.middle_sv;
+    const Eigen::Matrix2d JtJ = J.transpose() * J;
+    start = cell.sample_uv[4];
+    if (JtJ.determinant() > 1e-12 * JtJ.trace() * JtJ.trace())
+      start += JtJ.inverse() * (J.transpose() * (q - cell.sample_point[4]));
+  } else {
+    double nearest = std::numeric_limits<double>::infinity();
+    start = cell.sample_uv[4];
+    for (int k = 0; k < 5; ++k) {
+      if (!(cell.sample_kept >> k & 1u)) continue;
+      const double d2 = (cell.sample_point[k] - q).squaredNorm();
+      if (d2 < nearest) {
+        nearest = d2;
+        start = cell.sample_uv[k];
+      }
+    }
+  }
+  Candidate c;
+  c.face = cell.face;
+  c.cell_lo = cell.lo;
+  c.cell_hi = cell.hi;
+  const LocalFoot in_box_foot =
+      foot_point_in_box(face.surface(), q, start, cell.lo, cell.hi, options);
+  if (!cell.cut_by_trim || face.trim().contains(in_box_foot.uv)) {
+    c.squared_distance = in_box_foot.squared_distance;
+    c.uv = in_box_foot.uv;
+    c.point = in_box_foot.point;
+    c.converged = in_box_foot.converged;
+    c.iterations = in_box_foot.iterations;
+  } else {
+    for (std::uint32_t k = 0; k < cell.segment_count; ++k) {
+      const TrimSegment& seg = grid.trim_segments()[cell.first_segment + k];
+      const LocalFoot f = foot_point_on_segment(face.surface(), q, seg.a, seg.b, options);
+      if (f.squared_distance < c.squared_distance) {
+        c.squared_distance = f.squared_distance;
+        c.uv = f.uv;
+        c.point = f.point;
+        c.converged = f.converged;
+        c.iterations = f.iterations;
+        c.on_trim = true;
+      }
+    }
+  }
+  if (c.squared_distance < best.squared_distance) best = c;
+}
+
+// Unit normal at the foot (Su x Sv, flipped for a reversed face); at a
+// degenerate point (pole, collapsed edge) the normal of a point nudged into
+// the domain is the limit a user expects.
+Eigen::Vector3d foot_normal(const Face& face, const Eigen::Vector2d& uv) {
+  const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
+  const Eigen::Vector3d n = d.Su.cross(d.Sv);
+  if (n.norm() > kDegenerateRelativeTolerance * d.Su.norm() * d.Sv.norm() && n.norm() > 0)
+    return face.reversed() ? Eigen::Vector3d(-n.normalized()) : Eigen::Vector3d(n.normalized());
+  DifferentialGeometry g = face.geometry(uv.x(), uv.y());
+  if (!g.degenerate) return g.normal;
+  const ParameterDomain& dom = face.domain();
+  const Eigen::Vector2d middle(0.5 * (dom.u0 + dom.u1), 0.5 * (dom.v0 + dom.v1));
+  for (double step : {1e-9, 1e-7, 1e-5, 1e-3}) {
+    const Eigen::Vector2d nudged = uv + step * (middle - uv);
+    g = face.geometry(nudged.x(), nudged.y());
+    if (!g.degenerate) return g.normal;
+  }
+  return g.normal;
+}
+
+}  // namespace
+
+ClosestPointFinder::ClosestPointFinder(const Part& part, ClosestPointOptions options)
+    : part_(&part), options_(options) {
+  check_options(options_);
+  grid_ = std::make_unique<SeedGrid>(part, options_);
+}
+
+ClosestPointFinder::~ClosestPointFinder() = default;
+ClosestPointFinder::ClosestPointFinder(ClosestPointFinder&&) noexcept = default;
+ClosestPointFinder& ClosestPointFinder::operator=(ClosestPointFinder&&) noexcept = default;
+
+std::size_t ClosestPointFinder::cell_count() const { return grid_->cells().size(); }
+
+ClosestPoint ClosestPointFinder::project(const Eigen::Vector3d& q) const {
+  return search(q, nullptr);
+}
+
+ClosestPoint ClosestPointFinder::project(const Eigen::Vector3d& q, const ClosestPoint& hint) const {
+  return search(q, &hint);
+}
+
+ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestPoint* hint) const {
+  const SeedGrid& grid = *grid_;
+  const auto& cells = grid.cells();
+  const auto& nodes = grid.nodes();
+  Candidate best;
+  int examined = 0;
+  int hint_cell = -1;
+  if (hint && hint->face < part_->faces.size()) {
+    hint_cell = grid.cell_at(hint->face, hint->uv);
+    if (hint_cell >= 0) {
+      solve_cell(*part_, grid, cells[hint_cell], q, &hint->uv, options_, best);
+      ++examined;
+    }
+  }
+
+  // Depth-first branch and bound over the box tree, nearer child first.
+  // Squared distances to boxes: no square roots on the way down.
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const SeedNode& node = nodes[stack[--top]];
+    if (node.box.squaredExteriorDistance(q) >= best.squared_distance) continue;
+    if (node.left < 0) {
+      // Cells of the leaf nearest first (at most four).
+      std::pair<double, std::uint32_t> order[4];
+      const std::uint32_t n = node.count;
+      for (std::uint32_t k = 0; k < n; ++k)
+        order[k] = {cells[node.first + k].lower_bound(q), node.first + k};
+      std::sort(order, order + n);
+      for (std::uint32_t k = 0; k < n; ++k) {
+        if (static_cast<int>(order[k].second) == hint_cell) continue;
+        if (order[k].first >= std::sqrt(best.squared_distance)) break;
+        solve_cell(*part_, grid, cells[order[k].second], q, nullptr, options_, best);
+        ++examined;
+      }
+      continue;
+    }
+    const double bl = nodes[node.left].box.squaredExteriorDistance(q);
+    const double br = nodes[node.right].box.squaredExteriorDistance(q);
+    const bool left_first = bl <= br;
+    const std::int32_t near = left_first ? node.left : node.right;
+    const std::int32_t far = left_first ? node.right : node.left;
+    if (std::max(bl, br) < best.squared_distance) stack[top++] = far;
+    if (std::min(bl, br) < best.squared_distance) stack[top++] = near;
+  }
+
+  const Face& face = part_->faces[best.face];
+  const ParameterDomain& dom = face.domain();
+  const bool inside_cell = (best.uv.array() > best.cell_lo.array()).all() &&
+                           (best.uv.array() < best.cell_hi.array()).all();
+  if (!best.on_trim && !(inside_cell && best.converged)) {
+    // The best cell minimum sits on a cell's edge; one solve over the whole
+    // face from there confirms it is stationary for the face (or improves it).
+    const LocalFoot polish = foot_point_in_box(face.surface(), q, best.uv, {dom.u0, dom.v0},
+                                               {dom.u1, dom.v1}, options_);
+    if (polish.squared_distance <= best.squared_distance && face.trim().contains(polish.uv)) {
+      best.uv = polish.uv;
+      best.point = polish.point;
+      best.squared_distance = polish.squared_distance;
+      best.converged = polish.converged;
+      best.iterations += polish.iterations;
+    }
+  }
+
+  ClosestPoint out;
+  out.face = best.face;
+  out.uv = best.uv;
+  out.point = best.point;
+  out.normal = foot_normal(face, best.uv);
+  out.distance = (q - best.point).norm();
+  out.signed_distance = (q - best.point).dot(out.normal) < 0 ? -out.distance : out.distance;
+  const bool on_domain_edge = best.uv.x() <= dom.u0 || best.uv.x() >= dom.u1 ||
+                              best.uv.y() <= dom.v0 || best.uv.y() >= dom.v1;
+  out.location = best.on_trim     ? FootLocation::trim_edge
+                 : on_domain_edge ? FootLocation::domain_edge
+                                  : FootLocation::interior;
+  out.converged = best.converged;
+  out.iterations = best.iterations;
+  out.cells_examined = examined;
+  return out;
+}
+
+}  // namespace furrow

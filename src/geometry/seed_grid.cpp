@@ -1,0 +1,240 @@
+#include "geometry/seed_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "geometry/error.hpp"
+
+namespace furrow {
+
+namespace {
+
+constexpr int kSub = 4;  // sub-samples per cell and direction: (kSub + 1)^2 points
+
+// Clips segment a-b to the box [lo, hi] (Liang-Barsky); false when it misses.
+bool clip_segment(Eigen::Vector2d& a, Eigen::Vector2d& b, const Eigen::Vector2d& lo,
+                  const Eigen::Vector2d& hi) {
+  double t0 = 0, t1 = 1;
+  const Eigen::Vector2d d = b - a;
+  for (int k = 0; k < 2; ++k) {
+    const double p[2] = {-d(k), d(k)};
+    const double q[2] = {a(k) - lo(k), hi(k) - a(k)};
+    for (int s = 0; s < 2; ++s) {
+      if (p[s] == 0) {
+        if (q[s] < 0) return false;
+        continue;
+      }
+      const double t = q[s] / p[s];
+      if (p[s] < 0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+    }
+  }
+  if (t0 > t1) return false;
+  const Eigen::Vector2d a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+// Axis-aligned box of a cell's oriented box.
+Eigen::AlignedBox3d cell_box(const SeedCell& c) {
+  const Eigen::Vector3d reach = c.axes.transpose().cwiseAbs() * c.half_extent;
+  return Eigen::AlignedBox3d(c.centre - reach, c.centre + reach);
+}
+
+// Orthonormal rows (tangent along Su, second tangent, normal) at a point;
+// any frame where the tangents degenerate (the box is then just less tight).
+Eigen::Matrix3d tangent_frame(const SurfaceDerivatives& d) {
+  Eigen::Vector3d n = d.Su.cross(d.Sv);
+  Eigen::Vector3d t1 = d.Su;
+  if (!(n.norm() > 1e-300) || !(t1.norm() > 1e-300)) return Eigen::Matrix3d::Identity();
+  n.normalize();
+  t1.normalize();
+  Eigen::Matrix3d axes;
+  axes.row(0) = t1;
+  axes.row(1) = n.cross(t1);
+  axes.row(2) = n;
+  return axes;
+}
+
+}  // namespace
+
+double SeedCell::lower_bound(const Eigen::Vector3d& q) const {
+  const Eigen::Vector3d d = q - centre;
+  const double sphere = d.norm() - radius;
+  const Eigen::Vector3d excess = ((axes * d).cwiseAbs() - half_extent).cwiseMax(0.0);
+  return std::max(sphere, excess.norm());
+}
+
+std::vector<double> seed_breaks(const std::vector<double>& knots, double lo, double hi,
+                                const ClosestPointOptions& options) {
+  std::vector<double> distinct{lo};
+  for (double k : knots)
+    if (k > distinct.back() && k < hi) distinct.push_back(k);
+  distinct.push_back(hi);
+  const int spans = static_cast<int>(distinct.size()) - 1;
+  std::vector<double> breaks;
+  if (spans * options.cells_per_span > options.max_cells) {
+    for (int k = 0; k <= options.max_cells; ++k)
+      breaks.push_back(lo + (hi - lo) * k / options.max_cells);
+    breaks.back() = hi;
+    return breaks;
+  }
+  int per_span = std::max(options.cells_per_span, (options.min_cells + spans - 1) / spans);
+  per_span = std::max(options.cells_per_span, std::min(per_span, options.max_cells / spans));
+  for (int s = 0; s < spans; ++s)
+    for (int k = 0; k < per_span; ++k)
+      breaks.push_back(distinct[s] + (distinct[s + 1] - distinct[s]) * k / per_span);
+  breaks.push_back(hi);
+  return breaks;
+}
+
+SeedGrid::SeedGrid(const Part& part, const ClosestPointOptions& options) {
+  for (std::size_t f = 0; f < part.faces.size(); ++f) add_face(part, f, options);
+  if (cells_.empty())
+    throw InputError("closest point: the part has no surface left after trimming");
+  std::vector<std::uint32_t> order(cells_.size());
+  std::iota(order.begin(), order.end(), 0u);
+  nodes_.reserve(2 * cells_.size());
+  build_tree(order, 0, static_cast<std::uint32_t>(order.size()));
+  // Store cells in tree order so that a leaf's cells are contiguous.
+  std::vector<SeedCell> sorted(cells_.size());
+  std::vector<std::int32_t> new_index(cells_.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    sorted[k] = cells_[order[k]];
+    new_index[order[k]] = static_cast<std::int32_t>(k);
+  }
+  cells_ = std::move(sorted);
+  for (FaceCells& fc : faces_)
+    for (std::int32_t& i : fc.index)
+      if (i >= 0) i = new_index[i];
+}
+
+void SeedGrid::add_face(const Part& part, std::size_t face_index,
+                        const ClosestPointOptions& options) {
+  const Face& face = part.faces[face_index];
+  const NurbsSurface& s = face.surface();
+  const ParameterDomain& dom = face.domain();
+  FaceCells fc;
+  fc.breaks_u = seed_breaks(s.knots_u(), dom.u0, dom.u1, options);
+  fc.breaks_v = seed_breaks(s.knots_v(), dom.v0, dom.v1, options);
+  const int nu = static_cast<int>(fc.breaks_u.size()) - 1;
+  const int nv = static_cast<int>(fc.breaks_v.size()) - 1;
+  fc.index.assign(static_cast<std::size_t>(nu) * nv, -1);
+  const Trim& trim = face.trim();
+
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      SeedCell cell;
+      cell.face = static_cast<std::uint32_t>(face_index);
+      cell.lo = {fc.breaks_u[i], fc.breaks_v[j]};
+      cell.hi = {fc.breaks_u[i + 1], fc.breaks_v[j + 1]};
+      const Eigen::Vector2d mid = 0.5 * (cell.lo + cell.hi);
+      if (!trim.empty()) {
+        const double half_diagonal = 0.5 * (cell.hi - cell.lo).norm();
+        bool cut = trim.distance_to_boundary(mid) <= half_diagonal;
+        if (cut) {
+          cell.first_segment = static_cast<std::uint32_t>(segments_.size());
+          for (const UvLoop& loop : trim.loops())
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+              Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
+              if (clip_segment(a, b, cell.lo, cell.hi)) segments_.push_back({a, b});
+            }
+          cell.segment_count = static_cast<std::uint32_t>(segments_.size()) - cell.first_segment;
+          cut = cell.segment_count > 0;
+        }
+        if (!cut && !trim.contains(mid)) continue;  // wholly trimmed away
+        cell.cut_by_trim = cut;
+      }
+
+      // Sub-samples: bounding sphere and the five seed samples.
+      Eigen::Vector3d pts[kSub + 1][kSub + 1];
+      double max_uu = 0, max_uv = 0, max_vv = 0;
+      Eigen::AlignedBox3d box;
+      const Eigen::Vector2d h = (cell.hi - cell.lo) / kSub;
+      for (int a = 0; a <= kSub; ++a)
+        for (int b = 0; b <= kSub; ++b) {
+          const SurfaceDerivatives d = s.evaluate(cell.lo.x() + a * h.x(), cell.lo.y() + b * h.y(), 2);
+          pts[a][b] = d.S;
+          box.extend(d.S);
+          max_uu = std::max(max_uu, d.Suu.norm());
+          max_uv = std::max(max_uv, d.Suv.norm());
+          max_vv = std::max(max_vv, d.Svv.norm());
+        }
+      cell.centre = box.center();
+      const SurfaceDerivatives middle = s.evaluate(mid.x(), mid.y(), 1);
+      cell.middle_su = middle.Su;
+      cell.middle_sv = middle.Sv;
+      cell.axes = tangent_frame(middle);
+      double r = 0;
+      Eigen::Vector3d extent = Eigen::Vector3d::Zero();
+      for (auto& row : pts)
+        for (auto& p : row) {
+          r = std::max(r, (p - cell.centre).norm());
+          extent = extent.cwiseMax((cell.axes * (p - cell.centre)).cwiseAbs());
+        }
+      const double bulge =
+          2.0 * (h.x() * h.x() * max_uu + 2 * h.x() * h.y() * max_uv + h.y() * h.y() * max_vv) / 8;
+      const double slack = bulge + 1e-12 * (1 + cell.centre.norm());
+      cell.radius = r + slack;
+      cell.half_extent = extent.array() + slack;
+      const int corner[5][2] = {{0, 0}, {kSub, 0}, {0, kSub}, {kSub, kSub}, {kSub / 2, kSub / 2}};
+      cell.sample_kept = 0;
+      for (int k = 0; k < 5; ++k) {
+        cell.sample_uv[k] = cell.lo + Eigen::Vector2d(corner[k][0] * h.x(), corner[k][1] * h.y());
+        cell.sample_point[k] = pts[corner[k][0]][corner[k][1]];
+        if (!cell.cut_by_trim || trim.contains(cell.sample_uv[k])) cell.sample_kept |= 1u << k;
+      }
+      fc.index[static_cast<std::size_t>(i) * nv + j] = static_cast<std::int32_t>(cells_.size());
+      cells_.push_back(cell);
+    }
+  }
+  faces_.push_back(std::move(fc));
+}
+
+std::int32_t SeedGrid::build_tree(std::vector<std::uint32_t>& order, std::uint32_t first,
+                                  std::uint32_t count) {
+  const auto node = static_cast<std::int32_t>(nodes_.size());
+  nodes_.emplace_back();
+  const auto begin = order.begin() + first, end = begin + count;
+  if (count <= 4) {
+    SeedNode leaf;
+    leaf.first = first;
+    leaf.count = count;
+    for (auto it = begin; it != end; ++it) leaf.box.extend(cell_box(cells_[*it]));
+    nodes_[node] = leaf;
+    return node;
+  }
+  Eigen::AlignedBox3d box;
+  for (auto it = begin; it != end; ++it) box.extend(cells_[*it].centre);
+  int axis = 0;
+  box.sizes().maxCoeff(&axis);
+  const auto middle = begin + count / 2;
+  std::nth_element(begin, middle, end, [&](std::uint32_t a, std::uint32_t b) {
+    return cells_[a].centre(axis) < cells_[b].centre(axis);
+  });
+  const std::int32_t left = build_tree(order, first, count / 2);
+  const std::int32_t right = build_tree(order, first + count / 2, count - count / 2);
+  SeedNode inner;
+  inner.left = left;
+  inner.right = right;
+  inner.box = nodes_[left].box.merged(nodes_[right].box);
+  nodes_[node] = inner;
+  return node;
+}
+
+int SeedGrid::cell_at(std::size_t face, const Eigen::Vector2d& uv) const {
+  if (face >= faces_.size()) return -1;
+  const FaceCells& fc = faces_[face];
+  auto locate = [](const std::vector<double>& breaks, double t) {
+    const auto it = std::upper_bound(breaks.begin() + 1, breaks.end() - 1, t);
+    return static_cast<int>(it - breaks.begin()) - 1;
+  };
+  const int i = locate(fc.breaks_u, uv.x());
+  const int j = locate(fc.breaks_v, uv.y());
+  const int nv = static_cast<int>(fc.breaks_v.size()) - 1;
+  return fc.index[static_cast<std::size_t>(i) * nv + j];
+}
+
+}  // namespace furrow

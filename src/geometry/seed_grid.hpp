@@ -1,0 +1,99 @@
+#pragma once
+// Seed cells for the global closest-point search (closest_point.hpp): every
+// face of a part cut into small (u,v) boxes, each with a bounding sphere and
+// an oriented bounding box of its piece of surface, and a binary tree of
+// axis-aligned boxes over all cells.
+//
+// Cells follow the knot spans (ClosestPointOptions::cells_per_span per span
+// and direction, at least min_cells and at most max_cells per direction), so
+// a cell is polynomial and small against the surface's features.
+//
+// Bounding volumes are conservative: spheres and oriented boxes hold a 5 x 5
+// sub-sample of the cell grown by a bound on how far the surface can bulge
+// between sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| + hv^2 |Svv|) / 8 with the
+// sampled maxima doubled. The distance from q to a cell's box (or sphere) is
+// a lower bound on the distance to its surface; that is what lets the search
+// skip cells safely.
+//
+// Trims: cells wholly trimmed away are dropped; cells cut by a trim loop keep
+// the loop segments clipped to their box, so the search can minimise along
+// the trim boundary there.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/closest_point.hpp"
+#include "geometry/part.hpp"
+
+namespace furrow {
+
+struct SeedCell {
+  std::uint32_t face = 0;
+  Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // (u,v) box
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // bounding sphere
+  double radius = 0;
+  // Oriented bounding box about `centre`: rows of `axes` are the unit
+  // tangents and normal at the middle, `half_extent` the half sizes along
+  // them. Much tighter than the sphere across a nearly flat cell.
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half_extent = Eigen::Vector3d::Zero();
+  // Tangent plane at the middle sample: seeds Newton at q's projection on it.
+  Eigen::Vector3d middle_su = Eigen::Vector3d::Zero(), middle_sv = Eigen::Vector3d::Zero();
+  // Corners (lo, (hi.u, lo.v), (lo.u, hi.v), hi) and the middle, in (u,v) and 3-D.
+  Eigen::Vector2d sample_uv[5];
+  Eigen::Vector3d sample_point[5];
+  std::uint8_t sample_kept = 0x1f;  // bit k: sample k is kept by the trim
+  bool cut_by_trim = false;
+  std::uint32_t first_segment = 0, segment_count = 0;  // into SeedGrid::trim_segments()
+
+  // Lower bound on the distance from q to any surface point of the cell.
+  double lower_bound(const Eigen::Vector3d& q) const;
+};
+
+// A trim loop segment clipped to one cell, in (u,v).
+struct TrimSegment {
+  Eigen::Vector2d a, b;
+};
+
+// Node of the box tree: an axis-aligned box holding the oriented boxes of
+// its cells. Leaves cover cells [first, first + count).
+struct SeedNode {
+  Eigen::AlignedBox3d box;
+  std::int32_t left = -1, right = -1;  // children; -1 for a leaf
+  std::uint32_t first = 0, count = 0;
+};
+
+class SeedGrid {
+ public:
+  SeedGrid(const Part& part, const ClosestPointOptions& options);
+
+  const std::vector<SeedCell>& cells() const { return cells_; }
+  const std::vector<SeedNode>& nodes() const { return nodes_; }  // nodes_[0] is the root
+  const std::vector<TrimSegment>& trim_segments() const { return segments_; }
+
+  // Index of the cell of `face` whose box contains (u,v) (clamped to the
+  // domain), or -1 when that cell was trimmed away.
+  int cell_at(std::size_t face, const Eigen::Vector2d& uv) const;
+
+ private:
+  struct FaceCells {
+    std::vector<double> breaks_u, breaks_v;  // cell boundaries
+    std::vector<std::int32_t> index;         // (i * cells_v + j) -> cell or -1
+  };
+  void add_face(const Part& part, std::size_t face, const ClosestPointOptions& options);
+  std::int32_t build_tree(std::vector<std::uint32_t>& order, std::uint32_t first,
+                          std::uint32_t count);
+
+  std::vector<SeedCell> cells_;
+  std::vector<SeedNode> nodes_;
+  std::vector<TrimSegment> segments_;
+  std::vector<FaceCells> faces_;
+};
+
+// Cell boundaries along one direction: every knot span cut into equal parts
+// (see ClosestPointOptions), or a uniform division when there are too many
+// spans. Exposed for tests.
+std::vector<double> seed_breaks(const std::vector<double>& knots, double lo, double hi,
+                                const ClosestPointOptions& options);
+
+}  // namespace furrow

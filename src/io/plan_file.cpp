@@ -1,0 +1,159 @@
+#include "io/plan_file.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <map>
+
+#include "geometry/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json_fields.hpp"
+#include "io/part_file.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using jf::json;
+
+std::optional<std::size_t> InspectionPlan::find(const std::string& id) const {
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (points[k].id == id) return k;
+  return std::nullopt;
+}
+
+namespace {
+
+void check_id(const std::string& id, const std::string& where) {
+  if (id.empty()) throw InputError(where + ": empty id");
+  for (unsigned char c : id)
+    if (c == ',' || std::isspace(c) || c < 0x20 || c == '(' || c == ')')
+      throw InputError(where + ": id \"" + id +
+                       "\" contains a comma, a parenthesis or white space (ids are also CSV "
+                       "fields and DMIS labels)");
+}
+
+Eigen::Vector3d unit(const Eigen::Vector3d& v, const std::string& where) {
+  const double n = v.norm();
+  if (!(n > 1e-12)) throw InputError(where + ": zero length (a direction is needed)");
+  return std::abs(n - 1) > 1e-12 ? Eigen::Vector3d(v / n) : v;
+}
+
+PlannedPoint parse_point(const json& jp, const std::string& where, double scale) {
+  jf::object(jp, where);
+  auto field = [&](const char* key) -> const json& { return jf::member(jp, key, where); };
+  auto at = [&](const char* key) { return jf::child(where, key); };
+  PlannedPoint p;
+  p.id = jf::string(field("id"), at("id"));
+  check_id(p.id, at("id"));
+  p.order = jf::integer(field("order"), at("order"));
+  if (p.order < 1) throw InputError(at("order") + ": must be at least 1");
+  p.face = jf::string(field("face"), at("face"));
+  const int face_index = jf::integer(field("face_index"), at("face_index"));
+  if (face_index < 0) throw InputError(at("face_index") + ": must not be negative");
+  p.face_index = static_cast<std::size_t>(face_index);
+  if (const json* jr = jf::optional_member(jp, "region", where)) {
+    p.region = jf::integer(*jr, at("region"));
+    if (*p.region < 0) throw InputError(at("region") + ": must not be negative");
+  }
+  p.uv = {jf::number(field("u"), at("u")), jf::number(field("v"), at("v"))};
+  p.xyz = scale * jf::vector3(field("xyz"), at("xyz"));
+  p.ijk = unit(jf::vector3(field("ijk"), at("ijk")), at("ijk"));
+  p.approach = scale * jf::vector3(field("approach"), at("approach"));
+  p.retract = scale * jf::vector3(field("retract"), at("retract"));
+  return p;
+}
+
+}  // namespace
+
+InspectionPlan parse_plan(const std::string& text, const std::string& name) {
+  const json doc = jf::parse_text(text, name);
+  const std::string root = name + ":";
+  jf::object(doc, root);
+  if (const json* jv = jf::optional_member(doc, "version", root)) {
+    const int version = jf::integer(*jv, jf::child(root, "version"));
+    if (version != 1)
+      throw InputError(jf::child(root, "version") + ": version " + std::to_string(version) +
+                       " is not supported (this Furrow reads version 1)");
+  }
+  const double scale = units_to_mm(jf::string(jf::member(doc, "units", root), jf::child(root, "units")),
+                                   jf::child(root, "units"));
+  InspectionPlan plan;
+  if (const json* jpart = jf::optional_member(doc, "part", root))
+    plan.part = jf::string(*jpart, jf::child(root, "part"));
+  const std::string probe_where = jf::child(root, "probe");
+  const json& jprobe = jf::object(jf::member(doc, "probe", root), probe_where);
+  plan.probe.name = jf::string(jf::member(jprobe, "name", probe_where), jf::child(probe_where, "name"));
+  plan.probe.diameter = scale * jf::positive_number(jf::member(jprobe, "diameter", probe_where),
+                                                    jf::child(probe_where, "diameter"));
+
+  const std::string points_where = jf::child(root, "points");
+  const json& jpoints = jf::array(jf::member(doc, "points", root), points_where);
+  if (jpoints.empty()) throw InputError(points_where + ": the plan has no points");
+  std::map<std::string, std::size_t> ids;
+  std::map<int, std::size_t> orders;
+  for (std::size_t k = 0; k < jpoints.size(); ++k) {
+    const std::string where = jf::child(points_where, k);
+    PlannedPoint p = parse_point(jpoints[k], where, scale);
+    if (const auto [it, fresh] = ids.emplace(p.id, k); !fresh)
+      throw InputError(jf::child(where, "id") + ": duplicate id \"" + p.id + "\" (also points[" +
+                       std::to_string(it->second) + "])");
+    if (const auto [it, fresh] = orders.emplace(p.order, k); !fresh)
+      throw InputError(jf::child(where, "order") + ": duplicate order " + std::to_string(p.order) +
+                       " (also points[" + std::to_string(it->second) + "])");
+    plan.points.push_back(std::move(p));
+  }
+  return plan;
+}
+
+InspectionPlan read_plan(const std::string& path) { return parse_plan(jf::read_text(path), path); }
+
+std::string plan_to_json_text(const InspectionPlan& plan) {
+  json doc;
+  doc["version"] = 1;
+  doc["units"] = "mm";
+  if (!plan.part.empty()) doc["part"] = plan.part;
+  doc["probe"] = {{"name", plan.probe.name},
+                  {"diameter", jf::finite(plan.probe.diameter, "probe diameter")}};
+  json points = json::array();
+  for (const PlannedPoint& p : plan.points) {
+    json jp;
+    jp["id"] = p.id;
+    jp["order"] = p.order;
+    jp["face"] = p.face;
+    jp["face_index"] = p.face_index;
+    if (p.region) jp["region"] = *p.region;
+    jp["u"] = jf::finite(p.uv.x(), "u");
+    jp["v"] = jf::finite(p.uv.y(), "v");
+    jp["xyz"] = jf::vector_json(p.xyz);
+    jp["ijk"] = jf::vector_json(p.ijk);
+    jp["approach"] = jf::vector_json(p.approach);
+    jp["retract"] = jf::vector_json(p.retract);
+    points.push_back(std::move(jp));
+  }
+  doc["points"] = std::move(points);
+  return jf::to_text(doc);
+}
+
+void write_plan(const InspectionPlan& plan, const std::string& path) {
+  write_file_atomically(path, plan_to_json_text(plan));
+}
+
+void check_plan_against_part(const InspectionPlan& plan, const Part& part, const std::string& name,
+                             double tolerance) {
+  for (std::size_t k = 0; k < plan.points.size(); ++k) {
+    const PlannedPoint& p = plan.points[k];
+    const std::string where = name + ": points[" + std::to_string(k) + "] (id " + p.id + ")";
+    if (p.face_index >= part.faces.size())
+      throw InputError(where + ": face_index " + std::to_string(p.face_index) + " but the part has " +
+                       std::to_string(part.faces.size()) + " faces");
+    const Face& face = part.faces[p.face_index];
+    if (face.name() != p.face)
+      throw InputError(where + ": face \"" + p.face + "\" but face " + std::to_string(p.face_index) +
+                       " of the part is \"" + face.name() + "\"");
+    const double off = (face.surface().point(p.uv.x(), p.uv.y()) - p.xyz).norm();
+    if (!(off <= tolerance))
+      throw InputError(where + ": xyz is " + std::to_string(off) +
+                       " mm from the face point at its (u, v); the plan was made for another part");
+  }
+}
+
+}  // namespace furrow

@@ -1,0 +1,73 @@
+#pragma once
+// CMM inspection plans: plan.json (DESIGN.md "Files", docs/formats.md "Plan").
+//
+// A plan is what the probe planner decided and what every later step refers
+// back to: for each point its id (also the DMIS label), execution order,
+// face, (u,v), nominal contact point xyz and unit normal ijk (out of the
+// material; the probe touches moving along -ijk), the probe-centre positions
+// where the touch move starts (approach) and where the probe backs off to
+// (retract), and the region of the partition it samples. The probe is part
+// of the plan because centres and contacts differ by its radius.
+//
+// Lengths are millimetres inside; a file may say "units": "inch" (xyz,
+// approach, retract, probe diameter are converted; u, v, ijk are unit-free).
+// The writer always writes millimetres with shortest exact numbers, so
+// read(write(plan)) reproduces the plan bit for bit.
+//
+// Errors: InputError naming the file and field ("plan.json: points[4].ijk:
+// zero length"), duplicate ids or orders, and - when checked against a part -
+// a face index or name that does not match the part.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/part.hpp"
+
+namespace furrow {
+
+struct ProbeDefinition {
+  std::string name;      // free text ("TESASTAR 2 mm ruby")
+  double diameter = 0;   // ball diameter [mm], > 0
+  double radius() const { return diameter / 2; }
+};
+
+struct PlannedPoint {
+  std::string id;         // unique, non-empty, no ',' or white space (also a DMIS label)
+  int order = 0;          // execution order, unique, >= 1
+  std::string face;       // Face::name() of the face it lies on
+  std::size_t face_index = 0;
+  std::optional<int> region;  // region index in the partition, if the plan has regions
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();       // nominal contact point [mm]
+  Eigen::Vector3d ijk = Eigen::Vector3d::UnitZ();      // unit normal, out of the material
+  Eigen::Vector3d approach = Eigen::Vector3d::Zero();  // probe centre where the touch starts [mm]
+  Eigen::Vector3d retract = Eigen::Vector3d::Zero();   // probe centre after the touch [mm]
+
+  // Nominal probe-ball centre at contact: xyz + r ijk.
+  Eigen::Vector3d centre(double probe_radius) const { return xyz + probe_radius * ijk; }
+};
+
+struct InspectionPlan {
+  std::string part;  // part file the plan was made for (informative, may be empty)
+  ProbeDefinition probe;
+  std::vector<PlannedPoint> points;
+
+  // Index of the point with that id, or nullopt.
+  std::optional<std::size_t> find(const std::string& id) const;
+};
+
+InspectionPlan read_plan(const std::string& path);
+// `name` stands for the source in messages.
+InspectionPlan parse_plan(const std::string& text, const std::string& name);
+std::string plan_to_json_text(const InspectionPlan& plan);
+void write_plan(const InspectionPlan& plan, const std::string& path);
+
+// Throws InputError (naming `name` and the point) when a point's face index
+// is out of range or its face name differs from the part's face, or when its
+// xyz is farther than `tolerance` [mm] from the face point at (u,v): a plan
+// made for another part, or an edited one.
+void check_plan_against_part(const InspectionPlan& plan, const Part& part, const std::string& name,
+                             double tolerance = 1e-6);
+
+}  // namespace furrow

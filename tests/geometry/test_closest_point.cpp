@@ -1,0 +1,399 @@
+// Closest point on a part: analytic feet on primitives, and the adversarial
+// cases (concave cylinder axis, evolute of a dimple, beyond the domain edge,
+// sharp edges between faces, trimmed holes) against a brute-force oracle that
+// lives here: dense sampling of every face and of every trim loop, then a
+// derivative-free compass search from the best discrete minima.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "geometry/closest_point.hpp"
+#include "geometry/error.hpp"
+#include "geometry/local_foot_point.hpp"
+#include "geometry/primitives.hpp"
+#include "geometry/seed_grid.hpp"
+#include "io/part_file.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+
+namespace {
+
+struct Oracle {
+  double distance = std::numeric_limits<double>::infinity();
+  std::size_t face = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+// Compass search on |S(uv) - q|^2 restricted to the kept region of the face.
+void compass(const Face& face, const Eigen::Vector3d& q, Eigen::Vector2d uv, double step,
+             std::size_t face_index, Oracle& best) {
+  const ParameterDomain& d = face.domain();
+  auto value = [&](const Eigen::Vector2d& p) { return (face.surface().point(p.x(), p.y()) - q).squaredNorm(); };
+  double f = value(uv);
+  const Eigen::Vector2d dirs[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+  while (step > 1e-15) {
+    bool moved = false;
+    for (const auto& dir : dirs) {
+      Eigen::Vector2d p = uv + step * dir;
+      p.x() = std::clamp(p.x(), d.u0, d.u1);
+      p.y() = std::clamp(p.y(), d.v0, d.v1);
+      if (!face.trim().contains(p)) continue;
+      const double fp = value(p);
+      if (fp < f) {
+        f = fp;
+        uv = p;
+        moved = true;
+      }
+    }
+    if (!moved) step *= 0.5;
+  }
+  if (std::sqrt(f) < best.distance) {
+    best.distance = std::sqrt(f);
+    best.face = face_index;
+    best.point = face.surface().point(uv.x(), uv.y());
+  }
+}
+
+// Golden-section search along one uv segment (trim boundary).
+void golden(const Face& face, const Eigen::Vector3d& q, const Eigen::Vector2d& a,
+            const Eigen::Vector2d& b, double t_lo, double t_hi, std::size_t face_index,
+            Oracle& best) {
+  auto value = [&](double t) {
+    const Eigen::Vector2d p = a + t * (b - a);
+    return (face.surface().point(p.x(), p.y()) - q).squaredNorm();
+  };
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double x1 = t_hi - g * (t_hi - t_lo), x2 = t_lo + g * (t_hi - t_lo);
+  double f1 = value(x1), f2 = value(x2);
+  for (int it = 0; it < 200; ++it) {
+    if (f1 < f2) {
+      t_hi = x2; x2 = x1; f2 = f1; x1 = t_hi - g * (t_hi - t_lo); f1 = value(x1);
+    } else {
+      t_lo = x1; x1 = x2; f1 = f2; x2 = t_lo + g * (t_hi - t_lo); f2 = value(x2);
+    }
+  }
+  for (double t : {t_lo, t_hi, 0.5 * (t_lo + t_hi)}) {
+    const double f = std::sqrt(value(t));
+    if (f < best.distance) {
+      best.distance = f;
+      best.face = face_index;
+      const Eigen::Vector2d p = a + t * (b - a);
+      best.point = face.surface().point(p.x(), p.y());
+    }
+  }
+}
+
+Oracle brute_force(const Part& part, const Eigen::Vector3d& q, int n = 240) {
+  Oracle best;
+  for (std::size_t fi = 0; fi < part.faces.size(); ++fi) {
+    const Face& face = part.faces[fi];
+    const ParameterDomain& d = face.domain();
+    std::vector<double> f((n + 1) * (n + 1), std::numeric_limits<double>::infinity());
+    auto at = [&](int i, int j) { return Eigen::Vector2d(d.u0 + d.width_u() * i / n, d.v0 + d.width_v() * j / n); };
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const Eigen::Vector2d uv = at(i, j);
+        if (face.trim().contains(uv)) f[i * (n + 1) + j] = (face.surface().point(uv.x(), uv.y()) - q).norm();
+      }
+    // Discrete local minima, best few refined.
+    std::vector<std::pair<double, int>> minima;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double v = f[i * (n + 1) + j];
+        if (!std::isfinite(v)) continue;
+        bool is_min = true;
+        for (int a = -1; a <= 1 && is_min; ++a)
+          for (int b = -1; b <= 1; ++b) {
+            const int ii = i + a, jj = j + b;
+            if (ii < 0 || jj < 0 || ii > n || jj > n || (a == 0 && b == 0)) continue;
+            if (f[ii * (n + 1) + jj] < v) { is_min = false; break; }
+          }
+        if (is_min) minima.push_back({v, i * (n + 1) + j});
+      }
+    std::sort(minima.begin(), minima.end());
+    for (std::size_t k = 0; k < std::min<std::size_t>(6, minima.size()); ++k)
+      compass(face, q, at(minima[k].second / (n + 1), minima[k].second % (n + 1)),
+              d.width_u() / n, fi, best);
+    // Trim loops: dense samples per segment, golden section around the best.
+    for (const UvLoop& loop : face.trim().loops())
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
+        const int m = 40;
+        int best_s = 0;
+        double best_f = std::numeric_limits<double>::infinity();
+        for (int s = 0; s <= m; ++s) {
+          const Eigen::Vector2d p = a + (static_cast<double>(s) / m) * (b - a);
+          const double v = (face.surface().point(p.x(), p.y()) - q).norm();
+          if (v < best_f) { best_f = v; best_s = s; }
+        }
+        golden(face, q, a, b, std::max(0, best_s - 1) / double(m), std::min(m, best_s + 1) / double(m), fi, best);
+      }
+  }
+  return best;
+}
+
+Part single_face(NurbsSurface s, bool reversed = false, Trim trim = {}) {
+  Part p;
+  p.faces.emplace_back("face", std::move(s), std::move(trim), reversed);
+  return p;
+}
+
+Part mould() { return read_part(test::source_path("examples/parts/mould.json")); }
+
+UvLoop uv_circle(double cx, double cy, double r, int n) {
+  UvLoop l;
+  for (int k = 0; k < n; ++k)
+    l.emplace_back(cx + r * std::cos(2 * M_PI * k / n), cy + r * std::sin(2 * M_PI * k / n));
+  return l;
+}
+
+// The finder must match the oracle's minimum distance (it may find a
+// different but equally near foot when there are ties).
+void check_against_oracle(const ClosestPointFinder& finder, const Eigen::Vector3d& q,
+                          double tolerance = 1e-9) {
+  const ClosestPoint c = finder.project(q);
+  const Oracle o = brute_force(finder.part(), q);
+  CAPTURE(q.transpose());
+  CAPTURE(o.point.transpose());
+  CAPTURE(c.point.transpose());
+  CHECK(c.converged);
+  CHECK(std::abs(c.distance - o.distance) <= tolerance);
+  CHECK(std::abs((q - c.point).norm() - c.distance) < 1e-12);
+}
+
+}  // namespace
+
+TEST_CASE("seed breaks follow the knot spans within the cell bounds") {
+  ClosestPointOptions o;
+  const std::vector<double> knots = {0, 0, 0, 0, 0.25, 0.5, 1, 1, 1, 1};
+  const std::vector<double> b = seed_breaks(knots, 0, 1, o);  // 3 spans -> 3 x 3 cells (min 8)
+  CHECK(b.size() == 10);
+  CHECK(b[3] == 0.25);
+  CHECK(b[6] == 0.5);
+  o.max_cells = 4;
+  o.min_cells = 2;
+  o.cells_per_span = 2;
+  CHECK(seed_breaks(knots, 0, 1, o).size() == 5);  // too many spans: uniform
+}
+
+TEST_CASE("sphere: foot points and signed distances are exact to 1e-9 mm") {
+  const double R = 50;
+  const Part part = single_face(make_sphere(R, 0.2, 2.0, -0.6, 0.9));
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> lon(0.3, 1.9), lat(-0.5, 0.8), off(-20, 20);
+  for (int k = 0; k < 300; ++k) {
+    const double a = lon(rng), b = lat(rng), h = off(rng);
+    const Eigen::Vector3d dir(std::cos(b) * std::cos(a), std::cos(b) * std::sin(a), std::sin(b));
+    const Eigen::Vector3d q = (R + h) * dir;
+    const ClosestPoint c = finder.project(q);
+    CAPTURE(q.transpose());
+    CAPTURE(c.iterations);
+    CAPTURE(c.uv.transpose());
+    CHECK(c.converged);
+    CHECK(c.location == FootLocation::interior);
+    CHECK((c.point - R * dir).norm() < 1e-9);
+    CHECK(std::abs(c.signed_distance - h) <= 1e-9);
+    CHECK((c.normal - dir).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("concave cylinder: points on and near the axis get the true minimum") {
+  const double R = 30;
+  // Unreversed: the inside of a tube (normal toward the axis, concave).
+  const Part part = single_face(make_cylinder(R, 60, M_PI, 2 * M_PI));  // lower half (z <= 0)
+  const ClosestPointFinder finder(part);
+  SUBCASE("on the axis every point of the arc is a foot at distance R") {
+    for (double y : {0.0, 7.5, 30.0, 60.0}) {
+      const ClosestPoint c = finder.project({0, y, 0});
+      CHECK(c.distance == doctest::Approx(R).epsilon(1e-12));
+      CHECK(c.signed_distance > 0);  // the axis is in the air
+    }
+  }
+  SUBCASE("just below the axis: the foot is straight down") {
+    for (double e : {1e-9, 1e-6, 1e-3, 0.5}) {
+      const ClosestPoint c = finder.project({0.2 * e, 20, -e});
+      const double rho = std::hypot(0.2 * e, e);
+      CHECK(c.distance == doctest::Approx(R - rho).epsilon(1e-12));
+      CHECK(c.location == FootLocation::interior);
+    }
+  }
+  SUBCASE("just above the axis: the interior stationary point is a maximum, the feet are the edges") {
+    for (double e : {1e-6, 1e-3, 2.0}) {
+      const Eigen::Vector3d q(0.1 * e, 20, e);  // slightly toward +x: the t = 2 pi edge is nearer
+      const ClosestPoint c = finder.project(q);
+      CHECK(c.location == FootLocation::domain_edge);
+      CHECK(c.distance == doctest::Approx((q - Eigen::Vector3d(R, 20, 0)).norm()).epsilon(1e-12));
+      check_against_oracle(finder, q);
+    }
+  }
+}
+
+TEST_CASE("mould: random points near and far agree with brute force") {
+  const Part part = mould();
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(-15, 115), y(-15, 95), z(0, 50);
+  for (int k = 0; k < 40; ++k) check_against_oracle(finder, {x(rng), y(rng), z(rng)});
+}
+
+TEST_CASE("mould: points along the normal of the dimple through its centre of curvature") {
+  const Part part = mould();
+  const Face& face = part.faces[0];
+  // Find the tightest concave point (largest k1) on a grid.
+  double best_k = 0;
+  Eigen::Vector2d best_uv(0, 0);
+  for (int i = 1; i < 100; ++i)
+    for (int j = 1; j < 100; ++j) {
+      const DifferentialGeometry g = face.geometry(i / 100.0, j / 100.0);
+      if (g.k1 > best_k) { best_k = g.k1; best_uv = {i / 100.0, j / 100.0}; }
+    }
+  REQUIRE(best_k > 0.05);
+  const DifferentialGeometry g = face.geometry(best_uv.x(), best_uv.y());
+  const ClosestPointFinder finder(part);
+  // Before, at and beyond the centre of curvature (the evolute).
+  for (double f : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 1.5, 2.5}) {
+    const Eigen::Vector3d q = g.point + (f / best_k) * g.normal;
+    check_against_oracle(finder, q);
+    check_against_oracle(finder, q + 0.3 * g.d1);  // off the normal line
+  }
+}
+
+TEST_CASE("mould: points beyond the domain edges and corners") {
+  const Part part = mould();
+  const ClosestPointFinder finder(part);
+  for (const Eigen::Vector3d& q : {Eigen::Vector3d(-10, 40, 25), Eigen::Vector3d(110, 20, 10),
+                                  Eigen::Vector3d(50, -8, 40), Eigen::Vector3d(30, 90, 22),
+                                  Eigen::Vector3d(-5, -5, 30), Eigen::Vector3d(108, 85, 15)}) {
+    const ClosestPoint c = finder.project(q);
+    CHECK(c.location == FootLocation::domain_edge);
+    check_against_oracle(finder, q);
+  }
+}
+
+TEST_CASE("sharp ridge and valley between two planar faces: nearest face wins") {
+  for (double ridge_z : {20.0, -20.0}) {
+    Part part;
+    part.faces.emplace_back("left", make_plane({0, 0, 0}, {50, 0, ridge_z}, {0, 40, 0}));
+    part.faces.emplace_back("right", make_plane({50, 0, ridge_z}, {50, 0, -ridge_z}, {0, 40, 0}));
+    const ClosestPointFinder finder(part);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> dx(-6, 6), y(0, 40), dz(-3, 15);
+    for (int k = 0; k < 30; ++k) {
+      const Eigen::Vector3d q(50 + dx(rng), y(rng), ridge_z + dz(rng));
+      check_against_oracle(finder, q);
+      // The winning face is the one whose own oracle distance is smaller.
+      double own[2];
+      for (int f = 0; f < 2; ++f) {
+        Part alone;
+        alone.faces.push_back(part.faces[f]);
+        own[f] = brute_force(alone, q).distance;
+      }
+      const ClosestPoint c = finder.project(q);
+      if (std::abs(own[0] - own[1]) > 1e-6) CHECK(c.face == (own[0] < own[1] ? 0u : 1u));
+    }
+    // Above the ridge line the foot is the ridge itself (convex case).
+    if (ridge_z > 0) {
+      const ClosestPoint c = finder.project({50, 10, ridge_z + 5});
+      CHECK(c.distance == doctest::Approx(5).epsilon(1e-12));
+      CHECK(c.location == FootLocation::domain_edge);
+    }
+  }
+}
+
+TEST_CASE("trimmed plane with a hole: the foot is on the hole's boundary polygon") {
+  // uv is scaled differently along x and y, so the hole is an ellipse in 3-D.
+  const Trim trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, uv_circle(0.5, 0.5, 0.2, 48)});
+  const Part part = single_face(make_plane({0, 0, 0}, {100, 0, 0}, {0, 80, 0}), false, trim);
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> x(35, 65), y(28, 52), z(-4, 4);
+  int in_hole = 0;
+  for (int k = 0; k < 60; ++k) {
+    const Eigen::Vector3d q(x(rng), y(rng), z(rng));
+    const Eigen::Vector2d uv(q.x() / 100, q.y() / 80);
+    double exact;
+    if (trim.contains(uv)) {
+      exact = std::abs(q.z());
+    } else {  // nearest point of the 3-D hole polygon (the plane map is affine)
+      ++in_hole;
+      exact = std::numeric_limits<double>::infinity();
+      const UvLoop& hole = trim.loops()[1];
+      for (std::size_t s = 0; s < hole.size(); ++s) {
+        const Eigen::Vector3d a(100 * hole[s].x(), 80 * hole[s].y(), 0);
+        const Eigen::Vector3d b(100 * hole[(s + 1) % hole.size()].x(), 80 * hole[(s + 1) % hole.size()].y(), 0);
+        const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+        exact = std::min(exact, (a + t * (b - a) - q).norm());
+      }
+    }
+    const ClosestPoint c = finder.project(q);
+    CAPTURE(q.transpose());
+    CHECK(std::abs(c.distance - exact) <= 1e-9);
+    if (c.location == FootLocation::trim_edge)
+      CHECK(trim.distance_to_boundary(c.uv) < 1e-12);
+    else
+      CHECK(trim.contains(c.uv));
+  }
+  CHECK(in_hole > 10);
+}
+
+TEST_CASE("trimmed mould with a hole over the dome: brute force agrees") {
+  Part part = mould();
+  const Face& f = part.faces[0];
+  const Trim trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, uv_circle(0.35, 0.5, 0.15, 40)});
+  part.faces[0] = Face(f.name(), f.surface(), trim, f.reversed());
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(0.15, 0.55), v(0.3, 0.7), h(-3, 6);
+  int on_trim = 0;
+  for (int k = 0; k < 25; ++k) {
+    const double uu = u(rng), vv = v(rng);
+    const DifferentialGeometry g = part.faces[0].geometry(uu, vv);
+    const Eigen::Vector3d q = g.point + h(rng) * g.normal;
+    check_against_oracle(finder, q);
+    on_trim += finder.project(q).location == FootLocation::trim_edge;
+  }
+  CHECK(on_trim > 5);
+}
+
+TEST_CASE("a hint changes the cost, never the answer") {
+  const Part part = mould();
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> x(0, 100), y(0, 80), z(10, 40);
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d q(x(rng), y(rng), z(rng));
+    const ClosestPoint cold = finder.project(q);
+    const ClosestPoint near_hint = finder.project(q + Eigen::Vector3d(0.01, 0, 0), cold);
+    const ClosestPoint warm = finder.project(q, finder.project(q + Eigen::Vector3d(3, -2, 1)));
+    CHECK(std::abs(warm.distance - cold.distance) <= 1e-12);
+    CHECK(near_hint.converged);
+  }
+}
+
+TEST_CASE("non-convergence is reported, not hidden") {
+  const Part part = mould();
+  ClosestPointOptions o;
+  o.max_newton_iterations = 1;
+  const ClosestPointFinder finder(part, o);
+  int unconverged = 0;
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> x(0, 100), y(0, 80), z(0, 50);
+  for (int k = 0; k < 50; ++k) unconverged += !finder.project({x(rng), y(rng), z(rng)}).converged;
+  CHECK(unconverged > 0);
+  o.step_tolerance = 0;
+  CHECK_THROWS_AS(ClosestPointFinder(part, o), InputError);
+}
+
+TEST_CASE("local segment solve finds the minimum along a uv line") {
+  const NurbsSurface plane = make_plane({0, 0, 0}, {10, 0, 0}, {0, 10, 0});
+  ClosestPointOptions o;
+  const LocalFoot f = foot_point_on_segment(plane, {3, 7, 2}, {0, 0}, {1, 0}, o);
+  CHECK(f.converged);
+  CHECK((f.point - Eigen::Vector3d(3, 0, 0)).norm() < 1e-12);
+  CHECK(f.uv.x() == doctest::Approx(0.3));
+}
