@@ -22,5 +22,6 @@ struct Command {
 
 extern const Command kInfoCommand;
 extern const Command kPartitionCommand;
+extern const Command kPlanCommand;
 
 }  // namespace furrow::cli

@@ -16,6 +16,7 @@ using furrow::cli::Command;
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
     &furrow::cli::kPartitionCommand,
+    &furrow::cli::kPlanCommand,
 };
 
 const Command* find_command(const std::string& name) {
