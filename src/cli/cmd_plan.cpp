@@ -139,7 +139,7 @@ const Command kPlanCommand = {
     "plan", "probe points per region, collision-checked, DMIS and I++ DME programs",
     "usage: furrow plan PART --regions REGIONS.json --out FOLDER\n"
     "                   [--points N | --density PER_CM2] [--min-per-region N]\n"
-    "                   [--strategy halton|hammersley|stratified|grid|random|curvature]\n"
+    "                   [--strategy hammersley|halton|stratified|grid|random|curvature]\n"
     "                   [--seed N] [--border MM] [--probe-name NAME] [--probe-diameter MM]\n"
     "                   [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
     "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
@@ -158,7 +158,7 @@ const Command kPlanCommand = {
     "  --points N           total points, or\n"
     "  --density D          points per cm^2 of region area (default 1)\n"
     "  --min-per-region N   fewest points in any region (default 5)\n"
-    "  --strategy S         sampling inside regions (default halton, see docs/cmm.md)\n"
+    "  --strategy S         sampling inside regions (default hammersley, see docs/cmm.md)\n"
     "  --seed N             random seed (default 1)\n"
     "  --border MM          clearance from region edges on the surface (default probe\n"
     "                       radius + 1)\n"

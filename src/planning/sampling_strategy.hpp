@@ -3,8 +3,11 @@
 //
 //   grid        cell centres of an nx x ny lattice, cells square on the surface
 //   stratified  one uniform random point per lattice cell (jittered grid)
-//   hammersley  Hammersley set ((i + 1/2) / N, radical inverse base 2)
-//   halton      Halton sequence (bases 2, 3) — the default (docs/cmm.md)
+//   hammersley  Hammersley set ((i + 1/2) / N, radical inverse base 2) — the
+//               default: the smallest fit spread of all in
+//               tests/planning/test_sampling_accuracy.cpp (docs/cmm.md)
+//   halton      Halton sequence (bases 2, 3); nested: a denser plan keeps
+//               every point of a sparser one
 //   random      independent uniform points
 //   curvature   Halton through a density raised where |k|max is high:
 //               area * (1 + |k|max / mean |k|max of the part)
@@ -37,7 +40,7 @@
 namespace furrow {
 
 enum class SamplingStrategy { grid, stratified, hammersley, halton, random, curvature, risk };
-constexpr SamplingStrategy kDefaultSamplingStrategy = SamplingStrategy::halton;
+constexpr SamplingStrategy kDefaultSamplingStrategy = SamplingStrategy::hammersley;
 const char* to_string(SamplingStrategy strategy);
 // Throws InputError naming `where` for an unknown name (lists the valid ones).
 SamplingStrategy parse_sampling_strategy(const std::string& text, const std::string& where);
