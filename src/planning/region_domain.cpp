@@ -143,11 +143,24 @@ AreaWarp RegionDomain::warp(double kappa_weight, double kappa_ref, double risk_w
   const Eigen::AlignedBox2d& box = region_->uv_box;
   const double cu = box.sizes().x() / n, cv = box.sizes().y() / n;
   const double ref = kappa_ref > 0 ? kappa_ref : 1.0;
+  auto factor = [&](const DomainCell& c) {
+    return (1 + kappa_weight * c.kappa / ref) * (risk_weight * c.risk + risk_floor);
+  };
+  // Cells outside the region get the region's mean factor: their share of
+  // the mass stays their share of the area, so a risk or curvature peak just
+  // outside the region cannot draw the candidates away from it.
+  double weighted = 0, area = 0;
+  for (const DomainCell& c : cells_)
+    if (c.inside) {
+      weighted += c.area * factor(c);
+      area += c.area;
+    }
+  const double outside = area > 0 ? weighted / area : 1.0;
   return AreaWarp(box, n, [&](double u, double v) {
     const int i = std::clamp(static_cast<int>((u - box.min().x()) / cu), 0, n - 1);
     const int j = std::clamp(static_cast<int>((v - box.min().y()) / cv), 0, n - 1);
     const DomainCell& c = cells_[static_cast<std::size_t>(i) * n + j];
-    return c.area * (1 + kappa_weight * c.kappa / ref) * (risk_weight * c.risk + risk_floor);
+    return c.area * (c.inside ? factor(c) : outside);
   });
 }
 

@@ -102,8 +102,9 @@ class RegionDomain {
 
   // Warp carrying uniform density in [0, 1)^2 to density
   // area * (1 + kappa_weight * kappa / kappa_ref) * (risk_weight * risk + risk_floor)
-  // over the region's uv box (cells outside the region keep their weight, so
-  // a point set restricted to the region stays evenly spread).
+  // over the region's uv box; cells outside the region get the region's mean
+  // factor (their mass stays proportional to their area, so a point set
+  // restricted to the region stays evenly spread and is not drawn outside).
   AreaWarp warp(double kappa_weight, double kappa_ref, double risk_weight, double risk_floor) const;
   AreaWarp area_warp() const { return warp(0, 1, 0, 1); }
 
