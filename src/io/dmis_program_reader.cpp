@@ -143,7 +143,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     const Eigen::Vector3d touch_ijk = point3(pf, 4, name, ps.line);
     // The nominal is as printed (f->xyz); the direction as printed too, before normalising.
     const std::vector<std::string> ff = fields(fs.text.substr(fs.text.find('/') + 1));
-    if (touch != point3(ff, 1, name, fs.line) || touch_ijk != point3(ff, 4, name, fs.line))
+    if (touch != point3(ff, 2, name, fs.line) || touch_ijk != point3(ff, 5, name, fs.line))
       fail(name, ps.line, "PTMEAS differs from the nominal of " + f->label);
     in.expect(std::regex("ENDMES"), "ENDMES");
     if (in.expect(output, "OUTPUT/FA(label)")[1] != f->label)
