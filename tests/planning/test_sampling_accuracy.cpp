@@ -123,7 +123,7 @@ void compare(const RegionDomain& d, double (*form)(const Eigen::Vector3d&), doub
   const Spread random = spread(d, SamplingStrategy::random, form, fit);
   for (SamplingStrategy s : {SamplingStrategy::hammersley, SamplingStrategy::halton, SamplingStrategy::stratified}) {
     const Spread q = spread(d, s, form, fit);
-    MESSAGE(std::string(what) << ", " << kPoints << " points, " << kSeeds << " seeds: " << to_string(s) << " mean "
+    MESSAGE(std::string(what) << ", " << kPoints << " points, " << kSeeds << " seeds: " << std::string(to_string(s)) << " mean "
                  << q.mean * 1e3 << " um, std " << std::sqrt(q.variance) * 1e3 << " um;  random mean "
                  << random.mean * 1e3 << " um, std " << std::sqrt(random.variance) * 1e3 << " um  (variance ratio "
                  << q.variance / random.variance << ")");
