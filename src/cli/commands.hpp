@@ -22,6 +22,8 @@ struct Command {
 
 extern const Command kInfoCommand;
 extern const Command kPartitionCommand;
+extern const Command kPredictCommand;
+extern const Command kToolpathCommand;
 extern const Command kPlanCommand;
 
 }  // namespace furrow::cli

@@ -16,6 +16,8 @@ using furrow::cli::Command;
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
     &furrow::cli::kPartitionCommand,
+    &furrow::cli::kToolpathCommand,
+    &furrow::cli::kPredictCommand,
     &furrow::cli::kPlanCommand,
 };
 

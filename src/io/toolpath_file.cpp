@@ -221,12 +221,17 @@ Toolpath parse_gcode(const std::string& text, const std::string& name,
     if (motion == 1) {
       if (!(known[0] && known[1] && known[2]))
         fail_line(name, number, "cutting move before X, Y and Z are all known");
-      if (current.points.empty())
-        current.points.push_back({Eigen::Vector3d(position[0], position[1], position[2]),
-                                  Eigen::Vector3d::Zero(), feed, number});
+      auto tip = [&](const Eigen::Vector3d& position) {
+        ToolpathPoint t;
+        t.position = position;
+        t.feed = feed;
+        t.line = number;
+        return t;
+      };
+      if (current.points.empty()) current.points.push_back(tip({position[0], position[1], position[2]}));
       const Eigen::Vector3d p(next[0], next[1], next[2]);
       if ((p - current.points.back().position).norm() > 0)  // zero-length moves add nothing
-        current.points.push_back({p, Eigen::Vector3d::Zero(), feed, number});
+        current.points.push_back(tip(p));
     } else {
       close_pass();
     }
@@ -287,6 +292,16 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
         if (!column.count(needed)) fail_line(name, number, std::string("the header has no \"") + needed + "\" column");
       const int normals = static_cast<int>(column.count("nx") + column.count("ny") + column.count("nz"));
       if (normals != 0 && normals != 3) fail_line(name, number, "give all of nx, ny, nz or none");
+      if (column.count("u") != column.count("v")) fail_line(name, number, "give both u and v columns or neither");
+      if (column.count("face") && !column.count("u"))
+        fail_line(name, number, "a face column needs u and v columns");
+      for (const auto& [key, index] : column) {
+        static const char* const kKnown[] = {"x", "y", "z", "nx", "ny", "nz", "pass", "u", "v", "face"};
+        if (std::find_if(std::begin(kKnown), std::end(kKnown), [&](const char* k) { return key == k; }) ==
+            std::end(kKnown))
+          fail_line(name, number, "unknown column \"" + key + "\" (known: x y z nx ny nz pass u v face)");
+        (void)index;
+      }
       path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
       if (column.count("pass")) pass_column = column["pass"];
       columns = static_cast<int>(fields.size());
@@ -329,6 +344,14 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       const Eigen::Vector3d n(value("nx"), value("ny"), value("nz"));
       if (!(n.norm() > 1e-9)) fail_line(name, number, "the normal (nx, ny, nz) is zero");
       p.normal = n.normalized();
+    }
+    if (column.count("u")) {
+      p.has_uv = true;
+      p.uv = Eigen::Vector2d(value("u"), value("v"));
+    }
+    if (column.count("face")) {
+      p.face = fields[column.at("face")];
+      if (p.face.empty()) fail_line(name, number, "the face name is empty");
     }
     current.points.push_back(p);
   }

@@ -18,8 +18,11 @@
 //
 // CSV: `x,y,z` tool tips or `x,y,z,nx,ny,nz` contact points with their
 // surface normals, one point per line, an optional header line naming the
-// columns (any order; an optional `pass` column numbers the passes), '#'
-// comments, and a blank line between passes when there is no `pass` column.
+// columns (any order; an optional `pass` column numbers the passes; optional
+// `u`, `v` and `face` columns give each contact point's face and surface
+// parameters, so it need not be projected back onto the part; other columns
+// are an error), '#' comments, and a blank line between passes when there is
+// no `pass` column.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -33,6 +36,11 @@ struct ToolpathPoint {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();    // unit; contact points only
   double feed = 0;                                     // mm/min, 0 when not given
   int line = 0;                                        // source line (1-based)
+  // Contact points written by `furrow toolpath` also say where they lie on
+  // the part: optional CSV columns u, v (both or neither) and face (a name).
+  bool has_uv = false;
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+  std::string face;  // empty when the file has no face column
 };
 
 struct ToolpathPass {

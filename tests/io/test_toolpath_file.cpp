@@ -108,11 +108,32 @@ TEST_CASE("CSV: tips or contact points, header in any order, passes by blank lin
   CHECK(error_of("", true) == "path.csv: no tool-path points in the file");
 }
 
+TEST_CASE("CSV: contact points may carry their face and (u, v); unknown columns are refused") {
+  const Toolpath cc = parse_toolpath_csv(
+      "pass,x,y,z,nx,ny,nz,face,u,v\n0,1,2,3,0,0,1,mould,0.25,0.5\n0,2,2,3,0,0,1,mould,0.5,0.5\n", "c.csv");
+  REQUIRE(cc.passes.size() == 1);
+  const ToolpathPoint& p = cc.passes[0].points[1];
+  CHECK(p.has_uv);
+  CHECK(p.uv == Eigen::Vector2d(0.5, 0.5));
+  CHECK(p.face == "mould");
+  const Toolpath plain = parse_toolpath_csv("x,y,z,u,v\n0,0,0,0,0\n1,0,0,1,0\n", "p.csv");
+  CHECK(plain.passes[0].points[0].has_uv);
+  CHECK(plain.passes[0].points[0].face.empty());
+  CHECK(error_of("x,y,z,u\n", true).find("path.csv:1: give both u and v columns or neither") == 0);
+  CHECK(error_of("x,y,z,face\n", true).find("path.csv:1: a face column needs u and v columns") == 0);
+  CHECK(error_of("x,y,z,speed\n", true).find("path.csv:1: unknown column \"speed\"") == 0);
+  CHECK(error_of("face,x,y,z,u,v\n ,0,0,0,0,0\n", true).find("path.csv:2: the face name is empty") == 0);
+}
+
 TEST_CASE("written G-code reads back to the same passes") {
   Toolpath p;
   for (int k = 0; k < 3; ++k) {
     ToolpathPass pass;
-    for (int j = 0; j < 5; ++j) pass.points.push_back({Eigen::Vector3d(j * 1.25, k * 0.5, -0.0001 * j * k), Eigen::Vector3d::Zero(), 0, 0});
+    for (int j = 0; j < 5; ++j) {
+      ToolpathPoint t;
+      t.position = Eigen::Vector3d(j * 1.25, k * 0.5, -0.0001 * j * k);
+      pass.points.push_back(t);
+    }
     p.passes.push_back(pass);
   }
   const std::string g = toolpath_to_gcode(p, 50.0, 1200, "furrow test (ball 6)\nsecond line");

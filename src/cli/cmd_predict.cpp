@@ -1,0 +1,168 @@
+// furrow predict PART --tool T.json --toolpath P --out prediction.json [--map errors.png]
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/terminal_progress.hpp"
+#include "io/atomic_file.hpp"
+#include "io/part_file.hpp"
+#include "io/tool_file.hpp"
+#include "machining/error_map_image.hpp"
+#include "machining/path_prediction.hpp"
+#include "machining/prediction_file.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+std::string um(double mm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f um", mm * 1000);
+  return buf;
+}
+
+void print_summary(std::ostream& out, const Prediction& p) {
+  const PredictionSummary& s = p.summary;
+  out << "tool " << p.tool.name << " (" << to_string(p.tool.type) << ", diameter " << p.tool.diameter
+      << " mm), tolerance " << um(p.tolerance) << "\n";
+  out << "path: " << s.path_points << " points, " << s.steps << " moves (" << s.steps_evaluated << " evaluated";
+  if (s.points_in_air) out << ", " << s.points_in_air << " points in the air";
+  if (s.points_without_contact) out << ", " << s.points_without_contact << " points without contact";
+  out << ")\n";
+  if (s.points_below_surface)
+    out << "  " << s.points_below_surface << " tips below the cutter-location surface (lowest " << um(s.lowest_gap)
+        << ")\n";
+  out << "per step: largest error " << um(s.max_step_error) << ", " << s.steps_over_tolerance
+      << " steps over the tolerance\n";
+  out << "z-map: " << p.zmap.nx << " x " << p.zmap.ny << " nodes at " << p.zmap.resolution << " mm, "
+      << p.zmap.moves << " moves\n";
+  auto extreme = [&](const char* what, const ErrorAt& e) {
+    out << what;
+    if (!e.found) {
+      out << " none (nothing reached)\n";
+      return;
+    }
+    char buf[160];
+    std::snprintf(buf, sizeof buf, " %s at (%.3f, %.3f, %.3f) on %s\n", um(e.error).c_str(), e.at.xyz.x(), e.at.xyz.y(),
+                  e.at.xyz.z(), e.at.face.c_str());
+    out << buf;
+  };
+  extreme("max undercut:", s.max_undercut);
+  extreme("max overcut: ", s.max_overcut);
+  out << "max scallop between passes: " << um(s.max_scallop) << " over " << p.scallops.size() << " pass pairs\n";
+  out << "gouge sites (overcut beyond " << um(p.gouge_threshold) << "): " << s.gouge_sites << "\n";
+  std::vector<const GougeSiteRecord*> deepest;
+  for (const GougeSiteRecord& g : p.gouge_sites) deepest.push_back(&g);
+  std::stable_sort(deepest.begin(), deepest.end(),
+                   [](const GougeSiteRecord* a, const GougeSiteRecord* b) { return a->depth > b->depth; });
+  if (deepest.size() > 10) deepest.resize(10);
+  for (const GougeSiteRecord* site : deepest) {
+    const GougeSiteRecord& g = *site;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "  #%d on %s: depth %s, area %.3f mm^2, deepest at (%.3f, %.3f, %.3f)\n", g.id,
+                  g.face.c_str(), um(g.depth).c_str(), g.area, g.deepest.xyz.x(), g.deepest.xyz.y(), g.deepest.xyz.z());
+    out << buf;
+  }
+  if (p.gouge_sites.size() > deepest.size())
+    out << "  ... and " << p.gouge_sites.size() - deepest.size() << " shallower sites (all in the prediction file)\n";
+  out << "contact points with local gouging: " << s.local_gouge_points << "\n";
+}
+
+int run_predict(Args& args) {
+  const std::string tool_path = args.required_option("tool");
+  const std::string toolpath_path = args.required_option("toolpath");
+  const std::string out_path = args.required_option("out");
+  const auto map_path = args.option("map");
+  const auto regions = args.option("regions");
+  PathPredictionOptions options;
+  options.tolerance = args.positive_or("tolerance", 0.01);
+  options.gouge_threshold = args.positive_or("gouge-threshold", 2 * options.tolerance);
+  const auto resolution = args.number("resolution");
+  options.map.cell_size = args.positive_or("cell", 1.0);
+  const double scale_um = args.positive_or("map-scale", 2000 * options.tolerance);
+  ToolpathReadOptions read_options;
+  read_options.units = args.option_or("units", "mm");
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+  if (resolution) {
+    if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
+    options.resolution = *resolution;
+  }
+  if (regions)
+    args.fail("--regions: error summaries by region need the partition's regions.json reader, which is not "
+              "part of this build yet");
+  if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
+  if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
+  for (const std::string* input : {&part_path, &tool_path, &toolpath_path}) {
+    check_not_overwriting_input(out_path, *input);
+    if (map_path) check_not_overwriting_input(*map_path, *input);
+  }
+
+  const Part part = read_part(part_path);
+  const Cutter cutter(read_tool_file(tool_path));
+  const Toolpath path = read_toolpath(toolpath_path, read_options);
+  TerminalProgress progress;
+  const PathPrediction result =
+      predict_path(part, cutter, path, options, [&](const std::string& stage, std::size_t done, std::size_t total) {
+        progress.update(stage, done, total);
+      });
+  progress.finish();
+  const Prediction prediction = make_prediction(part, cutter, result, options, part_path, toolpath_path);
+  // Everything is rendered before anything is written: a failure leaves no
+  // output behind.
+  const std::string json_text = prediction_to_json_text(prediction);
+  std::string png;
+  if (map_path) png = error_map_png(part, result.map, {scale_um / 1000, 900});
+  write_file_atomically(out_path, json_text);
+  if (map_path) write_file_atomically(*map_path, png);
+  print_summary(std::cout, prediction);
+  std::cout << "wrote " << out_path << (map_path ? " and " + *map_path : std::string()) << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+const Command kPredictCommand = {
+    "predict", "machining error of a tool path: per step, z-map error map, scallops, gouges",
+    "usage: furrow predict PART --tool TOOL.json --toolpath PATH --out PREDICTION.json\n"
+    "                      [--map ERRORS.png] [--tolerance MM] [--gouge-threshold MM]\n"
+    "                      [--resolution MM] [--cell MM] [--map-scale UM] [--units mm|inch]\n"
+    "\n"
+    "Predicts the error a 3-axis finishing path leaves on PART (sign: + material\n"
+    "left, - overcut), from the swept cutter geometry itself:\n"
+    "  - per move, exactly, along the design curve between its two contact points\n"
+    "    (largest undercut and overcut and where they are);\n"
+    "  - over the whole part, by a z-map of every move: an error map per face,\n"
+    "    the largest scallop between adjacent passes, and gouge sites (connected\n"
+    "    areas of overcut beyond the threshold) with depth, area and extent;\n"
+    "  - contact points where the cutter is more curved than the part (local\n"
+    "    gouges, in every tangent direction).\n"
+    "PATH is G-code (tool tips; mapped back to contact points on PART) or CSV\n"
+    "(x,y,z tips, or x,y,z,nx,ny,nz contact points, optionally with face,u,v).\n"
+    "The prediction (docs/formats.md \"prediction.json\") stores the error per\n"
+    "face on a (u,v) grid of cells for later stages.\n"
+    "\n"
+    "  --tool FILE           tool JSON (ball, flat or bull; required)\n"
+    "  --toolpath FILE       tool path, G-code or CSV (required)\n"
+    "  --out FILE            prediction to write (.json, required)\n"
+    "  --map FILE            also draw the error map per face (.png, colour scale in um)\n"
+    "  --tolerance MM        steps are compared with it (default 0.01)\n"
+    "  --gouge-threshold MM  overcut deeper than this is a gouge site (default: twice the\n"
+    "                        tolerance; a path planned to the tolerance overcuts up to it)\n"
+    "  --resolution MM       z-map node spacing (default from the tool and tolerance:\n"
+    "                        a tenth of the flat side step whose scallop is the\n"
+    "                        tolerance, rounded to 1/2/5; ball 6 mm at 0.01: 0.05)\n"
+    "  --cell MM             size of the stored error cells on the surface (default 1)\n"
+    "  --map-scale UM        colour saturation of the PNG in um (default 2 x tolerance)\n"
+    "  --units U             units of CSV paths and of G-code before G20/G21 (default mm)\n",
+    run_predict};
+
+}  // namespace furrow::cli

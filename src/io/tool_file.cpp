@@ -1,0 +1,184 @@
+#include "io/tool_file.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "geometry/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json_fields.hpp"
+#include "io/part_file.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using jf::json;
+
+namespace {
+
+std::string number_text(double x) {
+  std::ostringstream s;
+  s.precision(12);
+  s << x;
+  return s.str();
+}
+
+constexpr double kBallRadiusRelativeTolerance = 1e-9;
+
+ToolType parse_type(const json& value, const std::string& where) {
+  const std::string text = jf::string(value, where);
+  if (text == "ball") return ToolType::ball;
+  if (text == "flat") return ToolType::flat;
+  if (text == "bull") return ToolType::bull;
+  throw InputError(where + ": unknown tool type \"" + text +
+                   "\" (expected \"ball\", \"flat\" or \"bull\")");
+}
+
+ToolSpec parse_tool(const json& jtool, const std::string& where) {
+  jf::object(jtool, where);
+  for (auto it = jtool.begin(); it != jtool.end(); ++it) {
+    const std::string& key = it.key();
+    if (key != "name" && key != "type" && key != "diameter" && key != "corner_radius" &&
+        key != "units")
+      throw InputError(jf::child(where, key) +
+                       ": unknown member (a tool has name, type, diameter, corner_radius, units)");
+  }
+  double scale = 1.0;
+  if (const json* ju = jf::optional_member(jtool, "units", where))
+    scale = units_to_mm(jf::string(*ju, jf::child(where, "units")), jf::child(where, "units"));
+
+  ToolSpec tool;
+  tool.name = jf::string(jf::member(jtool, "name", where), jf::child(where, "name"));
+  tool.type = parse_type(jf::member(jtool, "type", where), jf::child(where, "type"));
+  const std::string d_where = jf::child(where, "diameter");
+  tool.diameter = scale * jf::positive_number(jf::member(jtool, "diameter", where), d_where);
+  const double radius = 0.5 * tool.diameter;
+
+  const std::string r_where = jf::child(where, "corner_radius");
+  const json* jr = jf::optional_member(jtool, "corner_radius", where);
+  if (!jr && tool.type == ToolType::bull)
+    throw InputError(r_where + ": missing (a bull-nose tool needs its corner radius)");
+  if (jr) {
+    tool.corner_radius = scale * jf::number(*jr, r_where);
+    // A ball's corner radius is exactly diameter / 2; a file may say so with a
+    // little rounding (e.g. 3.175 for a 1/4" ball converted from inch).
+    if (tool.type == ToolType::ball &&
+        std::abs(tool.corner_radius - radius) <= kBallRadiusRelativeTolerance * radius)
+      tool.corner_radius = radius;
+  } else {
+    tool.corner_radius = tool.type == ToolType::ball ? radius : 0.0;
+  }
+  validate_tool(tool, where);
+  return tool;
+}
+
+json tool_json(const ToolSpec& tool) {
+  json j;
+  j["name"] = tool.name;
+  j["type"] = to_string(tool.type);
+  j["diameter"] = jf::finite(tool.diameter, "diameter");
+  j["corner_radius"] = jf::finite(tool.corner_radius, "corner_radius");
+  return j;
+}
+
+}  // namespace
+
+const char* to_string(ToolType type) {
+  switch (type) {
+    case ToolType::ball: return "ball";
+    case ToolType::flat: return "flat";
+    case ToolType::bull: return "bull";
+  }
+  return "?";
+}
+
+void validate_tool(const ToolSpec& tool, const std::string& where) {
+  if (tool.name.empty()) throw InputError(jf::child(where, "name") + ": must not be empty");
+  if (!std::isfinite(tool.diameter) || !(tool.diameter > 0))
+    throw InputError(jf::child(where, "diameter") + ": must be positive, got " +
+                     number_text(tool.diameter));
+  const std::string r_where = jf::child(where, "corner_radius");
+  const double radius = 0.5 * tool.diameter, r = tool.corner_radius;
+  if (!std::isfinite(r) || r < 0)
+    throw InputError(r_where + ": must not be negative, got " + number_text(r));
+  if (r > radius)
+    throw InputError(r_where + ": " + number_text(r) + " exceeds the tool radius " +
+                     number_text(radius) + " (diameter / 2)");
+  switch (tool.type) {
+    case ToolType::ball:
+      if (r != radius)
+        throw InputError(r_where + ": a ball end mill's corner radius is diameter / 2 = " +
+                         number_text(radius) + ", got " + number_text(r));
+      break;
+    case ToolType::flat:
+      if (r != 0)
+        throw InputError(r_where + ": a flat end mill has corner radius 0, got " +
+                         number_text(r) + " (use type \"bull\")");
+      break;
+    case ToolType::bull:
+      if (!(r > 0 && r < radius))
+        throw InputError(r_where + ": a bull-nose needs 0 < corner_radius < diameter / 2 = " +
+                         number_text(radius) + ", got " + number_text(r) +
+                         (r == 0 ? " (use type \"flat\")" : " (use type \"ball\")"));
+      break;
+  }
+}
+
+ToolSpec parse_tool_json(const std::string& text, const std::string& name) {
+  const json doc = jf::parse_text(text, name);
+  const std::string root = name + ":";
+  if (doc.is_array())
+    throw InputError(root + " expected one tool (a JSON object), found an array (a tool library?)");
+  return parse_tool(doc, root);
+}
+
+ToolSpec read_tool_file(const std::string& path) {
+  return parse_tool_json(jf::read_text(path), path);
+}
+
+std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std::string& name) {
+  const json doc = jf::parse_text(text, name);
+  const std::string root = name + ":";
+  if (doc.is_object())
+    throw InputError(root + " expected a tool library (a JSON array of tools), found one object");
+  jf::array(doc, root);
+  if (doc.empty()) throw InputError(root + " the tool library is empty");
+  std::vector<ToolSpec> tools;
+  for (std::size_t i = 0; i < doc.size(); ++i) {
+    const std::string where = name + ": [" + std::to_string(i) + "]";
+    ToolSpec tool = parse_tool(doc[i], where);
+    for (std::size_t k = 0; k < tools.size(); ++k)
+      if (tools[k].name == tool.name)
+        throw InputError(jf::child(where, "name") + ": duplicate tool name \"" + tool.name +
+                         "\" (also [" + std::to_string(k) + "])");
+    tools.push_back(std::move(tool));
+  }
+  return tools;
+}
+
+std::vector<ToolSpec> read_tool_library(const std::string& path) {
+  return parse_tool_library_json(jf::read_text(path), path);
+}
+
+std::string tool_to_json_text(const ToolSpec& tool) {
+  validate_tool(tool, "tool");
+  return jf::to_text(tool_json(tool));
+}
+
+std::string tool_library_to_json_text(const std::vector<ToolSpec>& tools) {
+  json doc = json::array();
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    validate_tool(tools[i], "tools[" + std::to_string(i) + "]");
+    doc.push_back(tool_json(tools[i]));
+  }
+  return jf::to_text(doc);
+}
+
+void write_tool_file(const ToolSpec& tool, const std::string& path) {
+  write_file_atomically(path, tool_to_json_text(tool));
+}
+
+void write_tool_library(const std::vector<ToolSpec>& tools, const std::string& path) {
+  write_file_atomically(path, tool_library_to_json_text(tools));
+}
+
+}  // namespace furrow

@@ -1,0 +1,109 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "machining/brute_force_envelope.hpp"
+#include "machining/swept_envelope.hpp"
+
+using namespace furrow;
+using furrow::test::brute_force_height;
+
+namespace {
+
+Eigen::Vector3d random_point(std::mt19937& rng, double extent) {
+  std::uniform_real_distribution<double> c(-extent, extent);
+  return {c(rng), c(rng), c(rng)};
+}
+
+}  // namespace
+
+TEST_CASE("swept envelope equals the brute-force lower envelope for ball, bull-nose and flat cutters") {
+  std::mt19937 rng(11);
+  const Cutter cutters[] = {Cutter("ball", 3, 3), Cutter("bull", 5, 1.5), Cutter("flat", 4, 0),
+                            Cutter("ball12.7", 12.7, 12.7)};
+  for (const Cutter& cutter : cutters) {
+    for (int m = 0; m < 25; ++m) {
+      Eigen::Vector3d a = random_point(rng, 6), b = random_point(rng, 6);
+      if (m % 10 == 1) b = Eigen::Vector3d(a.x(), a.y(), a.z() + 2);  // plunge up
+      if (m % 10 == 2) b = Eigen::Vector3d(a.x(), a.y(), a.z() - 2);  // plunge down
+      if (m % 10 == 3) b.z() = a.z();                                 // level move
+      if (m % 10 == 4) b = Eigen::Vector3d(a.x(), a.y() + 3, a.z() - 1);  // along y only
+      const SweptEnvelope env(cutter, a, b);
+      const Eigen::AlignedBox2d box = env.shadow_box();
+      std::uniform_real_distribution<double> ux(box.min().x(), box.max().x()), uy(box.min().y(), box.max().y());
+      for (int k = 0; k < 60; ++k) {
+        const double x = ux(rng), y = uy(rng);
+        CAPTURE(cutter.name());
+        CAPTURE(m);
+        const double exact = env.height_at(x, y);
+        const double brute = brute_force_height(cutter, a, b, x, y, 2000);
+        if (!std::isfinite(brute)) {
+          CHECK_FALSE(std::isfinite(exact));
+          continue;
+        }
+        REQUIRE(std::isfinite(exact));
+        // The exact minimum is below every sampled position and above the
+        // best sample by at most the sampling error (sub-nanometre here).
+        CHECK(exact <= brute + 1e-9);
+        CHECK(exact >= brute - 1e-9);
+        const EnvelopePoint p = env.evaluate(x, y);
+        CHECK(p.converged);
+        CHECK(p.z == doctest::Approx(exact).epsilon(1e-12).scale(1));
+        // The reported parameter is where the minimum is attained.
+        const Eigen::Vector3d t = a + p.s * (b - a);
+        const double d = std::hypot(x - t.x(), y - t.y());
+        CHECK(d <= cutter.radius() * (1 + 1e-9));
+        CHECK(t.z() + cutter.height_at(std::min(d, cutter.radius())) == doctest::Approx(exact).epsilon(1e-9).scale(1));
+      }
+    }
+  }
+}
+
+TEST_CASE("swept envelope: row spans are exactly the covered part of a row") {
+  std::mt19937 rng(5);
+  const Cutter ball("ball", 2.5, 2.5);
+  for (int m = 0; m < 30; ++m) {
+    const Eigen::Vector3d a = random_point(rng, 5);
+    Eigen::Vector3d b = random_point(rng, 5);
+    if (m % 6 == 0) b.x() = a.x();  // along y
+    if (m % 6 == 1) b.y() = a.y();  // along x
+    if (m % 6 == 2) b = a + Eigen::Vector3d(0, 0, 1);
+    const SweptEnvelope env(ball, a, b);
+    const Eigen::AlignedBox2d box = env.shadow_box();
+    for (int r = 0; r <= 40; ++r) {
+      const double y = box.min().y() - 0.1 + (box.sizes().y() + 0.2) * r / 40.0;
+      double lo = 0, hi = 0;
+      const bool any = env.row_span(y, lo, hi);
+      int finite = 0, outside_span = 0, uncovered_inside = 0;
+      for (int i = 0; i <= 2000; ++i) {
+        const double x = box.min().x() - 0.1 + (box.sizes().x() + 0.2) * i / 2000.0;
+        const bool covered = std::isfinite(env.height_at(x, y));
+        finite += covered;
+        if (covered && (!any || x < lo - 1e-9 || x > hi + 1e-9)) ++outside_span;
+        if (!covered && any && x > lo + 1e-7 && x < hi - 1e-7) ++uncovered_inside;
+      }
+      CHECK(outside_span == 0);
+      CHECK(uncovered_inside == 0);
+      if (any && hi - lo > 1e-3) {
+        CHECK(std::isfinite(env.height_at(lo + 1e-9, y)));
+        CHECK(std::isfinite(env.height_at(hi - 1e-9, y)));
+        CHECK(finite > 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("swept envelope of a level ball move is the capsule: analytic check") {
+  // A level move along x: across the track the envelope is the ball's circle
+  // of radius R centred R above the tip, for every x between the ends.
+  const Cutter ball("ball", 4, 4);
+  const SweptEnvelope env(ball, {0, 0, 1}, {10, 0, 1});
+  for (double x : {0.0, 2.5, 7.0, 10.0})
+    for (double y : {-3.9, -2.0, 0.0, 1.0, 3.5})
+      CHECK(env.height_at(x, y) == doctest::Approx(1 + 4 - std::sqrt(16 - y * y)).epsilon(1e-14).scale(1));
+  // Beyond the ends: the end ball.
+  CHECK(env.height_at(12, 1) == doctest::Approx(1 + 4 - std::sqrt(16 - 5.0)).epsilon(1e-14).scale(1));
+  CHECK_FALSE(std::isfinite(env.height_at(5, 4.01)));
+}
