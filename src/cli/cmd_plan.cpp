@@ -15,9 +15,11 @@
 #include "io/part_file.hpp"
 #include "io/plan_csv.hpp"
 #include "io/plan_file.hpp"
+#include "machining/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 #include "planning/plan_image.hpp"
 #include "planning/plan_report.hpp"
+#include "planning/prediction_risk.hpp"
 #include "planning/probe_planner.hpp"
 
 namespace furrow::cli {
@@ -67,6 +69,7 @@ int run_plan(Args& args) {
   PlannerOptions o;
   const std::string regions_path = args.required_option("regions");
   const std::string out = args.required_option("out");
+  const std::optional<std::string> prediction_path = args.option("prediction");
   o.points = args.integer("points");
   o.density = args.number("density");
   o.min_per_region = static_cast<int>(args.integer_or("min-per-region", o.min_per_region, 0));
@@ -86,6 +89,7 @@ int run_plan(Args& args) {
   o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
   o.motion.dwell = args.number_or("dwell", o.motion.dwell);
+  o.gouge_points = static_cast<int>(args.integer_or("gouge-points", o.gouge_points, 1));
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
   try {
@@ -93,20 +97,26 @@ int run_plan(Args& args) {
   } catch (const InputError& e) {
     args.fail(e.what());
   }
-  if (needs_risk(o.strategy))
-    args.fail(std::string("--strategy ") + to_string(o.strategy) +
-              " needs a machining prediction, which this build cannot read yet");
+  if (needs_risk(o.strategy) && !prediction_path)
+    args.fail(std::string("--strategy ") + to_string(o.strategy) + " needs a machining prediction (--prediction)");
   check_not_overwriting_input(out, part_path);
   check_not_overwriting_input(out, regions_path);
+  if (prediction_path) check_not_overwriting_input(out, *prediction_path);
   o.part_name = part_path;
 
   const Part part = read_part(part_path);
   const RegionMap map = read_regions(regions_path);
   map.check_belongs_to(part, regions_path, part_path);
+  std::optional<Prediction> prediction;
+  std::optional<PredictionRiskMap> risk;
+  if (prediction_path) {
+    prediction = read_prediction(*prediction_path);
+    risk.emplace(*prediction, part, *prediction_path);
+  }
 
   const bool show = ::isatty(2);
   const char* shown = nullptr;
-  const PlanResult result = plan_probe_points(part, map, o, nullptr, [&](const char* stage, std::size_t done, std::size_t total) {
+  const PlanResult result = plan_probe_points(part, map, o, risk ? &*risk : nullptr, [&](const char* stage, std::size_t done, std::size_t total) {
     if (!show) return;
     std::cerr << "\rplan: " << stage << " " << done << "/" << total << "        " << std::flush;
     shown = stage;
@@ -121,7 +131,7 @@ int run_plan(Args& args) {
       {"plan.csv", plan_to_csv_text(result.plan)},
       {name + ".dmi", dmis_program_text(program)},
       {name + ".prg", ippdme_program_text(program)},
-      {"report.json", plan_report_json(result, o, part_path, regions_path)},
+      {"report.json", plan_report_json(result, o, part_path, regions_path, prediction_path.value_or(""))},
   };
   const std::vector<unsigned char> png = plan_image_png(part, map, result);
   write_folder_atomically(out, [&](const std::string& staging) {
@@ -137,14 +147,14 @@ int run_plan(Args& args) {
 
 const Command kPlanCommand = {
     "plan", "probe points per region, collision-checked, DMIS and I++ DME programs",
-    "usage: furrow plan PART --regions REGIONS.json --out FOLDER\n"
+    "usage: furrow plan PART --regions REGIONS.json --out FOLDER [--prediction PREDICTION.json]\n"
     "                   [--points N | --density PER_CM2] [--min-per-region N]\n"
     "                   [--strategy hammersley|halton|stratified|grid|random|curvature]\n"
     "                   [--seed N] [--border MM] [--probe-name NAME] [--probe-diameter MM]\n"
     "                   [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
     "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
-    "                   [--dwell S]\n"
+    "                   [--dwell S] [--gouge-points N]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -155,10 +165,14 @@ const Command kPlanCommand = {
     "\n"
     "  --regions FILE       regions of PART (required)\n"
     "  --out FOLDER         output folder, replaced as a whole (required)\n"
+    "  --prediction FILE    machining prediction of PART (furrow predict): more points\n"
+    "                       where larger errors are predicted, points on every\n"
+    "                       predicted gouge site, and --strategy risk\n"
     "  --points N           total points, or\n"
     "  --density D          points per cm^2 of region area (default 1)\n"
     "  --min-per-region N   fewest points in any region (default 5)\n"
-    "  --strategy S         sampling inside regions (default hammersley, see docs/cmm.md)\n"
+    "  --strategy S         sampling inside regions (default hammersley, see docs/cmm.md;\n"
+    "                       risk: at the predicted error maxima, needs --prediction)\n"
     "  --seed N             random seed (default 1)\n"
     "  --border MM          clearance from region edges on the surface (default probe\n"
     "                       radius + 1)\n"
@@ -173,7 +187,8 @@ const Command kPlanCommand = {
     "                       plane is this far above the part (default 2)\n"
     "  --max-tilt DEG       largest angle between normal and vertical (default 75)\n"
     "  --move-speed, --touch-speed, --acceleration, --dwell   for the cycle time\n"
-    "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n",
+    "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n"
+    "  --gouge-points N     points on each predicted gouge site (default 1)\n",
     run_plan};
 
 }  // namespace furrow::cli

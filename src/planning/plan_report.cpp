@@ -8,13 +8,14 @@ namespace jf = json_fields;
 using jf::json;
 
 std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const std::string& part_path,
-                             const std::string& regions_path) {
+                             const std::string& regions_path, const std::string& prediction_path) {
   json doc;
   doc["format"] = "furrow-plan-report";
   doc["version"] = 1;
   doc["units"] = "mm";
   doc["part"] = part_path;
   doc["regions_file"] = regions_path;
+  if (!prediction_path.empty()) doc["prediction_file"] = prediction_path;
   json opt;
   if (o.points) opt["points"] = *o.points;
   else opt["density_per_cm2"] = jf::finite(o.density.value_or(kDefaultDensity), "density");
@@ -78,6 +79,10 @@ std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const
     issues.push_back(std::move(ji));
   }
   doc["issues"] = std::move(issues);
+  json on_sites = json::array();
+  for (std::size_t k = 0; k < r.point_sites.size(); ++k)
+    if (!r.point_sites[k].empty()) on_sites.push_back({{"point", r.plan.points[k].id}, {"gouge_site", r.point_sites[k]}});
+  doc["gouge_site_points"] = std::move(on_sites);
   doc["points"] = r.plan.points.size();
   doc["tour"] = {{"nearest_neighbour_mm", jf::finite(r.tour.nearest_neighbour_length, "tour")},
                  {"optimised_mm", jf::finite(r.tour.length, "tour")},

@@ -14,7 +14,8 @@
 
 namespace furrow {
 
+// `prediction_path` empty when the plan was made without a prediction.
 std::string plan_report_json(const PlanResult& result, const PlannerOptions& options, const std::string& part_path,
-                             const std::string& regions_path);
+                             const std::string& regions_path, const std::string& prediction_path = "");
 
 }  // namespace furrow

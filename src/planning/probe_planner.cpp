@@ -204,7 +204,8 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
         issue.gouge_site = site.id;
         issue.region = static_cast<int>(r);
         issue.reason = std::to_string(got.points.size()) + " of " + std::to_string(options.gouge_points) +
-                       " points fit on the site (border clearance)";
+                       " points fit on the site: the rest of it is within " + mm(result.border) +
+                       " mm of the face's edges (border clearance)";
         result.issues.push_back(issue);
       }
     }
@@ -252,7 +253,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
                            options.relocation_directions};
       std::function<bool(const Eigen::Vector2d&)> keep;
       if (!c.site.empty()) keep = [&c](const Eigen::Vector2d& uv) { return c.site_box.contains(uv); };
-      if (const std::optional<Relocated> moved = relocate(domain, finder, c.uv, result.probe, access, ro, keep)) {
+      if (const std::optional<Relocated> moved = relocate(domain, finder, c.uv, result.probe, access, ro, !c.site.empty(), keep)) {
         c.kept = c.moved = true;
         c.uv = moved->uv;
         c.xyz = moved->xyz;
@@ -334,6 +335,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
       result.issues.push_back(issue);
     }
     result.plan.points.push_back(std::move(p));
+    result.point_sites.push_back(c.site);
   }
   MoveOptions move_options;
   move_options.clearance = options.clearance;

@@ -12,7 +12,8 @@
 //      weights from area, curvature spread and predicted risk, a floor of
 //      `min_per_region` plus `gouge_points` per predicted gouge site;
 //   3. sampling (sampling_strategy.hpp) in every region with its own seed;
-//      gouge sites get their points on the site first;
+//      gouge sites get their points on the site first (clear of the face's
+//      edges, not necessarily of the borders between curvature regions);
 //   4. accessibility (accessibility.hpp) of every point; a point that fails
 //      is moved to the nearest accessible admissible point within
 //      `max_move_fraction` of the region's point spacing (rings around it
@@ -65,7 +66,7 @@ struct PlannerOptions {
   double clearance = 2;            // ball to part on straight moves [mm]
   double max_tilt_degrees = 75;    // (0, 180]
   MotionModel motion;
-  int gouge_points = 3;            // points per predicted gouge site (with a risk map)
+  int gouge_points = 1;            // points per predicted gouge site (with a risk map)
   AllocationWeights weights;
   double max_move_fraction = 0.5;  // relocation radius / region point spacing
   int relocation_rings = 6;
@@ -119,6 +120,10 @@ struct PlanTiming {
 
 struct PlanResult {
   InspectionPlan plan;             // points in execution order (order 1..n)
+  // Per plan point: the id of the gouge site it was placed on, or "". Such
+  // points keep the border clearance from the face's edges only
+  // (RegionDomain::admissible_on_site).
+  std::vector<std::string> point_sites;
   std::vector<Move> moves;         // moves[k]: into plan.points[k] (moves[0]: down from `start`)
   std::vector<Eigen::Vector3d> final_moves;
   Eigen::Vector3d start = Eigen::Vector3d::Zero();  // above the first approach point, on the clearance plane

@@ -32,6 +32,19 @@ std::vector<std::vector<Eigen::Vector3d>> trim_polylines(const Face& face, int s
   return out;
 }
 
+// The parameter rectangle's boundary on the surface, counter-clockwise.
+std::vector<Eigen::Vector3d> boundary_polyline(const Face& face, int samples) {
+  const ParameterDomain& d = face.domain();
+  const Eigen::Vector2d corners[4] = {{d.u0, d.v0}, {d.u1, d.v0}, {d.u1, d.v1}, {d.u0, d.v1}};
+  std::vector<Eigen::Vector3d> line;
+  for (int side = 0; side < 4; ++side)
+    for (int s = 0; s < samples; ++s) {
+      const Eigen::Vector2d uv = corners[side] + (corners[(side + 1) % 4] - corners[side]) * (static_cast<double>(s) / samples);
+      line.push_back(face.surface().point(uv.x(), uv.y()));
+    }
+  return line;
+}
+
 }  // namespace
 
 RegionDomain::RegionDomain(const Part& part, const RegionMap& map, int region_id,
@@ -54,6 +67,11 @@ RegionDomain::RegionDomain(const Part& part, const RegionMap& map, int region_id
   for (const auto& line : trim_polylines(*face_, options.trim_samples_per_edge))
     if (line.size() >= 2) edges_->add_polyline(line, true);
   edges_->build(std::max(options.border, 0.25));
+  face_edges_ = std::make_unique<EdgeDistance>();
+  for (const auto& line : trim_polylines(*face_, options.trim_samples_per_edge))
+    if (line.size() >= 2) face_edges_->add_polyline(line, true);
+  face_edges_->add_polyline(boundary_polyline(*face_, options.boundary_samples_per_side), true);
+  face_edges_->build(std::max(options.border, 0.25));
 
   // Sample grid over the region's uv box, about as fine as the partition's.
   const RegionFace& rf = map.faces[static_cast<std::size_t>(region_->face)];
@@ -128,11 +146,24 @@ double RegionDomain::edge_distance(const Eigen::Vector3d& xyz, double reach) con
 }
 
 std::optional<double> RegionDomain::admissible(const Eigen::Vector2d& uv, Eigen::Vector3d* xyz) const {
+  return admissible_against(*edges_, uv, xyz);
+}
+
+double RegionDomain::face_edge_distance(const Eigen::Vector3d& xyz, double reach) const {
+  return face_edges_->distance(xyz, reach);
+}
+
+std::optional<double> RegionDomain::admissible_on_site(const Eigen::Vector2d& uv, Eigen::Vector3d* xyz) const {
+  return admissible_against(*face_edges_, uv, xyz);
+}
+
+std::optional<double> RegionDomain::admissible_against(const EdgeDistance& edges, const Eigen::Vector2d& uv,
+                                                       Eigen::Vector3d* xyz) const {
   if (!inside(uv)) return std::nullopt;
   const Eigen::Vector3d p = face_->surface().point(uv.x(), uv.y());
   const double need = required_edge_distance();
   const double cap = need + 1;
-  const double d = edges_->distance(p, cap);
+  const double d = edges.distance(p, cap);
   if (d < need) return std::nullopt;
   if (xyz) *xyz = p;
   return std::min(d, cap);

@@ -11,6 +11,12 @@
 //     the surface) plus a margin covering how far those polylines may be from
 //     the true edge curves (edge_distance.hpp: straight-line distance, a
 //     lower bound of the distance on the surface).
+// Points on a predicted gouge site are admissible on the site's terms
+// (admissible_on_site): in the region and the trim, `border` mm from the
+// face's own edges (parameter-rectangle boundary and trim loops) but not
+// from the borders between curvature regions, which are lines of the
+// classification, not of the part: a gouge predicted next to such a border
+// must still be measured.
 //
 // The region is also sampled on a G x G grid of cells over its uv box (cell
 // centres): area element, the larger principal curvature |k|max and, when a
@@ -40,6 +46,9 @@ struct RegionDomainOptions {
   // sampled here with `trim_samples_per_edge` chords each.
   double edge_margin = 2e-3;
   int trim_samples_per_edge = 64;
+  // The face's parameter-rectangle boundary, sampled with this many chords
+  // per side for the face-edge clearance of gouge-site points.
+  int boundary_samples_per_side = 256;
   // Warp grid cells per direction: from the partition grid cells in the
   // region's uv box, clamped to [min_cells, max_cells].
   int min_cells = 8;
@@ -89,6 +98,11 @@ class RegionDomain {
   // Admissible (see above). On success returns the edge distance, capped at
   // `border + margin + 1` mm, and sets *xyz to the surface point.
   std::optional<double> admissible(const Eigen::Vector2d& uv, Eigen::Vector3d* xyz = nullptr) const;
+  // The same with the clearance taken from the face's edges only (see above).
+  std::optional<double> admissible_on_site(const Eigen::Vector2d& uv, Eigen::Vector3d* xyz = nullptr) const;
+  // Straight-line distance from a surface point to the face's own edges
+  // when below `reach`, else +infinity.
+  double face_edge_distance(const Eigen::Vector3d& xyz, double reach) const;
   // Required straight-line distance to the edges: border + edge_margin.
   double required_edge_distance() const { return options_.border + options_.edge_margin; }
 
@@ -109,11 +123,15 @@ class RegionDomain {
   AreaWarp area_warp() const { return warp(0, 1, 0, 1); }
 
  private:
+  std::optional<double> admissible_against(const EdgeDistance& edges, const Eigen::Vector2d& uv,
+                                           Eigen::Vector3d* xyz) const;
+
   int region_id_ = 0;
   const Region* region_ = nullptr;
   const Face* face_ = nullptr;
   RegionDomainOptions options_;
-  std::unique_ptr<EdgeDistance> edges_;
+  std::unique_ptr<EdgeDistance> edges_;       // region borders and trim loops
+  std::unique_ptr<EdgeDistance> face_edges_;  // parameter-rectangle boundary and trim loops
   int grid_ = 8;
   std::vector<DomainCell> cells_;  // u-major: cells_[i * grid_ + j]
   DomainStatistics stats_;

@@ -6,7 +6,7 @@ namespace furrow {
 
 std::optional<Relocated> relocate(const RegionDomain& domain, const ClosestPointFinder& finder,
                                   const Eigen::Vector2d& uv, const ProbeGeometry& probe, const AccessOptions& access,
-                                  const RelocationOptions& options,
+                                  const RelocationOptions& options, bool on_site,
                                   const std::function<bool(const Eigen::Vector2d&)>& keep) {
   const Face& face = domain.face();
   const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
@@ -28,7 +28,7 @@ std::optional<Relocated> relocate(const RegionDomain& domain, const ClosestPoint
       const Eigen::Vector2d candidate = uv + normal_matrix.ldlt().solve(J.transpose() * offset);
       if (keep && !keep(candidate)) continue;
       Relocated r;
-      if (!domain.admissible(candidate, &r.xyz)) continue;
+      if (!(on_site ? domain.admissible_on_site(candidate, &r.xyz) : domain.admissible(candidate, &r.xyz))) continue;
       const DifferentialGeometry gc = face.geometry(candidate.x(), candidate.y());
       if (gc.degenerate) continue;
       if (!check_access(finder, r.xyz, gc.normal, probe, access).ok()) continue;

@@ -6,7 +6,8 @@
 // (staggered by half a step from ring to ring), mapped to (u, v) to first
 // order through the surface Jacobian. They are tried nearest ring first,
 // each ring in angle order; the first that is admissible in the region
-// (region_domain.hpp), passes `keep` and is accessible (check_access) wins.
+// (region_domain.hpp; on a gouge site's terms when `on_site`), passes `keep`
+// and is accessible (check_access) wins.
 // The reported distance is the straight-line distance between the surface
 // points.
 //
@@ -35,7 +36,7 @@ struct Relocated {
 
 std::optional<Relocated> relocate(const RegionDomain& domain, const ClosestPointFinder& finder,
                                   const Eigen::Vector2d& uv, const ProbeGeometry& probe, const AccessOptions& access,
-                                  const RelocationOptions& options,
+                                  const RelocationOptions& options, bool on_site = false,
                                   const std::function<bool(const Eigen::Vector2d&)>& keep = {});
 
 }  // namespace furrow

@@ -261,7 +261,7 @@ RegionSample sample_site(const RegionDomain& domain, const Eigen::AlignedBox2d& 
     ++sample.candidates_tried;
     SampledPoint p;
     p.uv = uv;
-    const std::optional<double> d = domain.admissible(uv, &p.xyz);
+    const std::optional<double> d = domain.admissible_on_site(uv, &p.xyz);
     if (!d) return;
     p.edge_distance = *d;
     if (!best || (p.xyz - target).norm() < (best->xyz - target).norm()) best = p;
@@ -285,7 +285,7 @@ RegionSample sample_site(const RegionDomain& domain, const Eigen::AlignedBox2d& 
     ++sample.candidates_tried;
     SampledPoint p;
     p.uv = box.min() + box.sizes().cwiseProduct(rotate(halton_point(i + 1), shift));
-    const std::optional<double> d = domain.admissible(p.uv, &p.xyz);
+    const std::optional<double> d = domain.admissible_on_site(p.uv, &p.xyz);
     if (!d) continue;
     p.edge_distance = *d;
     sample.points.push_back(p);

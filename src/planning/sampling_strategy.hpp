@@ -80,9 +80,10 @@ struct RegionSample {
 RegionSample sample_region(const RegionDomain& domain, SamplingStrategy strategy, std::size_t count,
                            std::uint64_t seed, double kappa_ref, const SamplingOptions& options = {});
 
-// `count` points on a gouge site: the admissible point nearest `centre`
-// within `box` first (from a grid of candidates), then Halton points in the
-// box. Fewer when the site holds fewer admissible points.
+// `count` points on a gouge site: the point admissible on the site's terms
+// (RegionDomain::admissible_on_site) nearest `centre` within `box` first
+// (from a grid of candidates), then Halton points in the box. Fewer when the
+// site holds fewer admissible points.
 RegionSample sample_site(const RegionDomain& domain, const Eigen::AlignedBox2d& box,
                          const Eigen::Vector2d& centre, std::size_t count, std::uint64_t seed,
                          const SamplingOptions& options = {});

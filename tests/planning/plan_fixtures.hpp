@@ -11,7 +11,7 @@
 #include "geometry/part.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "partition/partition.hpp"
+#include "partition/region_map.hpp"
 
 namespace furrow::test {
 
@@ -21,11 +21,11 @@ inline Part one_face(const NurbsSurface& surface, const std::string& name = "fac
   return part;
 }
 
-inline RegionMap partition_of(const Part& part, int nu = 120, int nv = 120) {
-  PartitionOptions o;
-  o.grid = GridSize{nu, nv};
-  return partition_part(part, o).map;
-}
+// The curvature partition at nu x nv cells per face (plan_fixtures.cpp: kept
+// out of this header because partition/curvature_field.hpp and
+// machining/error_map.hpp both define furrow::SampleStatus, so no test file
+// may include both).
+RegionMap partition_of(const Part& part, int nu = 120, int nv = 120);
 
 inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }
 

@@ -9,7 +9,9 @@
 #include "io/ippdme_reader.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
+#include "machining/prediction_file.hpp"
 #include "partition/regions_file.hpp"
+#include "prediction_fixture.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -86,7 +88,7 @@ TEST_CASE("furrow plan: bad input gives one line, exit 2 and no output folder") 
       {{"--stylus-diameter", "0"}, part, "--stylus-diameter"},
       {{"--points", "10", "--density", "2"}, part, "exclude each other"},
       {{"--strategy", "sobol"}, part, "unknown strategy"},
-      {{"--strategy", "risk"}, part, "needs a machining prediction"},
+      {{"--strategy", "risk"}, part, "needs a machining prediction (--prediction)"},
       {{"--max-tilt", "200"}, part, "--max-tilt"},
       {{"--border", "80"}, part, "--border"},
       {{"--seed", "-1"}, part, "--seed"},
@@ -105,4 +107,35 @@ TEST_CASE("furrow plan: bad input gives one line, exit 2 and no output folder") 
   const CliResult missing = run_furrow({"plan", part, "--regions", dir + "/none.json", "--out", dir + "/out"});
   CHECK(missing.status == 2);
   CHECK_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST_CASE("furrow plan --prediction: points on the gouge sites, risk strategy; another part's prediction refused") {
+  const std::string dir = scratch_dir("cli-plan-prediction");
+  const std::string part_path = source_path("examples/parts/mould.json");
+  const Part part = read_part(part_path);
+  write_prediction(synthetic_prediction(part, {0.3, 0.45}, {{0.3, 0.45}, {0.7, 0.3}}), dir + "/prediction.json");
+  for (const char* strategy : {"hammersley", "risk"}) {
+    const std::string out = dir + "/" + strategy;
+    const CliResult r = run_furrow({"plan", part_path, "--regions", mould_regions(), "--out", out, "--prediction",
+                                    dir + "/prediction.json", "--strategy", strategy, "--gouge-points", "2"});
+    REQUIRE(r.status == 0);
+    const auto report = nlohmann::json::parse(slurp(out + "/report.json"));
+    CHECK(report["prediction_file"] == dir + "/prediction.json");
+    CHECK(report["gouge_site_points"].size() == 4);
+    const InspectionPlan plan = read_plan(out + "/plan.json");
+    for (const auto& g : report["gouge_site_points"]) {
+      const auto k = plan.find(g["point"].get<std::string>());
+      REQUIRE(k.has_value());
+      const Eigen::Vector2d centre = g["gouge_site"] == "G1" ? Eigen::Vector2d(0.3, 0.45) : Eigen::Vector2d(0.7, 0.3);
+      CHECK((plan.points[*k].uv - centre).cwiseAbs().maxCoeff() <= 0.01);
+    }
+  }
+  const Part other = read_part(source_path("examples/parts/semi_cylinder.json"));
+  write_prediction(synthetic_prediction(other, {0.5, 0.5}, {}), dir + "/other.json");
+  const CliResult bad = run_furrow({"plan", part_path, "--regions", mould_regions(), "--out", dir + "/bad", "--prediction",
+                                    dir + "/other.json"});
+  CHECK(bad.status == 2);
+  CHECK(line_count(bad.err) == 1);
+  CHECK(bad.err.find("another part") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/bad"));
 }

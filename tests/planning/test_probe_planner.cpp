@@ -9,8 +9,10 @@
 
 #include "geometry/error.hpp"
 #include "io/plan_file.hpp"
+#include "planning/prediction_risk.hpp"
 #include "planning/probe_planner.hpp"
 #include "plan_fixtures.hpp"
+#include "prediction_fixture.hpp"
 
 using namespace furrow;
 using namespace furrow::test;
@@ -164,12 +166,17 @@ TEST_CASE("predicted risk draws points to a region; every gouge site gets points
   site.uv_box = Eigen::AlignedBox2d(dome.interior_uv - Eigen::Vector2d(0.02, 0.02), dome.interior_uv + Eigen::Vector2d(0.02, 0.02));
   site.depth = 0.03;
   const SiteRisk risk(corner.interior_uv, 0.08, {site});
+  o.gouge_points = 3;
   const PlanResult risky = plan_probe_points(part, map, o, &risk);
   CHECK(risky.regions[4].allocated > plain.regions[4].allocated);
   CHECK(risky.regions[2].gouge_points == 3);
   int on_site = 0;
-  for (const PlannedPoint& p : risky.plan.points) on_site += site.uv_box.contains(p.uv);
-  CHECK(on_site >= 3);
+  for (std::size_t k = 0; k < risky.plan.points.size(); ++k)
+    if (risky.point_sites[k] == "G1") {
+      ++on_site;
+      CHECK(site.uv_box.contains(risky.plan.points[k].uv));
+    }
+  CHECK(on_site == 3);
   for (const PlanIssue& i : risky.issues) CHECK(i.kind != PlanIssue::Kind::gouge_site);
   // The risk strategy needs a risk map.
   o.strategy = SamplingStrategy::risk;
@@ -205,4 +212,45 @@ TEST_CASE("refused options and impossible plans") {
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("--border") != std::string::npos);
   }
+}
+
+TEST_CASE("a prediction's gouge sites all get a point, even next to a region border") {
+  const Part& part = mould_part();
+  const RegionMap& map = mould_map();
+  // Sites: inside the dome, on the dome's border with the saddle band, and
+  // right at the face's edge (v = 0.005: within the border clearance of the
+  // part's boundary, so it cannot be measured and must be reported).
+  const Region& dome = map.regions[2];
+  Eigen::Vector2d on_border = dome.border[0].uv[0];
+  const Prediction p = synthetic_prediction(part, dome.interior_uv, {dome.interior_uv, on_border, {0.5, 0.005}});
+  const PredictionRiskMap risk(p, part, "p.json");
+  PlannerOptions o;
+  o.points = 100;
+  const PlanResult r = plan_probe_points(part, map, o, &risk);
+  std::map<std::string, int> points_on;
+  for (std::size_t k = 0; k < r.plan.points.size(); ++k) {
+    const PlannedPoint& pt = r.plan.points[k];
+    if (r.point_sites[k].empty()) {
+      CHECK(brute_edge_distance(part, map, *pt.region, pt.xyz) >= r.border);
+      continue;
+    }
+    ++points_on[r.point_sites[k]];
+    const GougeSite& s = risk.gouge_sites()[static_cast<std::size_t>(std::stoi(r.point_sites[k].substr(1)) - 1)];
+    CHECK(s.uv_box.contains(pt.uv));
+    CHECK(map.region_at(0, pt.uv.x(), pt.uv.y()) == pt.region);
+    // Clear of the face's own edges (the boundary of the parameter square).
+    double edge = 1e300;
+    for (int k2 = 0; k2 <= 400; ++k2) {
+      const double t = k2 / 400.0;
+      for (const Eigen::Vector2d& uv : {Eigen::Vector2d(t, 0), Eigen::Vector2d(t, 1), Eigen::Vector2d(0, t), Eigen::Vector2d(1, t)})
+        edge = std::min(edge, (part.faces[0].surface().point(uv.x(), uv.y()) - pt.xyz).norm());
+    }
+    CHECK(edge >= r.border);
+  }
+  CHECK(points_on["G1"] == 1);
+  CHECK(points_on["G2"] == 1);
+  CHECK(points_on.count("G3") == 0);
+  int reported = 0;
+  for (const PlanIssue& i : r.issues) reported += i.kind == PlanIssue::Kind::gouge_site && i.gouge_site == "G3";
+  CHECK(reported == 1);
 }
