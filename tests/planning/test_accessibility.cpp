@@ -36,7 +36,7 @@ Part floor_with_ceiling(double h) {
 
 }  // namespace
 
-TEST_CASE("a point on a plane is accessible; a steep normal is refused by the tilt limit") {
+TEST_CASE("a point on a plane is accessible, a steep normal is refused by the tilt limit") {
   const Part plane = one_face(make_plane({0, 0, 0}, {100, 0, 0}, {0, 100, 0}));
   const ClosestPointFinder finder(plane);
   const ProbeGeometry probe{1, 0.5, 20};

@@ -32,7 +32,7 @@ TEST_CASE("a density linear in u is inverted exactly on its piecewise-constant c
   }
 }
 
-TEST_CASE("columns of zero density are never chosen; a zero density is refused") {
+TEST_CASE("columns of zero density are never chosen, a zero density is refused") {
   const AreaWarp w(Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)), 4,
                    [](double u, double) { return u < 0.5 ? 0.0 : 1.0; });
   for (int k = 0; k < 50; ++k) CHECK(w.map({k / 50.0, 0.5}).x() >= 0.5);

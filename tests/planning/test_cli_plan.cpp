@@ -109,7 +109,7 @@ TEST_CASE("furrow plan: bad input gives one line, exit 2 and no output folder") 
   CHECK_FALSE(fs::exists(dir + "/out"));
 }
 
-TEST_CASE("furrow plan --prediction: points on the gouge sites, risk strategy; another part's prediction refused") {
+TEST_CASE("furrow plan --prediction: points on the gouge sites, risk strategy, another part's prediction refused") {
   const std::string dir = scratch_dir("cli-plan-prediction");
   const std::string part_path = source_path("examples/parts/mould.json");
   const Part part = read_part(part_path);

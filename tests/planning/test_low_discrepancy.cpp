@@ -34,7 +34,7 @@ TEST_CASE("radical inverse mirrors the digits about the radix point") {
   CHECK(radical_inverse(5, 3) == doctest::Approx(2.0 / 3 + 1.0 / 9).epsilon(1e-15));  // 12 -> 0.21
 }
 
-TEST_CASE("sets have the requested shape and stay in [0, 1)") {
+TEST_CASE("sets have the requested shape and stay in the unit square") {
   const auto h = hammersley_set(8);
   REQUIRE(h.size() == 8);
   CHECK(h[0].x() == 1.0 / 16);

@@ -87,7 +87,7 @@ TEST_CASE("mould plan: every point on the surface, in its region and trim, clear
   check_plan_against_part(r.plan, part, "plan", 1e-9);
 }
 
-TEST_CASE("straight moves keep the clearance; the others go over the clearance plane") {
+TEST_CASE("straight moves keep the clearance, the others go over the clearance plane") {
   PlannerOptions o;
   o.points = 120;
   const PlanResult r = plan_probe_points(mould_part(), mould_map(), o);
@@ -108,7 +108,7 @@ TEST_CASE("straight moves keep the clearance; the others go over the clearance p
   }
 }
 
-TEST_CASE("the same seed gives the same plan byte for byte; another seed another plan") {
+TEST_CASE("the same seed gives the same plan byte for byte, another seed another plan") {
   PlannerOptions o;
   o.points = 150;
   o.seed = 42;
@@ -150,7 +150,7 @@ TEST_CASE("points at the bottom of a groove narrower than the ball are dropped w
   CHECK(in_groove >= 1);
 }
 
-TEST_CASE("predicted risk draws points to a region; every gouge site gets points on it") {
+TEST_CASE("predicted risk draws points to a region, every gouge site gets points on it") {
   const Part& part = mould_part();
   const RegionMap& map = mould_map();
   PlannerOptions o;

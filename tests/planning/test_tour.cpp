@@ -86,7 +86,7 @@ TEST_CASE("small instances: a local optimum close to the exact one, usually equa
   CHECK(exact >= 24);
 }
 
-TEST_CASE("a lattice is toured in its optimal length; deterministic; degenerate inputs") {
+TEST_CASE("a lattice is toured in its optimal length, deterministic, degenerate inputs") {
   std::vector<Eigen::Vector3d> grid;
   for (int i = 0; i < 12; ++i)
     for (int j = 0; j < 12; ++j) grid.emplace_back(i * 5.0, j * 5.0, 0);
