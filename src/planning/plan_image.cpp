@@ -19,9 +19,10 @@ const cv::Scalar kClassColour[] = {
 };
 const cv::Scalar kOutside(215, 215, 215), kInk(30, 30, 30), kPaper(255, 255, 255);
 const cv::Scalar kStraight(120, 40, 10), kOver(230, 190, 150), kMoved(0, 140, 255), kDropped(40, 40, 220);
+const cv::Scalar kGouge(200, 40, 200);
 constexpr int kCells = 96;
 constexpr int kShift = 4;
-constexpr int kSide = 900, kMargin = 30, kLegend = 44;
+constexpr int kSide = 900, kMargin = 30, kLegend = 66;
 
 struct Quad {
   double z;
@@ -108,6 +109,11 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
   }
   const int dot = points.size() > 1500 ? 1 : 2;
   for (const PlannedPoint& p : points) cv::circle(canvas, plain(px3(p.xyz)), dot, kInk, cv::FILLED, cv::LINE_AA);
+  for (std::size_t k = 0; k < points.size() && k < result.point_sites.size(); ++k)
+    if (!result.point_sites[k].empty()) {
+      const cv::Point c = plain(px3(points[k].xyz));
+      cv::rectangle(canvas, c - cv::Point(4, 4), c + cv::Point(4, 4), kGouge, 2, cv::LINE_AA);
+    }
   for (const PlanIssue& issue : result.issues)
     if (issue.kind == PlanIssue::Kind::moved) {
       const auto it = std::find_if(points.begin(), points.end(), [&](const PlannedPoint& p) { return p.id == issue.point; });
@@ -126,14 +132,19 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
   };
   const Entry entries[] = {{kClassColour[1], "convex"}, {kClassColour[2], "concave"}, {kClassColour[3], "saddle"},
                            {kClassColour[0], "planar"}, {kStraight, "straight move"}, {kOver, "over clearance plane"},
-                           {kMoved, "moved"}, {kDropped, "dropped / last"}};
-  int x = kMargin;
+                           {kMoved, "moved"}, {kGouge, "on a gouge site"}, {kDropped, "dropped / last"}};
+  int x = kMargin, y = top;
   for (const Entry& e : entries) {
-    cv::rectangle(canvas, cv::Rect(x, top, 14, 14), e.colour, cv::FILLED);
-    cv::rectangle(canvas, cv::Rect(x, top, 14, 14), kInk, 1);
-    cv::putText(canvas, e.text, {x + 19, top + 12}, cv::FONT_HERSHEY_SIMPLEX, 0.42, kInk, 1, cv::LINE_AA);
     int baseline = 0;
-    x += 19 + cv::getTextSize(e.text, cv::FONT_HERSHEY_SIMPLEX, 0.42, 1, &baseline).width + 14;
+    const int w = 19 + cv::getTextSize(e.text, cv::FONT_HERSHEY_SIMPLEX, 0.42, 1, &baseline).width;
+    if (x + w > canvas.cols - kMargin) {  // wrap to a second row
+      x = kMargin;
+      y += 22;
+    }
+    cv::rectangle(canvas, cv::Rect(x, y, 14, 14), e.colour, cv::FILLED);
+    cv::rectangle(canvas, cv::Rect(x, y, 14, 14), kInk, 1);
+    cv::putText(canvas, e.text, {x + 19, y + 12}, cv::FONT_HERSHEY_SIMPLEX, 0.42, kInk, 1, cv::LINE_AA);
+    x += w + 14;
   }
   const std::string title = std::to_string(points.size()) + " points, top view (x right, y up)";
   cv::putText(canvas, title, {kMargin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kInk, 1, cv::LINE_AA);

@@ -5,7 +5,8 @@
 // grey), region borders, the tour through the points in execution order
 // (dark blue where the probe goes straight, light blue where it goes over
 // the clearance plane), the points (black), points that were moved (orange
-// ring) and dropped (red cross), the first point (green) and the last (red).
+// ring), placed on a predicted gouge site (magenta square) and dropped (red
+// cross), the first point (green) and the last (red).
 // Surfaces overlapping in the view are painted bottom to top.
 //
 // PNG bytes from cv::imencode; deterministic for the same plan.
