@@ -21,13 +21,14 @@ struct Command {
 };
 
 extern const Command kInfoCommand;
-extern const Command kPartitionCommand;
 extern const Command kImportCommand;
-extern const Command kCompareCommand;
-extern const Command kSimulateMeasurementCommand;
-extern const Command kPredictCommand;
-extern const Command kToolpathCommand;
+extern const Command kPartitionCommand;
 extern const Command kGougeCommand;
 extern const Command kSelectToolCommand;
+extern const Command kToolpathCommand;
+extern const Command kPredictCommand;
+extern const Command kPlanCommand;
+extern const Command kSimulateMeasurementCommand;
+extern const Command kCompareCommand;
 
 }  // namespace furrow::cli

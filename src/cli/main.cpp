@@ -16,14 +16,15 @@ using furrow::cli::Command;
 
 const Command* const kCommands[] = {
     &furrow::cli::kInfoCommand,
-    &furrow::cli::kPartitionCommand,
     &furrow::cli::kImportCommand,
-    &furrow::cli::kCompareCommand,
-    &furrow::cli::kSimulateMeasurementCommand,
-    &furrow::cli::kToolpathCommand,
-    &furrow::cli::kPredictCommand,
+    &furrow::cli::kPartitionCommand,
     &furrow::cli::kGougeCommand,
     &furrow::cli::kSelectToolCommand,
+    &furrow::cli::kToolpathCommand,
+    &furrow::cli::kPredictCommand,
+    &furrow::cli::kPlanCommand,
+    &furrow::cli::kSimulateMeasurementCommand,
+    &furrow::cli::kCompareCommand,
 };
 
 const Command* find_command(const std::string& name) {

@@ -186,98 +186,31 @@ void parse_xyz(const std::string& text, const std::string& name, double scale,
   set.ids_from_file = false;
 }
 
-// DMIS statements with the line each starts on: "$$" comments removed, lines
-// ending in "$" joined with the next.
-std::vector<Line> dmis_statements(const std::string& text) {
-  std::vector<Line> out;
-  std::istringstream in(text);
-  std::string raw, pending;
-  int number = 0, start = 0;
-  while (std::getline(in, raw)) {
-    ++number;
-    const auto comment = raw.find("$$");
-    std::string t = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
-    if (t.empty() && pending.empty()) continue;
-    if (pending.empty()) start = number;
-    const bool continues = !t.empty() && t.back() == '$';
-    if (continues) t.pop_back();
-    pending += t;
-    if (!continues) {
-      out.push_back({start, pending});
-      pending.clear();
-    }
-  }
-  if (!pending.empty()) out.push_back({start, pending});
-  return out;
-}
-
 // F(label)=FEAT/POINT,CART,x,y,z,i,j,k nominals and FA(label)=... actuals.
 void parse_dmis_results(const std::string& text, const std::string& name, MeasurementSet& set) {
   double scale = 1;
   std::map<std::string, std::pair<Eigen::Vector3d, Eigen::Vector3d>> nominals;
   std::map<std::string, int> nominal_line;
   std::map<std::string, int> seen;
-  for (const Line& st : dmis_statements(text)) {
-    std::string up = st.text;
-    std::transform(up.begin(), up.end(), up.begin(),
-                   [](unsigned char c) { return std::toupper(c); });
-    up.erase(std::remove_if(up.begin(), up.end(), [](unsigned char c) { return std::isspace(c); }),
-             up.end());
-    if (up.rfind("UNITS/", 0) == 0) {
-      const std::string unit =
-          up.substr(6, up.find(',') == std::string::npos ? std::string::npos : up.find(',') - 6);
-      if (unit == "MM")
-        scale = 1;
-      else if (unit == "INCH")
-        scale = 25.4;
-      else
-        fail(name, st.number, "UNITS/" + unit + " is not supported (MM or INCH)");
+  for (const DmisStatement& st : dmis_statements(text)) {
+    if (const std::optional<double> units = dmis_units_scale(st, name)) {
+      scale = *units;
       continue;
     }
-    const bool actual = up.rfind("FA(", 0) == 0;
-    if (!actual && up.rfind("F(", 0) != 0) continue;
-    const auto close = up.find(')');
-    const auto equals = up.find('=');
-    if (close == std::string::npos || equals != close + 1) continue;  // not a feature definition
-    const std::string body = up.substr(equals + 1);
-    if (body.rfind("FEAT/", 0) != 0) continue;
-    if (body.rfind("FEAT/POINT,", 0) != 0) continue;  // other feature types are not ours
-    // The label as written (case kept), from the original text.
-    std::string original = st.text;
-    original.erase(std::remove_if(original.begin(), original.end(),
-                                  [](unsigned char c) { return std::isspace(c); }),
-                   original.end());
-    const std::string label = original.substr(actual ? 3 : 2, close - (actual ? 3 : 2));
-    if (label.empty()) fail(name, st.number, "empty feature label");
-    // Values from the statement as written (messages quote the user's text).
-    const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
-    if (fields.empty() || lower(fields[0]) != "cart")
-      fail(name, st.number,
-           "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) +
-               "\"");
-    if (fields.size() != 7)
-      fail(name, st.number,
-           "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " +
-               std::to_string(fields.size() - 1));
-    double v[6];
-    for (int c = 0; c < 6; ++c)
-      v[c] = parse_number(fields[c + 1], name, st.number, "value " + std::to_string(c + 1));
-    const Eigen::Vector3d xyz = scale * Eigen::Vector3d(v[0], v[1], v[2]);
-    const Eigen::Vector3d ijk = unit_direction({v[3], v[4], v[5]}, name, st.number, "i, j, k");
-    if (!actual) {
-      const auto [it, inserted] = nominal_line.emplace(label, st.number);
+    const std::optional<DmisPointFeature> feature = parse_dmis_point_feature(st, name, scale);
+    if (!feature) continue;
+    if (!feature->actual) {
+      const auto [it, inserted] = nominal_line.emplace(feature->label, st.line);
       if (!inserted)
-        fail(name, st.number,
-             "duplicate nominal F(" + label + ") (first on line " + std::to_string(it->second) +
-                 ")");
-      nominals[label] = {xyz, ijk};
+        fail(name, st.line, "duplicate nominal F(" + feature->label + ") (first on line " + std::to_string(it->second) + ")");
+      nominals[feature->label] = {feature->xyz, feature->ijk};
       continue;
     }
     MeasuredPoint p;
-    p.id = label;
-    p.line = st.number;
-    p.xyz = xyz;
-    p.ijk = ijk;
+    p.id = feature->label;
+    p.line = st.line;
+    p.xyz = feature->xyz;
+    p.ijk = feature->ijk;
     add_point(set, seen, std::move(p), name);
   }
   for (MeasuredPoint& p : set.points) {
@@ -287,6 +220,13 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
     p.nominal_ijk = it->second.second;
   }
   set.ids_from_file = true;
+}
+
+std::string dmis_compact_upper(const std::string& text) {
+  std::string up = text;
+  std::transform(up.begin(), up.end(), up.begin(), [](unsigned char c) { return std::toupper(c); });
+  up.erase(std::remove_if(up.begin(), up.end(), [](unsigned char c) { return std::isspace(c); }), up.end());
+  return up;
 }
 
 }  // namespace
@@ -374,6 +314,70 @@ std::string measurements_to_csv(const MeasurementSet& set) {
 
 void write_measurements_csv(const MeasurementSet& set, const std::string& path) {
   write_file_atomically(path, measurements_to_csv(set));
+}
+
+
+std::vector<DmisStatement> dmis_statements(const std::string& text) {
+  std::vector<DmisStatement> out;
+  std::istringstream in(text);
+  std::string raw, pending;
+  int number = 0, start = 0;
+  while (std::getline(in, raw)) {
+    ++number;
+    const auto comment = raw.find("$$");
+    std::string t = trim(comment == std::string::npos ? raw : raw.substr(0, comment));
+    if (t.empty() && pending.empty()) continue;
+    if (pending.empty()) start = number;
+    const bool continues = !t.empty() && t.back() == '$';
+    if (continues) t.pop_back();
+    pending += t;
+    if (!continues) {
+      out.push_back({start, pending});
+      pending.clear();
+    }
+  }
+  if (!pending.empty()) out.push_back({start, pending});
+  return out;
+}
+
+std::optional<double> dmis_units_scale(const DmisStatement& st, const std::string& name) {
+  const std::string up = dmis_compact_upper(st.text);
+  if (up.rfind("UNITS/", 0) != 0) return std::nullopt;
+  const auto comma = up.find(',');
+  const std::string unit = up.substr(6, comma == std::string::npos ? std::string::npos : comma - 6);
+  if (unit == "MM") return 1.0;
+  if (unit == "INCH") return 25.4;
+  fail(name, st.line, "UNITS/" + unit + " is not supported (MM or INCH)");
+}
+
+std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st, const std::string& name,
+                                                         double scale) {
+  const std::string up = dmis_compact_upper(st.text);
+  const bool actual = up.rfind("FA(", 0) == 0;
+  if (!actual && up.rfind("F(", 0) != 0) return std::nullopt;
+  const auto close = up.find(')');
+  const auto equals = up.find('=');
+  if (close == std::string::npos || equals != close + 1) return std::nullopt;  // not a feature definition
+  const std::string body = up.substr(equals + 1);
+  if (body.rfind("FEAT/POINT,", 0) != 0) return std::nullopt;  // other feature types are not ours
+  // The label as written (case kept), from the original text.
+  std::string original = st.text;
+  original.erase(std::remove_if(original.begin(), original.end(), [](unsigned char c) { return std::isspace(c); }),
+                 original.end());
+  DmisPointFeature f;
+  f.actual = actual;
+  f.label = original.substr(actual ? 3 : 2, close - (actual ? 3 : 2));
+  if (f.label.empty()) fail(name, st.line, "empty feature label");
+  const std::vector<std::string> fields = split(body.substr(11), ',');
+  if (fields.empty() || fields[0] != "CART")
+    fail(name, st.line, "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) + "\"");
+  if (fields.size() != 7)
+    fail(name, st.line, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " + std::to_string(fields.size() - 1));
+  double v[6];
+  for (int c = 0; c < 6; ++c) v[c] = parse_number(fields[c + 1], name, st.line, "value " + std::to_string(c + 1));
+  f.xyz = scale * Eigen::Vector3d(v[0], v[1], v[2]);
+  f.ijk = unit_direction({v[3], v[4], v[5]}, name, st.line, "i, j, k");
+  return f;
 }
 
 }  // namespace furrow

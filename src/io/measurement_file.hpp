@@ -80,4 +80,31 @@ MeasurementFormat measurement_format_from_path(const std::string& path);
 std::string measurements_to_csv(const MeasurementSet& set);
 void write_measurements_csv(const MeasurementSet& set, const std::string& path);
 
+// DMIS text as statements, shared with the reader of Furrow's own DMIS
+// programs (dmis_program_reader.hpp): "$$" comments removed, a line ending
+// in "$" joined with the next, blank lines dropped; `line` is where the
+// statement starts (1-based).
+struct DmisStatement {
+  int line = 0;
+  std::string text;
+};
+std::vector<DmisStatement> dmis_statements(const std::string& text);
+
+// UNITS/MM or UNITS/INCH: the factor to millimetres; nullopt for another
+// statement; InputError "name:line: ..." for another unit.
+std::optional<double> dmis_units_scale(const DmisStatement& statement, const std::string& name);
+
+// F(label)=FEAT/POINT,CART,x,y,z,i,j,k (a nominal) or FA(label)=... (an
+// actual), coordinates times `scale`, ijk normalised; nullopt for any other
+// statement (other feature types included); InputError "name:line: ..." for
+// a malformed point (not CART, wrong count, bad number, zero direction).
+struct DmisPointFeature {
+  std::string label;  // as written
+  bool actual = false;
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ijk = Eigen::Vector3d::UnitZ();
+};
+std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& statement, const std::string& name,
+                                                         double scale);
+
 }  // namespace furrow

@@ -1,0 +1,195 @@
+// furrow plan PART --regions REGIONS.json --out plans/NAME: probe points per
+// region, collision-checked, ordered, with DMIS and I++ DME programs (issue 6).
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "geometry/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/dmis_writer.hpp"
+#include "io/ippdme_writer.hpp"
+#include "io/part_file.hpp"
+#include "io/plan_csv.hpp"
+#include "io/plan_file.hpp"
+#include "machining/prediction_file.hpp"
+#include "partition/regions_file.hpp"
+#include "planning/plan_image.hpp"
+#include "planning/plan_report.hpp"
+#include "planning/prediction_risk.hpp"
+#include "planning/probe_planner.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+// The program name: the output folder's name in letters, digits, '_' and '-'.
+std::string program_name(const std::string& out) {
+  std::string base = std::filesystem::path(out).lexically_normal().filename().string();
+  if (base.empty() || base == "." || base == "..")
+    base = std::filesystem::path(out).lexically_normal().parent_path().filename().string();
+  std::string name;
+  for (unsigned char c : base) name += (std::isalnum(c) || c == '_' || c == '-') ? static_cast<char>(c) : '_';
+  if (name.size() > 64) name.resize(64);
+  return name.empty() ? "furrow_plan" : name;
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+void print_summary(std::ostream& out, const PlanResult& r, const std::string& folder) {
+  out << "plan: " << r.plan.points.size() << " points in " << r.regions.size() << " regions, border "
+      << fixed(r.border, 2) << " mm, probe " << r.plan.probe.name << " diameter " << fixed(r.plan.probe.diameter, 3)
+      << " mm\n";
+  for (const RegionPlanSummary& s : r.regions) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  region %3d  %-8s %10.1f mm^2  allocated %5d  planned %5d  moved %4d  dropped %4d%s\n",
+                  s.region, to_string(s.curvature_class), s.area, s.allocated, s.planned, s.moved, s.dropped,
+                  s.samplable ? "" : "  (too small for the border clearance)");
+    out << line;
+  }
+  std::size_t issues = 0;
+  for (const PlanIssue& i : r.issues) issues += i.kind != PlanIssue::Kind::moved;
+  out << "tour: " << fixed(r.tour.length, 1) << " mm between probe centres (nearest neighbour "
+      << fixed(r.tour.nearest_neighbour_length, 1) << " mm); moves: " << r.cycle.straight_moves << " straight, "
+      << r.cycle.plane_moves << " over the clearance plane z = " << fixed(r.clearance_z, 3) << "\n";
+  out << "cycle time estimate: " << fixed(r.cycle.seconds / 60, 1) << " min (" << fixed(r.cycle.positioning_length, 0)
+      << " mm positioning)\n";
+  if (issues > 0 || !r.issues.empty())
+    out << r.issues.size() << " issues (moved or dropped points, short regions): see " << folder << "/report.json\n";
+}
+
+int run_plan(Args& args) {
+  PlannerOptions o;
+  const std::string regions_path = args.required_option("regions");
+  const std::string out = args.required_option("out");
+  const std::optional<std::string> prediction_path = args.option("prediction");
+  o.points = args.integer("points");
+  o.density = args.number("density");
+  o.min_per_region = static_cast<int>(args.integer_or("min-per-region", o.min_per_region, 0));
+  if (const auto s = args.option("strategy")) o.strategy = parse_sampling_strategy(*s, "furrow plan: --strategy");
+  o.seed = static_cast<std::uint64_t>(args.integer_or("seed", 1, 0));
+  o.border = args.number("border");
+  o.probe_name = args.option_or("probe-name", o.probe_name);
+  o.probe_diameter = args.number_or("probe-diameter", o.probe_diameter);
+  o.stylus_length = args.number_or("stylus-length", o.stylus_length);
+  o.stylus_diameter = args.number_or("stylus-diameter", o.stylus_diameter);
+  o.approach = args.number_or("approach", o.approach);
+  o.retract = args.number_or("retract", o.retract);
+  o.search = args.number("search");
+  o.clearance = args.number_or("clearance", o.clearance);
+  o.max_tilt_degrees = args.number_or("max-tilt", o.max_tilt_degrees);
+  o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
+  o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
+  o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
+  o.motion.dwell = args.number_or("dwell", o.motion.dwell);
+  o.gouge_points = static_cast<int>(args.integer_or("gouge-points", o.gouge_points, 1));
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+  try {
+    validate(o);
+  } catch (const InputError& e) {
+    args.fail(e.what());
+  }
+  if (needs_risk(o.strategy) && !prediction_path)
+    args.fail(std::string("--strategy ") + to_string(o.strategy) + " needs a machining prediction (--prediction)");
+  check_not_overwriting_input(out, part_path);
+  check_not_overwriting_input(out, regions_path);
+  if (prediction_path) check_not_overwriting_input(out, *prediction_path);
+  o.part_name = part_path;
+
+  const Part part = read_part(part_path);
+  const RegionMap map = read_regions(regions_path);
+  map.check_belongs_to(part, regions_path, part_path);
+  std::optional<Prediction> prediction;
+  std::optional<PredictionRiskMap> risk;
+  if (prediction_path) {
+    prediction = read_prediction(*prediction_path);
+    risk.emplace(*prediction, part, *prediction_path);
+  }
+
+  const bool show = ::isatty(2);
+  const char* shown = nullptr;
+  const PlanResult result = plan_probe_points(part, map, o, risk ? &*risk : nullptr, [&](const char* stage, std::size_t done, std::size_t total) {
+    if (!show) return;
+    std::cerr << "\rplan: " << stage << " " << done << "/" << total << "        " << std::flush;
+    shown = stage;
+  });
+  if (show && shown) std::cerr << "\n";
+
+  // Everything is rendered before the folder is written: a failure leaves nothing.
+  const std::string name = program_name(out);
+  const ProbeProgram program = make_probe_program(result, name, o.stylus_length);
+  const std::string files[][2] = {
+      {"plan.json", plan_to_json_text(result.plan)},
+      {"plan.csv", plan_to_csv_text(result.plan)},
+      {name + ".dmi", dmis_program_text(program)},
+      {name + ".prg", ippdme_program_text(program)},
+      {"report.json", plan_report_json(result, o, part_path, regions_path, prediction_path.value_or(""))},
+  };
+  const std::vector<unsigned char> png = plan_image_png(part, map, result);
+  write_folder_atomically(out, [&](const std::string& staging) {
+    for (const auto& f : files) write_file_atomically(staging + "/" + f[0], f[1]);
+    write_file_atomically(staging + "/plan.png", std::string(png.begin(), png.end()));
+  });
+  print_summary(std::cout, result, out);
+  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json}\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+const Command kPlanCommand = {
+    "plan", "probe points per region, collision-checked, DMIS and I++ DME programs",
+    "usage: furrow plan PART --regions REGIONS.json --out FOLDER [--prediction PREDICTION.json]\n"
+    "                   [--points N | --density PER_CM2] [--min-per-region N]\n"
+    "                   [--strategy hammersley|halton|stratified|grid|random|curvature|risk]\n"
+    "                   [--seed N] [--border MM] [--probe-name NAME] [--probe-diameter MM]\n"
+    "                   [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
+    "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
+    "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
+    "                   [--dwell S] [--gouge-points N]\n"
+    "\n"
+    "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
+    "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
+    "one (ball touches only there, shaft clear, tilt), moves or drops those it cannot\n"
+    "(with the reason in report.json), orders them into a short tour and writes FOLDER\n"
+    "with plan.json, plan.csv, NAME.dmi (DMIS), NAME.prg (I++ DME), plan.png and\n"
+    "report.json, NAME being the folder's name (docs/cmm.md, docs/formats.md).\n"
+    "The same inputs and seed give the same files.\n"
+    "\n"
+    "  --regions FILE       regions of PART (required)\n"
+    "  --out FOLDER         output folder, replaced as a whole (required)\n"
+    "  --prediction FILE    machining prediction of PART (furrow predict): more points\n"
+    "                       where larger errors are predicted, points on every\n"
+    "                       predicted gouge site, and --strategy risk\n"
+    "  --points N           total points, or\n"
+    "  --density D          points per cm^2 of region area (default 1)\n"
+    "  --min-per-region N   fewest points in any region (default 5)\n"
+    "  --strategy S         sampling inside regions (default hammersley, see docs/cmm.md;\n"
+    "                       risk: at the predicted error maxima, needs --prediction)\n"
+    "  --seed N             random seed (default 1)\n"
+    "  --border MM          clearance from region edges on the surface (default probe\n"
+    "                       radius + 1)\n"
+    "  --probe-name NAME    tool / sensor name on the CMM (default Probe1)\n"
+    "  --probe-diameter MM  ball diameter (default 2)\n"
+    "  --stylus-length MM   ball centre to probe body (default 20)\n"
+    "  --stylus-diameter MM shaft diameter (default 1)\n"
+    "  --approach MM        touch starts this far from the surface (default 3)\n"
+    "  --retract MM         back-off after the touch (default 3)\n"
+    "  --search MM          search past the nominal point (default = approach)\n"
+    "  --clearance MM       ball-to-part clearance of straight moves; the clearance\n"
+    "                       plane is this far above the part (default 2)\n"
+    "  --max-tilt DEG       largest angle between normal and vertical (default 75)\n"
+    "  --move-speed, --touch-speed, --acceleration, --dwell   for the cycle time\n"
+    "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n"
+    "  --gouge-points N     points on each predicted gouge site (default 1)\n",
+    run_plan};
+
+}  // namespace furrow::cli

@@ -1,0 +1,53 @@
+#include "io/plan_csv.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <sstream>
+
+namespace furrow {
+
+namespace {
+
+std::string shortest(double v) {
+  char buf[32];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, ptr);
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+void vector_fields(std::ostringstream& out, const Eigen::Vector3d& v) {
+  out << ',' << shortest(v.x()) << ',' << shortest(v.y()) << ',' << shortest(v.z());
+}
+
+}  // namespace
+
+std::string plan_to_csv_text(const InspectionPlan& plan) {
+  std::vector<const PlannedPoint*> order;
+  for (const PlannedPoint& p : plan.points) order.push_back(&p);
+  std::stable_sort(order.begin(), order.end(), [](const PlannedPoint* a, const PlannedPoint* b) { return a->order < b->order; });
+  std::ostringstream out;
+  out << "# Furrow probe plan: part " << (plan.part.empty() ? "(unnamed)" : plan.part) << ", probe "
+      << plan.probe.name << " diameter " << shortest(plan.probe.diameter) << " mm, " << plan.points.size()
+      << " points, units mm\n";
+  out << "order,id,face,face_index,region,u,v,x,y,z,i,j,k,approach_x,approach_y,approach_z,retract_x,retract_y,"
+         "retract_z\n";
+  for (const PlannedPoint* p : order) {
+    out << p->order << ',' << csv_field(p->id) << ',' << csv_field(p->face) << ',' << p->face_index << ',';
+    if (p->region) out << *p->region;
+    out << ',' << shortest(p->uv.x()) << ',' << shortest(p->uv.y());
+    vector_fields(out, p->xyz);
+    vector_fields(out, p->ijk);
+    vector_fields(out, p->approach);
+    vector_fields(out, p->retract);
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace furrow

@@ -1,0 +1,99 @@
+#include "planning/plan_report.hpp"
+
+#include "io/json_fields.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using jf::json;
+
+std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const std::string& part_path,
+                             const std::string& regions_path, const std::string& prediction_path) {
+  json doc;
+  doc["format"] = "furrow-plan-report";
+  doc["version"] = 1;
+  doc["units"] = "mm";
+  doc["part"] = part_path;
+  doc["regions_file"] = regions_path;
+  if (!prediction_path.empty()) doc["prediction_file"] = prediction_path;
+  json opt;
+  if (o.points) opt["points"] = *o.points;
+  else opt["density_per_cm2"] = jf::finite(o.density.value_or(kDefaultDensity), "density");
+  opt["min_per_region"] = o.min_per_region;
+  opt["strategy"] = to_string(o.strategy);
+  opt["seed"] = o.seed;
+  opt["border_mm"] = jf::finite(r.border, "border");
+  opt["probe"] = {{"name", o.probe_name},
+                  {"ball_diameter", jf::finite(o.probe_diameter, "probe diameter")},
+                  {"stylus_diameter", jf::finite(o.stylus_diameter, "stylus diameter")},
+                  {"stylus_length", jf::finite(o.stylus_length, "stylus length")}};
+  opt["approach_mm"] = jf::finite(o.approach, "approach");
+  opt["retract_mm"] = jf::finite(o.retract, "retract");
+  opt["search_mm"] = jf::finite(r.search, "search");
+  opt["clearance_mm"] = jf::finite(o.clearance, "clearance");
+  opt["clearance_plane_z"] = jf::finite(r.clearance_z, "clearance plane");
+  opt["max_tilt_deg"] = jf::finite(o.max_tilt_degrees, "max tilt");
+  opt["move_speed_mm_s"] = jf::finite(o.motion.move_speed, "move speed");
+  opt["touch_speed_mm_s"] = jf::finite(o.motion.touch_speed, "touch speed");
+  opt["acceleration_mm_s2"] = jf::finite(o.motion.acceleration, "acceleration");
+  opt["dwell_s"] = jf::finite(o.motion.dwell, "dwell");
+  opt["gouge_points"] = o.gouge_points;
+  doc["options"] = std::move(opt);
+
+  json alloc;
+  alloc["budget"] = r.allocation.budget;
+  alloc["total"] = r.allocation.total;
+  alloc["floors_exceed_budget"] = r.allocation.floors_exceed_budget;
+  doc["allocation"] = std::move(alloc);
+  json regions = json::array();
+  for (const RegionPlanSummary& s : r.regions) {
+    regions.push_back({{"region", s.region},
+                       {"face", s.face},
+                       {"class", to_string(s.curvature_class)},
+                       {"area_mm2", jf::finite(s.area, "area")},
+                       {"curvature_spread", jf::finite(s.curvature_spread, "curvature spread")},
+                       {"mean_risk_mm", jf::finite(s.mean_risk, "risk")},
+                       {"weight", jf::finite(s.weight, "weight")},
+                       {"samplable", s.samplable},
+                       {"allocated", s.allocated},
+                       {"gouge_points", s.gouge_points},
+                       {"sampled", s.sampled},
+                       {"moved", s.moved},
+                       {"dropped", s.dropped},
+                       {"planned", s.planned}});
+  }
+  doc["regions"] = std::move(regions);
+  json issues = json::array();
+  for (const PlanIssue& i : r.issues) {
+    json ji;
+    ji["kind"] = to_string(i.kind);
+    if (!i.point.empty()) ji["point"] = i.point;
+    if (i.region >= 0) ji["region"] = i.region;
+    if (!i.gouge_site.empty()) ji["gouge_site"] = i.gouge_site;
+    if (i.problem != AccessProblem::none) {
+      ji["problem"] = to_string(i.problem);
+      ji["where"] = jf::vector_json(i.where);
+    }
+    if (i.kind == PlanIssue::Kind::moved) ji["moved_mm"] = jf::finite(i.distance, "moved");
+    ji["reason"] = i.reason;
+    issues.push_back(std::move(ji));
+  }
+  doc["issues"] = std::move(issues);
+  json on_sites = json::array();
+  for (std::size_t k = 0; k < r.point_sites.size(); ++k)
+    if (!r.point_sites[k].empty()) on_sites.push_back({{"point", r.plan.points[k].id}, {"gouge_site", r.point_sites[k]}});
+  doc["gouge_site_points"] = std::move(on_sites);
+  doc["points"] = r.plan.points.size();
+  doc["tour"] = {{"nearest_neighbour_mm", jf::finite(r.tour.nearest_neighbour_length, "tour")},
+                 {"optimised_mm", jf::finite(r.tour.length, "tour")},
+                 {"passes", r.tour.passes},
+                 {"converged", r.tour.converged}};
+  doc["cycle"] = {{"positioning_mm", jf::finite(r.cycle.positioning_length, "positioning")},
+                  {"touch_mm", jf::finite(r.cycle.touch_length, "touch")},
+                  {"straight_moves", r.cycle.straight_moves},
+                  {"clearance_plane_moves", r.cycle.plane_moves},
+                  {"seconds", jf::finite(r.cycle.seconds, "cycle time")}};
+  return jf::to_text(doc);
+}
+
+}  // namespace furrow

@@ -1,0 +1,68 @@
+// Validation and resolved defaults of PlannerOptions (probe_planner.hpp).
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/error.hpp"
+#include "planning/probe_planner.hpp"
+
+namespace furrow {
+
+namespace {
+
+std::string text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+void positive(double v, const char* option) {
+  if (!std::isfinite(v) || !(v > 0)) throw InputError(std::string(option) + " must be a positive number, got " + text(v));
+}
+
+void non_negative(double v, const char* option) {
+  if (!std::isfinite(v) || v < 0) throw InputError(std::string(option) + " must not be negative, got " + text(v));
+}
+
+}  // namespace
+
+double border_clearance(const PlannerOptions& o) { return o.border.value_or(o.probe_diameter / 2 + 1); }
+double search_distance(const PlannerOptions& o) { return o.search.value_or(o.approach); }
+
+void validate(const PlannerOptions& o) {
+  if (o.points && o.density) throw InputError("--points and --density exclude each other");
+  if (o.points && *o.points < 1)
+    throw InputError("--points must be at least 1, got " + std::to_string(*o.points) + " (a plan needs points)");
+  if (o.density) positive(*o.density, "--density (points per cm^2)");
+  if (o.min_per_region < 0) throw InputError("--min-per-region must not be negative");
+  if (o.border) non_negative(*o.border, "--border (mm)");
+  positive(o.probe_diameter, "--probe-diameter (mm)");
+  positive(o.stylus_diameter, "--stylus-diameter (mm)");
+  positive(o.stylus_length, "--stylus-length (mm)");
+  if (o.stylus_diameter > o.probe_diameter)
+    throw InputError("--stylus-diameter " + text(o.stylus_diameter) + " is larger than --probe-diameter " +
+                     text(o.probe_diameter) + " (the shaft would touch before the ball)");
+  if (!(o.stylus_length > o.probe_diameter / 2))
+    throw InputError("--stylus-length " + text(o.stylus_length) + " must exceed the ball radius " +
+                     text(o.probe_diameter / 2) + " (it is measured from the ball centre)");
+  positive(o.approach, "--approach (mm)");
+  positive(o.retract, "--retract (mm)");
+  if (o.search) positive(*o.search, "--search (mm)");
+  non_negative(o.clearance, "--clearance (mm)");
+  if (!std::isfinite(o.max_tilt_degrees) || !(o.max_tilt_degrees > 0) || o.max_tilt_degrees > 180)
+    throw InputError("--max-tilt must be in (0, 180] degrees, got " + text(o.max_tilt_degrees));
+  positive(o.motion.move_speed, "--move-speed (mm/s)");
+  positive(o.motion.touch_speed, "--touch-speed (mm/s)");
+  positive(o.motion.acceleration, "--acceleration (mm/s^2)");
+  non_negative(o.motion.dwell, "--dwell (s)");
+  if (o.gouge_points < 1) throw InputError("--gouge-points must be at least 1");
+  for (unsigned char c : o.probe_name)
+    if (!std::isalnum(c) && c != '_') throw InputError("--probe-name \"" + o.probe_name + "\": use letters, digits and '_' only");
+  if (o.probe_name.empty() || o.probe_name.size() > 32) throw InputError("--probe-name must have 1 to 32 characters");
+  non_negative(o.weights.curvature, "curvature weight");
+  non_negative(o.weights.risk, "risk weight");
+  positive(o.max_move_fraction, "relocation radius fraction");
+  if (o.relocation_rings < 1 || o.relocation_directions < 1) throw InputError("relocation rings and directions must be >= 1");
+}
+
+}  // namespace furrow

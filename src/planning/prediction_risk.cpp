@@ -1,0 +1,50 @@
+#include "planning/prediction_risk.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/error.hpp"
+
+namespace furrow {
+
+PredictionRiskMap::PredictionRiskMap(const Prediction& prediction, const Part& part,
+                                     const std::string& prediction_name)
+    : prediction_(&prediction), grids_(part.faces.size(), nullptr) {
+  const std::string other = "; it was made for another part (run furrow predict again)";
+  for (std::size_t k = 0; k < prediction.faces.size(); ++k) {
+    const FaceGridRecord& g = prediction.faces[k];
+    const std::string where = prediction_name + ": faces[" + std::to_string(k) + "]";
+    const std::optional<std::size_t> f = part.find_face(g.name);
+    if (!f) throw InputError(where + ": face \"" + g.name + "\" is not a face of the part" + other);
+    const ParameterDomain& d = part.faces[*f].domain();
+    const double tol = 1e-9 * std::max({1.0, d.width_u(), d.width_v()});
+    if (std::abs(d.u0 - g.domain.u0) > tol || std::abs(d.u1 - g.domain.u1) > tol ||
+        std::abs(d.v0 - g.domain.v0) > tol || std::abs(d.v1 - g.domain.v1) > tol)
+      throw InputError(where + ": the parameter domain of face \"" + g.name + "\" differs from the part's" + other);
+    grids_[*f] = &g;
+  }
+  for (std::size_t k = 0; k < prediction.gouge_sites.size(); ++k) {
+    const GougeSiteRecord& s = prediction.gouge_sites[k];
+    const std::optional<std::size_t> f = part.find_face(s.face);
+    if (!f || !grids_[*f])
+      throw InputError(prediction_name + ": gouge_sites[" + std::to_string(k) + "]: face \"" + s.face +
+                       "\" is not a predicted face of the part");
+    GougeSite site;
+    site.id = "G" + std::to_string(s.id);
+    site.face = static_cast<int>(*f);
+    site.uv_box = s.uv_box;
+    site.uv_centre = s.deepest.uv;
+    site.uv_box.extend(site.uv_centre);
+    site.depth = s.depth;
+    sites_.push_back(site);
+  }
+}
+
+double PredictionRiskMap::error_magnitude(int face, const Eigen::Vector2d& uv) const {
+  if (face < 0 || face >= static_cast<int>(grids_.size()) || !grids_[static_cast<std::size_t>(face)]) return 0;
+  const PredictedError e = prediction_->predicted_error_at(grids_[static_cast<std::size_t>(face)]->name, uv.x(), uv.y());
+  if (!e.reached()) return 0;
+  return std::max({std::abs(e.max_undercut), std::abs(e.max_overcut), std::abs(e.value)});
+}
+
+}  // namespace furrow

@@ -1,0 +1,41 @@
+#pragma once
+// The machining prediction (prediction.json, machining/prediction.hpp) seen
+// through the planner's RiskMap: the predicted |error| at a surface point
+// and the predicted gouge sites.
+//
+//   error_magnitude  the worst error predicted in the prediction cell that
+//                    holds (u, v), either sign: max(max_undercut,
+//                    -max_overcut) of the cell [mm]; 0 where the tool did
+//                    not reach, outside the face, or on a face the
+//                    prediction does not cover;
+//   gouge_sites      one per predicted gouge site: id "G<n>", the part's
+//                    face index, the site's uv box and its deepest point as
+//                    centre, the depth.
+//
+// The constructor checks that the prediction belongs to the part: every
+// face it names must be a face of the part with the same parameter domain
+// (InputError naming `prediction_name` otherwise).
+#include <string>
+#include <vector>
+
+#include "geometry/part.hpp"
+#include "machining/prediction.hpp"
+#include "planning/risk_map.hpp"
+
+namespace furrow {
+
+class PredictionRiskMap : public RiskMap {
+ public:
+  // The prediction and part must outlive the map.
+  PredictionRiskMap(const Prediction& prediction, const Part& part, const std::string& prediction_name);
+
+  double error_magnitude(int face, const Eigen::Vector2d& uv) const override;
+  const std::vector<GougeSite>& gouge_sites() const override { return sites_; }
+
+ private:
+  const Prediction* prediction_;
+  std::vector<const FaceGridRecord*> grids_;  // per part face, null when not predicted
+  std::vector<GougeSite> sites_;
+};
+
+}  // namespace furrow

@@ -1,0 +1,380 @@
+#include "planning/probe_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/error.hpp"
+#include "planning/relocation.hpp"
+
+namespace furrow {
+
+const char* to_string(PlanIssue::Kind kind) {
+  switch (kind) {
+    case PlanIssue::Kind::moved: return "moved";
+    case PlanIssue::Kind::dropped: return "dropped";
+    case PlanIssue::Kind::region_short: return "region_short";
+    case PlanIssue::Kind::region_skipped: return "region_skipped";
+    case PlanIssue::Kind::gouge_site: return "gouge_site";
+    case PlanIssue::Kind::budget_raised: return "budget_raised";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string mm(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+std::string at_text(const Eigen::Vector3d& p) { return "(" + mm(p.x()) + ", " + mm(p.y()) + ", " + mm(p.z()) + ")"; }
+
+std::string problem_text(const AccessResult& a, const ProbeGeometry& probe) {
+  std::string s = to_string(a.problem);
+  const double pi = 3.14159265358979323846;
+  if (a.problem == AccessProblem::tilt) return s + " (" + mm(a.tilt * 180 / pi) + " degrees)";
+  const double allowed = a.problem == AccessProblem::stylus ? probe.stylus_radius : probe.ball_radius;
+  if (a.step_cap) return s + " (the clearance march hit its step cap near " + at_text(a.where) + ")";
+  return s + " (part " + mm(a.distance) + " mm from " + (a.problem == AccessProblem::stylus ? "the shaft axis" : "the ball centre") +
+         " at " + at_text(a.where) + ", needs " + mm(allowed) + ")";
+}
+
+// A point before ordering.
+struct Candidate {
+  int region = 0;
+  std::string site;          // gouge site id, or ""
+  Eigen::AlignedBox2d site_box;
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  // Outcome of the access check.
+  bool kept = false;
+  bool moved = false;
+  Eigen::Vector3d original = Eigen::Vector3d::Zero();
+  double moved_by = 0;
+  AccessResult access;
+};
+
+bool samplable(const RegionDomain& domain) {
+  for (const DomainCell& c : domain.cells())
+    if (c.inside && domain.admissible(c.uv)) return true;
+  SamplingOptions probe;
+  probe.min_candidates = 4096;
+  return sample_region(domain, SamplingStrategy::halton, 1, 0, 1, probe).points.size() == 1;
+}
+
+}  // namespace
+
+PlanResult plan_probe_points(const Part& part, const RegionMap& map, const PlannerOptions& options,
+                             const RiskMap* risk, const PlanProgress& progress) {
+  validate(options);
+  if (map.faces.size() != part.faces.size()) throw InputError("the regions do not belong to the part");
+  if (needs_risk(options.strategy) && !risk)
+    throw InputError(std::string("--strategy ") + to_string(options.strategy) + " needs a machining prediction");
+  auto report = [&](const char* stage, std::size_t done, std::size_t total) {
+    if (progress) progress(stage, done, total);
+  };
+  PlanResult result;
+  result.border = border_clearance(options);
+  result.search = search_distance(options);
+  result.approach = options.approach;
+  result.retract = options.retract;
+  result.probe = {options.probe_diameter / 2, options.stylus_diameter / 2, options.stylus_length};
+  result.clearance_z = clearance_plane(part, result.probe.ball_radius, options.clearance);
+  AccessOptions access = options.access;
+  access.approach = options.approach;
+  access.retract = options.retract;
+  access.max_tilt = options.max_tilt_degrees * 3.14159265358979323846 / 180;
+  access.clearance_z = result.clearance_z;
+
+  // 1. Regions.
+  auto t0 = Clock::now();
+  const ClosestPointFinder finder(part);
+  RegionDomainOptions domain_options = options.domain;
+  domain_options.border = result.border;
+  std::vector<RegionDomain> domains;
+  const std::size_t region_count = map.regions.size();
+  for (std::size_t r = 0; r < region_count; ++r) {
+    domains.emplace_back(part, map, static_cast<int>(r), domain_options, risk);
+    report("regions", r + 1, region_count);
+  }
+  std::vector<RegionDemand> demands(region_count);
+  double kappa_area = 0, area_all = 0;
+  for (std::size_t r = 0; r < region_count; ++r) {
+    const Region& region = map.regions[r];
+    const DomainStatistics& s = domains[r].statistics();
+    RegionPlanSummary summary;
+    summary.region = region.id;
+    summary.face = region.face;
+    summary.curvature_class = region.curvature_class;
+    summary.area = region.area;
+    summary.curvature_spread = s.curvature_spread;
+    summary.mean_risk = s.mean_risk;
+    summary.samplable = region.area > 0 && samplable(domains[r]);
+    result.regions.push_back(summary);
+    demands[r] = {region.area, s.curvature_spread, s.mean_risk, 0, summary.samplable};
+    kappa_area += s.mean_kappa * s.area;
+    area_all += s.area;
+    if (!summary.samplable) {
+      PlanIssue issue;
+      issue.kind = PlanIssue::Kind::region_skipped;
+      issue.region = region.id;
+      issue.reason = "no point of the region is " + mm(result.border) + " mm from its edges (border clearance)";
+      result.issues.push_back(issue);
+    }
+  }
+  const double kappa_ref = area_all > 0 ? kappa_area / area_all : 0;
+
+  // Gouge sites reserve points in the region holding their centre.
+  struct SiteRequest {
+    const GougeSite* site;
+    int region;
+  };
+  std::vector<SiteRequest> sites;
+  if (risk) {
+    for (const GougeSite& site : risk->gouge_sites()) {
+      const std::optional<int> region = map.region_at(site.face, site.uv_centre.x(), site.uv_centre.y());
+      if (!region || !result.regions[static_cast<std::size_t>(*region)].samplable) {
+        PlanIssue issue;
+        issue.kind = PlanIssue::Kind::gouge_site;
+        issue.gouge_site = site.id;
+        issue.reason = region ? "the gouge site lies in a region that cannot hold points" : "the gouge site is in no region";
+        result.issues.push_back(issue);
+        continue;
+      }
+      sites.push_back({&site, *region});
+      demands[static_cast<std::size_t>(*region)].gouge_points += options.gouge_points;
+    }
+  }
+  result.timing.regions_seconds = seconds_since(t0);
+
+  // 2. Allocation.
+  double samplable_area = 0;
+  for (std::size_t r = 0; r < region_count; ++r)
+    if (demands[r].samplable) samplable_area += demands[r].area;
+  const long budget = options.points ? *options.points
+                                     : std::lround(options.density.value_or(kDefaultDensity) * samplable_area / 100.0);
+  result.allocation = allocate_points(demands, budget, options.min_per_region, options.weights);
+  if (result.allocation.total == 0)
+    throw InputError(samplable_area > 0 ? "the plan would have no points: raise --density or --points"
+                                        : "no region can hold a probe point " + mm(result.border) +
+                                              " mm from its edges: lower --border or use a smaller probe");
+  if (result.allocation.floors_exceed_budget) {
+    PlanIssue issue;
+    issue.kind = PlanIssue::Kind::budget_raised;
+    issue.reason = "the budget of " + std::to_string(budget) + " points is below the minimum per region; planned " +
+                   std::to_string(result.allocation.total);
+    result.issues.push_back(issue);
+  }
+
+  // 3. Sampling, region by region (sites first).
+  t0 = Clock::now();
+  std::vector<Candidate> candidates;
+  for (std::size_t r = 0; r < region_count; ++r) {
+    RegionPlanSummary& summary = result.regions[r];
+    summary.weight = result.allocation.weights[r];
+    summary.allocated = result.allocation.counts[r];
+    summary.gouge_points = demands[r].gouge_points;
+    if (!summary.samplable || summary.allocated == 0) continue;
+    const std::size_t first = candidates.size();
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      if (sites[s].region != static_cast<int>(r)) continue;
+      const GougeSite& site = *sites[s].site;
+      const RegionSample got = sample_site(domains[r], site.uv_box, site.uv_centre,
+                                           static_cast<std::size_t>(options.gouge_points),
+                                           region_seed(options.seed, static_cast<int>(region_count + s)), options.sampling);
+      for (const SampledPoint& p : got.points) {
+        Candidate c;
+        c.region = static_cast<int>(r);
+        c.site = site.id;
+        c.site_box = site.uv_box;
+        c.uv = p.uv;
+        c.xyz = p.xyz;
+        candidates.push_back(c);
+      }
+      if (got.short_by > 0) {
+        PlanIssue issue;
+        issue.kind = PlanIssue::Kind::gouge_site;
+        issue.gouge_site = site.id;
+        issue.region = static_cast<int>(r);
+        issue.reason = std::to_string(got.points.size()) + " of " + std::to_string(options.gouge_points) +
+                       " points fit on the site: the rest of it is within " + mm(result.border) +
+                       " mm of the face's edges (border clearance)";
+        result.issues.push_back(issue);
+      }
+    }
+    const std::size_t want = static_cast<std::size_t>(summary.allocated) - (candidates.size() - first);
+    const RegionSample got = sample_region(domains[r], options.strategy, want, region_seed(options.seed, static_cast<int>(r)),
+                                           kappa_ref, options.sampling);
+    for (const SampledPoint& p : got.points) {
+      Candidate c;
+      c.region = static_cast<int>(r);
+      c.uv = p.uv;
+      c.xyz = p.xyz;
+      candidates.push_back(c);
+    }
+    summary.sampled = static_cast<int>(candidates.size() - first);
+    if (summary.sampled < summary.allocated) {
+      PlanIssue issue;
+      issue.kind = PlanIssue::Kind::region_short;
+      issue.region = summary.region;
+      issue.reason = "only " + std::to_string(summary.sampled) + " of " + std::to_string(summary.allocated) +
+                     " points fit " + mm(result.border) + " mm from the region's edges";
+      result.issues.push_back(issue);
+    }
+    report("sampling", r + 1, region_count);
+  }
+  result.timing.sampling_seconds = seconds_since(t0);
+
+  // 4. Accessibility, in parallel into fixed slots.
+  t0 = Clock::now();
+  const long n_candidates = static_cast<long>(candidates.size());
+  std::vector<double> spacing(region_count, 1.0);
+  for (std::size_t r = 0; r < region_count; ++r)
+    if (result.regions[r].sampled > 0) spacing[r] = std::sqrt(map.regions[r].area / result.regions[r].sampled);
+  std::size_t checked = 0;
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long k = 0; k < n_candidates; ++k) {
+    Candidate& c = candidates[static_cast<std::size_t>(k)];
+    const RegionDomain& domain = domains[static_cast<std::size_t>(c.region)];
+    const DifferentialGeometry g = domain.face().geometry(c.uv.x(), c.uv.y());
+    c.original = c.xyz;
+    c.normal = g.normal;
+    c.access = g.degenerate ? AccessResult{AccessProblem::tilt} : check_access(finder, c.xyz, c.normal, result.probe, access);
+    c.kept = !g.degenerate && c.access.ok();
+    if (!c.kept) {
+      RelocationOptions ro{options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)], options.relocation_rings,
+                           options.relocation_directions};
+      std::function<bool(const Eigen::Vector2d&)> keep;
+      if (!c.site.empty()) keep = [&c](const Eigen::Vector2d& uv) { return c.site_box.contains(uv); };
+      if (const std::optional<Relocated> moved = relocate(domain, finder, c.uv, result.probe, access, ro, !c.site.empty(), keep)) {
+        c.kept = c.moved = true;
+        c.uv = moved->uv;
+        c.xyz = moved->xyz;
+        c.normal = moved->normal;
+        c.moved_by = moved->distance;
+      }
+    }
+#pragma omp critical(plan_progress)
+    {
+      ++checked;
+      if (progress && (checked % 64 == 0 || checked == candidates.size())) progress("access", checked, candidates.size());
+    }
+  }
+  result.timing.access_seconds = seconds_since(t0);
+
+  // 5. Order the kept points.
+  t0 = Clock::now();
+  std::vector<std::size_t> kept;
+  std::vector<Eigen::Vector3d> centres;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    Candidate& c = candidates[k];
+    RegionPlanSummary& summary = result.regions[static_cast<std::size_t>(c.region)];
+    if (!c.kept) {
+      ++summary.dropped;
+      PlanIssue issue;
+      issue.kind = PlanIssue::Kind::dropped;
+      issue.region = summary.region;
+      issue.gouge_site = c.site;
+      issue.problem = c.access.problem;
+      issue.where = c.original;
+      issue.reason = problem_text(c.access, result.probe) + "; no accessible point within " +
+                     mm(options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)]) + " mm";
+      result.issues.push_back(issue);
+      continue;
+    }
+    if (c.moved) ++summary.moved;
+    ++summary.planned;
+    kept.push_back(k);
+    centres.push_back(probe_centre(c.xyz, c.normal, result.probe));
+  }
+  if (kept.empty())
+    throw InputError("no planned point is accessible with this probe (" + std::to_string(candidates.size()) +
+                     " candidates dropped; see the reasons with a smaller probe, a longer stylus or a larger --max-tilt)");
+  result.tour = plan_tour(centres, options.tour);
+  result.timing.tour_seconds = seconds_since(t0);
+
+  // 6. Plan points in execution order, moves, cycle time.
+  t0 = Clock::now();
+  const std::size_t n = kept.size();
+  const int width = std::max<int>(4, static_cast<int>(std::to_string(n).size()));
+  result.plan.part = options.part_name;
+  result.plan.probe = {options.probe_name, options.probe_diameter};
+  std::vector<Eigen::Vector3d> retracts(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Candidate& c = candidates[kept[static_cast<std::size_t>(result.tour.order[k])]];
+    PlannedPoint p;
+    const std::string number = std::to_string(k + 1);
+    p.id = "P" + std::string(static_cast<std::size_t>(width) - std::min<std::size_t>(number.size(), static_cast<std::size_t>(width)), '0') + number;
+    p.order = static_cast<int>(k) + 1;
+    p.face_index = static_cast<std::size_t>(domains[static_cast<std::size_t>(c.region)].face_index());
+    p.face = part.faces[p.face_index].name();
+    p.region = map.regions[static_cast<std::size_t>(c.region)].id;
+    p.uv = c.uv;
+    p.xyz = c.xyz;
+    p.ijk = c.normal;
+    p.approach = approach_point(c.xyz, c.normal, result.probe, access);
+    p.retract = retract_point(c.xyz, c.normal, result.probe, access);
+    retracts[k] = p.retract;
+    if (c.moved) {
+      PlanIssue issue;
+      issue.kind = PlanIssue::Kind::moved;
+      issue.point = p.id;
+      issue.region = *p.region;
+      issue.gouge_site = c.site;
+      issue.problem = c.access.problem;
+      issue.where = c.original;
+      issue.distance = c.moved_by;
+      issue.reason = problem_text(c.access, result.probe) + "; moved " + mm(c.moved_by) + " mm";
+      result.issues.push_back(issue);
+    }
+    result.plan.points.push_back(std::move(p));
+    result.point_sites.push_back(c.site);
+  }
+  MoveOptions move_options;
+  move_options.clearance = options.clearance;
+  move_options.clearance_z = result.clearance_z;
+  move_options.contact_tolerance = access.contact_tolerance;
+  move_options.min_step = access.min_step;
+  move_options.max_steps = access.max_steps;
+  result.moves.resize(n);
+  const PlannedPoint& first = result.plan.points.front();
+  result.start = {first.approach.x(), first.approach.y(), std::max(result.clearance_z, first.approach.z())};
+  result.moves[0].straight = false;
+  result.moves[0].waypoints = {first.approach};
+  result.moves[0].length = (first.approach - result.start).norm();
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long k = 1; k < static_cast<long>(n); ++k)
+    result.moves[static_cast<std::size_t>(k)] =
+        plan_move(finder, result.plan.points[static_cast<std::size_t>(k) - 1].retract,
+                  result.plan.points[static_cast<std::size_t>(k)].approach, result.probe.ball_radius, move_options);
+  const Eigen::Vector3d& last = result.plan.points.back().retract;
+  if (last.z() < result.clearance_z) result.final_moves = {Eigen::Vector3d(last.x(), last.y(), result.clearance_z)};
+  result.cycle = estimate_cycle(result.start, result.moves, retracts, result.final_moves, options.approach,
+                                options.retract, options.motion);
+  result.timing.moves_seconds = seconds_since(t0);
+  return result;
+}
+
+ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, double stylus_length) {
+  ProbeProgram program;
+  program.name = name;
+  program.part = result.plan.part;
+  program.probe = result.plan.probe;
+  program.stylus_length = stylus_length;
+  program.approach = result.approach;
+  program.retract = result.retract;
+  program.search = result.search;
+  for (std::size_t k = 0; k < result.plan.points.size(); ++k)
+    program.steps.push_back({result.plan.points[k], result.moves[k].waypoints});
+  program.final_moves = result.final_moves;
+  return program;
+}
+
+}  // namespace furrow

@@ -1,0 +1,81 @@
+#pragma once
+// Parts, partitions and brute-force checks shared by the planning tests.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "geometry/part.hpp"
+#include "geometry/primitives.hpp"
+#include "io/part_file.hpp"
+#include "partition/region_map.hpp"
+
+namespace furrow::test {
+
+inline Part one_face(const NurbsSurface& surface, const std::string& name = "face", Trim trim = {}) {
+  Part part;
+  part.faces.emplace_back(name, surface, std::move(trim));
+  return part;
+}
+
+// The curvature partition at nu x nv cells per face (plan_fixtures.cpp: kept
+// out of this header because partition/curvature_field.hpp and
+// machining/error_map.hpp both define furrow::SampleStatus, so no test file
+// may include both).
+RegionMap partition_of(const Part& part, int nu = 120, int nv = 120);
+
+inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }
+
+// A flat floor z = 0 over x in [-10, 10], y in [0, 20], cut by a groove of
+// radius `groove_radius` along y at x = 0 (the lower half of a cylinder,
+// concave, normals toward its axis). Three faces: left floor, groove, right
+// floor; all normals point up / into the air.
+inline Part groove_part(double groove_radius) {
+  const double pi = 3.14159265358979323846;
+  const double R = groove_radius;
+  Part part;
+  part.faces.emplace_back("left", make_plane({-10, 0, 0}, {10 - R, 0, 0}, {0, 20, 0}));
+  part.faces.emplace_back("groove", make_cylinder(R, 20, pi, 2 * pi));
+  part.faces.emplace_back("right", make_plane({R, 0, 0}, {10 - R, 0, 0}, {0, 20, 0}));
+  return part;
+}
+
+// Straight-line distance from p to the region's edges, by brute force: every
+// uv border edge cut into `samples` pieces evaluated on the surface (points
+// on the true edge), and the face's trim loops likewise.
+inline double brute_edge_distance(const Part& part, const RegionMap& map, int region, const Eigen::Vector3d& p,
+                                  int samples = 16) {
+  const Region& r = map.regions[static_cast<std::size_t>(region)];
+  const Face& face = part.faces[static_cast<std::size_t>(r.face)];
+  double best = std::numeric_limits<double>::infinity();
+  auto walk = [&](const std::vector<Eigen::Vector2d>& loop) {
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
+      for (int s = 0; s <= samples; ++s) {
+        const Eigen::Vector2d uv = a + (b - a) * (static_cast<double>(s) / samples);
+        best = std::min(best, (face.surface().point(uv.x(), uv.y()) - p).norm());
+      }
+    }
+  };
+  for (const BorderLoop& loop : r.border) walk(loop.uv);
+  for (const UvLoop& loop : face.trim().loops()) walk(loop);
+  return best;
+}
+
+inline double mean(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;
+  return s / static_cast<double>(v.size());
+}
+
+inline double variance(const std::vector<double>& v) {
+  const double m = mean(v);
+  double s = 0;
+  for (double x : v) s += (x - m) * (x - m);
+  return s / static_cast<double>(v.size() - 1);
+}
+
+}  // namespace furrow::test
