@@ -368,8 +368,9 @@ std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st
   f.actual = actual;
   f.label = original.substr(actual ? 3 : 2, close - (actual ? 3 : 2));
   if (f.label.empty()) fail(name, st.line, "empty feature label");
-  const std::vector<std::string> fields = split(body.substr(11), ',');
-  if (fields.empty() || fields[0] != "CART")
+  // Values from the statement as written, so messages quote the user's text.
+  const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
+  if (fields.empty() || lower(fields[0]) != "cart")
     fail(name, st.line, "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) + "\"");
   if (fields.size() != 7)
     fail(name, st.line, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " + std::to_string(fields.size() - 1));

@@ -264,7 +264,7 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
     pass.face = piece_face[k];
     pass.level = i.level;
     for (double t : steps.params) {
-      PlannedPoint p;
+      PlannedContact p;
       p.at = c.at(t);
       if (!p.at.valid) continue;
       const CutterLocation loc = cutter_location(cutter, p.at.point, p.at.normal, options.forward.predictor.location);

@@ -54,7 +54,7 @@ struct ContactPlanOptions {
   CrossSectionOptions cross_section;
 };
 
-struct PlannedPoint {
+struct PlannedContact {
   SurfacePoint at;
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();
 };
@@ -62,7 +62,7 @@ struct PlannedPoint {
 struct PlannedPass {
   int face = -1;        // iso-parametric: the face; plane: -1
   double level = 0;     // fixed v (along u), u (along v), or plane offset [mm]
-  std::vector<PlannedPoint> points;
+  std::vector<PlannedContact> points;
 };
 
 struct ContactPlan {

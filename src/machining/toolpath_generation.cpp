@@ -16,7 +16,7 @@ Toolpath plan_tips(const ContactPlan& plan) {
   path.kind = ToolpathKind::tool_tips;
   for (const PlannedPass& p : plan.passes) {
     ToolpathPass pass;
-    for (const PlannedPoint& q : p.points) {
+    for (const PlannedContact& q : p.points) {
       ToolpathPoint t;
       t.position = q.tip;
       pass.points.push_back(t);
@@ -30,7 +30,7 @@ std::string plan_gcode(const ContactPlan& plan, const Cutter& cutter, const std:
                        const ToolpathWriteOptions& options) {
   double top = -std::numeric_limits<double>::infinity();
   for (const PlannedPass& p : plan.passes)
-    for (const PlannedPoint& q : p.points) top = std::max(top, q.tip.z());
+    for (const PlannedContact& q : p.points) top = std::max(top, q.tip.z());
   std::ostringstream h;
   h << header << "\ntool " << cutter.name() << " " << to_string(cutter.type()) << " diameter " << cutter.diameter()
     << " corner radius " << cutter.corner_radius() << " mm; positions are tool tips";
@@ -49,7 +49,7 @@ std::string plan_contact_csv(const Part& part, const ContactPlan& plan) {
   out << "pass,x,y,z,nx,ny,nz,face,u,v\n";
   char buf[320];
   for (std::size_t k = 0; k < plan.passes.size(); ++k)
-    for (const PlannedPoint& q : plan.passes[k].points) {
+    for (const PlannedContact& q : plan.passes[k].points) {
       const Eigen::Vector3d& p = q.at.point;
       const Eigen::Vector3d& n = q.at.normal;
       std::snprintf(buf, sizeof buf, "%zu,%.7f,%.7f,%.7f,%.12f,%.12f,%.12f,%s,%.15g,%.15g\n", k, p.x(), p.y(), p.z(),

@@ -29,7 +29,7 @@ PredictionRiskMap::PredictionRiskMap(const Prediction& prediction, const Part& p
     if (!f || !grids_[*f])
       throw InputError(prediction_name + ": gouge_sites[" + std::to_string(k) + "]: face \"" + s.face +
                        "\" is not a predicted face of the part");
-    GougeSite site;
+    RiskSite site;
     site.id = "G" + std::to_string(s.id);
     site.face = static_cast<int>(*f);
     site.uv_box = s.uv_box;

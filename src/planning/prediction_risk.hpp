@@ -30,12 +30,12 @@ class PredictionRiskMap : public RiskMap {
   PredictionRiskMap(const Prediction& prediction, const Part& part, const std::string& prediction_name);
 
   double error_magnitude(int face, const Eigen::Vector2d& uv) const override;
-  const std::vector<GougeSite>& gouge_sites() const override { return sites_; }
+  const std::vector<RiskSite>& gouge_sites() const override { return sites_; }
 
  private:
   const Prediction* prediction_;
   std::vector<const FaceGridRecord*> grids_;  // per part face, null when not predicted
-  std::vector<GougeSite> sites_;
+  std::vector<RiskSite> sites_;
 };
 
 }  // namespace furrow

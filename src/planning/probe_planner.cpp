@@ -133,12 +133,12 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
 
   // Gouge sites reserve points in the region holding their centre.
   struct SiteRequest {
-    const GougeSite* site;
+    const RiskSite* site;
     int region;
   };
   std::vector<SiteRequest> sites;
   if (risk) {
-    for (const GougeSite& site : risk->gouge_sites()) {
+    for (const RiskSite& site : risk->gouge_sites()) {
       const std::optional<int> region = map.region_at(site.face, site.uv_centre.x(), site.uv_centre.y());
       if (!region || !result.regions[static_cast<std::size_t>(*region)].samplable) {
         PlanIssue issue;
@@ -185,7 +185,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
     const std::size_t first = candidates.size();
     for (std::size_t s = 0; s < sites.size(); ++s) {
       if (sites[s].region != static_cast<int>(r)) continue;
-      const GougeSite& site = *sites[s].site;
+      const RiskSite& site = *sites[s].site;
       const RegionSample got = sample_site(domains[r], site.uv_box, site.uv_centre,
                                            static_cast<std::size_t>(options.gouge_points),
                                            region_seed(options.seed, static_cast<int>(region_count + s)), options.sampling);

@@ -14,7 +14,7 @@
 
 namespace furrow {
 
-struct GougeSite {
+struct RiskSite {
   std::string id;                // unique label ("G1"), used in the plan report
   int face = 0;                  // face index in the part
   Eigen::AlignedBox2d uv_box;    // extent of the site on the face (u, v)
@@ -30,7 +30,7 @@ class RiskMap {
   // and >= 0; may be called concurrently.
   virtual double error_magnitude(int face, const Eigen::Vector2d& uv) const = 0;
   // Predicted gouge sites (may be empty).
-  virtual const std::vector<GougeSite>& gouge_sites() const = 0;
+  virtual const std::vector<RiskSite>& gouge_sites() const = 0;
 };
 
 }  // namespace furrow

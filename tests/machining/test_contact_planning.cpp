@@ -174,7 +174,7 @@ TEST_CASE("iso-planar passes on a tilted plane: offsets from the flat side step,
   }
   for (const PlannedPass& pass : plan.passes) {
     CHECK(pass.points.size() == 2);  // a plane needs one step per pass
-    for (const PlannedPoint& q : pass.points) CHECK((q.tip - (q.at.point + 3 * q.at.normal - Eigen::Vector3d(0, 0, 3))).norm() < 1e-12);
+    for (const PlannedContact& q : pass.points) CHECK((q.tip - (q.at.point + 3 * q.at.normal - Eigen::Vector3d(0, 0, 3))).norm() < 1e-12);
   }
 }
 

@@ -21,10 +21,7 @@ inline Part one_face(const NurbsSurface& surface, const std::string& name = "fac
   return part;
 }
 
-// The curvature partition at nu x nv cells per face (plan_fixtures.cpp: kept
-// out of this header because partition/curvature_field.hpp and
-// machining/error_map.hpp both define furrow::SampleStatus, so no test file
-// may include both).
+// The curvature partition at nu x nv cells per face (plan_fixtures.cpp).
 RegionMap partition_of(const Part& part, int nu = 120, int nv = 120);
 
 inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }

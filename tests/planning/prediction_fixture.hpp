@@ -41,7 +41,7 @@ inline Prediction synthetic_prediction(const Part& part, const Eigen::Vector2d& 
       const Eigen::Vector2d uv(f.domain.u0 + (ci + 0.5) / cells_u * f.domain.width_u(),
                                f.domain.v0 + (cj + 0.5) / cells_v * f.domain.width_v());
       const double m = synthetic_mean(uv, peak);
-      f.status.push_back(ci == 0 ? SampleStatus::not_reached : SampleStatus::reached);
+      f.status.push_back(ci == 0 ? ErrorCellStatus::not_reached : ErrorCellStatus::reached);
       f.mean.push_back(ci == 0 ? 0 : m);
       f.max_undercut.push_back(ci == 0 ? 0 : m + 0.003);
       f.max_overcut.push_back(ci == 0 ? 0 : m - 0.002);

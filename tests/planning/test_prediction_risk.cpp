@@ -28,7 +28,7 @@ TEST_CASE("the risk map gives the worst predicted error of the cell, either sign
   CHECK(risk.error_magnitude(0, {0.5 / 50, 0.5}) == 0);  // column 0: not reached
   CHECK(risk.error_magnitude(3, {0.5, 0.5}) == 0);       // no such face
   REQUIRE(risk.gouge_sites().size() == 1);
-  const GougeSite& s = risk.gouge_sites()[0];
+  const RiskSite& s = risk.gouge_sites()[0];
   CHECK(s.id == "G1");
   CHECK(s.face == 0);
   CHECK(s.uv_centre.isApprox(Eigen::Vector2d(0.3, 0.3)));

@@ -21,17 +21,17 @@ namespace {
 
 class SiteRisk : public RiskMap {
  public:
-  SiteRisk(Eigen::Vector2d centre, double width, std::vector<GougeSite> sites)
+  SiteRisk(Eigen::Vector2d centre, double width, std::vector<RiskSite> sites)
       : centre_(centre), width_(width), sites_(std::move(sites)) {}
   double error_magnitude(int, const Eigen::Vector2d& uv) const override {
     return 0.04 * std::exp(-(uv - centre_).squaredNorm() / (width_ * width_));
   }
-  const std::vector<GougeSite>& gouge_sites() const override { return sites_; }
+  const std::vector<RiskSite>& gouge_sites() const override { return sites_; }
 
  private:
   Eigen::Vector2d centre_;
   double width_;
-  std::vector<GougeSite> sites_;
+  std::vector<RiskSite> sites_;
 };
 
 const Part& mould_part() {
@@ -159,7 +159,7 @@ TEST_CASE("predicted risk draws points to a region, every gouge site gets points
   // Risk around the planar corner region 4's interior point; a gouge site in region 2.
   const Region& corner = map.regions[4];
   const Region& dome = map.regions[2];
-  GougeSite site;
+  RiskSite site;
   site.id = "G1";
   site.face = 0;
   site.uv_centre = dome.interior_uv;
@@ -235,7 +235,7 @@ TEST_CASE("a prediction's gouge sites all get a point, even next to a region bor
       continue;
     }
     ++points_on[r.point_sites[k]];
-    const GougeSite& s = risk.gouge_sites()[static_cast<std::size_t>(std::stoi(r.point_sites[k].substr(1)) - 1)];
+    const RiskSite& s = risk.gouge_sites()[static_cast<std::size_t>(std::stoi(r.point_sites[k].substr(1)) - 1)];
     CHECK(s.uv_box.contains(pt.uv));
     CHECK(map.region_at(0, pt.uv.x(), pt.uv.y()) == pt.region);
     // Clear of the face's own edges (the boundary of the parameter square).

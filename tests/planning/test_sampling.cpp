@@ -38,12 +38,12 @@ class BumpRisk : public RiskMap {
   double error_magnitude(int, const Eigen::Vector2d& uv) const override {
     return 0.05 * std::exp(-(uv - centre_).squaredNorm() / (width_ * width_));
   }
-  const std::vector<GougeSite>& gouge_sites() const override { return sites_; }
+  const std::vector<RiskSite>& gouge_sites() const override { return sites_; }
 
  private:
   Eigen::Vector2d centre_;
   double width_;
-  std::vector<GougeSite> sites_;
+  std::vector<RiskSite> sites_;
 };
 
 }  // namespace
