@@ -23,9 +23,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <filesystem>
 #include <map>
 
+#include "geometry/closest_point.hpp"
 #include "geometry/error.hpp"
 #include "io/cad_import.hpp"
 #include "io/cad_reference.hpp"
@@ -313,6 +315,62 @@ TEST_CASE("CAD import: trims - points in the holes of a face are outside it") {
   CHECK(mismatches == 0);
   CHECK(in_holes > 2000);
   CHECK(kept > 50000);
+}
+
+TEST_CASE("CAD import: the closest point on an imported face with holes never lands in a hole") {
+  // The block's top face (plane z = box_z) has two circular holes: the boss
+  // (radius boss_r) and the dimple's rim (radius sqrt(r^2 - (z_c - box_z)^2)).
+  // Oracle: over the kept region the foot is straight below the query; over
+  // a hole it is on the hole's rim circle, at distance sqrt(h^2 + (R - rho)^2)
+  // for a query at height h and horizontal distance rho from the centre.
+  using G = ReferenceGeometry;
+  const CadImportResult result = import_cad(model_file("step"));
+  const std::size_t top = find_reference_face("plane", [](const TopoDS_Face& f) {
+    const gp_Pln p = BRepAdaptor_Surface(f).Plane();
+    return std::abs(p.Location().Z() - G::box_z) < 1e-9 && std::abs(p.Axis().Direction().Z()) > 0.99 &&
+           occt_area(f) > 1000;
+  });
+  Part part;
+  part.faces.push_back(result.part.faces[top]);
+  const Face& face = part.faces[0];
+  const ClosestPointFinder finder(part);
+  const double dimple_hole = std::sqrt(G::dimple_r * G::dimple_r -
+                                       (G::dimple_z - G::box_z) * (G::dimple_z - G::box_z));
+  const struct {
+    double x, y, r;
+  } holes[] = {{G::boss_x, G::boss_y, G::boss_r}, {G::dimple_x, G::dimple_y, dimple_hole}};
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int over_holes = 0;
+  for (int k = 0; k < 400; ++k) {
+    // Half the queries over a hole, half anywhere over the face.
+    const auto& hole = holes[k % 2];
+    Eigen::Vector3d q;
+    if (k % 4 < 2) {
+      const double rho = hole.r * std::sqrt(unit(rng)), a = 2 * M_PI * unit(rng);
+      q = {hole.x + rho * std::cos(a), hole.y + rho * std::sin(a), G::box_z + 0.5 + 10 * unit(rng)};
+    } else {
+      q = {2 + (G::box_x - 4) * unit(rng), 2 + (G::box_y - 4) * unit(rng), G::box_z + 10 * unit(rng)};
+    }
+    const double h = q.z() - G::box_z;
+    double expected = h;
+    for (const auto& c : holes) {
+      const double rho = std::hypot(q.x() - c.x, q.y() - c.y);
+      if (rho < c.r) {
+        expected = std::hypot(h, c.r - rho);
+        ++over_holes;
+      }
+    }
+    const ClosestPoint foot = finder.project(q);
+    CAPTURE(q.transpose());
+    CHECK(foot.converged);
+    // Trim polygons follow the circles to 1e-5 mm (docs/formats.md).
+    CHECK(std::abs(foot.distance - expected) < 2e-5);
+    // Never inside a hole: the foot is on the kept region or on its boundary.
+    for (const auto& c : holes) CHECK(std::hypot(foot.point.x() - c.x, foot.point.y() - c.y) >= c.r - 2e-5);
+    CHECK((face.contains(foot.uv.x(), foot.uv.y()) || face.trim().distance_to_boundary(foot.uv) < 1e-6));
+  }
+  CHECK(over_holes > 150);
 }
 
 TEST_CASE("CAD import: closed faces are one continuous patch across their seams") {
