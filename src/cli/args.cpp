@@ -6,20 +6,9 @@
 #include <sstream>
 
 #include "geometry/error.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow::cli {
-
-namespace {
-
-bool parse_double(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
-}
-
-}  // namespace
 
 Args::Args(std::string command, std::vector<std::string> words)
     : command_(std::move(command)), words_(std::move(words)), used_(words_.size(), false) {}
@@ -97,7 +86,7 @@ std::optional<double> Args::number(const std::string& name) {
   auto v = option(name);
   if (!v) return std::nullopt;
   double x = 0;
-  if (!parse_double(*v, x)) fail("--" + name + " expects a number, got \"" + *v + "\"");
+  if (!parse_finite(*v, x)) fail("--" + name + " expects a number, got \"" + *v + "\"");
   return x;
 }
 
@@ -180,7 +169,7 @@ std::vector<double> parse_number_list(const std::string& text, std::size_t count
   std::string item;
   while (std::getline(ss, item, ',')) {
     double x = 0;
-    if (!parse_double(item, x))
+    if (!parse_finite(item, x))
       throw InputError("--" + option + ": \"" + item + "\" is not a finite number");
     out.push_back(x);
   }

@@ -13,16 +13,11 @@
 #include "partition/partition.hpp"
 #include "partition/region_image.hpp"
 #include "partition/regions_file.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow::cli {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 std::string number_text(double x) {
   char buf[32];

@@ -16,16 +16,11 @@
 #include "machining/region_errors.hpp"
 #include "partition/classification.hpp"
 #include "partition/regions_file.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow::cli {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 std::string um(double mm) {
   char buf[32];

@@ -9,6 +9,7 @@
 #include "geometry/error.hpp"
 #include "io/json_fields.hpp"
 #include "io/part_file.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow {
 
@@ -28,14 +29,6 @@ std::vector<std::string> split(const std::string& line) {
   while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
   if (!line.empty() && line.back() == ',') cells.push_back({});
   return cells;
-}
-
-bool parse_number(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
 }
 
 // A header is a line of words: every cell starts with a letter.
@@ -114,7 +107,7 @@ std::vector<ContactPointRecord> parse_contact_points_csv(const std::string& text
                        std::to_string(cells.size()));
     auto value = [&](int column, const char* what) {
       double v = 0;
-      if (!parse_number(cells[column], v))
+      if (!parse_finite(cells[column], v))
         throw InputError(where + ": " + what + " \"" + cells[column] + "\" is not a finite number");
       return v;
     };

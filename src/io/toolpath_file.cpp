@@ -13,6 +13,7 @@
 #include "geometry/error.hpp"
 #include "io/json_fields.hpp"
 #include "io/part_file.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow {
 
@@ -32,14 +33,6 @@ namespace {
 
 [[noreturn]] void fail_line(const std::string& name, int line, const std::string& what) {
   throw InputError(name + ":" + std::to_string(line) + ": " + what);
-}
-
-bool parse_number(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -99,7 +92,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
     while (i < code.size() && (std::isdigit(static_cast<unsigned char>(code[i])) || code[i] == '.' ||
                                code[i] == '-' || code[i] == '+'))
       w.text += code[i++];
-    if (!parse_number(w.text, w.value))
+    if (!parse_finite(w.text, w.value))
       fail_line(name, number, std::string("word '") + w.letter + w.text + "' has no valid number");
     words.push_back(w);
   }
@@ -280,7 +273,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       continue;
     }
     double probe = 0;
-    if (columns < 0 && !parse_number(fields[0], probe)) {
+    if (columns < 0 && !parse_finite(fields[0], probe)) {
       // Header line.
       for (std::size_t c = 0; c < fields.size(); ++c) {
         std::string key = fields[c];
@@ -323,12 +316,12 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     auto value = [&](const char* key) {
       double x = 0;
       const std::string& f = fields[column.at(key)];
-      if (!parse_number(f, x)) fail_line(name, number, std::string(key) + " \"" + f + "\" is not a finite number");
+      if (!parse_finite(f, x)) fail_line(name, number, std::string(key) + " \"" + f + "\" is not a finite number");
       return x;
     };
     if (pass_column >= 0) {
       double pv = 0;
-      if (!parse_number(fields[pass_column], pv) || pv != std::floor(pv))
+      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv))
         fail_line(name, number, "pass \"" + fields[pass_column] + "\" is not a whole number");
       const long pass = static_cast<long>(pv);
       if (!current.points.empty() && pass != last_pass) {
@@ -363,8 +356,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
 Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& options) {
   const std::string text = json_fields::read_text(path);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path + ": the file is empty");
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   if (ext == ".csv" || ext == ".txt") return parse_toolpath_csv(text, path, options);
   return parse_gcode(text, path, options);
 }
