@@ -83,6 +83,8 @@ struct SimulatedMeasurement {
   std::vector<std::string> plan_ids;   // plan id of each measured point (also when anonymous)
   std::vector<bool> blunder;           // per measured point
   std::vector<double> true_deviation;  // offset + noise + blunder along the normal [mm]
+  std::vector<std::size_t> bump_points;  // planned points each bump reaches (a bump
+                                         // between all points plants nothing)
 };
 
 // Throws InputError for a negative noise, more blunders than points, a bad

@@ -104,6 +104,7 @@ TEST_CASE("compare --prediction: clean part exit 0, a bump unexplained, a confir
   const auto sim = f.simulate(f.clean, "bumped.csv", {"--bump", bump, "--bump", "10,10,0,1,0.5"});
   REQUIRE(sim.status == 0);
   CHECK(sim.out.find("bump: -0.0200 mm within 8 mm") != std::string::npos);
+  CHECK(sim.out.find("(10, 10, 0): 0 planned points") != std::string::npos);
   const auto bumped = f.compare("bumped.csv", f.clean, "bumped_out.json");
   CHECK(bumped.status == 0);  // in tolerance, no predicted gouge: listed, not failed
   CHECK(bumped.out.find("1 unexplained overcuts") != std::string::npos);
