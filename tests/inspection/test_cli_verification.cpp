@@ -162,6 +162,12 @@ TEST_CASE("verification bad input: exit 2, one line naming the file, nothing wri
   refused(with(compare, f.dir + "/stretched.json"),
           "stretched.json: faces[0]: the parameter domain of face \"mould\" differs");
   refused(with(compare, f.dir + "/missing.json"), "missing.json");
+  refused({"compare", kMould, "--measurements", f.dir + "/m.csv", "--plan", f.plan, "--regions",
+           f.dir + "/no_regions.json", "--prediction", f.clean, "--out", out},
+          "no_regions.json");
+  refused({"compare", kMould, "--measurements", f.dir + "/none.csv", "--plan", f.plan, "--prediction",
+           f.clean, "--out", out},
+          "none.csv");
   refused({"simulate-measurement", kMould, "--plan", f.plan, "--prediction", f.dir + "/other.json",
            "--out", out},
           "the prediction was made for another part");
