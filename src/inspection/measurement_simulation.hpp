@@ -60,7 +60,8 @@ struct SurfaceBump {
 struct PredictedSurfaceOffsets {
   std::vector<double> offset;  // per plan point, plan order [mm]
   std::size_t reached = 0, not_reached = 0;
-  // The offsets as a SurfaceOffset (by plan id); `plan` must outlive it.
+  // The offsets as a SurfaceOffset, looked up by plan id (a copy: it needs
+  // neither `plan` nor this object afterwards).
   SurfaceOffset lookup(const InspectionPlan& plan) const;
 };
 PredictedSurfaceOffsets predicted_surface_offsets(const InspectionPlan& plan,
