@@ -51,23 +51,27 @@ std::string Args::positional(const std::string& what) {
 }
 
 std::optional<std::string> Args::option(const std::string& name) {
+  const std::vector<std::string> values = repeated_option(name);
+  if (values.size() > 1) fail("--" + name + " is given twice");
+  if (values.empty()) return std::nullopt;
+  return values.front();
+}
+
+std::vector<std::string> Args::repeated_option(const std::string& name) {
   const std::string key = "--" + name;
-  std::optional<std::string> value;
+  std::vector<std::string> values;
   for (std::size_t i = 0; i < words_.size(); ++i) {
     if (used_[i]) continue;
     if (words_[i] == key) {
       if (i + 1 >= words_.size()) fail(key + " needs a value");
-      if (value) fail(key + " is given twice");
       used_[i] = used_[i + 1] = true;
-      value = words_[i + 1];
-      ++i;
+      values.push_back(words_[++i]);
     } else if (words_[i].rfind(key + "=", 0) == 0) {
-      if (value) fail(key + " is given twice");
       used_[i] = true;
-      value = words_[i].substr(key.size() + 1);
+      values.push_back(words_[i].substr(key.size() + 1));
     }
   }
-  return value;
+  return values;
 }
 
 std::string Args::option_or(const std::string& name, const std::string& fallback) {

@@ -30,6 +30,8 @@ class Args {
   std::string option_or(const std::string& name, const std::string& fallback);
   std::string required_option(const std::string& name);
   bool flag(const std::string& name);
+  // Every value of an option that may be given several times, in order.
+  std::vector<std::string> repeated_option(const std::string& name);
 
   // Numeric options: finite, with optional bounds checked here.
   std::optional<double> number(const std::string& name);

@@ -10,6 +10,8 @@
 #include "inspection/comparison_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction_file.hpp"
+#include "partition/regions_file.hpp"
 
 namespace furrow::cli {
 
@@ -18,6 +20,8 @@ namespace {
 int run_compare(Args& args) {
   const std::string measurements = args.required_option("measurements");
   const auto plan_path = args.option("plan");
+  const auto regions_path = args.option("regions");
+  const auto prediction_path = args.option("prediction");
   const std::string out = args.required_option("out");
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
@@ -28,10 +32,21 @@ int run_compare(Args& args) {
   const std::string units = args.option_or("units", "mm");
   const double sigmas = args.positive_or("outlier-sigma", 5);
   const bool keep_all = args.flag("no-outlier-rejection");
+  CompareOptions options;
+  PredictionComparisonOptions& pc = options.prediction;
+  pc.probe_sigma = args.positive_or("probe-sigma", pc.probe_sigma);
+  pc.max_normalised_rms = args.positive_or("explained-rms", pc.max_normalised_rms);
+  pc.align = !args.flag("no-prediction-alignment");
+  GougeConfirmationOptions& gc = options.gouges;
+  gc.overcut_sigmas = args.positive_or("overcut-sigmas", gc.overcut_sigmas);
+  gc.tolerance_fraction = args.non_negative_or("overcut-fraction", gc.tolerance_fraction);
+  gc.site_margin = args.non_negative_or("site-margin", gc.site_margin);
+  gc.contact_cluster_distance = args.non_negative_or("contact-cluster", gc.contact_cluster_distance);
+  gc.overcut_cluster_distance = args.non_negative_or("overcut-cluster", gc.overcut_cluster_distance);
+  if (gc.tolerance_fraction > 1) args.fail("--overcut-fraction must lie between 0 and 1");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
 
-  CompareOptions options;
   options.tolerance =
       ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
   RegistrationOptions& reg = options.registration;
@@ -48,13 +63,24 @@ int run_compare(Args& args) {
 
   for (const std::string* input : {&part_path, &measurements})
     check_not_overwriting_input(out, *input);
-  if (plan_path) check_not_overwriting_input(out, *plan_path);
+  for (const auto* input : {&plan_path, &regions_path, &prediction_path})
+    if (*input) check_not_overwriting_input(out, **input);
 
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
   if (plan_path) {
     plan = read_plan(*plan_path);
     check_plan_against_part(*plan, part, *plan_path);
+  }
+  std::optional<RegionMap> regions;
+  if (regions_path) {
+    regions = read_regions(*regions_path);
+    regions->check_belongs_to(part, *regions_path, part_path);
+  }
+  std::optional<Prediction> prediction;
+  if (prediction_path) {
+    prediction = read_prediction(*prediction_path);
+    check_prediction_against_part(*prediction, part, *prediction_path, part_path);
   }
   MeasurementReadOptions read;
   read.units = units;
@@ -63,11 +89,21 @@ int run_compare(Args& args) {
   const MeasurementSet set = read_measurements(measurements, read);
 
   const ClosestPointFinder finder(part);
-  const Comparison c = compare_measurements(finder, set, plan ? &*plan : nullptr, options);
+  Comparison c = compare_measurements(finder, set, plan ? &*plan : nullptr, options);
+  if (regions) {
+    assign_regions(c, *regions);
+    summarize(c);
+  }
+  if (prediction) verify_prediction(c, part, set.probe_radius, *prediction, options);
   if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
-  write_file_atomically(out,
-                        comparison_to_json_text(c, set, part, options,
-                                                {part_path, measurements, plan_path.value_or("")}));
+  ComparisonSources sources;
+  sources.part = part_path;
+  sources.measurements = measurements;
+  sources.plan = plan_path.value_or("");
+  sources.regions = regions_path.value_or("");
+  sources.prediction = prediction_path.value_or("");
+  sources.measurement_units = units;
+  write_file_atomically(out, comparison_to_json_text(c, set, part, options, sources));
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
@@ -76,9 +112,21 @@ int run_compare(Args& args) {
               s.points);
   std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n",
               s.deviations.min, s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
-  std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers -> %s\n",
+  std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers\n",
               c.tolerance.width, c.tolerance.lower(), c.tolerance.upper(), s.in_tolerance,
-              s.out_of_tolerance, s.outliers, s.pass ? "PASS" : "FAIL");
+              s.out_of_tolerance, s.outliers);
+  if (c.prediction) {
+    const ResidualStatistics& o = c.prediction->overall;
+    std::printf("prediction: %zu points compared, residual rms %.4f mm, normalised rms %.2f, "
+                "%.1f %% within %g sigma -> %s\n",
+                o.count, o.rms, o.normalised_rms, 100 * o.within_share, pc.within_sigmas,
+                to_string(o.verdict));
+    std::size_t by_status[3] = {0, 0, 0};
+    for (const GougeSiteCheck& site : c.gouges->sites) ++by_status[static_cast<int>(site.status)];
+    std::printf("gouge sites: %zu confirmed, %zu not confirmed, %zu not measured; %zu unexplained overcuts\n",
+                by_status[0], by_status[1], by_status[2], s.unexplained_overcuts);
+  }
+  std::printf("%s\n", s.pass ? "PASS" : "FAIL");
   return s.pass ? kExitOk : kExitFail;
 }
 
@@ -92,10 +140,14 @@ const Command kCompareCommand = {
     "to PART by a robust best fit with probe compensation, computes each point's\n"
     "signed deviation along the nominal normal (+ material left, - removed) and\n"
     "checks it against a surface profile tolerance. Writes comparison.json; exit\n"
-    "status 0 when every evaluated point is in tolerance, 1 otherwise.\n"
+    "status 0 when every evaluated point is in tolerance (and, with a prediction,\n"
+    "no predicted gouge is confirmed), 1 otherwise.\n"
     "\n"
     "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res)\n"
     "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"
+    "  --regions FILE       regions.json of PART (furrow partition): each point's\n"
+    "                       region is the one holding its foot point; statistics\n"
+    "                       per region (default: the plan points' regions)\n"
     "  --tolerance T        profile tolerance zone width in mm (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2 =\n"
     "                       bilateral; T unilateral outside, 0 unilateral inside)\n"
@@ -109,7 +161,20 @@ const Command kCompareCommand = {
     "  --units U            mm (default) or inch, for CSV and XYZ coordinates\n"
     "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
     "  --no-outlier-rejection  keep every point in the fit\n"
-    "  --out FILE           comparison.json to write\n",
+    "  --out FILE           comparison.json to write\n"
+    "\n"
+    "Verification against a machining prediction (docs/verification.md):\n"
+    "  --prediction FILE    prediction.json of PART (furrow predict): predicted vs\n"
+    "                       measured and gouge confirmation; a CONFIRMED gouge\n"
+    "                       fails the part\n"
+    "  --probe-sigma S      probing noise 1-sigma in mm (default 0.002)\n"
+    "  --explained-rms R    largest RMS of residual/sigma for \"explained\" (1.5)\n"
+    "  --no-prediction-alignment  compare best-fit deviations as they are\n"
+    "  --overcut-sigmas K   an overcut exceeds K sigma of the deviation (3) ...\n"
+    "  --overcut-fraction F ... and F times the zone's lower limit (0.5)\n"
+    "  --site-margin M      mm around a predicted site where points count (1)\n"
+    "  --contact-cluster D  local-gouge contacts within D mm form one site (2)\n"
+    "  --overcut-cluster D  unexplained overcuts within D mm form one cluster (5)\n",
     run_compare};
 
 }  // namespace furrow::cli

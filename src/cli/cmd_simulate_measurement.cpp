@@ -4,8 +4,10 @@
 
 #include "cli/commands.hpp"
 #include "inspection/measurement_simulation.hpp"
+#include "inspection/prediction_comparison.hpp"
 #include "io/atomic_file.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction_file.hpp"
 
 namespace furrow::cli {
 
@@ -21,6 +23,8 @@ int run_simulate(Args& args) {
   const long seed = args.integer_or("seed", 1, 0);
   const std::string points = args.option_or("points", "centre");
   const bool anonymous = args.flag("anonymous");
+  const auto prediction_path = args.option("prediction");
+  const std::vector<std::string> bumps = args.repeated_option("bump");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
 
@@ -36,17 +40,37 @@ int run_simulate(Args& args) {
   o.seed = static_cast<std::uint32_t>(seed);
   o.kind = parse_probe_point_kind(points, "--points");
   o.anonymous = anonymous;
+  for (const std::string& text : bumps) {
+    const std::vector<double> b = parse_number_list(text, 5, "bump");
+    if (!(b[3] > 0)) args.fail("--bump \"" + text + "\": the radius must be positive");
+    o.bumps.push_back({{b[0], b[1], b[2]}, b[3], b[4]});
+  }
 
   check_not_overwriting_input(out, part_path);
   check_not_overwriting_input(out, plan_path);
+  if (prediction_path) check_not_overwriting_input(out, *prediction_path);
   const Part part = read_part(part_path);
   const InspectionPlan plan = read_plan(plan_path);
   check_plan_against_part(plan, part, plan_path);
+  PredictedSurfaceOffsets machined;
+  if (prediction_path) {
+    const Prediction prediction = read_prediction(*prediction_path);
+    check_prediction_against_part(prediction, part, *prediction_path, part_path);
+    machined = predicted_surface_offsets(plan, prediction);
+    o.surface_offset = machined.lookup(plan);
+  }
   const SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
   write_measurements_csv(sim.set, out);
   std::printf("%zu points (%s, probe %g mm), %d blunders, noise %g mm, seed %u -> %s\n",
               sim.set.points.size(), to_string(sim.set.kind), plan.probe.diameter, o.blunders,
               o.noise_sigma, o.seed, out.c_str());
+  if (prediction_path)
+    std::printf("machined surface from %s: %zu points where the tool reached, %zu not reached "
+                "(nominal there)\n",
+                prediction_path->c_str(), machined.reached, machined.not_reached);
+  for (const SurfaceBump& b : o.bumps)
+    std::printf("bump: %+.4f mm within %g mm of (%g, %g, %g)\n", b.height, b.radius, b.centre.x(),
+                b.centre.y(), b.centre.z());
   return kExitOk;
 }
 
@@ -58,7 +82,8 @@ const Command kSimulateMeasurementCommand = {
     "\n"
     "Writes what a CMM would report for the plan's points on PART: probe-ball\n"
     "centres (or contact points) with Gaussian probing noise along the normal,\n"
-    "the part placed on the table with a misalignment, and a few blunders. A\n"
+    "the part placed on the table with a misalignment, and a few blunders; the\n"
+    "surface as machined when a prediction is given, with planted bumps. A\n"
     "test and demo aid for `furrow compare`; every random draw comes from --seed.\n"
     "\n"
     "  --plan FILE          plan.json (points, normals, probe)\n"
@@ -70,6 +95,12 @@ const Command kSimulateMeasurementCommand = {
     "  --seed S             random seed (default 1)\n"
     "  --points K           centre (default) or contact\n"
     "  --anonymous          no ids, points shuffled (as an unplanned scan)\n"
+    "  --prediction FILE    prediction.json of PART: the machined surface is the\n"
+    "                       nominal one plus the predicted error along the normal\n"
+    "                       (nominal where the tool never reached; counted)\n"
+    "  --bump X,Y,Z,R,H     add a smooth bump (H > 0, material left) or dent\n"
+    "                       (H < 0) of height H mm, cosine profile within R mm of\n"
+    "                       the part point (X,Y,Z); repeatable\n"
     "  --out FILE           measurements CSV to write\n",
     run_simulate};
 

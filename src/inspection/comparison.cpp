@@ -50,11 +50,35 @@ void summarize(Comparison& c) {
   }
   s.deviations = deviation_statistics(evaluated);
   s.profile = 2 * max_abs;
+  if (c.gouges) {
+    s.confirmed_gouges = c.gouges->confirmed();
+    s.unexplained_overcuts = c.gouges->unexplained.size();
+  }
   // An alignment that did not converge cannot certify anything.
-  s.pass = c.registration.converged && s.evaluated > 0 && s.out_of_tolerance == 0;
+  s.pass = c.registration.converged && s.evaluated > 0 && s.out_of_tolerance == 0 &&
+           s.confirmed_gouges == 0;
   for (const auto& [region, values] : by_region)
     s.regions.push_back({region, deviation_statistics(values), region_out[region]});
   c.summary = s;
+}
+
+void assign_regions(Comparison& c, const RegionMap& regions) {
+  const std::vector<RegisteredPoint>& pts = c.registration.points;
+  c.region.assign(pts.size(), std::nullopt);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (pts[i].outlier == OutlierReason::no_foot_point) continue;
+    const ClosestPoint& f = pts[i].foot;
+    c.region[i] = regions.region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y());
+  }
+}
+
+void verify_prediction(Comparison& c, const Part& part, double probe_radius,
+                       const Prediction& prediction, const CompareOptions& options) {
+  c.prediction = compare_with_prediction(c.registration, c.region, part, probe_radius,
+                                         options.registration.dof, prediction, options.prediction);
+  c.gouges = confirm_gouges(c.registration, part, c.tolerance, prediction, *c.prediction,
+                            options.prediction, options.gouges);
+  summarize(c);
 }
 
 Comparison compare_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,

@@ -8,16 +8,20 @@
 // (outlier reason large_deviation) are evaluated - they are left out of the
 // fit only - so a gouge fails the part instead of vanishing.
 //
-// Regions: each point may carry a region id. Today it comes from the plan
-// point with the same id; a partition (regions.json) can later assign it from
-// the foot point (face, u, v) and call summarize() again - statistics per
-// region are computed from whatever ids are set.
+// Regions: each point may carry a region id of the curvature partition.
+// With a partition (regions.json) it is the region holding the point's foot
+// (face, u, v) (assign_regions); without one, the region of the plan point
+// with the same id. Statistics per region are computed from whatever ids are
+// set.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "inspection/gouge_confirmation.hpp"
+#include "inspection/prediction_comparison.hpp"
 #include "inspection/registration.hpp"
 #include "inspection/tolerance_zone.hpp"
+#include "partition/region_map.hpp"
 
 namespace furrow {
 
@@ -39,7 +43,11 @@ struct ComparisonSummary {
   std::size_t in_tolerance = 0, out_of_tolerance = 0;
   DeviationStatistics deviations;         // over evaluated points
   double profile = 0;                     // 2 max |d| over evaluated points [mm]
-  bool pass = false;  // registration converged and every evaluated point in the zone
+  std::size_t confirmed_gouges = 0;       // predicted gouge sites CONFIRMED (with a prediction)
+  std::size_t unexplained_overcuts = 0;   // clusters of UNEXPLAINED overcut (with a prediction)
+  // Registration converged, every evaluated point in the zone and no
+  // predicted gouge confirmed.
+  bool pass = false;
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids
 };
 
@@ -49,16 +57,35 @@ struct Comparison {
   std::vector<std::optional<int>> region;  // per point
   std::vector<bool> in_tolerance;          // per point (false for points not evaluated)
   ComparisonSummary summary;
+  // With a machining prediction (verify_prediction):
+  std::optional<PredictionComparison> prediction;
+  std::optional<GougeConfirmation> gouges;
 };
 
 struct CompareOptions {
   RegistrationOptions registration;
   ToleranceZone tolerance;
+  PredictionComparisonOptions prediction;  // used with a prediction only
+  GougeConfirmationOptions gouges;         // likewise
 };
 
 // Registers and evaluates. `plan` may be null (no id coarse start, no regions).
 Comparison compare_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
                                 const InspectionPlan* plan, const CompareOptions& options);
+
+// Replaces every point's region by the region of the partition holding its
+// foot point (RegionMap::region_at(face, u, v)); points without a foot point
+// or outside every region get none. The map must belong to the part the
+// comparison was made on (RegionMap::check_belongs_to, the caller's job).
+// Call summarize() afterwards.
+void assign_regions(Comparison& comparison, const RegionMap& regions);
+
+// Predicted versus measured (prediction_comparison.hpp) and gouge
+// confirmation (gouge_confirmation.hpp) against `prediction`, which must
+// belong to `part` (check_prediction_against_part); then summarize(): a
+// confirmed gouge fails the part. `probe_radius` is the measurement set's.
+void verify_prediction(Comparison& comparison, const Part& part, double probe_radius,
+                       const Prediction& prediction, const CompareOptions& options);
 
 // Recomputes in_tolerance and the summary from the registration, the zone
 // and the region ids (call after changing either).

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
-#include "io/json_fields.hpp"
+#include "inspection/verification_json.hpp"
 
 namespace furrow {
 
@@ -84,6 +85,43 @@ json registration_json(const RegistrationResult& r, const RegistrationOptions& o
   return j;
 }
 
+// Everything the comparison ran with (docs/formats.md "Comparison").
+json options_json(const CompareOptions& o, const MeasurementSet& set,
+                  const ComparisonSources& sources) {
+  const RegistrationOptions& r = o.registration;
+  return {{"tolerance", jf::finite(o.tolerance.width, "tolerance")},
+          {"outside", jf::finite(o.tolerance.outside, "outside")},
+          {"dof", r.dof.to_string()},
+          {"loss", to_string(r.loss)},
+          {"loss_scale", jf::finite(r.loss_scale, "loss scale")},
+          {"points", to_string(set.kind)},
+          {"probe_diameter", jf::finite(2 * set.probe_radius, "probe diameter")},
+          {"units", sources.measurement_units},
+          {"outlier_rejection", r.flag_outliers},
+          {"outlier_sigma", jf::finite(r.outlier_sigma, "outlier sigma")},
+          {"outlier_floor", jf::finite(r.outlier_floor, "outlier floor")},
+          {"edge_tolerance", jf::finite(r.edge_tolerance, "edge tolerance")},
+          {"confirm_neighbours", r.confirm_neighbours},
+          {"neighbour_radius", jf::finite(r.neighbour_radius, "neighbour radius")},
+          {"max_outer_iterations", r.max_outer_iterations},
+          {"max_solver_iterations", r.max_solver_iterations},
+          {"max_outlier_passes", r.max_outlier_passes},
+          {"motion_tolerance", jf::finite(r.motion_tolerance, "motion tolerance")},
+          {"prediction", verification_json::options_json(o.prediction)},
+          {"gouges", verification_json::options_json(o.gouges)}};
+}
+
+json outlier_counts_json(const RegistrationResult& r) {
+  json counts = json::object();
+  for (OutlierReason reason : {OutlierReason::blunder, OutlierReason::large_deviation,
+                               OutlierReason::beyond_edge, OutlierReason::no_foot_point})
+    counts[to_string(reason)] = 0;
+  for (const RegisteredPoint& p : r.points)
+    if (p.outlier != OutlierReason::none)
+      counts[to_string(p.outlier)] = counts[to_string(p.outlier)].get<std::size_t>() + 1;
+  return counts;
+}
+
 json point_json(const Comparison& c, const MeasurementSet& set, const Part& part, std::size_t i) {
   const RegisteredPoint& p = c.registration.points[i];
   const bool have_covariance = c.registration.covariance.has_value();
@@ -108,6 +146,8 @@ json point_json(const Comparison& c, const MeasurementSet& set, const Part& part
                      ? json(nullptr)
                      : json({{"reason", to_string(p.outlier)}, {"detail", p.outlier_detail}});
   if (i < c.region.size() && c.region[i]) j["region"] = *c.region[i];
+  j["prediction"] = c.prediction ? verification_json::point_prediction_json(c.prediction->points[i])
+                                 : json(nullptr);
   return j;
 }
 
@@ -116,13 +156,19 @@ json point_json(const Comparison& c, const MeasurementSet& set, const Part& part
 std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& set,
                                     const Part& part, const CompareOptions& options,
                                     const ComparisonSources& sources) {
+  if (c.prediction.has_value() == sources.prediction.empty())
+    throw std::logic_error("comparison_to_json_text: the prediction file and its results go together");
   const ComparisonSummary& s = c.summary;
   json doc;
-  doc["version"] = 1;
+  doc["version"] = kComparisonFormatVersion;
   doc["units"] = "mm";
   doc["part"] = sources.part;
   doc["measurements"] = sources.measurements;
-  doc["plan"] = sources.plan.empty() ? json(nullptr) : json(sources.plan);
+  auto optional_path = [](const std::string& p) { return p.empty() ? json(nullptr) : json(p); };
+  doc["plan"] = optional_path(sources.plan);
+  doc["regions_file"] = optional_path(sources.regions);
+  doc["prediction_file"] = optional_path(sources.prediction);
+  doc["options"] = options_json(options, set, sources);
   doc["probe"] = {{"points", to_string(set.kind)},
                   {"diameter", jf::finite(2 * set.probe_radius, "probe diameter")}};
   doc["tolerance"] = {{"zone", jf::finite(c.tolerance.width, "tolerance")},
@@ -134,10 +180,13 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                     {"in_fit", s.in_fit},
                     {"evaluated", s.evaluated},
                     {"outliers", s.outliers},
+                    {"outlier_reasons", outlier_counts_json(c.registration)},
                     {"in_tolerance", s.in_tolerance},
                     {"out_of_tolerance", s.out_of_tolerance},
                     {"deviation", statistics_json(s.deviations)},
                     {"profile", jf::finite(s.profile, "profile")},
+                    {"confirmed_gouges", s.confirmed_gouges},
+                    {"unexplained_overcuts", s.unexplained_overcuts},
                     {"pass", s.pass}};
   json regions = json::array();
   for (const RegionStatistics& r : s.regions) {
@@ -147,6 +196,12 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
     regions.push_back(std::move(jr));
   }
   doc["regions"] = std::move(regions);
+  std::vector<std::string> ids;
+  for (const MeasuredPoint& p : set.points) ids.push_back(p.id);
+  doc["prediction_comparison"] =
+      c.prediction ? verification_json::prediction_comparison_json(*c.prediction) : json(nullptr);
+  doc["gouge_sites"] = c.gouges ? verification_json::gouge_sites_json(*c.gouges, ids) : json(nullptr);
+  doc["unexplained"] = c.gouges ? verification_json::unexplained_json(*c.gouges, ids) : json(nullptr);
   std::string text = jf::to_text(doc);
 
   // Splice the points in before the closing brace, one compact line each.

@@ -22,6 +22,29 @@ Eigen::Isometry3d Misalignment::part_to_cmm() const {
   return m;
 }
 
+double SurfaceBump::offset_at(const Eigen::Vector3d& point) const {
+  const double rho = (point - centre).norm();
+  return rho < radius ? height * (1 + std::cos(M_PI * rho / radius)) / 2 : 0.0;
+}
+
+PredictedSurfaceOffsets predicted_surface_offsets(const InspectionPlan& plan,
+                                                  const Prediction& prediction) {
+  PredictedSurfaceOffsets out;
+  for (const PlannedPoint& p : plan.points) {
+    PredictedError e;
+    if (prediction.find_face(p.face)) e = prediction.predicted_error_at(p.face, p.uv.x(), p.uv.y());
+    out.offset.push_back(e.reached() ? e.value : 0.0);
+    ++(e.reached() ? out.reached : out.not_reached);
+  }
+  return out;
+}
+
+SurfaceOffset PredictedSurfaceOffsets::lookup(const InspectionPlan& plan) const {
+  return [index = plan.index_by_id(), offsets = offset](const PlannedPoint& p) {
+    return offsets.at(index.at(p.id));
+  };
+}
+
 SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const SimulationOptions& o,
                                           const std::string& name) {
   const std::size_t n = plan.points.size();
@@ -32,6 +55,9 @@ SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const Simu
                      std::to_string(n) + " points");
   if (!(o.blunder_min > 0) || !(o.blunder_max >= o.blunder_min) || !std::isfinite(o.blunder_max))
     throw InputError(name + ": the blunder size range must satisfy 0 < min <= max");
+  for (const SurfaceBump& b : o.bumps)
+    if (!(b.radius > 0) || !std::isfinite(b.radius) || !b.centre.allFinite() || !std::isfinite(b.height))
+      throw InputError(name + ": a bump needs a finite centre and height and a positive radius");
   std::mt19937 rng(o.seed);
   std::normal_distribution<double> noise(0.0, 1.0);
   std::uniform_real_distribution<double> size(o.blunder_min, o.blunder_max);
@@ -48,6 +74,7 @@ SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const Simu
   std::vector<double> deviation(n);
   for (std::size_t k = 0; k < n; ++k) {
     double d = o.surface_offset ? o.surface_offset(plan.points[k]) : 0.0;
+    for (const SurfaceBump& b : o.bumps) d += b.offset_at(plan.points[k].xyz);
     d += o.noise_sigma * noise(rng);
     if (is_blunder[k]) d += (sign(rng) ? 1 : -1) * size(rng);
     deviation[k] = d;

@@ -7,8 +7,10 @@
 //
 // The machined surface is the nominal one unless `surface_offset` says by
 // how much it lies above (+, material left) or below (-) the nominal along
-// the normal at a planned point; the machining-prediction module plugs its
-// z-map in here (simulate-measurement --prediction).
+// the normal at a planned point - predicted_surface_offsets() gives the
+// surface a machining prediction describes (simulate-measurement
+// --prediction) - plus any artificial bumps and dents (`bumps`, --bump), so
+// that tests and the demo can plant an overcut nothing predicted.
 //
 // Everything random comes from one std::mt19937 seeded with `seed`, so the
 // same inputs give the same file.
@@ -21,6 +23,7 @@
 #include "geometry/part.hpp"
 #include "io/measurement_file.hpp"
 #include "io/plan_file.hpp"
+#include "machining/prediction.hpp"
 
 namespace furrow {
 
@@ -36,6 +39,33 @@ struct Misalignment {
 // normal at a planned point [mm] (+ material left, - removed).
 using SurfaceOffset = std::function<double(const PlannedPoint&)>;
 
+// A smooth artificial bump (height > 0, material left) or dent (height < 0)
+// of the machined surface, along the normal: a raised cosine
+//   height * (1 + cos(pi rho / radius)) / 2   for rho < radius, else 0,
+// rho the 3-D distance of the planned point from `centre` [mm]. Smooth
+// (C1), so neighbouring probe points see a believable shape, not a step.
+struct SurfaceBump {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // [mm], part frame
+  double radius = 1;                                 // [mm], > 0
+  double height = 0;                                 // [mm]
+  double offset_at(const Eigen::Vector3d& point) const;
+};
+
+// The machined surface of a prediction at every planned point: the
+// predicted error (Prediction::predicted_error_at at the point's face and
+// (u, v)) where the tool reached it. Where it did not (cell not reached,
+// trimmed away, not machinable from above, or a face the prediction does
+// not cover) nothing predicts a cut, so the surface stays nominal: offset 0,
+// counted in not_reached - never NaN.
+struct PredictedSurfaceOffsets {
+  std::vector<double> offset;  // per plan point, plan order [mm]
+  std::size_t reached = 0, not_reached = 0;
+  // The offsets as a SurfaceOffset (by plan id); `plan` must outlive it.
+  SurfaceOffset lookup(const InspectionPlan& plan) const;
+};
+PredictedSurfaceOffsets predicted_surface_offsets(const InspectionPlan& plan,
+                                                  const Prediction& prediction);
+
 struct SimulationOptions {
   Misalignment misalignment;
   double noise_sigma = 0.002;                   // [mm] along the normal
@@ -45,6 +75,7 @@ struct SimulationOptions {
   ProbePointKind kind = ProbePointKind::probe_centre;
   bool anonymous = false;        // no ids, points shuffled (as an unplanned scan)
   SurfaceOffset surface_offset;  // empty: the nominal surface
+  std::vector<SurfaceBump> bumps;  // added to surface_offset
 };
 
 struct SimulatedMeasurement {
@@ -54,8 +85,8 @@ struct SimulatedMeasurement {
   std::vector<double> true_deviation;  // offset + noise + blunder along the normal [mm]
 };
 
-// Throws InputError for a negative noise, more blunders than points or a
-// bad blunder range.
+// Throws InputError for a negative noise, more blunders than points, a bad
+// blunder range or a bump radius <= 0.
 SimulatedMeasurement simulate_measurement(const InspectionPlan& plan,
                                           const SimulationOptions& options,
                                           const std::string& name = "simulated");

@@ -3,12 +3,16 @@
 // (or the JSON field), exit status 2 and no output written.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 
+#include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "io/json_fields.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
+#include "partition/regions_file.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -159,4 +163,64 @@ TEST_CASE("bad plans, options and outputs: one error, exit 2, nothing written") 
           "--misalign expects 6 comma-separated numbers");
   refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", out},
           "31 blunders but the plan has 30 points");
+}
+
+TEST_CASE("compare --regions: each point in the region of its foot point, statistics per region") {
+  const std::string dir = test::scratch_dir("cli-compare-regions");
+  const std::string plan = write_mould_plan(dir, 20, 16);
+  REQUIRE(test::run_furrow({"partition", kMould, "--grid", "50x40", "--out", dir + "/regions.json"})
+              .status == 0);
+  REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--misalign",
+                            "1,2,40,5,6,7", "--noise", "0.003", "--outliers", "3", "--out",
+                            dir + "/m.csv"})
+              .status == 0);
+  const auto r = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan",
+                                   plan, "--regions", dir + "/regions.json", "--tolerance",
+                                   "0.012", "--out", dir + "/c.json"});
+  CAPTURE(r.err);
+  REQUIRE((r.status == 0 || r.status == 1));
+  const ComparisonDocument d = read_comparison(dir + "/c.json");
+  CHECK(d.sources.regions == dir + "/regions.json");
+  const RegionMap map = read_regions(dir + "/regions.json");
+  // Oracle: region_at of each foot as written, and the statistics recomputed
+  // from the points' deviations by brute force.
+  std::map<int, std::vector<double>> by_region;
+  std::map<int, std::size_t> out;
+  for (const ComparisonDocument::Point& p : d.points) {
+    CHECK(p.region == map.region_at(p.face_index, p.uv.x(), p.uv.y()));
+    if (!p.evaluated || !p.region) continue;
+    by_region[*p.region].push_back(p.deviation);
+    out[*p.region] += !*p.in_tolerance;
+  }
+  REQUIRE(d.summary.regions.size() == by_region.size());
+  CHECK(by_region.size() >= 4);
+  std::size_t k = 0;
+  for (const auto& [id, values] : by_region) {
+    const RegionStatistics& s = d.summary.regions[k++];
+    CHECK(s.region == id);
+    CHECK(s.deviations.count == values.size());
+    double sum = 0, lo = values[0], hi = values[0];
+    for (double v : values) sum += v, lo = std::min(lo, v), hi = std::max(hi, v);
+    const double mean = sum / values.size();
+    double ss = 0;
+    for (double v : values) ss += (v - mean) * (v - mean);
+    CHECK(s.deviations.mean == doctest::Approx(mean).epsilon(1e-12));
+    if (values.size() > 1)
+      CHECK(s.deviations.sigma == doctest::Approx(std::sqrt(ss / (values.size() - 1))).epsilon(1e-12));
+    CHECK(s.deviations.min == lo);
+    CHECK(s.deviations.max == hi);
+    CHECK(s.out_of_tolerance == out[id]);
+  }
+
+  // A partition of another part is refused before anything is written.
+  REQUIRE(test::run_furrow({"partition", test::source_path("examples/parts/two_face.json"),
+                            "--out", dir + "/other.json"})
+              .status == 0);
+  const auto bad = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan",
+                                     plan, "--regions", dir + "/other.json", "--out",
+                                     dir + "/bad.json"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("other.json") != std::string::npos);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_FALSE(fs::exists(dir + "/bad.json"));
 }

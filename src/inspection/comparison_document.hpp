@@ -1,0 +1,113 @@
+#pragma once
+// comparison.json as plain data: what read_comparison() (comparison_file.hpp)
+// returns to the QA report and to anyone else who reads a comparison back,
+// without nlohmann. Every number is the one written (the writer uses
+// shortest round-trip text), so write -> read gives identical values.
+//
+// Units: mm, except rotations [rad] in the covariance and registration
+// parameters and the placement's rotation_deg [deg]. Sign of deviations and
+// errors (DESIGN.md): + material left (undercut), - removed (overcut/gouge).
+// Member names follow the file (docs/formats.md "Comparison").
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inspection/comparison.hpp"
+#include "inspection/gouge_confirmation.hpp"
+#include "inspection/prediction_comparison.hpp"
+#include "inspection/tolerance_zone.hpp"
+
+namespace furrow {
+
+struct ComparisonDocument {
+  int version = 0;
+
+  // Input files as given on the command line; empty when not given.
+  struct Sources {
+    std::string part, measurements, plan, regions, prediction;
+  } sources;
+
+  // Every option the comparison ran with.
+  struct Options {
+    ToleranceZone tolerance;  // width and the part on the + side
+    std::string disposition;  // bilateral, unilateral outside/inside, unequal
+    std::string dof;          // "all", "translation", "rotation" or "rx,tz"...
+    std::string loss;         // cauchy, huber, none (first fit)
+    double loss_scale = 0;    // [mm]
+    std::string points;       // "centre" or "contact": what the file holds
+    double probe_diameter = 0;      // [mm] (0 for contact points)
+    std::string units;              // of the measurement file's coordinates
+    bool outlier_rejection = true;  // false: --no-outlier-rejection
+    double outlier_sigma = 0;       // robust sigmas of a large deviation
+    double outlier_floor = 0;       // [mm]
+    double edge_tolerance = 0;      // [mm]
+    int confirm_neighbours = 0;
+    double neighbour_radius = 0;    // [mm]
+    int max_outer_iterations = 0, max_solver_iterations = 0, max_outlier_passes = 0;
+    double motion_tolerance = 0;    // [mm]
+    // Verification rules (written always, used with a prediction only).
+    PredictionComparisonOptions prediction;
+    GougeConfirmationOptions gouges;
+  } options;
+
+  struct Registration {
+    Eigen::Matrix4d transform = Eigen::Matrix4d::Identity();  // CMM -> part
+    // The part on the CMM: x_cmm = Rz Ry Rx x_part + t (simulate's --misalign).
+    Eigen::Vector3d placement_rotation_deg = Eigen::Vector3d::Zero();
+    Eigen::Vector3d placement_translation = Eigen::Vector3d::Zero();
+    std::string coarse_method;  // "plan ids", "dmis nominals", "global search", "identity"
+    int coarse_matched_ids = 0, coarse_candidates = 0;
+    double coarse_median_distance = 0;
+    bool coarse_ambiguous = false;
+    double rms_before = 0, rms_after = 0, sigma = 0;
+    int outer_iterations = 0, solver_iterations = 0, outlier_passes = 0;
+    bool converged = false;
+    std::string status;                                     // "converged" or why not
+    std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
+    std::string covariance_status;
+    // Outliers by reason: "blunder", "large_deviation", "beyond_edge",
+    // "no_foot_point" (every reason present, zero when none).
+    std::map<std::string, std::size_t> outliers;
+  } registration;
+
+  struct Point {
+    std::string id;
+    Eigen::Vector3d measured = Eigen::Vector3d::Zero();    // CMM frame, as read
+    Eigen::Vector3d registered = Eigen::Vector3d::Zero();  // part frame (a centre for centre data)
+    Eigen::Vector3d contact = Eigen::Vector3d::Zero();     // registered - r_probe normal
+    int face_index = 0;
+    std::string face;
+    Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+    Eigen::Vector3d foot = Eigen::Vector3d::Zero();
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+    std::string foot_location;          // interior, domain_edge, trim_edge
+    double deviation = 0;               // [mm]
+    std::optional<double> uncertainty;  // 1-sigma from the registration covariance [mm]
+    bool evaluated = false;
+    std::optional<bool> in_tolerance;   // unset for points not evaluated
+    bool in_fit = false;
+    std::string outlier;         // reason, empty for none
+    std::string outlier_detail;  // the numbers behind it
+    std::optional<int> region;
+    // With a prediction: the predicted error at the foot, the deviation
+    // after the prediction alignment (`measured`), residual, sigma_total.
+    std::optional<PointPrediction> prediction;
+  };
+  std::vector<Point> points;
+  std::map<std::string, std::size_t> points_by_id;  // id -> index into points
+
+  // Counts, statistics, pass; its `regions` are the per-region deviation
+  // statistics; confirmed_gouges and unexplained_overcuts are 0 without a
+  // prediction.
+  ComparisonSummary summary;
+
+  // With a prediction (sources.prediction set), else unset. `prediction`'s
+  // per-point vector repeats points[i].prediction; gouge sites and
+  // unexplained clusters refer to points by index into `points`.
+  std::optional<PredictionComparison> prediction;
+  std::optional<GougeConfirmation> gouges;
+};
+
+}  // namespace furrow

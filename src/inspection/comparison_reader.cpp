@@ -1,0 +1,208 @@
+// read_comparison: comparison.json back into plain structs
+// (comparison_file.hpp). Every member is checked; the first problem is
+// reported with its path.
+#include <algorithm>
+
+#include "geometry/error.hpp"
+#include "inspection/comparison_file.hpp"
+#include "inspection/verification_json.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using jf::json;
+
+namespace {
+
+using Node = verification_json::FieldReader;
+
+template <int Rows, int Cols>
+Eigen::Matrix<double, Rows, Cols> matrix(const json& value, const std::string& where) {
+  jf::array(value, where);
+  if (value.size() != Rows)
+    throw InputError(where + ": expected " + std::to_string(Rows) + " rows, got " + std::to_string(value.size()));
+  Eigen::Matrix<double, Rows, Cols> m;
+  for (int i = 0; i < Rows; ++i) {
+    const std::vector<double> row = jf::numbers(value[i], jf::child(where, static_cast<std::size_t>(i)));
+    if (row.size() != Cols)
+      throw InputError(jf::child(where, static_cast<std::size_t>(i)) + ": expected " + std::to_string(Cols) +
+                       " numbers, got " + std::to_string(row.size()));
+    for (int j = 0; j < Cols; ++j) m(i, j) = row[static_cast<std::size_t>(j)];
+  }
+  return m;
+}
+
+DeviationStatistics read_statistics(const Node& n) {
+  DeviationStatistics s;
+  s.count = n.count("count");
+  s.mean = n.number("mean");
+  s.sigma = n.non_negative("sigma");
+  s.min = n.number("min");
+  s.max = n.number("max");
+  return s;
+}
+
+ComparisonDocument::Options read_options(const Node& n) {
+  ComparisonDocument::Options o;
+  o.tolerance = ToleranceZone::make(n.number("tolerance"), n.number("outside"), n.path("tolerance"));
+  o.disposition = o.tolerance.disposition();
+  o.dof = n.string("dof");
+  o.loss = n.string("loss");
+  o.loss_scale = n.non_negative("loss_scale");
+  o.points = n.string("points");
+  o.probe_diameter = n.non_negative("probe_diameter");
+  o.units = n.string("units");
+  o.outlier_rejection = n.boolean("outlier_rejection");
+  o.outlier_sigma = n.non_negative("outlier_sigma");
+  o.outlier_floor = n.non_negative("outlier_floor");
+  o.edge_tolerance = n.non_negative("edge_tolerance");
+  o.confirm_neighbours = n.integer("confirm_neighbours");
+  o.neighbour_radius = n.non_negative("neighbour_radius");
+  o.max_outer_iterations = n.integer("max_outer_iterations");
+  o.max_solver_iterations = n.integer("max_solver_iterations");
+  o.max_outlier_passes = n.integer("max_outlier_passes");
+  o.motion_tolerance = n.non_negative("motion_tolerance");
+  o.prediction = verification_json::read_prediction_options(n.at("prediction"));
+  o.gouges = verification_json::read_gouge_options(n.at("gouges"));
+  return o;
+}
+
+ComparisonDocument::Registration read_registration(const Node& n) {
+  ComparisonDocument::Registration r;
+  r.transform = matrix<4, 4>(n.raw("transform"), n.path("transform"));
+  const Node placement = n.at("placement");
+  r.placement_rotation_deg = placement.vector3("rotation_deg");
+  r.placement_translation = placement.vector3("translation");
+  const Node coarse = n.at("coarse");
+  r.coarse_method = coarse.string("method");
+  r.coarse_matched_ids = coarse.integer("matched_ids");
+  r.coarse_candidates = coarse.integer("candidates");
+  r.coarse_median_distance = coarse.number("median_distance");
+  r.coarse_ambiguous = coarse.boolean("ambiguous");
+  r.rms_before = n.non_negative("rms_before");
+  r.rms_after = n.non_negative("rms_after");
+  r.sigma = n.non_negative("sigma");
+  r.outer_iterations = n.integer("outer_iterations");
+  r.solver_iterations = n.integer("solver_iterations");
+  r.outlier_passes = n.integer("outlier_passes");
+  r.converged = n.boolean("converged");
+  r.status = n.string("status");
+  r.covariance_status = n.string("covariance_status");
+  if (!n.is_null("covariance")) r.covariance = matrix<6, 6>(n.raw("covariance"), n.path("covariance"));
+  return r;
+}
+
+ComparisonDocument::Point read_point(const Node& n) {
+  ComparisonDocument::Point p;
+  p.id = n.string("id");
+  p.measured = n.vector3("measured");
+  p.registered = n.vector3("registered");
+  p.contact = n.vector3("contact");
+  p.face = n.string("face");
+  p.face_index = n.integer("face_index");
+  p.uv = Eigen::Vector2d(n.number("u"), n.number("v"));
+  p.foot = n.vector3("foot");
+  p.normal = n.vector3("normal");
+  p.foot_location = n.string("foot_location");
+  p.deviation = n.number("deviation");
+  p.uncertainty = n.optional_number("uncertainty");
+  p.evaluated = n.boolean("evaluated");
+  if (!n.is_null("in_tolerance")) p.in_tolerance = n.boolean("in_tolerance");
+  if (p.evaluated != p.in_tolerance.has_value())
+    throw InputError(n.path("in_tolerance") + (p.evaluated ? ": an evaluated point needs true or false"
+                                                           : ": must be null for a point not evaluated"));
+  p.in_fit = n.boolean("in_fit");
+  if (!n.is_null("outlier")) {
+    const Node o = n.at("outlier");
+    p.outlier = o.string("reason");
+    p.outlier_detail = o.string("detail");
+  }
+  if (n.has("region")) p.region = n.integer("region");
+  if (!n.is_null("prediction")) p.prediction = verification_json::read_point_prediction(n.at("prediction"));
+  return p;
+}
+
+ComparisonSummary read_summary(const Node& n) {
+  ComparisonSummary s;
+  s.points = n.count("points");
+  s.in_fit = n.count("in_fit");
+  s.evaluated = n.count("evaluated");
+  s.outliers = n.count("outliers");
+  s.in_tolerance = n.count("in_tolerance");
+  s.out_of_tolerance = n.count("out_of_tolerance");
+  s.deviations = read_statistics(n.at("deviation"));
+  s.profile = n.non_negative("profile");
+  s.confirmed_gouges = n.count("confirmed_gouges");
+  s.unexplained_overcuts = n.count("unexplained_overcuts");
+  s.pass = n.boolean("pass");
+  return s;
+}
+
+}  // namespace
+
+ComparisonDocument parse_comparison(const std::string& text, const std::string& name) {
+  const json doc = jf::parse_text(text, name);
+  const Node root(doc, name + ":");
+  ComparisonDocument d;
+  d.version = root.integer("version");
+  if (d.version != kComparisonFormatVersion)
+    throw InputError(root.path("version") + ": version " + std::to_string(d.version) +
+                     " is not supported (this furrow reads version " +
+                     std::to_string(kComparisonFormatVersion) + ")");
+  if (root.string("units") != "mm") throw InputError(root.path("units") + ": comparisons are written in mm");
+  d.sources.part = root.string("part");
+  d.sources.measurements = root.string("measurements");
+  d.sources.plan = root.optional_string("plan");
+  d.sources.regions = root.optional_string("regions_file");
+  d.sources.prediction = root.optional_string("prediction_file");
+  d.options = read_options(root.at("options"));
+  d.registration = read_registration(root.at("registration"));
+
+  d.summary = read_summary(root.at("summary"));
+  const Node reasons = root.at("summary").at("outlier_reasons");
+  for (auto it = reasons.value.begin(); it != reasons.value.end(); ++it)
+    d.registration.outliers[it.key()] = reasons.count(it.key());
+  const json& regions = root.array("regions");
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const Node r(regions[k], jf::child(root.path("regions"), k));
+    RegionStatistics rs;
+    rs.region = r.integer("region");
+    rs.deviations = read_statistics(r);
+    rs.out_of_tolerance = r.count("out_of_tolerance");
+    d.summary.regions.push_back(rs);
+  }
+
+  const json& points = root.array("points");
+  d.points.reserve(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::string where = jf::child(root.path("points"), k);
+    d.points.push_back(read_point(Node(points[k], where)));
+    if (!d.points_by_id.emplace(d.points.back().id, k).second)
+      throw InputError(where + ".id: duplicate id \"" + d.points.back().id + "\"");
+  }
+  if (d.points.size() != d.summary.points)
+    throw InputError(root.path("points") + ": " + std::to_string(d.points.size()) +
+                     " points but summary.points says " + std::to_string(d.summary.points));
+
+  const bool predicted = !d.sources.prediction.empty();
+  for (const char* key : {"prediction_comparison", "gouge_sites", "unexplained"})
+    if (root.is_null(key) == predicted)
+      throw InputError(root.path(key) + (predicted ? ": missing although a prediction_file is named"
+                                                   : ": present without a prediction_file"));
+  for (std::size_t k = 0; k < d.points.size(); ++k)
+    if (d.points[k].prediction.has_value() != predicted)
+      throw InputError(jf::child(jf::child(root.path("points"), k), "prediction") +
+                       (predicted ? ": missing although a prediction_file is named"
+                                  : ": present without a prediction_file"));
+  if (!predicted) return d;
+  d.prediction = verification_json::read_prediction_comparison(root.at("prediction_comparison"));
+  for (const ComparisonDocument::Point& p : d.points) d.prediction->points.push_back(*p.prediction);
+  d.gouges = verification_json::read_gouge_confirmation(root, d.points_by_id);
+  return d;
+}
+
+ComparisonDocument read_comparison(const std::string& path) {
+  return parse_comparison(jf::read_text(path), path);
+}
+
+}  // namespace furrow

@@ -1,0 +1,21 @@
+#pragma once
+// Single-linkage clusters of points: two points belong to the same cluster
+// when a chain of points, each within `distance` of the next, joins them.
+// Used to group predicted local-gouge contact points into sites and measured
+// overcuts into unexplained clusters (gouge_confirmation.hpp).
+//
+// Neighbours come from a PCL k-d tree (float coordinates) and are then
+// confirmed with the exact double distance, so the result depends on the
+// points only. Deterministic: members in increasing index order, clusters
+// ordered by their smallest member.
+#include <Eigen/Core>
+#include <vector>
+
+namespace furrow {
+
+// Indices into `points` per cluster. `distance` [mm] must be >= 0 (0: only
+// coincident points join).
+std::vector<std::vector<std::size_t>> distance_clusters(const std::vector<Eigen::Vector3d>& points,
+                                                        double distance);
+
+}  // namespace furrow

@@ -1,0 +1,170 @@
+// comparison.json: write -> read gives back every number of the comparison
+// exactly, and a broken file is refused naming the file and the field.
+#include <doctest/doctest.h>
+
+#include "geometry/error.hpp"
+#include "inspection/comparison_file.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "io/part_file.hpp"
+#include "partition/partition.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+
+namespace {
+
+// A comparison with every kind of point: blunders, a real gouge (large
+// deviations), a point beyond the edge, regions from a partition.
+struct Fixture {
+  Part part = read_part(test::source_path("examples/parts/mould.json"));
+  ClosestPointFinder finder{part};
+  InspectionPlan plan = grid_plan(part, 16, 12, {"ruby 2 mm", 2});
+  SimulatedMeasurement sim;
+  CompareOptions options;
+  Comparison comparison;
+  ComparisonSources sources{"mould.json", "m.csv", "plan.json", "regions.json", "", "mm"};
+
+  Fixture() {
+    SimulationOptions o;
+    o.misalignment = {{2, -1, 30}, {10, 20, -5}};
+    o.blunders = 4;
+    o.seed = 7;
+    o.surface_offset = [](const PlannedPoint& p) {
+      return std::hypot(p.xyz.x() - 62, p.xyz.y() - 30) < 9 ? -0.1 : 0.0;
+    };
+    sim = simulate_measurement(plan, o);
+    MeasuredPoint fixture = sim.set.points[0];
+    fixture.id = "FIX";
+    fixture.xyz = o.misalignment.part_to_cmm() * Eigen::Vector3d(-15, 40, 25);
+    sim.set.points.push_back(fixture);
+    options.tolerance = ToleranceZone::make(0.05, 0.02, "t");
+    options.registration.loss_scale = 0.025;
+    comparison = compare_measurements(finder, sim.set, &plan, options);
+    PartitionOptions po;
+    po.grid = GridSize{40, 32};
+    assign_regions(comparison, partition_part(part, po).map);
+    summarize(comparison);
+  }
+  std::string text() const {
+    return comparison_to_json_text(comparison, sim.set, part, options, sources);
+  }
+};
+
+void check_statistics(const DeviationStatistics& a, const DeviationStatistics& b) {
+  CHECK(a.count == b.count);
+  CHECK(a.mean == b.mean);
+  CHECK(a.sigma == b.sigma);
+  CHECK(a.min == b.min);
+  CHECK(a.max == b.max);
+}
+
+}  // namespace
+
+TEST_CASE("comparison.json round trip: every number read back is the one computed") {
+  const Fixture f;
+  const Comparison& c = f.comparison;
+  const ComparisonDocument d = parse_comparison(f.text(), "c.json");
+  CHECK(d.version == kComparisonFormatVersion);
+  CHECK(d.sources.part == "mould.json");
+  CHECK(d.sources.measurements == "m.csv");
+  CHECK(d.sources.plan == "plan.json");
+  CHECK(d.sources.regions == "regions.json");
+  CHECK(d.sources.prediction.empty());
+  CHECK(d.options.tolerance.width == 0.05);
+  CHECK(d.options.tolerance.outside == 0.02);
+  CHECK(d.options.disposition == "unequal");
+  CHECK(d.options.dof == "all");
+  CHECK(d.options.loss == "cauchy");
+  CHECK(d.options.points == "centre");
+  CHECK(d.options.probe_diameter == 2);
+  CHECK(d.options.units == "mm");
+  CHECK(d.options.outlier_rejection);
+  CHECK(d.options.max_outer_iterations == f.options.registration.max_outer_iterations);
+
+  const RegistrationResult& r = c.registration;
+  CHECK(d.registration.transform == r.transform.matrix());
+  CHECK(d.registration.rms_before == r.rms_before);
+  CHECK(d.registration.rms_after == r.rms_after);
+  CHECK(d.registration.sigma == r.sigma);
+  CHECK(d.registration.outer_iterations == r.outer_iterations);
+  CHECK(d.registration.converged == r.converged);
+  CHECK(d.registration.status == r.status);
+  CHECK(d.registration.coarse_method == "plan ids");
+  REQUIRE(r.covariance.has_value());
+  REQUIRE(d.registration.covariance.has_value());
+  CHECK(*d.registration.covariance == *r.covariance);
+  CHECK(d.registration.placement_rotation_deg.z() == doctest::Approx(30).epsilon(1e-3));
+  // Outlier counts by reason, against the registration's own flags.
+  std::map<std::string, std::size_t> reasons;
+  for (const RegisteredPoint& p : r.points)
+    if (p.outlier != OutlierReason::none) ++reasons[to_string(p.outlier)];
+  CHECK(reasons["blunder"] == 4);
+  CHECK(reasons["beyond_edge"] == 1);
+  CHECK(reasons["large_deviation"] > 3);
+  for (const auto& [reason, n] : d.registration.outliers) CHECK(n == reasons[reason]);
+  CHECK(d.registration.outliers.size() == 4);
+
+  REQUIRE(d.points.size() == r.points.size());
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    const ComparisonDocument::Point& p = d.points[i];
+    const RegisteredPoint& q = r.points[i];
+    CAPTURE(i);
+    CHECK(p.id == f.sim.set.points[i].id);
+    CHECK(d.points_by_id.at(p.id) == i);
+    CHECK(p.measured == f.sim.set.points[i].xyz);
+    CHECK(p.registered == q.registered);
+    CHECK(p.face_index == static_cast<int>(q.foot.face));
+    CHECK(p.face == "mould");
+    CHECK(p.uv == q.foot.uv);
+    CHECK(p.foot == q.foot.point);
+    CHECK(p.normal == q.foot.normal);
+    CHECK(p.deviation == q.deviation);
+    REQUIRE(p.uncertainty.has_value());
+    CHECK(*p.uncertainty == q.uncertainty);
+    CHECK(p.evaluated == q.evaluated);
+    CHECK(p.in_fit == q.in_fit);
+    CHECK(p.in_tolerance.has_value() == q.evaluated);
+    if (q.evaluated) CHECK(*p.in_tolerance == bool(c.in_tolerance[i]));
+    CHECK(p.outlier == (q.outlier == OutlierReason::none ? "" : to_string(q.outlier)));
+    CHECK(p.outlier_detail == q.outlier_detail);
+    CHECK(p.region == c.region[i]);
+  }
+
+  const ComparisonSummary& s = c.summary;
+  CHECK(d.summary.points == s.points);
+  CHECK(d.summary.in_fit == s.in_fit);
+  CHECK(d.summary.evaluated == s.evaluated);
+  CHECK(d.summary.outliers == s.outliers);
+  CHECK(d.summary.in_tolerance == s.in_tolerance);
+  CHECK(d.summary.out_of_tolerance == s.out_of_tolerance);
+  CHECK(d.summary.profile == s.profile);
+  CHECK(d.summary.pass == s.pass);
+  CHECK_FALSE(d.summary.pass);  // the gouge is out of tolerance
+  check_statistics(d.summary.deviations, s.deviations);
+  REQUIRE(s.regions.size() > 1);
+  REQUIRE(d.summary.regions.size() == s.regions.size());
+  for (std::size_t k = 0; k < s.regions.size(); ++k) {
+    CHECK(d.summary.regions[k].region == s.regions[k].region);
+    CHECK(d.summary.regions[k].out_of_tolerance == s.regions[k].out_of_tolerance);
+    check_statistics(d.summary.regions[k].deviations, s.regions[k].deviations);
+  }
+}
+
+TEST_CASE("comparison.json reader: errors name the file and the field") {
+  const Fixture f;
+  const std::string text = f.text();
+  auto refused = [&](const std::string& from, const std::string& to, const std::string& message) {
+    std::string broken = text;
+    const std::size_t at = broken.find(from);
+    REQUIRE(at != std::string::npos);
+    broken.replace(at, from.size(), to);
+    CHECK_THROWS_WITH_AS(parse_comparison(broken, "c.json"), message.c_str(), InputError);
+  };
+  refused("\"version\": 1", "\"version\": 7", "c.json: version: version 7 is not supported (this furrow reads version 1)");
+  refused("\"rms_after\": ", "\"rms_after\": \"x\", \"old\": ", "c.json: registration.rms_after: expected a number, found a string");
+  refused("],\"deviation\":", "],\"deviation\":null,\"old\":", "c.json: points[0].deviation: expected a number, found null");
+  refused("\"evaluated\":true", "\"evaluated\":false", "c.json: points[0].in_tolerance: must be null for a point not evaluated");
+  refused("\"id\":\"P00002\"", "\"id\":\"P00001\"", "c.json: points[1].id: duplicate id \"P00001\"");
+  refused("\"probe_diameter\"", "\"probe_diameter_mm\"", "c.json: options.probe_diameter: missing");
+  CHECK_THROWS_WITH_AS(read_comparison("/nonexistent/c.json"), doctest::Contains("/nonexistent/c.json"), InputError);
+}
