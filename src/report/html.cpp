@@ -52,9 +52,12 @@ std::string embedded_png(const std::vector<unsigned char>& png, const std::strin
 std::string table(const std::vector<std::string>& header, const std::vector<TableRow>& rows,
                   const std::string& css_class) {
   std::string out = css_class.empty() ? "<table>" : "<table class=\"" + escape(css_class) + "\">";
-  out += "<thead><tr>";
-  for (const std::string& h : header) out += "<th>" + escape(h) + "</th>";
-  out += "</tr></thead><tbody>\n";
+  if (!header.empty()) {
+    out += "<thead><tr>";
+    for (const std::string& h : header) out += "<th>" + escape(h) + "</th>";
+    out += "</tr></thead>";
+  }
+  out += "<tbody>\n";
   for (const TableRow& row : rows) {
     out += row.css_class.empty() ? "<tr>" : "<tr class=\"" + escape(row.css_class) + "\">";
     for (const std::string& c : row.cells) out += "<td>" + c + "</td>";

@@ -24,7 +24,7 @@ struct TableRow {
   std::vector<std::string> cells;
   std::string css_class;
 };
-// <table> with a header row (header texts are escaped here).
+// <table> with a header row (header texts are escaped here; none when empty).
 std::string table(const std::vector<std::string>& header, const std::vector<TableRow>& rows,
                   const std::string& css_class = "");
 // Two-column table of names (escaped) and values (HTML).

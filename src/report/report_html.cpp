@@ -109,7 +109,7 @@ std::string alignment_section(const ComparisonDocument& doc) {
     for (int j = 0; j < 4; ++j) row.cells.push_back(fixed(r.transform(i, j), j < 3 && i < 3 ? 8 : 4));
     rows.push_back(row);
   }
-  out += "<h3>Transform CMM &rarr; part (row-major, mm)</h3>\n" + html::table({"", "", "", ""}, rows, "matrix");
+  out += "<h3>Transform CMM &rarr; part (row-major, mm)</h3>\n" + html::table({}, rows, "matrix");
   std::string outliers;
   for (const auto& [reason, n] : r.outliers)
     if (n > 0) outliers += (outliers.empty() ? "" : ", ") + count(n) + " " + escape(reason);
