@@ -8,6 +8,7 @@
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
 #include "support/run_cli.hpp"
+#include "verification_fixture.hpp"
 
 using namespace furrow;
 
@@ -167,4 +168,168 @@ TEST_CASE("comparison.json reader: errors name the file and the field") {
   refused("\"id\":\"P00002\"", "\"id\":\"P00001\"", "c.json: points[1].id: duplicate id \"P00001\"");
   refused("\"probe_diameter\"", "\"probe_diameter_mm\"", "c.json: options.probe_diameter: missing");
   CHECK_THROWS_WITH_AS(read_comparison("/nonexistent/c.json"), doctest::Contains("/nonexistent/c.json"), InputError);
+}
+
+namespace {
+
+void check_residual_statistics(const ResidualStatistics& a, const ResidualStatistics& b) {
+  CHECK(a.count == b.count);
+  CHECK(a.mean_predicted == b.mean_predicted);
+  CHECK(a.mean_measured == b.mean_measured);
+  CHECK(a.mean == b.mean);
+  CHECK(a.sigma == b.sigma);
+  CHECK(a.rms == b.rms);
+  CHECK(a.max_abs == b.max_abs);
+  CHECK(a.correlation == b.correlation);
+  CHECK(a.normalised_rms == b.normalised_rms);
+  CHECK(a.within_share == b.within_share);
+  CHECK(a.verdict == b.verdict);
+}
+
+// The comparison of a part with a cut gouge, one not cut, and a dent that
+// nothing predicted.
+struct PredictedFixture {
+  Part part = test::mould_part();
+  ClosestPointFinder finder{part};
+  InspectionPlan plan = grid_plan(part, 24, 20, {"ruby 2 mm", 2});
+  Prediction prediction;
+  SimulatedMeasurement sim;
+  CompareOptions options = test::compare_options(0.05);
+  Comparison comparison;
+  ComparisonSources sources{"mould.json", "m.csv", "plan.json", "", "prediction.json", "mm"};
+
+  PredictedFixture() {
+    const Eigen::Vector2d cut(0.3, 0.6), uncut(0.7, 0.3);
+    auto field = [=](const Eigen::Vector2d& uv) {
+      return 0.003 * uv.x() + test::dent(uv, cut, 0.06, 0.02) + test::dent(uv, uncut, 0.06, 0.02);
+    };
+    prediction = test::field_prediction(part, field, 0.001, [](const Eigen::Vector2d& uv) { return uv.y() > 0.1; });
+    test::add_zmap_site(prediction, part, cut, {0.03, 0.03}, 0.02);
+    test::add_zmap_site(prediction, part, uncut, {0.03, 0.03}, 0.02);
+    test::add_zmap_site(prediction, part, {0.5, 0.95}, {0.001, 0.001}, 0.01);
+    for (int k = 0; k < 4; ++k) test::add_local_gouge(prediction, part, {0.6 + 0.01 * k, 0.7});
+    SimulationOptions o;
+    o.seed = 3;
+    o.blunders = 2;
+    o.surface_offset = [=](const PlannedPoint& p) {
+      return field(p.uv) - test::dent(p.uv, uncut, 0.06, 0.02) + test::dent(p.uv, {0.15, 0.3}, 0.06, 0.03);
+    };
+    sim = simulate_measurement(plan, o);
+    options.prediction.probe_sigma = 0.0025;
+    options.gouges.site_margin = 1.5;
+    comparison = compare_measurements(finder, sim.set, &plan, options);
+    verify_prediction(comparison, part, sim.set.probe_radius, prediction, options);
+  }
+  std::string text() const {
+    return comparison_to_json_text(comparison, sim.set, part, options, sources);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("comparison.json round trip with a prediction: verification read back exactly") {
+  const PredictedFixture f;
+  const Comparison& c = f.comparison;
+  const ComparisonDocument d = parse_comparison(f.text(), "c.json");
+  CHECK(d.sources.prediction == "prediction.json");
+  CHECK(d.options.prediction.probe_sigma == 0.0025);
+  CHECK(d.options.prediction.align);
+  CHECK(d.options.gouges.site_margin == 1.5);
+  CHECK(d.options.gouges.overcut_sigmas == f.options.gouges.overcut_sigmas);
+  CHECK(d.summary.confirmed_gouges == c.summary.confirmed_gouges);
+  CHECK(d.summary.unexplained_overcuts == c.summary.unexplained_overcuts);
+  CHECK(c.summary.confirmed_gouges == 1);  // G1 (G2 was not cut, G3 between points, L1 not cut)
+  CHECK(c.summary.unexplained_overcuts == 1);
+
+  REQUIRE(d.prediction.has_value());
+  const PredictionComparison& a = *c.prediction;
+  const PredictionComparison& b = *d.prediction;
+  CHECK(b.alignment.applied == a.alignment.applied);
+  CHECK(b.alignment.status == a.alignment.status);
+  CHECK(b.alignment.parameters == a.alignment.parameters);
+  CHECK(b.alignment.points == a.alignment.points);
+  CHECK(b.alignment.iterations == a.alignment.iterations);
+  CHECK(b.alignment.rms_before == a.alignment.rms_before);
+  CHECK(b.alignment.rms_after == a.alignment.rms_after);
+  check_residual_statistics(b.overall, a.overall);
+  CHECK(b.regions.size() == a.regions.size());
+  CHECK(b.uncompared.not_reached == a.uncompared.not_reached);
+  CHECK(a.uncompared.not_reached > 0);
+  REQUIRE(b.points.size() == a.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const PointPrediction &p = a.points[i], &q = *d.points[i].prediction;
+    CAPTURE(i);
+    CHECK(q.face_predicted == p.face_predicted);
+    CHECK(q.status == p.status);
+    CHECK(q.compared == p.compared);
+    if (!p.reached()) continue;
+    CHECK(q.predicted == p.predicted);
+    CHECK(q.band_low == p.band_low);
+    CHECK(q.band_high == p.band_high);
+    CHECK(q.measured == p.measured);
+    CHECK(q.residual == p.residual);
+    CHECK(q.sigma == p.sigma);
+    CHECK(b.points[i].residual == p.residual);
+  }
+
+  REQUIRE(d.gouges.has_value());
+  REQUIRE(d.gouges->sites.size() == c.gouges->sites.size());
+  CHECK(c.gouges->sites.size() == 4);
+  for (std::size_t k = 0; k < c.gouges->sites.size(); ++k) {
+    const GougeSiteCheck &s = c.gouges->sites[k], &t = d.gouges->sites[k];
+    CAPTURE(s.id);
+    CHECK(t.id == s.id);
+    CHECK(t.source == s.source);
+    CHECK(t.face == s.face);
+    CHECK(t.face_index == s.face_index);
+    CHECK(t.uv_box.min() == s.uv_box.min());
+    CHECK(t.uv_box.max() == s.uv_box.max());
+    CHECK(t.search_box.min() == s.search_box.min());
+    CHECK(t.search_box.max() == s.search_box.max());
+    CHECK(t.centroid == s.centroid);
+    CHECK(t.predicted_depth == s.predicted_depth);
+    CHECK(t.contacts == s.contacts);
+    CHECK(t.status == s.status);
+    CHECK(t.points == s.points);
+    CHECK(t.deepest == s.deepest);
+    CHECK(t.measured_depth == s.measured_depth);
+    CHECK(t.uncertainty == s.uncertainty);
+    CHECK(t.threshold == s.threshold);
+    CHECK(t.predicted_error == s.predicted_error);
+    CHECK(t.depth_consistent == s.depth_consistent);
+  }
+  CHECK(d.gouges->sites[2].status == GougeSiteStatus::not_measured);
+  REQUIRE(d.gouges->unexplained.size() == c.gouges->unexplained.size());
+  for (std::size_t k = 0; k < c.gouges->unexplained.size(); ++k) {
+    const OvercutCluster &u = c.gouges->unexplained[k], &v = d.gouges->unexplained[k];
+    CHECK(v.id == u.id);
+    CHECK(v.points == u.points);
+    CHECK(v.deepest == u.deepest);
+    CHECK(v.face == u.face);
+    CHECK(v.face_index == u.face_index);
+    CHECK(v.uv == u.uv);
+    CHECK(v.xyz == u.xyz);
+    CHECK(v.depth == u.depth);
+    CHECK(v.uncertainty == u.uncertainty);
+    CHECK(v.threshold == u.threshold);
+    CHECK(v.centroid == u.centroid);
+  }
+
+  // Broken verification parts name the field.
+  const std::string text = f.text();
+  auto refused = [&](const std::string& from, const std::string& to, const std::string& message) {
+    std::string broken = text;
+    const std::size_t at = broken.find(from);
+    REQUIRE(at != std::string::npos);
+    broken.replace(at, from.size(), to);
+    CHECK_THROWS_WITH_AS(parse_comparison(broken, "c.json"), message.c_str(), InputError);
+  };
+  const std::string first = f.sim.set.points[*c.gouges->sites[0].deepest].id;
+  refused("\"deepest\": \"" + first + "\"", "\"deepest\": \"NOPE\"",
+          "c.json: gouge_sites[0].deepest: \"NOPE\" is not a point id of this file");
+  refused("\"status\": \"CONFIRMED\"", "\"status\": \"MAYBE\"",
+          "c.json: gouge_sites[0].status: \"MAYBE\" is not a gouge site status (CONFIRMED, NOT CONFIRMED, NOT MEASURED)");
+  refused("\"prediction_file\": \"prediction.json\"", "\"prediction_file\": null",
+          "c.json: prediction_comparison: present without a prediction_file");
+  refused("\"verdict\": \"", "\"verdict\": \"probably ", "c.json: prediction_comparison.overall.verdict: \"probably explained\" is not a verdict (explained, not explained, too few points)");
 }
