@@ -14,7 +14,11 @@ int run_demo(Args& args) {
   args.finish();
   const Job job = demo_job(out);
   std::cout << "furrow demo: " << job.file << "\n";
-  return run_and_report(job, std::cout);
+  // The demo part fails by design (the gouge); the demo itself succeeded
+  // when the report is written, so the README's main command exits 0.
+  if (run_and_report(job, std::cout) == kExitFail)
+    std::cout << "(the demo part fails by design: its 24 mm ball is too large for the dimple)\n";
+  return kExitOk;
 }
 
 }  // namespace
@@ -34,7 +38,8 @@ const Command kDemoCommand = {
     "  --out FOLDER   output folder (default reports/demo, relative to the\n"
     "                 current directory)\n"
     "\n"
-    "Exit status as furrow run: 1 here, since the demo part fails (the gouge).\n",
+    "Exit status 0 when the report is written (its verdict is FAIL by design:\n"
+    "the gouge), 2 bad input (e.g. the examples are not found), 3 internal error.\n",
     run_demo};
 
 }  // namespace furrow::cli
