@@ -164,7 +164,7 @@ TEST_CASE("the verdict follows the comparison and says why a part fails") {
   CHECK(v.reasons.empty());
 }
 
-TEST_CASE("report.json holds the document's numbers; only the timestamp and timing differ between runs") {
+TEST_CASE("report.json holds the document's numbers, and only the timestamp and timing differ between runs") {
   const test::ReportFixture& f = fixture();
   ReportContext a = context("2024-01-01T00:00:00Z");
   ReportContext b = context("2025-06-30T12:00:00Z");
