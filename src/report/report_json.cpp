@@ -2,11 +2,13 @@
 
 #include <algorithm>
 
+#include "inspection/verification_json.hpp"
 #include "io/json_fields.hpp"
 
 namespace furrow {
 
 namespace jf = json_fields;
+namespace vj = verification_json;
 using jf::json;
 
 namespace {
@@ -23,10 +25,6 @@ json matrix(const Matrix& m, const char* what) {
     rows.push_back(std::move(row));
   }
   return rows;
-}
-
-json box(const Eigen::AlignedBox2d& b) {
-  return json::array({jf::vector_json(Eigen::Vector2d(b.min())), jf::vector_json(Eigen::Vector2d(b.max()))});
 }
 
 json zone_json(const ToleranceZone& z) {
@@ -75,20 +73,8 @@ json options_json(const ComparisonDocument::Options& o) {
   j["max_solver_iterations"] = o.max_solver_iterations;
   j["max_outlier_passes"] = o.max_outlier_passes;
   j["motion_tolerance"] = num(o.motion_tolerance, "motion tolerance");
-  const PredictionComparisonOptions& p = o.prediction;
-  j["prediction"] = {{"probe_sigma", num(p.probe_sigma, "probe sigma")},
-                     {"align", p.align},
-                     {"max_alignment_iterations", p.max_alignment_iterations},
-                     {"max_normalised_rms", num(p.max_normalised_rms, "max normalised rms")},
-                     {"within_sigmas", num(p.within_sigmas, "within sigmas")},
-                     {"required_share", num(p.required_share, "required share")},
-                     {"min_points", p.min_points}};
-  const GougeConfirmationOptions& g = o.gouges;
-  j["gouges"] = {{"overcut_sigmas", num(g.overcut_sigmas, "overcut sigmas")},
-                 {"tolerance_fraction", num(g.tolerance_fraction, "tolerance fraction")},
-                 {"site_margin", num(g.site_margin, "site margin")},
-                 {"contact_cluster_distance", num(g.contact_cluster_distance, "contact cluster")},
-                 {"overcut_cluster_distance", num(g.overcut_cluster_distance, "overcut cluster")}};
+  j["prediction"] = vj::options_json(o.prediction);
+  j["gouges"] = vj::options_json(o.gouges);
   return j;
 }
 
@@ -146,20 +132,6 @@ json statistics_json(const DeviationStatistics& s) {
           {"max", num(s.max, "max")}};
 }
 
-json residuals_json(const ResidualStatistics& s) {
-  return {{"count", s.count},
-          {"mean_predicted", num(s.mean_predicted, "mean predicted")},
-          {"mean_measured", num(s.mean_measured, "mean measured")},
-          {"mean", num(s.mean, "mean")},
-          {"sigma", num(s.sigma, "sigma")},
-          {"rms", num(s.rms, "rms")},
-          {"max_abs", num(s.max_abs, "max abs")},
-          {"correlation", opt(s.correlation, "correlation")},
-          {"normalised_rms", num(s.normalised_rms, "normalised rms")},
-          {"within_share", num(s.within_share, "within share")},
-          {"verdict", to_string(s.verdict)}};
-}
-
 json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
   json out = json::array();
   for (const RegionStatistics& r : doc.summary.regions) {
@@ -172,76 +144,9 @@ json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
     j["face"] = known ? json(regions->faces[static_cast<std::size_t>(known->face)].name) : json(nullptr);
     j["class"] = known ? json(to_string(known->curvature_class)) : json(nullptr);
     j["area"] = known ? num(known->area, "area") : json(nullptr);
-    j["prediction"] = nullptr;
-    if (doc.prediction)
-      for (const RegionResidualStatistics& p : doc.prediction->regions)
-        if (p.region == r.region) j["prediction"] = residuals_json(p.statistics);
     out.push_back(std::move(j));
   }
   return out;
-}
-
-json prediction_json(const PredictionComparison& p) {
-  const PredictionAlignment& a = p.alignment;
-  json align = {{"applied", a.applied},
-                {"status", a.status},
-                {"parameters", matrix(a.parameters.transpose(), "parameters")[0]},
-                {"points", a.points},
-                {"iterations", a.iterations},
-                {"rms_before", num(a.rms_before, "rms before")},
-                {"rms_after", num(a.rms_after, "rms after")}};
-  return {{"alignment", std::move(align)},
-          {"overall", residuals_json(p.overall)},
-          {"uncompared",
-           {{"face_not_predicted", p.uncompared.face_not_predicted},
-            {"not_reached", p.uncompared.not_reached},
-            {"outside", p.uncompared.outside},
-            {"not_machinable", p.uncompared.not_machinable}}}};
-}
-
-json point_ids(const ComparisonDocument& doc, const std::vector<std::size_t>& indices) {
-  json ids = json::array();
-  for (std::size_t i : indices) ids.push_back(doc.points.at(i).id);
-  return ids;
-}
-
-json gouges_json(const ComparisonDocument& doc, const GougeConfirmation& g) {
-  json sites = json::array();
-  for (const GougeSiteCheck& s : g.sites) {
-    json j;
-    j["id"] = s.id;
-    j["source"] = to_string(s.source);
-    j["face"] = s.face;
-    j["face_index"] = s.face_index;
-    j["uv_box"] = box(s.uv_box);
-    j["search_box"] = box(s.search_box);
-    j["centroid"] = jf::vector_json(s.centroid);
-    j["predicted_depth"] = opt(s.predicted_depth, "predicted depth");
-    j["contacts"] = s.contacts;
-    j["status"] = to_string(s.status);
-    j["points"] = point_ids(doc, s.points);
-    j["deepest"] = s.deepest ? json(doc.points.at(*s.deepest).id) : json(nullptr);
-    j["measured_depth"] = opt(s.measured_depth, "measured depth");
-    j["uncertainty"] = opt(s.uncertainty, "uncertainty");
-    j["threshold"] = opt(s.threshold, "threshold");
-    j["predicted_error"] = opt(s.predicted_error, "predicted error");
-    j["depth_consistent"] = s.depth_consistent ? json(*s.depth_consistent) : json(nullptr);
-    sites.push_back(std::move(j));
-  }
-  json unexplained = json::array();
-  for (const OvercutCluster& c : g.unexplained)
-    unexplained.push_back({{"id", c.id},
-                           {"points", point_ids(doc, c.points)},
-                           {"deepest", doc.points.at(c.deepest).id},
-                           {"face", c.face},
-                           {"face_index", c.face_index},
-                           {"uv", jf::vector_json(c.uv)},
-                           {"xyz", jf::vector_json(c.xyz)},
-                           {"depth", num(c.depth, "depth")},
-                           {"uncertainty", num(c.uncertainty, "uncertainty")},
-                           {"threshold", num(c.threshold, "threshold")},
-                           {"centroid", jf::vector_json(c.centroid)}});
-  return {{"sites", std::move(sites)}, {"unexplained", std::move(unexplained)}};
 }
 
 json points_json(const ComparisonDocument& doc) {
@@ -261,14 +166,7 @@ json points_json(const ComparisonDocument& doc) {
     j["in_fit"] = p.in_fit;
     j["outlier"] = p.outlier.empty() ? json(nullptr) : json(p.outlier);
     j["region"] = p.region ? json(*p.region) : json(nullptr);
-    if (p.prediction && p.prediction->reached())
-      j["prediction"] = {{"predicted", num(p.prediction->predicted, "predicted")},
-                         {"measured", num(p.prediction->measured, "measured")},
-                         {"residual", num(p.prediction->residual, "residual")},
-                         {"sigma", num(p.prediction->sigma, "sigma")},
-                         {"compared", p.prediction->compared}};
-    else
-      j["prediction"] = nullptr;
+    j["prediction"] = p.prediction ? vj::point_prediction_json(*p.prediction) : json(nullptr);
     out.push_back(std::move(j));
   }
   return out;
@@ -310,8 +208,16 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   dev["profile"] = num(s.profile, "profile");
   d["deviations"] = std::move(dev);
   d["regions"] = regions_json(doc, regions);
-  d["prediction"] = doc.prediction ? prediction_json(*doc.prediction) : json(nullptr);
-  d["gouges"] = doc.gouges ? gouges_json(doc, *doc.gouges) : json(nullptr);
+  // The verification parts as comparison.json writes them.
+  d["prediction"] = doc.prediction ? vj::prediction_comparison_json(*doc.prediction) : json(nullptr);
+  if (doc.gouges) {
+    std::vector<std::string> ids;
+    for (const auto& p : doc.points) ids.push_back(p.id);
+    d["gouges"] = {{"sites", vj::gouge_sites_json(*doc.gouges, ids)},
+                   {"unexplained", vj::unexplained_json(*doc.gouges, ids)}};
+  } else {
+    d["gouges"] = nullptr;
+  }
   d["points"] = points_json(doc);
   json figs = json::array();
   for (const ReportFigure& f : figures) figs.push_back({{"file", f.file}, {"section", f.section}, {"title", f.title}});
