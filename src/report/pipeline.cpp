@@ -252,6 +252,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     s.note("report");
     ReportContext context;
     context.title = job.name;
+    context.description = job.description;
     context.generated = utc_timestamp();
     context.inputs = s.inputs;
     context.job_options_json = job_options_json(job);

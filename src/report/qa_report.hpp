@@ -44,6 +44,7 @@ struct StageTime {
 
 struct ReportContext {
   std::string title;                  // heading; e.g. the job's or the comparison's name
+  std::string description;            // a paragraph under the heading (a job's), may be empty
   std::string generated;              // the timestamp, UTC ISO 8601 (utc_timestamp())
   std::vector<InputDigest> inputs;    // every file the verdict rests on
   std::string job_options_json;       // resolved stage options as a JSON object, "" without a job

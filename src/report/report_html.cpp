@@ -40,7 +40,7 @@ table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
 th,td{border:1px solid #ccc;padding:3px 8px;text-align:right;vertical-align:top}
 th{background:#f0f0f0}td:first-child,th:first-child{text-align:left}
 table.kv th{text-align:left;font-weight:normal;color:#444}table.kv td{text-align:left}
-table.points{font-size:0.8em}table.points td{white-space:nowrap}
+table.points{font-size:0.8em}table.points td{white-space:nowrap}table.files td{text-align:left}
 tr.out td{background:#fde2e2}tr.outlier td{color:#888;font-style:italic}
 .status{font-weight:bold;padding:1px 6px;border-radius:3px;color:#fff;white-space:nowrap}
 .CONFIRMED{background:#c81e1e}.NOT_CONFIRMED{background:#28963c}.NOT_MEASURED{background:#8c8c8c}.UNEXPLAINED{background:#8232aa}
@@ -242,7 +242,7 @@ std::string gouges_section(const ComparisonDocument& doc, const std::vector<Repo
                        s.depth_consistent ? (*s.depth_consistent ? "yes" : "no") : "&ndash;"},
                       ""});
     }
-    out += html::table({"Site", "Source", "Face", "Status", "Predicted [um]", "Measured [um]", "1-sigma [um]",
+    out += html::table({"Site", "Source", "Face", "Status", "Predicted error [um]", "Measured deviation [um]", "1-sigma [um]",
                         "Threshold [um]", "Points", "Deepest", "Depth consistent"},
                        rows);
   }
@@ -335,16 +335,16 @@ std::string traceability_section(const ComparisonDocument& doc, const ReportCont
     rows.push_back({{escape(in.role), "<code>" + escape(in.path) + "</code>", count(in.bytes),
                      in.generated ? "this run" : "input", "<span class=\"hash\">" + escape(in.sha256) + "</span>"},
                     ""});
-  out += "<h3>Files (SHA-256)</h3>\n" + html::table({"Role", "Path", "Bytes", "Origin", "SHA-256"}, rows);
-  out += "<h3>Comparison options</h3>\n" + options_rows(doc.options);
-  if (!context.job_options_json.empty())
-    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre>" + escape(context.job_options_json) + "</pre>\n";
+  out += "<h3>Files (SHA-256)</h3>\n" + html::table({"Role", "Path", "Bytes", "Origin", "SHA-256"}, rows, "files");
   if (!context.stages.empty()) {
     std::vector<TableRow> times;
     for (const StageTime& t : context.stages) times.push_back({{escape(t.stage), fixed(t.seconds, 2)}, ""});
     times.push_back({{"<b>total</b>", "<b>" + fixed(context.total_seconds, 2) + "</b>"}, ""});
     out += "<h3>Stage times (wall clock, s)</h3>\n" + html::table({"Stage", "Seconds"}, times);
   }
+  out += "<h3>Comparison options</h3>\n" + options_rows(doc.options);
+  if (!context.job_options_json.empty())
+    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre>" + escape(context.job_options_json) + "</pre>\n";
   return out + "</section>\n";
 }
 
@@ -359,7 +359,8 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
          escape(doc.sources.part) + "</code>, measurements <code>" + escape(doc.sources.measurements) +
          "</code> &middot; Furrow " + escape(FURROW_VERSION) + " &middot; " + escape(context.generated) +
-         "</p></header>\n";
+         "</p>\n" + (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
+         "</header>\n";
   out += verdict_section(verdict);
   out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
          "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a "
