@@ -1,7 +1,7 @@
 // furrow report comparison.json --out reports/NAME: the QA report folder
 // (report.html, report.json, points.csv, figures) of a comparison.
+#include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 #include "cli/commands.hpp"
 #include "io/atomic_file.hpp"
@@ -30,11 +30,10 @@ int run_report(Args& args) {
   write_folder_atomically(out, [&](const std::string& staging) { write_folder_files(staging, files); });
 
   const ReportVerdict v = report_verdict(sources.doc);
-  std::cout << "verdict: " << v.result() << " (profile " << v.profile * 1000 << " um, zone " << v.zone.width * 1000
-            << " um, " << v.out_of_tolerance << " of " << v.evaluated << " points out of tolerance";
-  if (v.has_prediction) std::cout << ", " << v.confirmed << " of " << v.sites << " predicted gouges confirmed";
-  std::cout << ")\nwrote " << out << "/report.html (and report.json, points.csv, " << files.size() - 3
-            << " figures)\n";
+  std::printf("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance", v.result(),
+              v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
+  if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
+  std::printf(")\nwrote %s/report.html (and report.json, points.csv, %zu figures)\n", out.c_str(), files.size() - 3);
   return v.pass ? kExitOk : kExitFail;
 }
 

@@ -69,6 +69,16 @@ std::string line(const char* format, ...) {
   return buf;
 }
 
+// `path` as seen from `folder` (both taken from the current directory), so
+// that comparison.json names its sources relative to itself and `furrow
+// report` finds them from anywhere (report_sources.hpp).
+std::string relative_to_folder(const std::string& folder, const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target = fs::absolute(path).lexically_normal();
+  const fs::path relative = target.lexically_relative(fs::absolute(folder).lexically_normal());
+  return relative.empty() ? target.string() : relative.string();
+}
+
 struct Staged {
   const Job& job;
   const PipelineProgress& progress;
@@ -194,8 +204,8 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
   summarize(c);
   if (job.compare_with_prediction) verify_prediction(c, part, set.probe_radius, prediction, options);
   ComparisonSources sources;
-  sources.part = job.part;
-  sources.measurements = job.simulate ? "measurements.csv" : *job.measurements_file;
+  sources.part = relative_to_folder(job.output, job.part);
+  sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, *job.measurements_file);
   sources.plan = "plan/plan.json";
   sources.regions = "regions.json";
   sources.prediction = job.compare_with_prediction ? "prediction.json" : "";

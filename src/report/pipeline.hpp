@@ -21,8 +21,9 @@
 //   measurements.csv    (simulated measurements only)
 //   comparison.json
 //   report.html, report.json, points.csv, figures/*.png   (qa_report.hpp)
-// Paths inside comparison.json that name generated files are relative to
-// the output folder, so `furrow report OUT/comparison.json` finds them.
+// The paths inside comparison.json are relative to the output folder (the
+// part's and a measurement file's too), so `furrow report OUT/comparison.json`
+// finds them from any directory.
 //
 // Deterministic: the same job gives the same files, except the report's
 // timestamp and stage times (qa_report.hpp).

@@ -356,8 +356,16 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
                     escape("QA report " + context.title + ": " + verdict.result()) + "</title>\n<style>" + kStyle +
                     "</style>\n</head>\n<body>\n";
+  // File names as the user gave them where the context knows them (a job's
+  // inputs), else as the comparison names them.
+  auto named = [&](const std::string& role, const std::string& fallback) {
+    for (const InputDigest& in : context.inputs)
+      if (in.role == role) return in.path;
+    return fallback;
+  };
   out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
-         escape(doc.sources.part) + "</code>, measurements <code>" + escape(doc.sources.measurements) +
+         escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
+         escape(named("measurements", doc.sources.measurements)) +
          "</code> &middot; Furrow " + escape(FURROW_VERSION) + " &middot; " + escape(context.generated) +
          "</p>\n" + (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
          "</header>\n";
