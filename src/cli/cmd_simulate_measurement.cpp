@@ -68,9 +68,11 @@ int run_simulate(Args& args) {
     std::printf("machined surface from %s: %zu points where the tool reached, %zu not reached "
                 "(nominal there)\n",
                 prediction_path->c_str(), machined.reached, machined.not_reached);
-  for (const SurfaceBump& b : o.bumps)
-    std::printf("bump: %+.4f mm within %g mm of (%g, %g, %g)\n", b.height, b.radius, b.centre.x(),
-                b.centre.y(), b.centre.z());
+  for (std::size_t k = 0; k < o.bumps.size(); ++k) {
+    const SurfaceBump& b = o.bumps[k];
+    std::printf("bump: %+.4f mm within %g mm of (%g, %g, %g): %zu planned points\n", b.height,
+                b.radius, b.centre.x(), b.centre.y(), b.centre.z(), sim.bump_points[k]);
+  }
   return kExitOk;
 }
 

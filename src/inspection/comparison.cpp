@@ -74,8 +74,15 @@ void assign_regions(Comparison& c, const RegionMap& regions) {
 
 void verify_prediction(Comparison& c, const Part& part, double probe_radius,
                        const Prediction& prediction, const CompareOptions& options) {
-  c.prediction = compare_with_prediction(c.registration, c.region, part, probe_radius,
-                                         options.registration.dof, prediction, options.prediction);
+  auto compare = [&] {
+    return compare_with_prediction(c.registration, c.region, part, probe_radius,
+                                   options.registration.dof, prediction, options.prediction);
+  };
+  c.prediction = compare();
+  // Newly evaluated points join the statistics (the fit, hence the
+  // alignment, is unchanged).
+  if (admit_predicted_deviations(c.registration, *c.prediction, options.prediction) > 0)
+    c.prediction = compare();
   c.gouges = confirm_gouges(c.registration, part, c.tolerance, prediction, *c.prediction,
                             options.prediction, options.gouges);
   summarize(c);

@@ -64,16 +64,18 @@ void check_options(const GougeConfirmationOptions& o) {
 // The box grown by `margin` mm on the surface (see the header), clamped to
 // the face's domain.
 Eigen::AlignedBox2d grow_on_surface(const Face& face, const Eigen::AlignedBox2d& box, double margin) {
+  const ParameterDomain& dom = face.domain();
   double speed_u = std::numeric_limits<double>::infinity(), speed_v = speed_u;
   for (int i = 0; i <= 2; ++i)
     for (int j = 0; j <= 2; ++j) {
-      const Eigen::Vector2d uv = box.min() + (box.max() - box.min()).cwiseProduct(Eigen::Vector2d(i, j) / 2);
+      const Eigen::Vector2d uv = (box.min() + (box.max() - box.min()).cwiseProduct(Eigen::Vector2d(i, j) / 2))
+                                     .cwiseMax(Eigen::Vector2d(dom.u0, dom.v0))
+                                     .cwiseMin(Eigen::Vector2d(dom.u1, dom.v1));
       const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
       // A degenerate edge (speed 0) says nothing about the width nearby.
       if (d.Su.norm() > 1e-9) speed_u = std::min(speed_u, d.Su.norm());
       if (d.Sv.norm() > 1e-9) speed_v = std::min(speed_v, d.Sv.norm());
     }
-  const ParameterDomain& dom = face.domain();
   const Eigen::Vector2d grow(std::isfinite(speed_u) ? margin / speed_u : 0.0,
                              std::isfinite(speed_v) ? margin / speed_v : 0.0);
   const Eigen::Vector2d lo = (box.min() - grow).cwiseMax(Eigen::Vector2d(dom.u0, dom.v0));
@@ -99,6 +101,15 @@ std::optional<double> deepest_predicted_overcut(const FaceGridRecord& g, const E
   return std::nullopt;
 }
 
+// Index of a face the prediction names (check_prediction_against_part
+// refuses a prediction of another part up front; this keeps the library
+// safe without it).
+int face_index(const Part& part, const std::string& face, const std::string& what) {
+  const std::optional<std::size_t> f = part.find_face(face);
+  if (!f) throw InputError("prediction: " + what + " lies on face \"" + face + "\", which the part does not have");
+  return static_cast<int>(*f);
+}
+
 std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& prediction,
                                             const GougeConfirmationOptions& o) {
   std::vector<GougeSiteCheck> sites;
@@ -107,7 +118,7 @@ std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& 
     s.id = "G" + std::to_string(r.id);
     s.source = GougeSiteSource::zmap;
     s.face = r.face;
-    s.face_index = static_cast<int>(*part.find_face(r.face));
+    s.face_index = face_index(part, r.face, "gouge site " + s.id);
     s.uv_box = r.uv_box;
     s.uv_box.extend(r.deepest.uv);
     s.centroid = r.centroid.xyz;
@@ -146,7 +157,7 @@ std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& 
     s.source = GougeSiteSource::local;
     const LocalGougeRecord& first = prediction.local_gouges[clusters[c].first];
     s.face = first.at.face;
-    s.face_index = static_cast<int>(*part.find_face(s.face));
+    s.face_index = face_index(part, s.face, "local gouge site " + s.id);
     s.uv_box = Eigen::AlignedBox2d(first.at.uv);
     for (std::size_t m : clusters[c].members) {
       s.uv_box.extend(prediction.local_gouges[m].at.uv);

@@ -72,9 +72,14 @@ SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const Simu
   std::vector<bool> is_blunder(n, false);
   for (int k = 0; k < o.blunders; ++k) is_blunder[pick[k]] = true;
   std::vector<double> deviation(n);
+  std::vector<std::size_t> bump_points(o.bumps.size(), 0);
   for (std::size_t k = 0; k < n; ++k) {
     double d = o.surface_offset ? o.surface_offset(plan.points[k]) : 0.0;
-    for (const SurfaceBump& b : o.bumps) d += b.offset_at(plan.points[k].xyz);
+    for (std::size_t b = 0; b < o.bumps.size(); ++b) {
+      const double h = o.bumps[b].offset_at(plan.points[k].xyz);
+      d += h;
+      bump_points[b] += h != 0;
+    }
     d += o.noise_sigma * noise(rng);
     if (is_blunder[k]) d += (sign(rng) ? 1 : -1) * size(rng);
     deviation[k] = d;
@@ -84,6 +89,7 @@ SimulatedMeasurement simulate_measurement(const InspectionPlan& plan, const Simu
   const Eigen::Isometry3d m = o.misalignment.part_to_cmm();
   const double r = o.kind == ProbePointKind::probe_centre ? plan.probe.radius() : 0.0;
   SimulatedMeasurement out;
+  out.bump_points = bump_points;
   out.set.source = name;
   out.set.kind = o.kind;
   out.set.probe_radius = r;

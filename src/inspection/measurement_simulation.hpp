@@ -60,7 +60,8 @@ struct SurfaceBump {
 struct PredictedSurfaceOffsets {
   std::vector<double> offset;  // per plan point, plan order [mm]
   std::size_t reached = 0, not_reached = 0;
-  // The offsets as a SurfaceOffset (by plan id); `plan` must outlive it.
+  // The offsets as a SurfaceOffset, looked up by plan id (a copy: it needs
+  // neither `plan` nor this object afterwards).
   SurfaceOffset lookup(const InspectionPlan& plan) const;
 };
 PredictedSurfaceOffsets predicted_surface_offsets(const InspectionPlan& plan,
@@ -83,6 +84,8 @@ struct SimulatedMeasurement {
   std::vector<std::string> plan_ids;   // plan id of each measured point (also when anonymous)
   std::vector<bool> blunder;           // per measured point
   std::vector<double> true_deviation;  // offset + noise + blunder along the normal [mm]
+  std::vector<std::size_t> bump_points;  // planned points each bump reaches (a bump
+                                         // between all points plants nothing)
 };
 
 // Throws InputError for a negative noise, more blunders than points, a bad

@@ -57,8 +57,14 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
   }
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(cloud);
-  // Agreeing neighbours of each large point: large too, same side, within
-  // the limit of its value, among its six nearest within the radius.
+  // Agreeing neighbours of each large point: large too, on the same side
+  // and alike - within the limit of its value, or within a factor
+  // kAlikeRatio of its excess over the median - among its six nearest within
+  // the radius. The ratio is there because a real gouge is graded: deep ones
+  // have neighbouring points differing by far more than the limit, and the
+  // limit alone declared their points blunders one by one. A blunder on or
+  // next to a real deviation differs from it by its own unrelated size and
+  // mostly stays a blunder.
   std::vector<std::vector<std::size_t>> agree(d.size());
   std::vector<int> nearest;
   std::vector<float> squared;
@@ -69,8 +75,10 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
     for (int m = 0; m < found; ++m) {
       const auto j = static_cast<std::size_t>(nearest[m]);
       if (j == k || squared[m] > radius2 || !large[j]) continue;
-      const bool same_side = (d[j] - v.median) * (d[k] - v.median) > 0;
-      if (same_side && std::abs(d[j] - d[k]) <= v.limit) agree[k].push_back(j);
+      const double a = d[j] - v.median, b = d[k] - v.median;
+      const bool alike = std::abs(a - b) <= v.limit ||
+                         std::max(std::abs(a), std::abs(b)) <= kAlikeRatio * std::min(std::abs(a), std::abs(b));
+      if (a * b > 0 && alike) agree[k].push_back(j);
     }
   }
   // Cores have `confirm` agreeing neighbours; a large point agreeing with a

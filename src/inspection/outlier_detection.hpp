@@ -5,19 +5,25 @@
 //
 // Rule: among points with a usable foot point, d is large when
 // |d - median(d)| > max(k * 1.4826 * MAD(d), floor). Neighbours of a large
-// point agree with it when they are large too, on the same side and within
-// the same limit of its value (six nearest within `radius`, PCL KD-tree over
-// the registered positions). A large point with `confirm` or more agreeing
+// point agree with it when they are large too, on the same side and alike:
+// their values within the same limit of each other, or their excesses over
+// the median within a factor kAlikeRatio (a real gouge is graded from its
+// rim to its bottom; neighbours in a deep one differ by far more than the
+// limit). Neighbours: the six nearest within `radius`, PCL KD-tree over the
+// given positions (the foot points on the surface, see registration.cpp). A large point with `confirm` or more agreeing
 // neighbours is the core of a real deviation; it and every large point that
 // agrees with a core are large_deviation, the rest blunders. (Random blunders
-// rarely form a core: three similar ones side by side; a real gouge's rim
-// points join through its core.)
+// rarely form a core: three on the same side side by side; a real gouge's
+// rim points join through its core.)
 #include <Eigen/Core>
 #include <vector>
 
 namespace furrow {
 
 enum class OutlierReason;
+
+// Excesses over the median within this factor of each other are alike.
+constexpr double kAlikeRatio = 3;
 
 struct OutlierRule {
   double sigmas = 5;

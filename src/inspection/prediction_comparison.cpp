@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "geometry/error.hpp"
@@ -200,6 +201,26 @@ PredictionComparison compare_with_prediction(const RegistrationResult& r,
   for (const auto& [id, s] : by_region)
     c.regions.push_back({id, residual_statistics(s.predicted, s.measured, s.sigma, o)});
   return c;
+}
+
+std::size_t admit_predicted_deviations(RegistrationResult& r, const PredictionComparison& c,
+                                       const PredictionComparisonOptions& o) {
+  std::size_t admitted = 0;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    RegisteredPoint& p = r.points[i];
+    const PointPrediction& q = c.points[i];
+    if (p.outlier != OutlierReason::blunder || !q.reached() ||
+        !(std::abs(q.residual) <= o.within_sigmas * q.sigma))
+      continue;
+    p.outlier = OutlierReason::large_deviation;
+    p.evaluated = true;
+    char note[160];
+    std::snprintf(note, sizeof note, "; explained by the prediction (predicted %.4f mm, residual %.4f mm)",
+                  q.predicted, q.residual);
+    p.outlier_detail += note;
+    ++admitted;
+  }
+  return admitted;
 }
 
 void check_prediction_against_part(const Prediction& prediction, const Part& part,

@@ -131,6 +131,18 @@ PredictionComparison compare_with_prediction(const RegistrationResult& registrat
                                              const Prediction& prediction,
                                              const PredictionComparisonOptions& options);
 
+// Blunders the prediction explains. The registration calls a large
+// deviation a blunder (not evaluated) when its neighbours do not deviate
+// alike - true of a single probe point on a small predicted gouge, where the
+// planner puts one on purpose. A blunder is an isolated deviation nothing
+// explains; one whose residual against the prediction at that very spot is
+// within within_sigmas sigma_total is a real deviation: it becomes a
+// large_deviation (evaluated, still out of the fit) with a note in its
+// outlier detail. Returns how many; compare again afterwards.
+std::size_t admit_predicted_deviations(RegistrationResult& registration,
+                                       const PredictionComparison& compared,
+                                       const PredictionComparisonOptions& options);
+
 // Throws InputError (naming both files) unless every face the prediction
 // names is a face of the part with the same parameter domain and every
 // gouge site and local gouge lies on such a face: a prediction of another

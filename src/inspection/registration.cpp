@@ -198,7 +198,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     std::vector<double> deviation(n);
     std::vector<bool> usable(n);
     for (std::size_t i = 0; i < n; ++i) {
-      positions[i] = fit.moved(i);
+      // Neighbours on the surface: at the foot points, not the measured
+      // points - blunders off the same side of a dense scan are closer to
+      // each other than to the surface and would vouch for each other.
+      positions[i] = ws.feet[i].point;
       deviation[i] = fit.residual(i);
       usable[i] = ws.geometric[i] == OutlierReason::none;
     }

@@ -104,6 +104,7 @@ TEST_CASE("compare --prediction: clean part exit 0, a bump unexplained, a confir
   const auto sim = f.simulate(f.clean, "bumped.csv", {"--bump", bump, "--bump", "10,10,0,1,0.5"});
   REQUIRE(sim.status == 0);
   CHECK(sim.out.find("bump: -0.0200 mm within 8 mm") != std::string::npos);
+  CHECK(sim.out.find("(10, 10, 0): 0 planned points") != std::string::npos);
   const auto bumped = f.compare("bumped.csv", f.clean, "bumped_out.json");
   CHECK(bumped.status == 0);  // in tolerance, no predicted gouge: listed, not failed
   CHECK(bumped.out.find("1 unexplained overcuts") != std::string::npos);
@@ -161,6 +162,12 @@ TEST_CASE("verification bad input: exit 2, one line naming the file, nothing wri
   refused(with(compare, f.dir + "/stretched.json"),
           "stretched.json: faces[0]: the parameter domain of face \"mould\" differs");
   refused(with(compare, f.dir + "/missing.json"), "missing.json");
+  refused({"compare", kMould, "--measurements", f.dir + "/m.csv", "--plan", f.plan, "--regions",
+           f.dir + "/no_regions.json", "--prediction", f.clean, "--out", out},
+          "no_regions.json");
+  refused({"compare", kMould, "--measurements", f.dir + "/none.csv", "--plan", f.plan, "--prediction",
+           f.clean, "--out", out},
+          "none.csv");
   refused({"simulate-measurement", kMould, "--plan", f.plan, "--prediction", f.dir + "/other.json",
            "--out", out},
           "the prediction was made for another part");

@@ -51,6 +51,16 @@ struct Fixture {
   }
 };
 
+// `text` with the first `from` replaced by `to` must be refused with `message`.
+void expect_refused(const std::string& text, const std::string& from, const std::string& to,
+                    const std::string& message) {
+  std::string broken = text;
+  const std::size_t at = broken.find(from);
+  REQUIRE(at != std::string::npos);
+  broken.replace(at, from.size(), to);
+  CHECK_THROWS_WITH_AS(parse_comparison(broken, "c.json"), message.c_str(), InputError);
+}
+
 void check_statistics(const DeviationStatistics& a, const DeviationStatistics& b) {
   CHECK(a.count == b.count);
   CHECK(a.mean == b.mean);
@@ -155,11 +165,7 @@ TEST_CASE("comparison.json reader: errors name the file and the field") {
   const Fixture f;
   const std::string text = f.text();
   auto refused = [&](const std::string& from, const std::string& to, const std::string& message) {
-    std::string broken = text;
-    const std::size_t at = broken.find(from);
-    REQUIRE(at != std::string::npos);
-    broken.replace(at, from.size(), to);
-    CHECK_THROWS_WITH_AS(parse_comparison(broken, "c.json"), message.c_str(), InputError);
+    expect_refused(text, from, to, message);
   };
   refused("\"version\": 1", "\"version\": 7", "c.json: version: version 7 is not supported (this furrow reads version 1)");
   refused("\"rms_after\": ", "\"rms_after\": \"x\", \"old\": ", "c.json: registration.rms_after: expected a number, found a string");
@@ -318,11 +324,7 @@ TEST_CASE("comparison.json round trip with a prediction: verification read back 
   // Broken verification parts name the field.
   const std::string text = f.text();
   auto refused = [&](const std::string& from, const std::string& to, const std::string& message) {
-    std::string broken = text;
-    const std::size_t at = broken.find(from);
-    REQUIRE(at != std::string::npos);
-    broken.replace(at, from.size(), to);
-    CHECK_THROWS_WITH_AS(parse_comparison(broken, "c.json"), message.c_str(), InputError);
+    expect_refused(text, from, to, message);
   };
   const std::string first = f.sim.set.points[*c.gouges->sites[0].deepest].id;
   refused("\"deepest\": \"" + first + "\"", "\"deepest\": \"NOPE\"",

@@ -204,3 +204,42 @@ TEST_CASE("distance clusters: single linkage, ordered by first member") {
   CHECK(distance_clusters(pts, 1.49).size() == 4);  // 10 and 11.5 part
   CHECK(distance_clusters({}, 1).empty());
 }
+
+TEST_CASE("one probe point on a narrow predicted gouge: a blunder to the fit, confirmed by the prediction") {
+  const Part part = mould_part();
+  const ClosestPointFinder finder(part);
+  const InspectionPlan plan = grid_plan(part, 30, 24, {"ruby 2 mm", 2});
+  // A dent 60 um deep, 2 mm across, centred on one planned point: no
+  // neighbour sees it, so the registration cannot tell it from a blunder.
+  const Eigen::Vector2d centre = plan.points[300].uv;
+  auto field = [&](const Eigen::Vector2d& uv) { return dent(uv, centre, 0.02, 0.06); };
+  Prediction p = field_prediction(part, field, 0.0005, {}, 500, 400);
+  add_zmap_site(p, part, centre, {0.01, 0.01}, 0.06);
+  SimulationOptions o;
+  o.seed = 8;
+  o.blunders = 4;
+  o.surface_offset = [&](const PlannedPoint& q) { return field(q.uv); };
+  const SimulatedMeasurement m = simulate_measurement(plan, o);
+  REQUIRE_FALSE(m.blunder[300]);
+  const CompareOptions options = compare_options(0.05);
+  Comparison c = compare_measurements(finder, m.set, &plan, options);
+  REQUIRE(c.registration.points[300].outlier == OutlierReason::blunder);
+  CHECK_FALSE(c.registration.points[300].evaluated);
+  CHECK(c.summary.out_of_tolerance == 0);  // without the prediction the gouge goes unseen
+  verify_prediction(c, part, m.set.probe_radius, p, options);
+  const RegisteredPoint& q = c.registration.points[300];
+  CHECK(q.outlier == OutlierReason::large_deviation);
+  CHECK(q.evaluated);
+  CHECK_FALSE(q.in_fit);
+  CHECK(q.outlier_detail.find("explained by the prediction") != std::string::npos);
+  REQUIRE(c.gouges->sites.size() == 1);
+  CHECK(c.gouges->sites[0].status == GougeSiteStatus::confirmed);
+  CHECK(c.gouges->sites[0].deepest == std::optional<std::size_t>(300));
+  CHECK(c.summary.out_of_tolerance == 1);
+  CHECK_FALSE(c.summary.pass);
+  CHECK(c.prediction->points[300].compared);
+  // Blunders the prediction does not explain stay blunders.
+  for (std::size_t i = 0; i < c.registration.points.size(); ++i)
+    if (i != 300)
+      CHECK(c.registration.points[i].outlier == (m.blunder[i] ? OutlierReason::blunder : OutlierReason::none));
+}

@@ -188,3 +188,32 @@ TEST_CASE("DMIS nominals give the coarse start when there is no plan") {
   CHECK(Eigen::AngleAxisd(e.linear()).angle() < 1e-4);
   CHECK(c.median_distance < 0.01);
 }
+
+TEST_CASE("outliers: a deep graded gouge is one large deviation, not blunders point by point") {
+  // A spherical-cap dent 0.5 mm deep: neighbouring points differ by up to
+  // 0.15 mm, far more than the 25 um limit.
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<double> d;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) {
+      pos.emplace_back(2.0 * i, 2.0 * j, 0);
+      const double r = std::hypot(i - 15, j - 15);
+      d.push_back(r < 4 ? -0.5 * (1 - r * r / 16) : 0.0);
+    }
+  d[3 * 30 + 3] = 0.7;    // a blunder far away
+  d[15 * 30 + 16] = -1.6; // a blunder in the dent: 4x its neighbours' excess
+  std::vector<OutlierReason> why(d.size(), OutlierReason::none);
+  classify_deviations(pos, d, std::vector<bool>(d.size(), true), OutlierRule{}, why);
+  int dent = 0;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (k == 3 * 30 + 3 || k == 15 * 30 + 16) continue;
+    if (d[k] < -0.025) {
+      ++dent;
+      CAPTURE(k);
+      CHECK(why[k] == OutlierReason::large_deviation);
+    }
+  }
+  CHECK(dent >= 40);
+  CHECK(why[3 * 30 + 3] == OutlierReason::blunder);
+  CHECK(why[15 * 30 + 16] == OutlierReason::blunder);
+}

@@ -92,6 +92,8 @@ TEST_CASE("bumps: a raised cosine along the normal, summed with the surface offs
   const SimulatedMeasurement m = simulate_measurement(plan, o);
   CHECK(m.true_deviation[17] == doctest::Approx(0.021));
   CHECK(m.true_deviation[0] == doctest::Approx(0.001));
+  // Plan cell centres 10 x 10 mm apart: only the centre point within 5 mm.
+  CHECK(m.bump_points == std::vector<std::size_t>{1});
   o.bumps[0].radius = 0;
   CHECK_THROWS_AS(simulate_measurement(plan, o), InputError);
 }
