@@ -84,6 +84,9 @@ struct Staged {
   const PipelineProgress& progress;
   PipelineResult& result;
   std::vector<InputDigest> inputs;
+  // How the generated files name the part: relative to the output folder,
+  // as the commands run inside that folder would.
+  std::string part_name;
 
   void add(const std::string& path, std::string bytes) { result.files.push_back({path, std::move(bytes)}); }
   // A generated file that a later stage reads: recorded with its digest.
@@ -103,10 +106,11 @@ Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
   const ContactPlan plan = plan_contact_points(part, cutter, g.direction, g.contacts, [&](std::size_t d, std::size_t t) {
     s.note("toolpath", d, t);
   });
-  const std::string header = "furrow run " + job.name + ": direction " + to_string(g.direction) + ", " +
-                             to_string(g.contacts.forward.rule) + " steps, tolerance " +
-                             line("%g", g.contacts.forward.tolerance) + " mm, scallop " +
-                             line("%g", g.contacts.scallop) + " mm";
+  // The header `furrow toolpath` writes, so the G-code is the command's.
+  const std::string header = line("furrow toolpath %s: direction %s, %s steps, tolerance %g mm, scallop %g mm",
+                                  std::filesystem::path(job.part).filename().c_str(), to_string(g.direction).c_str(),
+                                  to_string(g.contacts.forward.rule), g.contacts.forward.tolerance,
+                                  g.contacts.scallop);
   std::string gcode = plan_gcode(plan, cutter, header, g.write);
   s.add("toolpath.csv", plan_contact_csv(part, plan));
   s.result.summary.push_back(line("tool path: %zu passes, %zu contact points (generated)", plan.passes.size(),
@@ -123,8 +127,9 @@ Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, cons
                                                [&](const std::string& stage, std::size_t d, std::size_t t) {
                                                  s.note("predict: " + stage, d, t);
                                                });
-  Prediction record = make_prediction(part, cutter, computed, job.prediction, job.part,
-                                      job.toolpath_file.value_or("toolpath.nc"));
+  Prediction record = make_prediction(part, cutter, computed, job.prediction, s.part_name,
+                                      job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file)
+                                                        : "toolpath.nc");
   record.has_regions = true;
   record.regions_file = "regions.json";
   record.regions = errors_by_region(part, computed.map, map.regions.size(),
@@ -146,7 +151,7 @@ Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, cons
 InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, const Prediction& prediction) {
   const Job& job = s.job;
   PlannerOptions o = job.plan;
-  o.part_name = job.part;
+  o.part_name = s.part_name;
   std::optional<PredictionRiskMap> risk;
   if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json");
   const PlanResult r = plan_probe_points(part, map, o, risk ? &*risk : nullptr,
@@ -161,7 +166,7 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   s.add("plan/plan.csv", plan_to_csv_text(r.plan));
   s.add("plan/" + name + ".dmi", dmis_program_text(program));
   s.add("plan/" + name + ".prg", ippdme_program_text(program));
-  s.add("plan/report.json", plan_report_json(r, o, job.part, "regions.json",
+  s.add("plan/report.json", plan_report_json(r, o, s.part_name, "regions.json",
                                              job.plan_with_prediction ? "prediction.json" : ""));
   s.add("plan/plan.png", as_text(plan_image_png(part, map, r)));
   s.result.summary.push_back(line("plan: %zu points in %zu regions%s, cycle about %.1f min", r.plan.points.size(),
@@ -204,7 +209,7 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
   summarize(c);
   if (job.compare_with_prediction) verify_prediction(c, part, set.probe_radius, prediction, options);
   ComparisonSources sources;
-  sources.part = relative_to_folder(job.output, job.part);
+  sources.part = s.part_name;
   sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, *job.measurements_file);
   sources.plan = "plan/plan.json";
   sources.regions = "regions.json";
@@ -221,7 +226,7 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
 PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   PipelineResult result;
   StageClock clock(result.stages);
-  Staged s{job, progress, result, {}};
+  Staged s{job, progress, result, {}, relative_to_folder(job.output, job.part)};
 
   s.note("reading inputs");
   if (!job.file.empty()) {
