@@ -87,10 +87,4 @@ Job read_job(const std::string& path);
 // in the text start.
 Job parse_job(const std::string& text, const std::string& name, const std::string& folder);
 
-// Every option of the job with the library defaults filled in, as a JSON
-// object in the job file's member names (null: a default the stage derives
-// from the data, e.g. the partition's grid per face) - recorded in the
-// report for traceability.
-std::string job_options_json(const Job& job);
-
 }  // namespace furrow

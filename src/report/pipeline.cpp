@@ -26,6 +26,7 @@
 #include "planning/plan_image.hpp"
 #include "planning/plan_report.hpp"
 #include "planning/prediction_risk.hpp"
+#include "report/job_options.hpp"
 
 namespace furrow {
 

@@ -4,6 +4,7 @@
 
 #include "geometry/error.hpp"
 #include "report/job.hpp"
+#include "report/job_options.hpp"
 
 using namespace furrow;
 
