@@ -253,7 +253,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   clock.done("partition");
 
   const Toolpath path = toolpath_stage(s, part, cutter);
-  if (job.generate) clock.done("toolpath");
+  clock.done(job.generate ? "toolpath" : "read toolpath");
   const Prediction prediction = predict_stage(s, part, cutter, path, map);
   clock.done("predict");
   const InspectionPlan plan = plan_stage(s, part, map, prediction);
