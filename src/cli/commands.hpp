@@ -30,5 +30,8 @@ extern const Command kPredictCommand;
 extern const Command kPlanCommand;
 extern const Command kSimulateMeasurementCommand;
 extern const Command kCompareCommand;
+extern const Command kReportCommand;
+extern const Command kRunCommand;
+extern const Command kDemoCommand;
 
 }  // namespace furrow::cli

@@ -25,6 +25,9 @@ const Command* const kCommands[] = {
     &furrow::cli::kPlanCommand,
     &furrow::cli::kSimulateMeasurementCommand,
     &furrow::cli::kCompareCommand,
+    &furrow::cli::kReportCommand,
+    &furrow::cli::kRunCommand,
+    &furrow::cli::kDemoCommand,
 };
 
 const Command* find_command(const std::string& name) {

@@ -17,15 +17,18 @@ void TerminalProgress::update(const std::string& stage, std::size_t done, std::s
   if (!new_stage && done < total && now - last_ < std::chrono::milliseconds(100)) return;
   last_ = now;
   stage_ = stage;
-  const double percent = total > 0 ? 100.0 * double(done) / double(total) : 100.0;
-  std::fprintf(stderr, "\r%-24s %5.1f%%   ", stage.c_str(), percent);
+  // A stage that cannot count its work (total 0) shows its name only.
+  if (total > 0)
+    std::fprintf(stderr, "\r%-40s %5.1f%%   ", stage.c_str(), 100.0 * double(done) / double(total));
+  else
+    std::fprintf(stderr, "\r%-48s   ", stage.c_str());
   std::fflush(stderr);
   open_ = true;
 }
 
 void TerminalProgress::finish() {
   if (!open_) return;
-  std::fprintf(stderr, "\r%60s\r", "");
+  std::fprintf(stderr, "\r%72s\r", "");
   std::fflush(stderr);
   open_ = false;
 }

@@ -45,4 +45,17 @@ Rgb status_colour(const char* status) {
   return {70, 70, 70};
 }
 
+Rgb curvature_class_colour(const char* curvature_class) {
+  struct Entry {
+    const char* name;
+    Rgb colour;
+  };
+  static const Entry kEntries[] = {
+      {"planar", {232, 214, 170}}, {"convex", {238, 130, 72}}, {"concave", {86, 160, 207}}, {"saddle", {112, 186, 110}},
+  };
+  for (const Entry& e : kEntries)
+    if (std::strcmp(e.name, curvature_class) == 0) return e.colour;
+  return {215, 215, 215};
+}
+
 }  // namespace furrow

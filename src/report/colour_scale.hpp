@@ -28,4 +28,9 @@ struct DeviationScale {
 // purple, "PASS" green, "FAIL" red; anything else dark grey.
 Rgb status_colour(const char* status);
 
+// Colour of a curvature class by name, the same as the partition's figures
+// (regions.png, plan.png): "convex" orange, "concave" blue, "saddle" green,
+// "planar" sand; anything else light grey (outside every region).
+Rgb curvature_class_colour(const char* curvature_class);
+
 }  // namespace furrow

@@ -49,4 +49,27 @@ std::string embedded_png(const std::vector<unsigned char>& png, const std::strin
   return tag;
 }
 
+std::string table(const std::vector<std::string>& header, const std::vector<TableRow>& rows,
+                  const std::string& css_class) {
+  std::string out = css_class.empty() ? "<table>" : "<table class=\"" + escape(css_class) + "\">";
+  if (!header.empty()) {
+    out += "<thead><tr>";
+    for (const std::string& h : header) out += "<th>" + escape(h) + "</th>";
+    out += "</tr></thead>";
+  }
+  out += "<tbody>\n";
+  for (const TableRow& row : rows) {
+    out += row.css_class.empty() ? "<tr>" : "<tr class=\"" + escape(row.css_class) + "\">";
+    for (const std::string& c : row.cells) out += "<td>" + c + "</td>";
+    out += "</tr>\n";
+  }
+  return out + "</tbody></table>\n";
+}
+
+std::string key_value_table(const std::vector<std::pair<std::string, std::string>>& rows) {
+  std::string out = "<table class=\"kv\"><tbody>\n";
+  for (const auto& [key, value] : rows) out += "<tr><th>" + escape(key) + "</th><td>" + value + "</td></tr>\n";
+  return out + "</tbody></table>\n";
+}
+
 }  // namespace furrow::html

@@ -1,0 +1,60 @@
+// furrow report comparison.json --out reports/NAME: the QA report folder
+// (report.html, report.json, points.csv, figures) of a comparison.
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.hpp"
+#include "io/atomic_file.hpp"
+#include "report/report_sources.hpp"
+#include "report/verdict.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+int run_report(Args& args) {
+  const std::string out = args.required_option("out");
+  const auto title = args.option("title");
+  const std::string comparison_path = args.positional("COMPARISON (a comparison.json of furrow compare)");
+  args.finish();
+
+  const ReportSources sources = read_report_sources(comparison_path);
+  check_inputs_outside(out, sources.inputs);
+  ReportContext context;
+  context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
+  if (context.title.empty() || context.title == ".") context.title = "comparison";
+  context.generated = utc_timestamp();
+  context.inputs = sources.inputs;
+  const std::vector<FolderFile> files =
+      make_report(sources.doc, sources.part, sources.regions ? &*sources.regions : nullptr, context);
+  write_folder_atomically(out, [&](const std::string& staging) { write_folder_files(staging, files); });
+
+  const ReportVerdict v = report_verdict(sources.doc);
+  std::printf("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance", v.result(),
+              v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
+  if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
+  std::printf(")\nwrote %s/report.html (and report.json, points.csv, %zu figures)\n", out.c_str(), files.size() - 3);
+  return v.pass ? kExitOk : kExitFail;
+}
+
+}  // namespace
+
+const Command kReportCommand = {
+    "report", "QA report of a comparison: self-contained HTML, JSON, CSV, figures",
+    "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT]\n"
+    "\n"
+    "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
+    "as a whole: report.html (self-contained, opens offline), report.json (every\n"
+    "number; docs/report.schema.json), points.csv (one row per measured point)\n"
+    "and the figures as PNG files (region map, deviation maps, histogram,\n"
+    "predicted vs measured, gouge sites). The report opens with the verdict and\n"
+    "names every input file with its SHA-256 (docs/report.md).\n"
+    "The part, plan, regions and prediction the comparison names are looked up\n"
+    "relative to the current directory, then next to COMPARISON.\n"
+    "Exit status 0 when the comparison passed, 1 when it failed.\n"
+    "\n"
+    "  --out FOLDER   report folder to write (required)\n"
+    "  --title TEXT   heading (default: the folder's name)\n",
+    run_report};
+
+}  // namespace furrow::cli

@@ -1,0 +1,43 @@
+// furrow run job.json: partition -> predict -> plan -> compare -> report in
+// one go, from a job file (docs/formats.md "Job file").
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/job_output.hpp"
+#include "report/pipeline.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+int run_run(Args& args) {
+  const auto out = args.option("out");
+  const std::string job_path = args.positional("JOB (a job.json file)");
+  args.finish();
+  Job job = read_job(job_path);
+  if (out) job.output = *out;
+  return run_and_report(job, std::cout);
+}
+
+}  // namespace
+
+const Command kRunCommand = {
+    "run", "a whole inspection job from a job file: partition to QA report",
+    "usage: furrow run JOB.json [--out FOLDER]\n"
+    "\n"
+    "Runs the job file's stages with the options it gives (docs/formats.md\n"
+    "\"Job file\"; paths in it are relative to the job file): partition, tool\n"
+    "path (a file, or generated), machining prediction, probe plan, then -\n"
+    "when the job names measurements (a file, or a simulation) - registration,\n"
+    "comparison with the prediction, gouge confirmation and the QA report.\n"
+    "Without measurements it stops after the plan. Everything is written into\n"
+    "the job's output folder, replaced as a whole (docs/report.md).\n"
+    "\n"
+    "  --out FOLDER   output folder instead of the job's (relative to the\n"
+    "                 current directory)\n"
+    "\n"
+    "Exit status: 0 pass (or plan only), 1 fail (out of tolerance or a\n"
+    "confirmed gouge), 2 bad input, 3 internal error.\n",
+    run_run};
+
+}  // namespace furrow::cli

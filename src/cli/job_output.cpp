@@ -1,0 +1,34 @@
+#include "cli/job_output.hpp"
+
+#include <cstdio>
+
+#include "cli/commands.hpp"
+#include "cli/terminal_progress.hpp"
+#include "report/pipeline.hpp"
+
+namespace furrow::cli {
+
+int run_and_report(const Job& job, std::ostream& out) {
+  TerminalProgress progress;
+  const PipelineResult result = run_job(job, [&](const std::string& stage, std::size_t done, std::size_t total) {
+    progress.update(stage, done, total);
+  });
+  progress.finish();
+  write_job_output(job, result);
+  for (const std::string& line : result.summary) out << line << "\n";
+  out << "stage times:";
+  char buf[64];
+  for (const StageTime& t : result.stages) {
+    std::snprintf(buf, sizeof buf, " %s %.2f s;", t.stage.c_str(), t.seconds);
+    out << buf;
+  }
+  std::snprintf(buf, sizeof buf, " total %.2f s\n", result.total_seconds);
+  out << buf;
+  if (result.measured)
+    out << "report: " << job.output << "/report.html\n";
+  else
+    out << "plan: " << job.output << "/plan/ (no measurements, no report)\n";
+  return !result.measured || result.pass ? kExitOk : kExitFail;
+}
+
+}  // namespace furrow::cli

@@ -1,0 +1,99 @@
+#include "report/qa_report.hpp"
+
+#include <ctime>
+#include <filesystem>
+
+#include "geometry/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json_fields.hpp"
+#include "report/file_digest.hpp"
+#include "report/points_csv.hpp"
+#include "report/report_figures.hpp"
+#include "report/report_html.hpp"
+#include "report/report_json.hpp"
+#include "report/verdict.hpp"
+
+namespace furrow {
+
+void check_comparison_faces(const ComparisonDocument& doc, const Part& part) {
+  auto check = [&](int index, const std::string& name, const std::string& what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= part.faces.size() ||
+        part.faces[static_cast<std::size_t>(index)].name() != name)
+      throw InputError("comparison of another part: " + what + " lies on face " + std::to_string(index) + " \"" +
+                       name + "\", which part " + doc.sources.part + " does not have");
+  };
+  for (const auto& p : doc.points) check(p.face_index, p.face, "point " + p.id);
+  if (doc.gouges) {
+    for (const GougeSiteCheck& s : doc.gouges->sites) check(s.face_index, s.face, "gouge site " + s.id);
+    for (const OvercutCluster& c : doc.gouges->unexplained) check(c.face_index, c.face, "overcut " + c.id);
+  }
+}
+
+InputDigest digest_file(const std::string& role, const std::string& path) {
+  InputDigest d;
+  d.role = role;
+  d.path = path;
+  const std::string bytes = json_fields::read_text(path);
+  d.sha256 = sha256_hex(bytes);
+  d.bytes = bytes.size();
+  return d;
+}
+
+InputDigest digest_generated(const std::string& role, const std::string& path, const std::string& bytes) {
+  InputDigest d;
+  d.role = role;
+  d.path = path;
+  d.sha256 = sha256_hex(bytes);
+  d.bytes = bytes.size();
+  d.generated = true;
+  return d;
+}
+
+std::string utc_timestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buf;
+}
+
+std::vector<FolderFile> make_report(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
+                                    const ReportContext& context) {
+  check_comparison_faces(doc, part);
+  return render_report(doc, regions, make_report_figures(doc, part, regions), context);
+}
+
+std::vector<FolderFile> render_report(const ComparisonDocument& doc, const RegionMap* regions,
+                                      const std::vector<ReportFigure>& figures, const ReportContext& context) {
+  const ReportVerdict verdict = report_verdict(doc);
+  std::vector<FolderFile> files;
+  files.push_back({"report.html", report_html(doc, verdict, regions, context, figures)});
+  files.push_back({"report.json", report_json_text(doc, verdict, regions, context, figures)});
+  files.push_back({"points.csv", points_csv_text(doc)});
+  for (const ReportFigure& f : figures) files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
+  return files;
+}
+
+void check_inputs_outside(const std::string& folder, const std::vector<InputDigest>& inputs) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path out = fs::weakly_canonical(folder, ec);
+  if (ec) return;  // nothing there yet that could hold an input
+  for (const InputDigest& in : inputs) {
+    if (in.generated) continue;
+    const fs::path p = fs::weakly_canonical(in.path, ec);
+    if (ec) continue;
+    const fs::path rel = p.lexically_relative(out);
+    if (!rel.empty() && *rel.begin() != ".." && rel.is_relative())
+      throw InputError("output folder " + folder + " holds the input " + in.path + " (" + in.role +
+                       "): it would be deleted when the folder is replaced; choose another folder");
+  }
+}
+
+void write_folder_files(const std::string& folder, const std::vector<FolderFile>& files) {
+  for (const FolderFile& f : files)
+    write_file_atomically((std::filesystem::path(folder) / f.path).string(), f.bytes);
+}
+
+}  // namespace furrow

@@ -1,0 +1,121 @@
+#include "report/report_figures.hpp"
+
+#include <cmath>
+
+#include "report/figures.hpp"
+#include "report/part_outlines.hpp"
+#include "report/region_map_figure.hpp"
+
+namespace furrow {
+
+namespace {
+
+MapPoint map_point(const ComparisonDocument::Point& p, const Eigen::Vector2d& position) {
+  MapPoint m;
+  m.position = position;
+  m.value = p.evaluated ? p.deviation : std::nan("");
+  m.flagged = !p.evaluated || !p.in_tolerance.value_or(true);
+  return m;
+}
+
+ToleranceLimits limits(const ComparisonDocument& doc) {
+  return {doc.options.tolerance.lower(), doc.options.tolerance.upper()};
+}
+
+void add_deviation_maps(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
+                        std::vector<ReportFigure>& out) {
+  const ToleranceLimits tol = limits(doc);
+  std::vector<MapPoint> top;
+  for (const auto& p : doc.points) top.push_back(map_point(p, Eigen::Vector2d(p.foot.x(), p.foot.y())));
+  std::vector<Outline> outlines = face_outlines_xy(part);
+  if (regions)
+    for (Outline& o : region_borders_xy(*regions)) outlines.push_back(std::move(o));
+  out.push_back({"figures/deviation_top.png", "deviations",
+                 "Deviation map, top view",
+                 "Signed deviation at every measured point (foot point on the nominal surface, seen from "
+                 "above): red = material left, blue = overcut; grey = not evaluated (outlier); a black "
+                 "ring marks a point outside the profile zone or not evaluated.",
+                 deviation_map_png("Deviation [um], top view", top, outlines, tol, "x [mm]", "y [mm]", true)});
+
+  for (std::size_t f = 0; f < part.faces.size(); ++f) {
+    std::vector<MapPoint> pts;
+    for (const auto& p : doc.points)
+      if (p.face_index == static_cast<int>(f)) pts.push_back(map_point(p, p.uv));
+    if (pts.empty()) continue;
+    const Face& face = part.faces[f];
+    std::vector<Outline> uv = face_outlines_uv(face);
+    if (regions)
+      for (Outline& o : region_borders_uv(*regions, static_cast<int>(f))) uv.push_back(std::move(o));
+    out.push_back({"figures/deviation_uv_" + std::to_string(f) + ".png", "deviations",
+                   "Deviation map on face \"" + face.name() + "\" (u, v)",
+                   "The same deviations on the face's parameter domain, with its boundary" +
+                       std::string(regions ? " and the region borders." : "."),
+                   deviation_map_png("Deviation [um] on " + face.name() + " (u, v)", pts, uv, tol, "u", "v", false)});
+  }
+
+  std::vector<double> evaluated;
+  for (const auto& p : doc.points)
+    if (p.evaluated) evaluated.push_back(p.deviation);
+  out.push_back({"figures/histogram.png", "deviations", "Histogram of deviations",
+                 "Evaluated points only; the vertical lines are the limits of the profile zone.",
+                 histogram_png("Deviations of " + std::to_string(evaluated.size()) + " evaluated points", evaluated,
+                               tol)});
+}
+
+void add_prediction_figures(const ComparisonDocument& doc, const Part& part, std::vector<ReportFigure>& out) {
+  std::vector<double> predicted, measured, sigma;
+  for (const auto& p : doc.points)
+    if (p.prediction && p.prediction->compared) {
+      predicted.push_back(p.prediction->predicted);
+      measured.push_back(p.prediction->measured);
+      sigma.push_back(p.prediction->sigma);
+    }
+  out.push_back({"figures/predicted_vs_measured.png", "prediction", "Predicted vs measured",
+                 "Each compared point's predicted machining error (x) against its measured deviation after "
+                 "the prediction alignment (y), with 1-sigma bars of the combined uncertainty; a perfect "
+                 "prediction lies on the diagonal.",
+                 scatter_png("Predicted vs measured error [um]", predicted, measured, sigma)});
+
+  if (!doc.gouges) return;
+  std::vector<StatusItem> items;
+  for (const GougeSiteCheck& site : doc.gouges->sites) {
+    StatusItem it;
+    it.position = site.centroid.head<2>();
+    if (site.face_index >= 0 && static_cast<std::size_t>(site.face_index) < part.faces.size())
+      it.outline = uv_box_outline_xy(part.faces[static_cast<std::size_t>(site.face_index)], site.uv_box);
+    it.label = site.id;
+    it.status = to_string(site.status);
+    items.push_back(std::move(it));
+  }
+  for (const OvercutCluster& c : doc.gouges->unexplained) {
+    StatusItem it;
+    it.position = c.xyz.head<2>();
+    it.label = c.id;
+    it.status = "UNEXPLAINED";
+    items.push_back(std::move(it));
+  }
+  std::vector<Eigen::Vector2d> background;
+  for (const auto& p : doc.points) background.emplace_back(p.foot.x(), p.foot.y());
+  out.push_back({"figures/gouge_sites.png", "gouges", "Gouge sites",
+                 "Predicted gouge sites (their extent on the surface, from above) coloured by status, "
+                 "unexplained overcuts (measured, not predicted) in purple; grey dots are the measured points.",
+                 status_map_png("Gouge sites and unexplained overcuts, top view", items, face_outlines_xy(part),
+                                background, "x [mm]", "y [mm]")});
+}
+
+}  // namespace
+
+std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
+                                              const RegionMap* regions) {
+  std::vector<ReportFigure> out;
+  if (regions)
+    out.push_back({"figures/region_map.png", "regions", "Curvature regions",
+                   "The partition the plan and the statistics per region use, seen from above: convex orange, "
+                   "concave blue, saddle green, planar sand.",
+                   region_map_png("Curvature regions, top view", part, *regions)});
+  add_deviation_maps(doc, part, regions, out);
+  if (doc.prediction) add_prediction_figures(doc, part, out);
+  return out;
+}
+
+}  // namespace furrow

@@ -1,0 +1,386 @@
+#include "report/report_html.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "report/html.hpp"
+
+namespace furrow {
+
+namespace {
+
+using html::escape;
+using html::TableRow;
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find_first_not_of("-0.") == std::string::npos) s = s.substr(s[0] == '-' ? 1 : 0);  // no "-0.0"
+  return s;
+}
+// Micrometres with one decimal and a sign, e.g. "-118.4".
+std::string um(double mm) {
+  const std::string s = fixed(mm * 1000, 1);
+  return (mm > 0 && s != "0.0" ? "+" : "") + s;
+}
+std::string um_or_dash(const std::optional<double>& mm) { return mm ? um(*mm) : "&ndash;"; }
+std::string count(std::size_t n) { return std::to_string(n); }
+
+const char* kStyle = R"(
+body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;color:#222;margin:0 auto;max-width:1120px;padding:16px 24px;line-height:1.4}
+h1{font-size:1.6em;margin:0.2em 0}h2{font-size:1.25em;border-bottom:2px solid #ccc;padding-bottom:3px;margin-top:1.6em}
+h3{font-size:1.05em;margin-bottom:0.3em}.meta{color:#555;margin:0}
+.verdict{display:flex;gap:24px;align-items:center;border-radius:8px;padding:18px 24px;margin:16px 0;color:#fff}
+.verdict.pass{background:#28963c}.verdict.fail{background:#c81e1e}
+.verdict .result{font-size:3.2em;font-weight:bold;letter-spacing:0.05em;min-width:3.6em;text-align:center}
+.verdict .facts p{margin:0.25em 0;font-size:1.05em}.verdict ul{margin:0.4em 0 0 1.2em;padding:0}
+nav{font-size:0.95em;color:#555}nav a{margin-right:1em}
+table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
+th,td{border:1px solid #ccc;padding:3px 8px;text-align:right;vertical-align:top}
+th{background:#f0f0f0}td:first-child,th:first-child{text-align:left}
+table.kv th{text-align:left;font-weight:normal;color:#444}table.kv td{text-align:left}
+table.points{font-size:0.8em}table.points td{white-space:nowrap}table.files td{text-align:left}
+tr.out td{background:#fde2e2}tr.outlier td{color:#888;font-style:italic}
+.status{font-weight:bold;padding:1px 6px;border-radius:3px;color:#fff;white-space:nowrap}
+.CONFIRMED{background:#c81e1e}.NOT_CONFIRMED{background:#28963c}.NOT_MEASURED{background:#8c8c8c}.UNEXPLAINED{background:#8232aa}
+figure{margin:0.8em 0;display:inline-block;max-width:100%}figure img{max-width:100%;height:auto;border:1px solid #ddd}
+figcaption{font-size:0.85em;color:#555;max-width:900px}
+code,pre{font-family:"DejaVu Sans Mono",monospace;font-size:0.85em}pre{background:#f6f6f6;padding:8px;overflow-x:auto}
+.hash{font-family:"DejaVu Sans Mono",monospace;font-size:0.8em;word-break:break-all}
+@media print{.verdict{-webkit-print-color-adjust:exact;print-color-adjust:exact}nav{display:none}}
+)";
+
+// Marks <body data-images-loaded="n/m"> once the page has loaded, for
+// automated checks; nothing on the page depends on it.
+const char* kImageCheck =
+    "<script>window.addEventListener('load',function(){var im=document.images,ok=0;"
+    "for(var i=0;i<im.length;i++){if(im[i].complete&&im[i].naturalWidth>0)ok++;}"
+    "document.body.setAttribute('data-images-loaded',ok+'/'+im.length);});</script>\n";
+
+std::string status_badge(const std::string& status) {
+  std::string cls = status;
+  for (char& c : cls)
+    if (c == ' ') c = '_';
+  return "<span class=\"status " + escape(cls) + "\">" + escape(status) + "</span>";
+}
+
+std::string figures_of(const std::vector<ReportFigure>& figures, const std::string& section) {
+  std::string out;
+  for (const ReportFigure& f : figures) {
+    if (f.section != section) continue;
+    out += "<figure>" + html::embedded_png(f.png, f.title) + "<figcaption><b>" + escape(f.title) + ".</b> " +
+           escape(f.caption) + " (<code>" + escape(f.file) + "</code>)</figcaption></figure>\n";
+  }
+  return out;
+}
+
+std::string verdict_section(const ReportVerdict& v) {
+  std::string out = std::string("<section id=\"verdict\" class=\"verdict ") + (v.pass ? "pass" : "fail") + "\">\n";
+  out += std::string("<div class=\"result\" id=\"verdict-result\">") + v.result() + "</div>\n<div class=\"facts\">\n";
+  out += "<p>Profile <b>" + fixed(v.profile * 1000, 1) + " &micro;m</b> against a tolerance zone of <b>" +
+         fixed(v.zone.width * 1000, 1) + " &micro;m</b> [" + um(v.zone.lower()) + ", " + um(v.zone.upper()) +
+         " &micro;m] (" + escape(v.zone.disposition()) + ")</p>\n";
+  out += "<p>" + count(v.out_of_tolerance) + " of " + count(v.evaluated) +
+         " evaluated points out of tolerance; registration " +
+         (v.registration_converged ? "converged" : "<b>not converged</b>") + "</p>\n";
+  if (v.has_prediction) {
+    out += "<p>Gouges: <b>" + count(v.confirmed) + " of " + count(v.sites) + "</b> predicted sites confirmed, " +
+           count(v.not_confirmed) + " not confirmed, " + count(v.not_measured) + " not measured; " +
+           count(v.unexplained) + " unexplained overcuts</p>\n";
+    if (v.prediction_verdict) out += "<p>Machining prediction: " + escape(*v.prediction_verdict) + "</p>\n";
+  } else {
+    out += "<p>No machining prediction: gouges were not checked</p>\n";
+  }
+  if (!v.reasons.empty()) {
+    out += "<ul class=\"reasons\">";
+    for (const std::string& r : v.reasons) out += "<li>" + escape(r) + "</li>";
+    out += "</ul>\n";
+  }
+  return out + "</div>\n</section>\n";
+}
+
+std::string alignment_section(const ComparisonDocument& doc) {
+  const ComparisonDocument::Registration& r = doc.registration;
+  std::string out = "<section id=\"alignment\"><h2>Alignment</h2>\n";
+  std::vector<TableRow> rows;
+  for (int i = 0; i < 4; ++i) {
+    TableRow row;
+    for (int j = 0; j < 4; ++j) row.cells.push_back(fixed(r.transform(i, j), j < 3 && i < 3 ? 8 : 4));
+    rows.push_back(row);
+  }
+  out += "<h3>Transform CMM &rarr; part (row-major, mm)</h3>\n" + html::table({}, rows, "matrix");
+  std::string outliers;
+  for (const auto& [reason, n] : r.outliers)
+    if (n > 0) outliers += (outliers.empty() ? "" : ", ") + count(n) + " " + escape(reason);
+  std::vector<std::pair<std::string, std::string>> kv = {
+      {"Part on the CMM (x_cmm = Rz Ry Rx x_part + t)",
+       "rotation " + fixed(r.placement_rotation_deg.x(), 4) + ", " + fixed(r.placement_rotation_deg.y(), 4) + ", " +
+           fixed(r.placement_rotation_deg.z(), 4) + " &deg;; translation " + fixed(r.placement_translation.x(), 4) +
+           ", " + fixed(r.placement_translation.y(), 4) + ", " + fixed(r.placement_translation.z(), 4) + " mm"},
+      {"Coarse start", escape(r.coarse_method) + " (" + count(static_cast<std::size_t>(r.coarse_matched_ids)) +
+                           " ids matched" + (r.coarse_ambiguous ? ", ambiguous: another orientation fits as well" : "") +
+                           ")"},
+      {"RMS before / after", fixed(r.rms_before * 1000, 2) + " / " + fixed(r.rms_after * 1000, 2) + " &micro;m"},
+      {"Residual sigma", fixed(r.sigma * 1000, 2) + " &micro;m"},
+      {"Iterations", count(static_cast<std::size_t>(r.outer_iterations)) + " outer, " +
+                         count(static_cast<std::size_t>(r.solver_iterations)) + " solver, " +
+                         count(static_cast<std::size_t>(r.outlier_passes)) + " outlier passes"},
+      {"Status", escape(r.status) + (r.converged ? "" : " <b>(not converged)</b>")},
+      {"Points", count(doc.summary.points) + " measured, " + count(doc.summary.in_fit) + " in the fit, " +
+                     count(doc.summary.evaluated) + " evaluated"},
+      {"Outliers", outliers.empty() ? "none" : outliers},
+  };
+  if (r.covariance) {
+    const auto& c = *r.covariance;
+    const double deg = 180 / M_PI;
+    kv.push_back({"Transform 1-sigma",
+                  "rx " + fixed(std::sqrt(c(0, 0)) * deg * 3600, 2) + "&Prime;, ry " +
+                      fixed(std::sqrt(c(1, 1)) * deg * 3600, 2) + "&Prime;, rz " +
+                      fixed(std::sqrt(c(2, 2)) * deg * 3600, 2) + "&Prime;; tx " + fixed(std::sqrt(c(3, 3)) * 1000, 2) +
+                      ", ty " + fixed(std::sqrt(c(4, 4)) * 1000, 2) + ", tz " + fixed(std::sqrt(c(5, 5)) * 1000, 2) +
+                      " &micro;m"});
+    double worst = 0;
+    for (const auto& p : doc.points) worst = std::max(worst, p.uncertainty.value_or(0));
+    kv.push_back({"Largest deviation uncertainty from the alignment", fixed(worst * 1000, 2) + " &micro;m (1 sigma)"});
+  } else {
+    kv.push_back({"Covariance", escape(r.covariance_status)});
+  }
+  return out + html::key_value_table(kv) + "</section>\n";
+}
+
+std::string deviations_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
+  const ComparisonSummary& s = doc.summary;
+  std::string out = "<section id=\"deviations\"><h2>Deviations</h2>\n";
+  out += html::key_value_table({
+      {"Evaluated points", count(s.evaluated) + " (" + count(s.in_tolerance) + " in, " + count(s.out_of_tolerance) +
+                               " out of tolerance)"},
+      {"Mean / sigma", um(s.deviations.mean) + " / " + fixed(s.deviations.sigma * 1000, 1) + " &micro;m"},
+      {"Min / max", um(s.deviations.min) + " / " + um(s.deviations.max) + " &micro;m"},
+      {"Profile (2 max |d|)", fixed(s.profile * 1000, 1) + " &micro;m"},
+  });
+  return out + figures_of(figures, "deviations") + "</section>\n";
+}
+
+std::string regions_section(const ComparisonDocument& doc, const RegionMap* regions,
+                            const std::vector<ReportFigure>& figures) {
+  std::string out = "<section id=\"regions\"><h2>Regions</h2>\n";
+  if (doc.summary.regions.empty()) return out + "<p>The points carry no region ids.</p></section>\n";
+  std::vector<TableRow> rows;
+  for (const RegionStatistics& r : doc.summary.regions) {
+    const Region* known = regions && r.region >= 0 && static_cast<std::size_t>(r.region) < regions->regions.size()
+                              ? &regions->regions[static_cast<std::size_t>(r.region)]
+                              : nullptr;
+    TableRow row;
+    row.cells = {"R" + std::to_string(r.region),
+                 known ? escape(regions->faces[static_cast<std::size_t>(known->face)].name) : "&ndash;",
+                 known ? to_string(known->curvature_class) : "&ndash;",
+                 known ? fixed(known->area, 1) : "&ndash;",
+                 count(r.deviations.count),
+                 um(r.deviations.mean),
+                 fixed(r.deviations.sigma * 1000, 1),
+                 um(r.deviations.min),
+                 um(r.deviations.max),
+                 count(r.out_of_tolerance)};
+    std::string residual = "&ndash;", verdict = "&ndash;";
+    if (doc.prediction)
+      for (const RegionResidualStatistics& p : doc.prediction->regions)
+        if (p.region == r.region) {
+          residual = fixed(p.statistics.rms * 1000, 1);
+          verdict = escape(to_string(p.statistics.verdict));
+        }
+    row.cells.push_back(residual);
+    row.cells.push_back(verdict);
+    if (r.out_of_tolerance > 0) row.css_class = "out";
+    rows.push_back(row);
+  }
+  out += html::table({"Region", "Face", "Class", "Area [mm2]", "Points", "Mean [um]", "Sigma [um]", "Min [um]",
+                      "Max [um]", "Out", "Residual RMS [um]", "Prediction"},
+                     rows);
+  return out + figures_of(figures, "regions") + "</section>\n";
+}
+
+std::string prediction_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
+  std::string out = "<section id=\"prediction\"><h2>Predicted vs measured</h2>\n";
+  if (!doc.prediction) return out + "<p>No machining prediction was given.</p></section>\n";
+  const PredictionComparison& p = *doc.prediction;
+  const ResidualStatistics& o = p.overall;
+  const UncomparedCounts& u = p.uncompared;
+  out += html::key_value_table({
+      {"Verdict", "<b>" + escape(to_string(o.verdict)) + "</b>"},
+      {"Compared points", count(o.count) + " (not compared: " + count(u.not_reached) + " not reached, " +
+                              count(u.outside) + " outside, " + count(u.not_machinable) + " not machinable, " +
+                              count(u.face_not_predicted) + " on faces without prediction)"},
+      {"Mean predicted / measured", um(o.mean_predicted) + " / " + um(o.mean_measured) + " &micro;m"},
+      {"Residual mean / sigma / RMS / max |r|", um(o.mean) + " / " + fixed(o.sigma * 1000, 1) + " / " +
+                                                   fixed(o.rms * 1000, 1) + " / " + fixed(o.max_abs * 1000, 1) +
+                                                   " &micro;m"},
+      {"Correlation", o.correlation ? fixed(*o.correlation, 3) : "&ndash;"},
+      {"Normalised RMS, share within", fixed(o.normalised_rms, 2) + ", " + fixed(100 * o.within_share, 1) + " %"},
+      {"Alignment to the predicted surface", escape(p.alignment.status) + " (" + count(p.alignment.points) +
+                                                 " points, RMS " + fixed(p.alignment.rms_before * 1000, 2) +
+                                                 " &rarr; " + fixed(p.alignment.rms_after * 1000, 2) + " &micro;m)"},
+  });
+  return out + figures_of(figures, "prediction") + "</section>\n";
+}
+
+std::string gouges_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
+  std::string out = "<section id=\"gouges\"><h2>Gouges</h2>\n";
+  if (!doc.gouges) return out + "<p>No machining prediction was given: no gouge sites to check.</p></section>\n";
+  const GougeConfirmation& g = *doc.gouges;
+  if (g.sites.empty()) {
+    out += "<p>The prediction has no gouge sites.</p>\n";
+  } else {
+    std::vector<TableRow> rows;
+    for (const GougeSiteCheck& s : g.sites) {
+      rows.push_back({{escape(s.id), escape(to_string(s.source)), escape(s.face), status_badge(to_string(s.status)),
+                       um_or_dash(s.predicted_depth ? std::optional<double>(-*s.predicted_depth) : std::nullopt),
+                       um_or_dash(s.measured_depth ? std::optional<double>(-*s.measured_depth) : std::nullopt),
+                       s.uncertainty ? fixed(*s.uncertainty * 1000, 1) : "&ndash;",
+                       s.threshold ? fixed(*s.threshold * 1000, 1) : "&ndash;", count(s.points.size()),
+                       s.deepest ? escape(doc.points.at(*s.deepest).id) : "&ndash;",
+                       s.depth_consistent ? (*s.depth_consistent ? "yes" : "no") : "&ndash;"},
+                      ""});
+    }
+    out += html::table({"Site", "Source", "Face", "Status", "Predicted error [um]", "Measured deviation [um]", "1-sigma [um]",
+                        "Threshold [um]", "Points", "Deepest", "Depth consistent"},
+                       rows);
+  }
+  if (g.unexplained.empty()) {
+    out += "<p>No unexplained overcuts.</p>\n";
+  } else {
+    std::vector<TableRow> rows;
+    for (const OvercutCluster& c : g.unexplained)
+      rows.push_back({{escape(c.id), status_badge("UNEXPLAINED"), escape(c.face),
+                       fixed(c.xyz.x(), 2) + ", " + fixed(c.xyz.y(), 2) + ", " + fixed(c.xyz.z(), 2), um(-c.depth),
+                       fixed(c.uncertainty * 1000, 1), fixed(c.threshold * 1000, 1), count(c.points.size()),
+                       escape(doc.points.at(c.deepest).id)},
+                      ""});
+    out += "<h3>Unexplained overcuts (measured, not predicted)</h3>\n" +
+           html::table({"Cluster", "Status", "Face", "Deepest at x, y, z [mm]", "Deviation [um]", "1-sigma [um]",
+                        "Threshold [um]", "Points", "Deepest"},
+                       rows);
+  }
+  return out + figures_of(figures, "gouges") + "</section>\n";
+}
+
+std::string points_section(const ComparisonDocument& doc) {
+  std::vector<TableRow> rows;
+  for (std::size_t i = 0; i < doc.points.size(); ++i) {
+    const auto& p = doc.points[i];
+    std::string status = !p.evaluated ? "not evaluated" : p.in_tolerance.value_or(false) ? "in" : "OUT";
+    if (!p.outlier.empty()) status += " (" + p.outlier + ")";
+    const bool reached = p.prediction && p.prediction->reached();
+    TableRow row{{count(i + 1), escape(p.id), escape(p.face), fixed(p.uv.x(), 4), fixed(p.uv.y(), 4),
+                  fixed(p.foot.x(), 3), fixed(p.foot.y(), 3), fixed(p.foot.z(), 3), um(p.deviation),
+                  p.uncertainty ? fixed(*p.uncertainty * 1000, 2) : "&ndash;", escape(status),
+                  p.region ? "R" + std::to_string(*p.region) : "&ndash;",
+                  reached ? um(p.prediction->predicted) : "&ndash;", reached ? um(p.prediction->residual) : "&ndash;"},
+                 ""};
+    if (!p.evaluated)
+      row.css_class = "outlier";
+    else if (!p.in_tolerance.value_or(true))
+      row.css_class = "out";
+    rows.push_back(std::move(row));
+  }
+  return "<section id=\"points\"><h2>Points</h2>\n<p>Every measured point in measurement order (also in "
+         "<code>points.csv</code>). Foot point on the nominal surface; deviation + material left, &minus; "
+         "overcut.</p>\n" +
+         html::table({"#", "Id", "Face", "u", "v", "x [mm]", "y [mm]", "z [mm]", "Deviation [um]",
+                      "1-sigma [um]", "Tolerance", "Region", "Predicted [um]", "Residual [um]"},
+                     rows, "points") +
+         "</section>\n";
+}
+
+std::string options_rows(const ComparisonDocument::Options& o) {
+  const auto num = [](double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return std::string(buf);
+  };
+  return html::key_value_table({
+      {"Tolerance zone", num(o.tolerance.width) + " mm, + side " + num(o.tolerance.outside) + " mm (" +
+                             escape(o.disposition) + ")"},
+      {"Measurements", escape(o.points) + " points, probe diameter " + num(o.probe_diameter) + " mm, units " +
+                           escape(o.units)},
+      {"Registration", "dof " + escape(o.dof) + ", loss " + escape(o.loss) + " (scale " + num(o.loss_scale) +
+                           " mm), max " + std::to_string(o.max_outer_iterations) + " outer / " +
+                           std::to_string(o.max_solver_iterations) + " solver iterations, motion tolerance " +
+                           num(o.motion_tolerance) + " mm"},
+      {"Outliers", std::string(o.outlier_rejection ? "rejected" : "kept") + ": " + num(o.outlier_sigma) +
+                       " robust sigmas, floor " + num(o.outlier_floor) + " mm, edge " + num(o.edge_tolerance) +
+                       " mm, " + std::to_string(o.confirm_neighbours) + " neighbours within " +
+                       num(o.neighbour_radius) + " mm, max " + std::to_string(o.max_outlier_passes) + " passes"},
+      {"Prediction comparison", "probe sigma " + num(o.prediction.probe_sigma) + " mm, alignment " +
+                                    (o.prediction.align ? "on" : "off") + ", explained when RMS(z) &le; " +
+                                    num(o.prediction.max_normalised_rms) + " and " +
+                                    num(100 * o.prediction.required_share) + " % within " +
+                                    num(o.prediction.within_sigmas) + " sigma (min " +
+                                    std::to_string(o.prediction.min_points) + " points)"},
+      {"Gouge confirmation", "overcut beyond max(" + num(o.gouges.overcut_sigmas) + " sigma, " +
+                                 num(o.gouges.tolerance_fraction) + " |lower limit|), site margin " +
+                                 num(o.gouges.site_margin) + " mm, contact cluster " +
+                                 num(o.gouges.contact_cluster_distance) + " mm, overcut cluster " +
+                                 num(o.gouges.overcut_cluster_distance) + " mm"},
+  });
+}
+
+std::string traceability_section(const ComparisonDocument& doc, const ReportContext& context) {
+  std::string out = "<section id=\"traceability\"><h2>Traceability</h2>\n";
+  out += html::key_value_table({{"Furrow version", escape(FURROW_VERSION)},
+                                {"Generated", escape(context.generated)},
+                                {"Comparison format", std::to_string(doc.version)}});
+  std::vector<TableRow> rows;
+  for (const InputDigest& in : context.inputs)
+    rows.push_back({{escape(in.role), "<code>" + escape(in.path) + "</code>", count(in.bytes),
+                     in.generated ? "this run" : "input", "<span class=\"hash\">" + escape(in.sha256) + "</span>"},
+                    ""});
+  out += "<h3>Files (SHA-256)</h3>\n" + html::table({"Role", "Path", "Bytes", "Origin", "SHA-256"}, rows, "files");
+  if (!context.stages.empty()) {
+    std::vector<TableRow> times;
+    for (const StageTime& t : context.stages) times.push_back({{escape(t.stage), fixed(t.seconds, 2)}, ""});
+    times.push_back({{"<b>total</b>", "<b>" + fixed(context.total_seconds, 2) + "</b>"}, ""});
+    out += "<h3>Stage times (wall clock, s)</h3>\n" + html::table({"Stage", "Seconds"}, times);
+  }
+  out += "<h3>Comparison options</h3>\n" + options_rows(doc.options);
+  if (!context.job_options_json.empty())
+    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre>" + escape(context.job_options_json) + "</pre>\n";
+  return out + "</section>\n";
+}
+
+}  // namespace
+
+std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verdict, const RegionMap* regions,
+                        const ReportContext& context, const std::vector<ReportFigure>& figures) {
+  std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                    "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+                    escape("QA report " + context.title + ": " + verdict.result()) + "</title>\n<style>" + kStyle +
+                    "</style>\n</head>\n<body>\n";
+  // File names as the user gave them where the context knows them (a job's
+  // inputs), else as the comparison names them.
+  auto named = [&](const std::string& role, const std::string& fallback) {
+    for (const InputDigest& in : context.inputs)
+      if (in.role == role) return in.path;
+    return fallback;
+  };
+  out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
+         escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
+         escape(named("measurements", doc.sources.measurements)) +
+         "</code> &middot; Furrow " + escape(FURROW_VERSION) + " &middot; " + escape(context.generated) +
+         "</p>\n" + (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
+         "</header>\n";
+  out += verdict_section(verdict);
+  out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
+         "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a "
+         "href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
+  out += alignment_section(doc);
+  out += regions_section(doc, regions, figures);
+  out += deviations_section(doc, figures);
+  out += prediction_section(doc, figures);
+  out += gouges_section(doc, figures);
+  out += points_section(doc);
+  out += traceability_section(doc, context);
+  return out + kImageCheck + "</body>\n</html>\n";
+}
+
+}  // namespace furrow

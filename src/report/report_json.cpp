@@ -1,0 +1,236 @@
+#include "report/report_json.hpp"
+
+#include <algorithm>
+
+#include "inspection/verification_json.hpp"
+#include "io/json_fields.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+namespace vj = verification_json;
+using jf::json;
+
+namespace {
+
+json num(double v, const char* what) { return jf::finite(v, what); }
+json opt(const std::optional<double>& v, const char* what) { return v ? num(*v, what) : json(nullptr); }
+
+template <class Matrix>
+json matrix(const Matrix& m, const char* what) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(num(m(i, j), what));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+json zone_json(const ToleranceZone& z) {
+  return {{"zone", num(z.width, "zone")},
+          {"lower", num(z.lower(), "lower")},
+          {"upper", num(z.upper(), "upper")},
+          {"disposition", z.disposition()}};
+}
+
+json verdict_json(const ReportVerdict& v) {
+  json j;
+  j["result"] = v.result();
+  j["pass"] = v.pass;
+  j["reasons"] = v.reasons;
+  j["profile"] = num(v.profile, "profile");
+  j["tolerance"] = zone_json(v.zone);
+  j["evaluated"] = v.evaluated;
+  j["out_of_tolerance"] = v.out_of_tolerance;
+  j["registration_converged"] = v.registration_converged;
+  j["gouge_sites"] = v.has_prediction ? json({{"predicted", v.sites},
+                                               {"confirmed", v.confirmed},
+                                               {"not_confirmed", v.not_confirmed},
+                                               {"not_measured", v.not_measured}})
+                                       : json(nullptr);
+  j["unexplained_overcuts"] = v.has_prediction ? json(v.unexplained) : json(nullptr);
+  j["prediction_verdict"] = v.prediction_verdict ? json(*v.prediction_verdict) : json(nullptr);
+  return j;
+}
+
+json options_json(const ComparisonDocument::Options& o) {
+  json j;
+  j["tolerance"] = zone_json(o.tolerance);
+  j["dof"] = o.dof;
+  j["loss"] = o.loss;
+  j["loss_scale"] = num(o.loss_scale, "loss scale");
+  j["points"] = o.points;
+  j["probe_diameter"] = num(o.probe_diameter, "probe diameter");
+  j["units"] = o.units;
+  j["outlier_rejection"] = o.outlier_rejection;
+  j["outlier_sigma"] = num(o.outlier_sigma, "outlier sigma");
+  j["outlier_floor"] = num(o.outlier_floor, "outlier floor");
+  j["edge_tolerance"] = num(o.edge_tolerance, "edge tolerance");
+  j["confirm_neighbours"] = o.confirm_neighbours;
+  j["neighbour_radius"] = num(o.neighbour_radius, "neighbour radius");
+  j["max_outer_iterations"] = o.max_outer_iterations;
+  j["max_solver_iterations"] = o.max_solver_iterations;
+  j["max_outlier_passes"] = o.max_outlier_passes;
+  j["motion_tolerance"] = num(o.motion_tolerance, "motion tolerance");
+  j["prediction"] = vj::options_json(o.prediction);
+  j["gouges"] = vj::options_json(o.gouges);
+  return j;
+}
+
+json alignment_json(const ComparisonDocument& doc) {
+  const ComparisonDocument::Registration& r = doc.registration;
+  json j;
+  j["transform"] = matrix(r.transform, "transform");
+  j["placement"] = {{"rotation_deg", jf::vector_json(r.placement_rotation_deg)},
+                    {"translation", jf::vector_json(r.placement_translation)}};
+  j["coarse"] = {{"method", r.coarse_method},
+                 {"matched_ids", r.coarse_matched_ids},
+                 {"candidates", r.coarse_candidates},
+                 {"median_distance", num(r.coarse_median_distance, "coarse median")},
+                 {"ambiguous", r.coarse_ambiguous}};
+  j["rms_before"] = num(r.rms_before, "rms before");
+  j["rms_after"] = num(r.rms_after, "rms after");
+  j["sigma"] = num(r.sigma, "sigma");
+  j["outer_iterations"] = r.outer_iterations;
+  j["solver_iterations"] = r.solver_iterations;
+  j["outlier_passes"] = r.outlier_passes;
+  j["converged"] = r.converged;
+  j["status"] = r.status;
+  j["covariance_status"] = r.covariance_status;
+  if (r.covariance) {
+    j["covariance"] = matrix(*r.covariance, "covariance");
+    json sd = json::array();
+    for (int k = 0; k < 6; ++k) sd.push_back(num(std::sqrt(std::max(0.0, (*r.covariance)(k, k))), "sd"));
+    j["standard_deviation"] = std::move(sd);
+  } else {
+    j["covariance"] = nullptr;
+    j["standard_deviation"] = nullptr;
+  }
+  json outliers = json::object();
+  for (const auto& [reason, count] : r.outliers) outliers[reason] = count;
+  j["outliers"] = std::move(outliers);
+  // The alignment's share of each deviation's uncertainty, summarised.
+  std::vector<double> u;
+  for (const auto& p : doc.points)
+    if (p.uncertainty) u.push_back(*p.uncertainty);
+  if (u.empty()) {
+    j["point_uncertainty"] = nullptr;
+  } else {
+    std::sort(u.begin(), u.end());
+    const double median = u.size() % 2 ? u[u.size() / 2] : 0.5 * (u[u.size() / 2 - 1] + u[u.size() / 2]);
+    j["point_uncertainty"] = {{"min", num(u.front(), "u")}, {"median", num(median, "u")}, {"max", num(u.back(), "u")}};
+  }
+  return j;
+}
+
+json statistics_json(const DeviationStatistics& s) {
+  return {{"count", s.count},
+          {"mean", num(s.mean, "mean")},
+          {"sigma", num(s.sigma, "sigma")},
+          {"min", num(s.min, "min")},
+          {"max", num(s.max, "max")}};
+}
+
+json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
+  json out = json::array();
+  for (const RegionStatistics& r : doc.summary.regions) {
+    json j = statistics_json(r.deviations);
+    j["region"] = r.region;
+    j["out_of_tolerance"] = r.out_of_tolerance;
+    const Region* known = regions && r.region >= 0 && static_cast<std::size_t>(r.region) < regions->regions.size()
+                              ? &regions->regions[static_cast<std::size_t>(r.region)]
+                              : nullptr;
+    j["face"] = known ? json(regions->faces[static_cast<std::size_t>(known->face)].name) : json(nullptr);
+    j["class"] = known ? json(to_string(known->curvature_class)) : json(nullptr);
+    j["area"] = known ? num(known->area, "area") : json(nullptr);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+json points_json(const ComparisonDocument& doc) {
+  json out = json::array();
+  for (const auto& p : doc.points) {
+    json j;
+    j["id"] = p.id;
+    j["face"] = p.face;
+    j["uv"] = jf::vector_json(p.uv);
+    j["foot"] = jf::vector_json(p.foot);
+    j["normal"] = jf::vector_json(p.normal);
+    j["measured"] = jf::vector_json(p.measured);
+    j["deviation"] = num(p.deviation, "deviation");
+    j["uncertainty"] = opt(p.uncertainty, "uncertainty");
+    j["evaluated"] = p.evaluated;
+    j["in_tolerance"] = p.in_tolerance ? json(*p.in_tolerance) : json(nullptr);
+    j["in_fit"] = p.in_fit;
+    j["outlier"] = p.outlier.empty() ? json(nullptr) : json(p.outlier);
+    j["region"] = p.region ? json(*p.region) : json(nullptr);
+    j["prediction"] = p.prediction ? vj::point_prediction_json(*p.prediction) : json(nullptr);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict& verdict, const RegionMap* regions,
+                             const ReportContext& context, const std::vector<ReportFigure>& figures) {
+  json d;
+  d["format"] = "furrow-report";
+  d["version"] = kReportFormatVersion;
+  d["furrow_version"] = FURROW_VERSION;
+  d["title"] = context.title;
+  d["generated"] = context.generated;
+  d["units"] = "mm";
+  d["verdict"] = verdict_json(verdict);
+  json inputs = json::array();
+  for (const InputDigest& in : context.inputs)
+    inputs.push_back({{"role", in.role},
+                      {"path", in.path},
+                      {"sha256", in.sha256},
+                      {"bytes", in.bytes},
+                      {"generated", in.generated}});
+  d["inputs"] = std::move(inputs);
+  d["options"] = {{"comparison", options_json(doc.options)},
+                  {"job", context.job_options_json.empty()
+                              ? json(nullptr)
+                              : jf::parse_text(context.job_options_json, "job options")}};
+  d["alignment"] = alignment_json(doc);
+  const ComparisonSummary& s = doc.summary;
+  json dev = statistics_json(s.deviations);
+  dev["points"] = s.points;
+  dev["in_fit"] = s.in_fit;
+  dev["evaluated"] = s.evaluated;
+  dev["outliers"] = s.outliers;
+  dev["in_tolerance"] = s.in_tolerance;
+  dev["out_of_tolerance"] = s.out_of_tolerance;
+  dev["profile"] = num(s.profile, "profile");
+  d["deviations"] = std::move(dev);
+  d["regions"] = regions_json(doc, regions);
+  // The verification parts as comparison.json writes them.
+  d["prediction"] = doc.prediction ? vj::prediction_comparison_json(*doc.prediction) : json(nullptr);
+  if (doc.gouges) {
+    std::vector<std::string> ids;
+    for (const auto& p : doc.points) ids.push_back(p.id);
+    d["gouges"] = {{"sites", vj::gouge_sites_json(*doc.gouges, ids)},
+                   {"unexplained", vj::unexplained_json(*doc.gouges, ids)}};
+  } else {
+    d["gouges"] = nullptr;
+  }
+  d["points"] = points_json(doc);
+  json figs = json::array();
+  for (const ReportFigure& f : figures) figs.push_back({{"file", f.file}, {"section", f.section}, {"title", f.title}});
+  d["figures"] = std::move(figs);
+  d["files"] = {{"html", "report.html"}, {"points", "points.csv"}, {"json", "report.json"}};
+  if (context.stages.empty()) {
+    d["timing"] = nullptr;
+  } else {
+    json stages = json::array();
+    for (const StageTime& t : context.stages) stages.push_back({{"stage", t.stage}, {"seconds", num(t.seconds, "seconds")}});
+    d["timing"] = {{"stages", std::move(stages)}, {"total_seconds", num(context.total_seconds, "total")}};
+  }
+  return jf::to_text(d);
+}
+
+}  // namespace furrow

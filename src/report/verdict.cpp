@@ -1,0 +1,56 @@
+#include "report/verdict.hpp"
+
+#include <cstdio>
+
+namespace furrow {
+
+namespace {
+
+std::string um(double mm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f um", mm * 1000);
+  return buf;
+}
+
+}  // namespace
+
+ReportVerdict report_verdict(const ComparisonDocument& doc) {
+  ReportVerdict v;
+  const ComparisonSummary& s = doc.summary;
+  v.pass = s.pass;
+  v.profile = s.profile;
+  v.zone = doc.options.tolerance;
+  v.evaluated = s.evaluated;
+  v.out_of_tolerance = s.out_of_tolerance;
+  v.registration_converged = doc.registration.converged;
+  if (doc.gouges) {
+    v.has_prediction = true;
+    for (const GougeSiteCheck& site : doc.gouges->sites) {
+      ++v.sites;
+      switch (site.status) {
+        case GougeSiteStatus::confirmed: ++v.confirmed; break;
+        case GougeSiteStatus::not_confirmed: ++v.not_confirmed; break;
+        case GougeSiteStatus::not_measured: ++v.not_measured; break;
+      }
+    }
+    v.unexplained = doc.gouges->unexplained.size();
+  }
+  if (doc.prediction) v.prediction_verdict = to_string(doc.prediction->overall.verdict);
+
+  if (!v.registration_converged)
+    v.reasons.push_back("the registration did not converge (" + doc.registration.status + ")");
+  if (v.out_of_tolerance > 0)
+    v.reasons.push_back(std::to_string(v.out_of_tolerance) + " of " + std::to_string(v.evaluated) +
+                        " evaluated points outside the profile zone [" + um(v.zone.lower()) + ", " +
+                        um(v.zone.upper()) + "]");
+  if (doc.gouges)
+    for (const GougeSiteCheck& site : doc.gouges->sites)
+      if (site.status == GougeSiteStatus::confirmed)
+        v.reasons.push_back("predicted gouge " + site.id + " confirmed: measured depth " +
+                            um(site.measured_depth.value_or(0)) +
+                            (site.predicted_depth ? ", predicted " + um(*site.predicted_depth) : std::string()));
+  if (!v.pass && v.reasons.empty()) v.reasons.push_back("the comparison failed the part");
+  return v;
+}
+
+}  // namespace furrow

@@ -1,0 +1,263 @@
+#include <doctest/doctest.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "geometry/error.hpp"
+#include "report/points_csv.hpp"
+#include "report/qa_report.hpp"
+#include "report/verdict.hpp"
+#include "report_fixture.hpp"
+
+using namespace furrow;
+using furrow::test::make_report_fixture;
+
+namespace {
+
+const test::ReportFixture& fixture() {
+  static const test::ReportFixture f = make_report_fixture();
+  return f;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, sep)) cells.push_back(cell);
+  if (!line.empty() && line.back() == sep) cells.emplace_back();
+  return cells;
+}
+
+double parse_double(const std::string& s) {
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  REQUIRE(ec == std::errc());
+  REQUIRE(ptr == s.data() + s.size());
+  return v;
+}
+
+const FolderFile& file_named(const std::vector<FolderFile>& files, const std::string& path) {
+  for (const FolderFile& f : files)
+    if (f.path == path) return f;
+  FAIL("no file " << path);
+  throw std::logic_error("unreachable");
+}
+
+// RFC 4648 decoding written here, independent of the report's encoder.
+std::string base64_decode(const std::string& text) {
+  auto value = [](char c) -> int {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    return -1;
+  };
+  std::string out;
+  int bits = 0, buffer = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    const int v = value(c);
+    REQUIRE(v >= 0);
+    buffer = (buffer << 6) | v;
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>((buffer >> bits) & 0xff);
+    }
+  }
+  return out;
+}
+
+ReportContext context(const std::string& generated) {
+  ReportContext c;
+  c.title = "unit";
+  c.generated = generated;
+  c.inputs.push_back(digest_generated("comparison", "comparison.json", "{}"));
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("points.csv has one row per measured point with the document's numbers") {
+  const ComparisonDocument& doc = fixture().doc;
+  const std::string csv = points_csv_text(doc);
+  std::istringstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  const std::vector<std::string> columns = split(header, ',');
+  REQUIRE(columns.size() == 24);
+  CHECK(columns[0] == "id");
+  CHECK(columns[13] == "deviation");
+  std::size_t rows = 0;
+  for (std::string line; std::getline(in, line); ++rows) {
+    REQUIRE(rows < doc.points.size());
+    const auto& p = doc.points[rows];
+    const std::vector<std::string> cells = split(line, ',');
+    REQUIRE(cells.size() == columns.size());
+    CHECK(cells[0] == p.id);
+    CHECK(parse_double(cells[2]) == p.uv.x());      // exact: shortest round-trip text
+    CHECK(parse_double(cells[13]) == p.deviation);
+    CHECK(parse_double(cells[10]) == p.measured.x());
+    CHECK(cells[15] == (p.evaluated ? "true" : "false"));
+    CHECK(cells[20].empty());  // no prediction in this comparison
+  }
+  CHECK(rows == doc.points.size());
+  CHECK(rows == 192);  // 16 x 12 grid
+}
+
+TEST_CASE("points.csv quotes text cells and leaves missing values empty") {
+  ComparisonDocument doc = fixture().doc;
+  doc.points.resize(1);
+  doc.points[0].face = "side, \"left\"";
+  doc.points[0].uncertainty.reset();
+  doc.points[0].region.reset();
+  const std::string row = points_csv_text(doc).substr(points_csv_text(doc).find('\n') + 1);
+  CHECK(row.find(",\"side, \"\"left\"\"\",") != std::string::npos);
+  CHECK(row.find(",,true,") != std::string::npos);  // uncertainty empty, then evaluated
+}
+
+TEST_CASE("the verdict follows the comparison and says why a part fails") {
+  ComparisonDocument doc = fixture().doc;
+  // The 60 um dent is outside the +-25 um zone at several neighbouring points.
+  ReportVerdict v = report_verdict(doc);
+  CHECK_FALSE(v.pass);
+  CHECK(v.out_of_tolerance == doc.summary.out_of_tolerance);
+  CHECK(v.out_of_tolerance >= 1);
+  REQUIRE(v.reasons.size() == 1);
+  CHECK(v.reasons[0].find("outside the profile zone [-25.0 um, 25.0 um]") != std::string::npos);
+  CHECK_FALSE(v.has_prediction);
+
+  GougeConfirmation g;
+  GougeSiteCheck confirmed;
+  confirmed.id = "G1";
+  confirmed.status = GougeSiteStatus::confirmed;
+  confirmed.measured_depth = 0.1195;
+  confirmed.predicted_depth = 0.1184;
+  GougeSiteCheck unmeasured;
+  unmeasured.id = "G2";
+  unmeasured.status = GougeSiteStatus::not_measured;
+  g.sites = {confirmed, unmeasured};
+  doc.gouges = g;
+  doc.registration.converged = false;
+  doc.registration.status = "no convergence in 50 iterations";
+  v = report_verdict(doc);
+  CHECK(v.has_prediction);
+  CHECK(v.sites == 2);
+  CHECK(v.confirmed == 1);
+  CHECK(v.not_measured == 1);
+  REQUIRE(v.reasons.size() == 3);
+  CHECK(v.reasons[0] == "the registration did not converge (no convergence in 50 iterations)");
+  CHECK(v.reasons[2] == "predicted gouge G1 confirmed: measured depth 119.5 um, predicted 118.4 um");
+
+  doc.summary.pass = true;
+  doc.summary.out_of_tolerance = 0;
+  doc.gouges.reset();
+  doc.registration.converged = true;
+  v = report_verdict(doc);
+  CHECK(v.pass);
+  CHECK(std::string(v.result()) == "PASS");
+  CHECK(v.reasons.empty());
+}
+
+TEST_CASE("report.json holds the document's numbers, and only the timestamp and timing differ between runs") {
+  const test::ReportFixture& f = fixture();
+  ReportContext a = context("2024-01-01T00:00:00Z");
+  ReportContext b = context("2025-06-30T12:00:00Z");
+  b.stages = {{"compare", 0.25}};
+  b.total_seconds = 0.25;
+  const std::vector<FolderFile> ra = make_report(f.doc, f.part, nullptr, a);
+  const std::vector<FolderFile> rb = make_report(f.doc, f.part, nullptr, b);
+  nlohmann::json ja = nlohmann::json::parse(file_named(ra, "report.json").bytes);
+  nlohmann::json jb = nlohmann::json::parse(file_named(rb, "report.json").bytes);
+  CHECK(ja["generated"] == "2024-01-01T00:00:00Z");
+  CHECK(ja["timing"].is_null());
+  CHECK(jb["timing"]["stages"][0]["stage"] == "compare");
+  for (nlohmann::json* j : {&ja, &jb}) {
+    j->erase("generated");
+    j->erase("timing");
+  }
+  CHECK(ja == jb);
+  // Every other file is byte for byte the same (figures, CSV).
+  REQUIRE(ra.size() == rb.size());
+  for (std::size_t k = 0; k < ra.size(); ++k)
+    if (ra[k].path != "report.json" && ra[k].path != "report.html") CHECK(ra[k].bytes == rb[k].bytes);
+
+  CHECK(ja["verdict"]["result"] == "FAIL");
+  CHECK(ja["deviations"]["profile"].get<double>() == f.doc.summary.profile);
+  CHECK(ja["deviations"]["out_of_tolerance"] == f.doc.summary.out_of_tolerance);
+  REQUIRE(ja["points"].size() == f.doc.points.size());
+  for (std::size_t i = 0; i < f.doc.points.size(); ++i) {
+    CHECK(ja["points"][i]["id"] == f.doc.points[i].id);
+    CHECK(ja["points"][i]["deviation"].get<double>() == f.doc.points[i].deviation);
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      CHECK(ja["alignment"]["transform"][i][j].get<double>() == f.doc.registration.transform(i, j));
+  CHECK(ja["gouges"].is_null());
+  CHECK(ja["prediction"].is_null());
+  CHECK(ja["inputs"][0]["sha256"] == "44136fa355b3678a1146ad16f7e8649e94fb4fc21fe77e8310c060f61caaff8a");  // sha256("{}")
+}
+
+TEST_CASE("report.html is self-contained: every image is an embedded PNG, the same as its file") {
+  const test::ReportFixture& f = fixture();
+  const std::vector<FolderFile> files = make_report(f.doc, f.part, nullptr, context("2024-01-01T00:00:00Z"));
+  const std::string& html = file_named(files, "report.html").bytes;
+  CHECK(html.find("<div class=\"result\" id=\"verdict-result\">FAIL</div>") != std::string::npos);
+  CHECK(html.find("http://") == std::string::npos);
+  CHECK(html.find("https://") == std::string::npos);
+  CHECK(html.find("<link") == std::string::npos);
+  // Collect the embedded images and compare them with the figure files.
+  std::vector<std::string> embedded;
+  const std::string marker = "src=\"";
+  for (std::size_t at = html.find(marker); at != std::string::npos; at = html.find(marker, at + 1)) {
+    const std::size_t start = at + marker.size(), end = html.find('"', start);
+    const std::string src = html.substr(start, end - start);
+    REQUIRE(src.rfind("data:image/png;base64,", 0) == 0);  // nothing external
+    embedded.push_back(base64_decode(src.substr(22)));
+  }
+  std::vector<std::string> figures;
+  for (const FolderFile& file : files)
+    if (file.path.rfind("figures/", 0) == 0) figures.push_back(file.bytes);
+  CHECK(figures.size() == 3);  // top view, face (u, v), histogram: no regions, no prediction
+  CHECK(embedded == figures);
+  for (const std::string& png : embedded) {
+    const cv::Mat img = cv::imdecode(std::vector<unsigned char>(png.begin(), png.end()), cv::IMREAD_COLOR);
+    CHECK_FALSE(img.empty());
+  }
+  // The point table has a row per point.
+  std::size_t rows = 0;
+  for (std::size_t at = html.find("<tr", html.find("<table class=\"points\">")); at != std::string::npos;
+       at = html.find("<tr", at + 1))
+    if (html.compare(at, 4, "<tr>") == 0 || html.compare(at, 11, "<tr class=\"") == 0) ++rows;
+  CHECK(rows >= f.doc.points.size() + 1);  // + header (tables after it add a few)
+}
+
+TEST_CASE("a comparison of another part is refused") {
+  const test::ReportFixture& f = fixture();
+  ComparisonDocument doc = f.doc;
+  doc.points[3].face = "lid";
+  CHECK_THROWS_AS(make_report(doc, f.part, nullptr, context("x")), InputError);
+  doc = f.doc;
+  doc.points[0].face_index = 4;
+  CHECK_THROWS_WITH_AS(check_comparison_faces(doc, f.part),
+                       doctest::Contains("point P00001 lies on face 4 \"mould\""), InputError);
+}
+
+TEST_CASE("an input inside the output folder is refused before the folder is replaced") {
+  const std::string dir = std::string(FURROW_BINARY_DIR) + "/test-scratch/report-inputs-inside";
+  std::filesystem::create_directories(dir + "/sub");
+  { std::ofstream(dir + "/sub/comparison.json") << "{}"; }
+  const std::vector<InputDigest> inputs = {digest_file("comparison", dir + "/sub/comparison.json")};
+  CHECK_THROWS_WITH_AS(check_inputs_outside(dir, inputs), doctest::Contains("would be deleted"), InputError);
+  CHECK_THROWS_AS(check_inputs_outside(dir + "/sub", inputs), InputError);
+  CHECK_NOTHROW(check_inputs_outside(dir + "/other", inputs));
+  CHECK_NOTHROW(check_inputs_outside(dir + "/sub2", inputs));  // a sibling with a common prefix
+  std::vector<InputDigest> generated = inputs;
+  generated[0].generated = true;  // written by the same run: replaced with the folder
+  CHECK_NOTHROW(check_inputs_outside(dir, generated));
+}
