@@ -4,79 +4,61 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
 
 namespace furrow {
 
 namespace jf = json_fields;
+namespace cj = comparison_json;
 using jf::json;
 
 namespace {
 
-json statistics_json(const DeviationStatistics& s) {
-  return {{"count", s.count},
-          {"mean", jf::finite(s.mean, "mean")},
-          {"sigma", jf::finite(s.sigma, "sigma")},
-          {"min", jf::finite(s.min, "min")},
-          {"max", jf::finite(s.max, "max")}};
-}
-
 // Placement of the part on the CMM in simulate-measurement's convention:
 // x_cmm = Rz(rz) Ry(ry) Rx(rx) x_part + t (degrees, mm).
-json placement_json(const Eigen::Isometry3d& cmm_to_part) {
+void set_placement(const Eigen::Isometry3d& cmm_to_part, ComparisonDocument::Registration& r) {
   const Eigen::Isometry3d m = cmm_to_part.inverse();
-  const Eigen::Matrix3d& r = m.linear();
+  const Eigen::Matrix3d& rot = m.linear();
   const double deg = 180 / M_PI;
-  const Eigen::Vector3d angles(std::atan2(r(2, 1), r(2, 2)),
-                               std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
-                               std::atan2(r(1, 0), r(0, 0)));
-  return {{"rotation_deg", jf::vector_json(Eigen::Vector3d(angles * deg))},
-          {"translation", jf::vector_json(Eigen::Vector3d(m.translation()))}};
+  r.placement_rotation_deg = Eigen::Vector3d(std::atan2(rot(2, 1), rot(2, 2)),
+                                             std::asin(std::clamp(-rot(2, 0), -1.0, 1.0)),
+                                             std::atan2(rot(1, 0), rot(0, 0))) * deg;
+  r.placement_translation = m.translation();
 }
 
-json matrix_json(const Eigen::MatrixXd& m, const char* what) {
-  json rows = json::array();
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    json row = json::array();
-    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(jf::finite(m(i, j), what));
-    rows.push_back(std::move(row));
-  }
-  return rows;
+// The registration as comparison_document.hpp holds it, so that one writer
+// (comparison_json.hpp) serves comparison.json and report.json.
+ComparisonDocument::Registration document_registration(const RegistrationResult& r) {
+  ComparisonDocument::Registration d;
+  d.transform = r.transform.matrix();
+  set_placement(r.transform, d);
+  d.coarse_method = to_string(r.coarse.method);
+  d.coarse_matched_ids = r.coarse.matched;
+  d.coarse_candidates = r.coarse.candidates;
+  d.coarse_median_distance = r.coarse.median_distance;
+  d.coarse_ambiguous = r.coarse.ambiguous;
+  d.rms_before = r.rms_before;
+  d.rms_after = r.rms_after;
+  d.sigma = r.sigma;
+  d.outer_iterations = r.outer_iterations;
+  d.solver_iterations = r.solver_iterations;
+  d.outlier_passes = r.outlier_passes;
+  d.converged = r.converged;
+  d.status = r.status;
+  d.covariance = r.covariance;
+  d.covariance_status = r.covariance_status;
+  return d;
 }
 
 json registration_json(const RegistrationResult& r, const RegistrationOptions& o) {
-  json j;
+  json j = cj::registration_json(document_registration(r));
   json dof = json::array();
   for (int k = 0; k < 6; ++k)
     if (o.dof.free[k]) dof.push_back(dof_name(k));
   j["dof"] = std::move(dof);
   j["loss"] = to_string(o.loss);
   j["loss_scale"] = jf::finite(o.loss_scale, "loss scale");
-  j["coarse"] = {{"method", to_string(r.coarse.method)},
-                 {"matched_ids", r.coarse.matched},
-                 {"candidates", r.coarse.candidates},
-                 {"median_distance", jf::finite(r.coarse.median_distance, "coarse median")},
-                 {"ambiguous", r.coarse.ambiguous}};
-  j["transform"] = matrix_json(r.transform.matrix(), "transform");
-  j["placement"] = placement_json(r.transform);
-  j["rms_before"] = jf::finite(r.rms_before, "rms before");
-  j["rms_after"] = jf::finite(r.rms_after, "rms after");
-  j["sigma"] = jf::finite(r.sigma, "sigma");
-  j["outer_iterations"] = r.outer_iterations;
-  j["solver_iterations"] = r.solver_iterations;
-  j["outlier_passes"] = r.outlier_passes;
-  j["converged"] = r.converged;
-  j["status"] = r.status;
-  j["covariance_status"] = r.covariance_status;
-  if (r.covariance) {
-    j["covariance"] = matrix_json(*r.covariance, "covariance");
-    json sd = json::array();
-    for (int k = 0; k < 6; ++k) sd.push_back(jf::finite(std::sqrt((*r.covariance)(k, k)), "sd"));
-    j["standard_deviation"] = std::move(sd);
-  } else {
-    j["covariance"] = nullptr;
-    j["standard_deviation"] = nullptr;
-  }
   j["outlier_rule"] = {{"sigmas", jf::finite(o.outlier_sigma, "sigmas")},
                        {"floor", jf::finite(o.outlier_floor, "floor")},
                        {"edge_tolerance", jf::finite(o.edge_tolerance, "edge tolerance")},
@@ -85,30 +67,40 @@ json registration_json(const RegistrationResult& r, const RegistrationOptions& o
   return j;
 }
 
-// Everything the comparison ran with (docs/formats.md "Comparison").
-json options_json(const CompareOptions& o, const MeasurementSet& set,
-                  const ComparisonSources& sources) {
+// The options as comparison_document.hpp holds them (see above).
+ComparisonDocument::Options document_options(const CompareOptions& o, const MeasurementSet& set,
+                                             const ComparisonSources& sources) {
   const RegistrationOptions& r = o.registration;
-  return {{"tolerance", jf::finite(o.tolerance.width, "tolerance")},
-          {"outside", jf::finite(o.tolerance.outside, "outside")},
-          {"dof", r.dof.to_string()},
-          {"loss", to_string(r.loss)},
-          {"loss_scale", jf::finite(r.loss_scale, "loss scale")},
-          {"points", to_string(set.kind)},
-          {"probe_diameter", jf::finite(2 * set.probe_radius, "probe diameter")},
-          {"units", sources.measurement_units},
-          {"outlier_rejection", r.flag_outliers},
-          {"outlier_sigma", jf::finite(r.outlier_sigma, "outlier sigma")},
-          {"outlier_floor", jf::finite(r.outlier_floor, "outlier floor")},
-          {"edge_tolerance", jf::finite(r.edge_tolerance, "edge tolerance")},
-          {"confirm_neighbours", r.confirm_neighbours},
-          {"neighbour_radius", jf::finite(r.neighbour_radius, "neighbour radius")},
-          {"max_outer_iterations", r.max_outer_iterations},
-          {"max_solver_iterations", r.max_solver_iterations},
-          {"max_outlier_passes", r.max_outlier_passes},
-          {"motion_tolerance", jf::finite(r.motion_tolerance, "motion tolerance")},
-          {"prediction", verification_json::options_json(o.prediction)},
-          {"gouges", verification_json::options_json(o.gouges)}};
+  ComparisonDocument::Options d;
+  d.tolerance = o.tolerance;
+  d.disposition = o.tolerance.disposition();
+  d.dof = r.dof.to_string();
+  d.loss = to_string(r.loss);
+  d.loss_scale = r.loss_scale;
+  d.points = to_string(set.kind);
+  d.probe_diameter = 2 * set.probe_radius;
+  d.units = sources.measurement_units;
+  d.outlier_rejection = r.flag_outliers;
+  d.outlier_sigma = r.outlier_sigma;
+  d.outlier_floor = r.outlier_floor;
+  d.edge_tolerance = r.edge_tolerance;
+  d.confirm_neighbours = r.confirm_neighbours;
+  d.neighbour_radius = r.neighbour_radius;
+  d.max_outer_iterations = r.max_outer_iterations;
+  d.max_solver_iterations = r.max_solver_iterations;
+  d.max_outlier_passes = r.max_outlier_passes;
+  d.motion_tolerance = r.motion_tolerance;
+  d.prediction = o.prediction;
+  d.gouges = o.gouges;
+  return d;
+}
+
+// Everything the comparison ran with (docs/formats.md "Comparison").
+json options_json(const CompareOptions& o, const MeasurementSet& set, const ComparisonSources& sources) {
+  json j = cj::run_options_json(document_options(o, set, sources));
+  j["tolerance"] = jf::finite(o.tolerance.width, "tolerance");
+  j["outside"] = jf::finite(o.tolerance.outside, "outside");
+  return j;
 }
 
 json outlier_counts_json(const RegistrationResult& r) {
@@ -183,14 +175,14 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                     {"outlier_reasons", outlier_counts_json(c.registration)},
                     {"in_tolerance", s.in_tolerance},
                     {"out_of_tolerance", s.out_of_tolerance},
-                    {"deviation", statistics_json(s.deviations)},
+                    {"deviation", cj::statistics_json(s.deviations)},
                     {"profile", jf::finite(s.profile, "profile")},
                     {"confirmed_gouges", s.confirmed_gouges},
                     {"unexplained_overcuts", s.unexplained_overcuts},
                     {"pass", s.pass}};
   json regions = json::array();
   for (const RegionStatistics& r : s.regions) {
-    json jr = statistics_json(r.deviations);
+    json jr = cj::statistics_json(r.deviations);
     jr["region"] = r.region;
     jr["out_of_tolerance"] = r.out_of_tolerance;
     regions.push_back(std::move(jr));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
 #include "io/json_fields.hpp"
 
@@ -9,23 +10,13 @@ namespace furrow {
 
 namespace jf = json_fields;
 namespace vj = verification_json;
+namespace cj = comparison_json;
 using jf::json;
 
 namespace {
 
 json num(double v, const char* what) { return jf::finite(v, what); }
 json opt(const std::optional<double>& v, const char* what) { return v ? num(*v, what) : json(nullptr); }
-
-template <class Matrix>
-json matrix(const Matrix& m, const char* what) {
-  json rows = json::array();
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    json row = json::array();
-    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(num(m(i, j), what));
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
 
 json zone_json(const ToleranceZone& z) {
   return {{"zone", num(z.width, "zone")},
@@ -55,58 +46,14 @@ json verdict_json(const ReportVerdict& v) {
 }
 
 json options_json(const ComparisonDocument::Options& o) {
-  json j;
+  json j = cj::run_options_json(o);
   j["tolerance"] = zone_json(o.tolerance);
-  j["dof"] = o.dof;
-  j["loss"] = o.loss;
-  j["loss_scale"] = num(o.loss_scale, "loss scale");
-  j["points"] = o.points;
-  j["probe_diameter"] = num(o.probe_diameter, "probe diameter");
-  j["units"] = o.units;
-  j["outlier_rejection"] = o.outlier_rejection;
-  j["outlier_sigma"] = num(o.outlier_sigma, "outlier sigma");
-  j["outlier_floor"] = num(o.outlier_floor, "outlier floor");
-  j["edge_tolerance"] = num(o.edge_tolerance, "edge tolerance");
-  j["confirm_neighbours"] = o.confirm_neighbours;
-  j["neighbour_radius"] = num(o.neighbour_radius, "neighbour radius");
-  j["max_outer_iterations"] = o.max_outer_iterations;
-  j["max_solver_iterations"] = o.max_solver_iterations;
-  j["max_outlier_passes"] = o.max_outlier_passes;
-  j["motion_tolerance"] = num(o.motion_tolerance, "motion tolerance");
-  j["prediction"] = vj::options_json(o.prediction);
-  j["gouges"] = vj::options_json(o.gouges);
   return j;
 }
 
 json alignment_json(const ComparisonDocument& doc) {
   const ComparisonDocument::Registration& r = doc.registration;
-  json j;
-  j["transform"] = matrix(r.transform, "transform");
-  j["placement"] = {{"rotation_deg", jf::vector_json(r.placement_rotation_deg)},
-                    {"translation", jf::vector_json(r.placement_translation)}};
-  j["coarse"] = {{"method", r.coarse_method},
-                 {"matched_ids", r.coarse_matched_ids},
-                 {"candidates", r.coarse_candidates},
-                 {"median_distance", num(r.coarse_median_distance, "coarse median")},
-                 {"ambiguous", r.coarse_ambiguous}};
-  j["rms_before"] = num(r.rms_before, "rms before");
-  j["rms_after"] = num(r.rms_after, "rms after");
-  j["sigma"] = num(r.sigma, "sigma");
-  j["outer_iterations"] = r.outer_iterations;
-  j["solver_iterations"] = r.solver_iterations;
-  j["outlier_passes"] = r.outlier_passes;
-  j["converged"] = r.converged;
-  j["status"] = r.status;
-  j["covariance_status"] = r.covariance_status;
-  if (r.covariance) {
-    j["covariance"] = matrix(*r.covariance, "covariance");
-    json sd = json::array();
-    for (int k = 0; k < 6; ++k) sd.push_back(num(std::sqrt(std::max(0.0, (*r.covariance)(k, k))), "sd"));
-    j["standard_deviation"] = std::move(sd);
-  } else {
-    j["covariance"] = nullptr;
-    j["standard_deviation"] = nullptr;
-  }
+  json j = cj::registration_json(r);
   json outliers = json::object();
   for (const auto& [reason, count] : r.outliers) outliers[reason] = count;
   j["outliers"] = std::move(outliers);
@@ -124,18 +71,10 @@ json alignment_json(const ComparisonDocument& doc) {
   return j;
 }
 
-json statistics_json(const DeviationStatistics& s) {
-  return {{"count", s.count},
-          {"mean", num(s.mean, "mean")},
-          {"sigma", num(s.sigma, "sigma")},
-          {"min", num(s.min, "min")},
-          {"max", num(s.max, "max")}};
-}
-
 json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
   json out = json::array();
   for (const RegionStatistics& r : doc.summary.regions) {
-    json j = statistics_json(r.deviations);
+    json j = cj::statistics_json(r.deviations);
     j["region"] = r.region;
     j["out_of_tolerance"] = r.out_of_tolerance;
     const Region* known = regions && r.region >= 0 && static_cast<std::size_t>(r.region) < regions->regions.size()
@@ -198,7 +137,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
                               : jf::parse_text(context.job_options_json, "job options")}};
   d["alignment"] = alignment_json(doc);
   const ComparisonSummary& s = doc.summary;
-  json dev = statistics_json(s.deviations);
+  json dev = cj::statistics_json(s.deviations);
   dev["points"] = s.points;
   dev["in_fit"] = s.in_fit;
   dev["evaluated"] = s.evaluated;
