@@ -111,7 +111,7 @@ int run_plan(Args& args) {
   std::optional<PredictionRiskMap> risk;
   if (prediction_path) {
     prediction = read_prediction(*prediction_path);
-    risk.emplace(*prediction, part, *prediction_path);
+    risk.emplace(*prediction, part, *prediction_path, part_path);
   }
 
   const bool show = ::isatty(2);

@@ -143,12 +143,4 @@ std::size_t admit_predicted_deviations(RegistrationResult& registration,
                                        const PredictionComparison& compared,
                                        const PredictionComparisonOptions& options);
 
-// Throws InputError (naming both files) unless every face the prediction
-// names is a face of the part with the same parameter domain and every
-// gouge site and local gouge lies on such a face: a prediction of another
-// part.
-void check_prediction_against_part(const Prediction& prediction, const Part& part,
-                                   const std::string& prediction_name,
-                                   const std::string& part_name);
-
 }  // namespace furrow

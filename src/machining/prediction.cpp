@@ -59,4 +59,28 @@ std::vector<int> Prediction::gouge_sites_at(const std::string& face, double u, d
   return ids;
 }
 
+void check_prediction_against_part(const Prediction& prediction, const Part& part,
+                                   const std::string& prediction_name, const std::string& part_name) {
+  const std::string other =
+      ": the prediction was made for another part than " + part_name + " (run furrow predict again)";
+  auto face_of = [&](const std::string& face, const std::string& where) {
+    const std::optional<std::size_t> f = part.find_face(face);
+    if (!f) throw InputError(where + ": face \"" + face + "\" is not a face of " + part_name + other);
+    return *f;
+  };
+  for (std::size_t k = 0; k < prediction.faces.size(); ++k) {
+    const FaceGridRecord& g = prediction.faces[k];
+    const std::string where = prediction_name + ": faces[" + std::to_string(k) + "]";
+    const ParameterDomain& d = part.faces[face_of(g.name, where)].domain();
+    const double tol = 1e-9 * std::max({1.0, d.width_u(), d.width_v()});
+    if (std::abs(d.u0 - g.domain.u0) > tol || std::abs(d.u1 - g.domain.u1) > tol ||
+        std::abs(d.v0 - g.domain.v0) > tol || std::abs(d.v1 - g.domain.v1) > tol)
+      throw InputError(where + ": the parameter domain of face \"" + g.name + "\" differs" + other);
+  }
+  for (std::size_t k = 0; k < prediction.gouge_sites.size(); ++k)
+    face_of(prediction.gouge_sites[k].face, prediction_name + ": gouge_sites[" + std::to_string(k) + "]");
+  for (std::size_t k = 0; k < prediction.local_gouges.size(); ++k)
+    face_of(prediction.local_gouges[k].at.face, prediction_name + ": local_gouges[" + std::to_string(k) + "]");
+}
+
 }  // namespace furrow

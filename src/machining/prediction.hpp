@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "geometry/nurbs_surface.hpp"
+#include "geometry/part.hpp"
 #include "io/tool_file.hpp"
 #include "machining/error_map.hpp"
 
@@ -140,5 +141,13 @@ struct Prediction {
   std::vector<int> gouge_sites_at(const std::string& face, double u, double v) const;
   const FaceGridRecord* find_face(const std::string& face) const;
 };
+
+// Throws InputError (naming both files) unless every face the prediction
+// names is a face of the part with the same parameter domain and every
+// gouge site and local gouge lies on a face of the part: a prediction of
+// another part. Every stage that reads a prediction with a part calls it
+// before trusting a face name.
+void check_prediction_against_part(const Prediction& prediction, const Part& part,
+                                   const std::string& prediction_name, const std::string& part_name);
 
 }  // namespace furrow

@@ -8,25 +8,14 @@
 namespace furrow {
 
 PredictionRiskMap::PredictionRiskMap(const Prediction& prediction, const Part& part,
-                                     const std::string& prediction_name)
+                                     const std::string& prediction_name, const std::string& part_name)
     : prediction_(&prediction), grids_(part.faces.size(), nullptr) {
-  const std::string other = "; it was made for another part (run furrow predict again)";
-  for (std::size_t k = 0; k < prediction.faces.size(); ++k) {
-    const FaceGridRecord& g = prediction.faces[k];
-    const std::string where = prediction_name + ": faces[" + std::to_string(k) + "]";
-    const std::optional<std::size_t> f = part.find_face(g.name);
-    if (!f) throw InputError(where + ": face \"" + g.name + "\" is not a face of the part" + other);
-    const ParameterDomain& d = part.faces[*f].domain();
-    const double tol = 1e-9 * std::max({1.0, d.width_u(), d.width_v()});
-    if (std::abs(d.u0 - g.domain.u0) > tol || std::abs(d.u1 - g.domain.u1) > tol ||
-        std::abs(d.v0 - g.domain.v0) > tol || std::abs(d.v1 - g.domain.v1) > tol)
-      throw InputError(where + ": the parameter domain of face \"" + g.name + "\" differs from the part's" + other);
-    grids_[*f] = &g;
-  }
+  check_prediction_against_part(prediction, part, prediction_name, part_name);
+  for (const FaceGridRecord& g : prediction.faces) grids_[*part.find_face(g.name)] = &g;
   for (std::size_t k = 0; k < prediction.gouge_sites.size(); ++k) {
     const GougeSiteRecord& s = prediction.gouge_sites[k];
     const std::optional<std::size_t> f = part.find_face(s.face);
-    if (!f || !grids_[*f])
+    if (!grids_[*f])
       throw InputError(prediction_name + ": gouge_sites[" + std::to_string(k) + "]: face \"" + s.face +
                        "\" is not a predicted face of the part");
     RiskSite site;

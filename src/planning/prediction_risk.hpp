@@ -12,9 +12,9 @@
 //                    face index, the site's uv box and its deepest point as
 //                    centre, the depth.
 //
-// The constructor checks that the prediction belongs to the part: every
-// face it names must be a face of the part with the same parameter domain
-// (InputError naming `prediction_name` otherwise).
+// The constructor checks that the prediction belongs to the part
+// (check_prediction_against_part, InputError naming both files) and that
+// every gouge site lies on a face the prediction covers.
 #include <string>
 #include <vector>
 
@@ -27,7 +27,8 @@ namespace furrow {
 class PredictionRiskMap : public RiskMap {
  public:
   // The prediction and part must outlive the map.
-  PredictionRiskMap(const Prediction& prediction, const Part& part, const std::string& prediction_name);
+  PredictionRiskMap(const Prediction& prediction, const Part& part, const std::string& prediction_name,
+                    const std::string& part_name);
 
   double error_magnitude(int face, const Eigen::Vector2d& uv) const override;
   const std::vector<RiskSite>& gouge_sites() const override { return sites_; }

@@ -154,7 +154,7 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   PlannerOptions o = job.plan;
   o.part_name = s.part_name;
   std::optional<PredictionRiskMap> risk;
-  if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json");
+  if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json", s.part_name);
   const PlanResult r = plan_probe_points(part, map, o, risk ? &*risk : nullptr,
                                          [&](const char* stage, std::size_t d, std::size_t t) {
                                            s.note(std::string("plan: ") + stage, d, t);

@@ -17,7 +17,7 @@ TEST_CASE("the risk map gives the worst predicted error of the cell, either sign
   const Eigen::Vector2d peak(0.4, 0.5);
   // Through the file: what the planner reads is what the writer wrote.
   const Prediction p = parse_prediction_json(prediction_to_json_text(synthetic_prediction(part, peak, {{0.3, 0.3}})), "p.json");
-  const PredictionRiskMap risk(p, part, "p.json");
+  const PredictionRiskMap risk(p, part, "p.json", "mould.json");
   for (int ci : {3, 20, 37}) {
     for (int cj : {5, 19}) {
       const Eigen::Vector2d uv((ci + 0.5) / 50, (cj + 0.5) / 40);
@@ -40,8 +40,8 @@ TEST_CASE("a prediction of another part is refused") {
   const Part part = mould();
   Prediction p = synthetic_prediction(part, {0.5, 0.5}, {});
   p.faces[0].name = "crown";
-  CHECK_THROWS_AS(PredictionRiskMap(p, part, "p.json"), InputError);
+  CHECK_THROWS_AS(PredictionRiskMap(p, part, "p.json", "mould.json"), InputError);
   p = synthetic_prediction(part, {0.5, 0.5}, {});
   p.faces[0].domain.u1 = 2;
-  CHECK_THROWS_AS(PredictionRiskMap(p, part, "p.json"), InputError);
+  CHECK_THROWS_AS(PredictionRiskMap(p, part, "p.json", "mould.json"), InputError);
 }

@@ -223,7 +223,7 @@ TEST_CASE("a prediction's gouge sites all get a point, even next to a region bor
   const Region& dome = map.regions[2];
   Eigen::Vector2d on_border = dome.border[0].uv[0];
   const Prediction p = synthetic_prediction(part, dome.interior_uv, {dome.interior_uv, on_border, {0.5, 0.005}});
-  const PredictionRiskMap risk(p, part, "p.json");
+  const PredictionRiskMap risk(p, part, "p.json", "mould.json");
   PlannerOptions o;
   o.points = 100;
   const PlanResult r = plan_probe_points(part, map, o, &risk);
