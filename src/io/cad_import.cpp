@@ -64,6 +64,7 @@
 #include <unordered_map>
 
 #include "geometry/error.hpp"
+#include "io/text_fields.hpp"
 #include "io/cad_parameter_map.hpp"
 #include "io/cad_trim_polygon.hpp"
 
@@ -81,17 +82,6 @@ class FaceFailure : public std::runtime_error {
 constexpr int kCheckGrid = 13;
 
 enum class Format { step, iges };
-
-std::string lowercase(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-std::string trimmed(std::string s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 std::string occt_text(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
@@ -123,7 +113,7 @@ class QuietMessenger {
 };
 
 Format format_of(const std::string& path) {
-  const std::string ext = lowercase(std::filesystem::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   if (ext == ".step" || ext == ".stp") return Format::step;
   if (ext == ".iges" || ext == ".igs") return Format::iges;
   throw InputError(path + ": not a CAD file name (expected .step, .stp, .iges or .igs)");
@@ -140,7 +130,7 @@ void check_signature(const std::string& path, Format format) {
   std::string head(4096, '\0');
   in.read(&head[0], static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  if (trimmed(head).empty()) throw InputError(path + ": the file is empty");
+  if (trim(head).empty()) throw InputError(path + ": the file is empty");
   if (format == Format::step) {
     std::size_t start = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // UTF-8 BOM
     start = head.find_first_not_of(" \t\r\n", start);
@@ -169,7 +159,7 @@ struct LoadedFile {
 };
 
 std::string hstring(const Handle(TCollection_HAsciiString)& s) {
-  return s.IsNull() ? std::string() : trimmed(s->ToCString());
+  return s.IsNull() ? std::string() : trim(s->ToCString());
 }
 
 std::string entity_label(const Handle(Interface_InterfaceModel)& model,
@@ -185,8 +175,8 @@ std::string entity_problems(const Handle(Interface_InterfaceModel)& model,
   std::vector<std::string> messages;
   auto collect = [&](const Handle(Interface_Check)& check) {
     if (check.IsNull()) return;
-    for (int k = 1; k <= check->NbFails(); ++k) messages.push_back(trimmed(check->CFail(k)));
-    for (int k = 1; k <= check->NbWarnings(); ++k) messages.push_back(trimmed(check->CWarning(k)));
+    for (int k = 1; k <= check->NbFails(); ++k) messages.push_back(trim(check->CFail(k)));
+    for (int k = 1; k <= check->NbWarnings(); ++k) messages.push_back(trim(check->CWarning(k)));
   };
   const int number = model->Number(entity);
   if (number > 0) {
@@ -210,7 +200,7 @@ bool attempted(const Handle(Interface_InterfaceModel)& model,
 }
 
 std::string unit_name(const std::string& occt_unit) {
-  const std::string u = lowercase(trimmed(occt_unit));
+  const std::string u = to_lower(trim(occt_unit));
   if (u == "mm" || u == "millimetre" || u == "millimeter") return "mm";
   if (u == "in" || u == "inch") return "inch";
   return u.empty() ? "mm" : u;
@@ -673,7 +663,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
 }  // namespace
 
 bool is_cad_file(const std::string& path) {
-  const std::string ext = lowercase(std::filesystem::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
 }
 

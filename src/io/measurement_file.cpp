@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -12,6 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json_fields.hpp"
 #include "io/part_file.hpp"
+#include "io/text_fields.hpp"
 
 namespace furrow {
 
@@ -27,18 +27,6 @@ ProbePointKind parse_probe_point_kind(const std::string& text, const std::string
 }
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 
 // A source line with its number, comments and blank lines already dropped.
 struct Line {
@@ -110,7 +98,7 @@ void parse_csv(const std::string& text, const std::string& name, double scale,
   std::map<std::string, int> column;
   const std::vector<std::string> header = split(lines[0].text, ',');
   for (std::size_t c = 0; c < header.size(); ++c) {
-    const std::string h = lower(trim(header[c]));
+    const std::string h = to_lower(trim(header[c]));
     if (std::find(std::begin(known), std::end(known), h) == std::end(known))
       fail(name, lines[0].number,
            "unknown column \"" + trim(header[c]) + "\" (the header names id, x, y, z, i, j, k)");
@@ -232,7 +220,7 @@ std::string dmis_compact_upper(const std::string& text) {
 }  // namespace
 
 MeasurementFormat measurement_format_from_path(const std::string& path) {
-  const std::string ext = lower(std::filesystem::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   if (ext == ".csv") return MeasurementFormat::csv;
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
   if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res")
@@ -370,7 +358,7 @@ std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st
   if (f.label.empty()) fail(name, st.line, "empty feature label");
   // Values from the statement as written, so messages quote the user's text.
   const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
-  if (fields.empty() || lower(fields[0]) != "cart")
+  if (fields.empty() || to_lower(fields[0]) != "cart")
     fail(name, st.line, "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) + "\"");
   if (fields.size() != 7)
     fail(name, st.line, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " + std::to_string(fields.size() - 1));

@@ -17,6 +17,12 @@ bool parse_finite(const std::string& text, double& out) {
   return end == text.c_str() + text.size() && errno == 0 && std::isfinite(out);
 }
 
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
 std::string to_lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;

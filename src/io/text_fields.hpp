@@ -10,6 +10,9 @@ namespace furrow {
 // leading or trailing characters, no overflow); the value goes to `out`.
 bool parse_finite(const std::string& text, double& out);
 
+// `text` without leading and trailing blanks (space, tab, CR, LF).
+std::string trim(const std::string& text);
+
 // ASCII lower case.
 std::string to_lower(std::string text);
 

@@ -21,3 +21,11 @@ TEST_CASE("lower-case helpers") {
   CHECK(lower_extension("/a/b/Part.STEP") == ".step");
   CHECK(lower_extension("noext") == "");
 }
+
+TEST_CASE("trim removes blanks at both ends only") {
+  CHECK(trim("  id 7\t\r\n") == "id 7");
+  CHECK(trim("x") == "x");
+  CHECK(trim(" \t\r\n") == "");
+  CHECK(trim("") == "");
+  CHECK(trim("a  b") == "a  b");
+}
