@@ -230,6 +230,23 @@ std::size_t find_reference_face(const std::string& type, Pick pick) {
   return 0;
 }
 
+// The block's top face (plane z = box_z, facing up); the boss and the
+// dimple cut holes in it.
+std::size_t block_top_face() {
+  using G = ReferenceGeometry;
+  return find_reference_face("plane", [](const TopoDS_Face& f) {
+    const gp_Pln p = BRepAdaptor_Surface(f).Plane();
+    return std::abs(p.Location().Z() - G::box_z) < 1e-9 && std::abs(p.Axis().Direction().Z()) > 0.99 &&
+           occt_area(f) > 1000;
+  });
+}
+
+// Radius of the dimple's rim on the top face: the sphere cut by z = box_z.
+double dimple_hole_radius() {
+  using G = ReferenceGeometry;
+  return std::sqrt(G::dimple_r * G::dimple_r - (G::dimple_z - G::box_z) * (G::dimple_z - G::box_z));
+}
+
 std::string import_error(const std::string& path, const CadImportOptions& options = {}) {
   try {
     import_cad(path, options);
@@ -288,15 +305,10 @@ TEST_CASE("CAD import: trims - points in the holes of a face are outside it") {
   using G = ReferenceGeometry;
   const CadImportResult result = import_cad(model_file("step"));
   // The block's top face at z = box_z has the boss and the dimple as holes.
-  const std::size_t top = find_reference_face("plane", [](const TopoDS_Face& f) {
-    const gp_Pln p = BRepAdaptor_Surface(f).Plane();
-    return std::abs(p.Location().Z() - G::box_z) < 1e-9 && std::abs(p.Axis().Direction().Z()) > 0.99 &&
-           occt_area(f) > 1000;
-  });
+  const std::size_t top = block_top_face();
   const Face& face = result.part.faces[top];
   CHECK(result.faces[top].loops == 3);
-  const double dimple_hole = std::sqrt(G::dimple_r * G::dimple_r -
-                                       (G::dimple_z - G::box_z) * (G::dimple_z - G::box_z));
+  const double dimple_hole = dimple_hole_radius();
   const ParameterDomain& d = face.domain();
   int mismatches = 0, in_holes = 0, kept = 0;
   for (int i = 0; i <= 300; ++i)
@@ -325,17 +337,12 @@ TEST_CASE("CAD import: the closest point on an imported face with holes never la
   // for a query at height h and horizontal distance rho from the centre.
   using G = ReferenceGeometry;
   const CadImportResult result = import_cad(model_file("step"));
-  const std::size_t top = find_reference_face("plane", [](const TopoDS_Face& f) {
-    const gp_Pln p = BRepAdaptor_Surface(f).Plane();
-    return std::abs(p.Location().Z() - G::box_z) < 1e-9 && std::abs(p.Axis().Direction().Z()) > 0.99 &&
-           occt_area(f) > 1000;
-  });
+  const std::size_t top = block_top_face();
   Part part;
   part.faces.push_back(result.part.faces[top]);
   const Face& face = part.faces[0];
   const ClosestPointFinder finder(part);
-  const double dimple_hole = std::sqrt(G::dimple_r * G::dimple_r -
-                                       (G::dimple_z - G::box_z) * (G::dimple_z - G::box_z));
+  const double dimple_hole = dimple_hole_radius();
   const struct {
     double x, y, r;
   } holes[] = {{G::boss_x, G::boss_y, G::boss_r}, {G::dimple_x, G::dimple_y, dimple_hole}};
