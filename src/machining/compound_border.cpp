@@ -82,16 +82,18 @@ BorderNeighbour BorderLocator::neighbour(std::size_t face, const Eigen::Vector3d
     const Face& f = part_.faces[s.face];
     const double lo = s.samples.front().t, hi = s.samples.back().t;
     double t = s.samples[k_best].t;
+    bool converged = false;
     for (int it = 0; it < options_.max_iterations; ++it) {
       const SidePoint p = side_point(f, s.side, t);
       const Eigen::Vector3d r = p.C - point;
       const double g = r.dot(p.Ct), dg = p.Ct.dot(p.Ct) + r.dot(p.Ctt);
       if (!(dg > 0)) break;
       const double next = std::clamp(t - g / dg, lo, hi);
-      const bool done = std::abs(next - t) <= 1e-14 * (hi - lo);
+      converged = std::abs(next - t) <= 1e-14 * (hi - lo);
       t = next;
-      if (done) break;
+      if (converged) break;
     }
+    if (!converged) best.converged = false;
     const Eigen::Vector2d uv = side_uv(f.domain(), s.side, t);
     const double dist = (f.surface().point(uv.x(), uv.y()) - point).norm();
     if (dist <= options_.distance_tolerance && dist < best.distance) {
@@ -120,6 +122,7 @@ ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,
   c.inward_count = inward_directions(d, c.geometry.normal, c.sides, c.inward);
 
   const BorderNeighbour nb = locator.neighbour(face, c.geometry.point);
+  c.border_search_converged = nb.converged;
   if (!nb.found) return c;
   const Face& g = part.faces[nb.face];
   const SurfaceDerivatives dn = g.surface().evaluate(nb.uv.x(), nb.uv.y(), 2);

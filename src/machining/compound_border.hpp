@@ -63,6 +63,11 @@ struct BorderNeighbour {
   std::size_t face = 0;
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
   double distance = 0;  // [mm]
+  // False when the 1-D search on some side near the point stopped at
+  // max_iterations or on a non-positive second derivative before it
+  // converged: a neighbour there may have been missed (then `found` is
+  // false and the point is treated as a free edge).
+  bool converged = true;
 };
 
 // Finds, for a point on a face's border, the matching point on another
@@ -109,6 +114,7 @@ struct ContactSurfaces {
   double crease_angle = 0;  // [rad] between the faces' normals
   bool crease = false;      // crease_angle above the option's
   bool concave_crease = false;
+  bool border_search_converged = true;  // BorderNeighbour::converged
 };
 
 ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,

@@ -42,6 +42,7 @@ json point_json(const Part& part, const GougePoint& p) {
     } else {
       b["neighbour"] = nullptr;
     }
+    b["search_converged"] = p.border_search_converged;
     j["border"] = std::move(b);
   }
   if (!g.cutter.reachable) return j;
@@ -81,6 +82,7 @@ GougeSummary summarize_gouges(const Part& part, const std::vector<GougePoint>& p
     const GougePoint& p = points[k];
     ++s.face_points[p.site.face];
     s.border += p.sides != 0;
+    s.border_unresolved += p.sides != 0 && !p.border_search_converged;
     switch (p.gouge.status) {
       case GougeStatus::clear: ++s.clear; break;
       case GougeStatus::gouge:
@@ -123,6 +125,7 @@ std::string gouge_report_json(const Part& part, const std::string& part_path,
   summary["degenerate"] = s.degenerate;
   summary["concave_crease"] = s.concave_crease;
   summary["border_points"] = s.border;
+  summary["border_unresolved"] = s.border_unresolved;
   summary["max_excess"] = s.worst >= 0 ? sj::rounded(s.max_excess, sj::kCurvatureQuantum, "excess") : json(nullptr);
   summary["worst_point"] = s.worst >= 0 ? json(s.worst) : json(nullptr);
   doc["summary"] = std::move(summary);
@@ -157,6 +160,9 @@ std::string gouge_summary_text(const Part& part, const std::string& part_path,
   if (s.unreachable || s.degenerate || s.concave_crease)
     out << "  unreachable from above " << s.unreachable << ", degenerate " << s.degenerate
         << ", concave crease " << s.concave_crease << "\n";
+  if (s.border_unresolved)
+    out << "  " << s.border_unresolved
+        << " border points: the search for the neighbouring face did not converge (checked as free edges)\n";
   return out.str();
 }
 

@@ -11,6 +11,7 @@ namespace furrow {
 struct GougeSummary {
   std::size_t points = 0, clear = 0, gouge = 0, unreachable = 0, degenerate = 0,
               concave_crease = 0, border = 0;
+  std::size_t border_unresolved = 0;  // border points whose neighbour search did not converge
   double max_excess = 0;  // largest excess over gouging points [1/mm]
   long worst = -1;        // index of that point, -1 when nothing gouges
   std::vector<std::size_t> face_points, face_gouges;  // per face

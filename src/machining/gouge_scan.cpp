@@ -17,6 +17,7 @@ GougePoint check_site(const Cutter& cutter, const ContactSurfaces& surfaces,
   p.neighbour_face = surfaces.neighbour_face;
   p.neighbour_uv = surfaces.neighbour_uv;
   p.crease_angle = surfaces.crease_angle;
+  p.border_search_converged = surfaces.border_search_converged;
   p.gouge = check_contact(cutter, surfaces, options);
   if (p.gouge.cutter.reachable) {
     // Located as checked: same contact normal, same axis side.

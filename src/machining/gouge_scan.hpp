@@ -31,6 +31,7 @@ struct GougePoint {
   std::size_t neighbour_face = 0;
   Eigen::Vector2d neighbour_uv = Eigen::Vector2d::Zero();
   double crease_angle = 0;  // [rad] between the faces' normals at a border
+  bool border_search_converged = true;  // ContactSurfaces::border_search_converged
 };
 
 // The contact surfaces at a site and its gouge check in one call (also used

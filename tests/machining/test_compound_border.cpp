@@ -152,3 +152,20 @@ TEST_CASE("domain sides and inward directions") {
   CHECK((in[0] - Eigen::Vector3d(-1, 0, 0)).norm() < 1e-12);
   CHECK((in[1] - Eigen::Vector3d(0, 1, 0)).norm() < 1e-12);
 }
+
+TEST_CASE("a neighbour search that cannot converge says so instead of passing for a free edge") {
+  const Part part = read_part(source_path("examples/parts/two_face.json"));
+  const Eigen::Vector2d on_edge(1.0, 0.37);  // valley_wall's x = 50 edge, between side samples
+  const ContactSurfaces converged = contact_surfaces(BorderLocator(part), 0, on_edge);
+  CHECK(converged.border_search_converged);
+  CHECK(converged.has_neighbour);
+
+  BorderOptions capped;
+  capped.max_iterations = 1;  // one Newton step cannot also confirm its own convergence
+  const BorderLocator starved(part, capped);
+  const BorderNeighbour nb = starved.neighbour(0, part.faces[0].surface().point(on_edge.x(), on_edge.y()));
+  CHECK_FALSE(nb.converged);
+  CHECK_FALSE(contact_surfaces(starved, 0, on_edge).border_search_converged);
+  // An interior point never searches.
+  CHECK(contact_surfaces(starved, 0, {0.5, 0.5}).border_search_converged);
+}
