@@ -67,6 +67,7 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
     s.normal = surfaces.geometry.normal;
     s.k1 = surfaces.geometry.k1;
     s.k2 = surfaces.geometry.k2;
+    s.border_search_converged = surfaces.border_search_converged;
     for (std::size_t t = 0; t < tools; ++t) {
       const Cutter& cutter = result.library[t];
       const LocalGouge g = check_contact(cutter, surfaces, gouge);
@@ -116,6 +117,7 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
   result.interfering_sites.assign(tools, 0);
   for (std::size_t k = 0; k < sites.size(); ++k) {
     const SiteSelection& s = result.sites[k];
+    result.border_unresolved += !s.border_search_converged;
     if (!s.machinable) {
       ++result.unmachinable;
       continue;

@@ -67,6 +67,9 @@ struct SiteSelection {
   bool smallest_gouges_locally = false;
   NeededCurvature needed;       // when smallest_gouges_locally
   double interference = 0;      // [mm] > 0 when the smallest tool interferes
+  // False on a border point whose neighbour search did not converge
+  // (ContactSurfaces::border_search_converged): checked as a free edge.
+  bool border_search_converged = true;
 };
 
 struct ToolSelection {
@@ -77,6 +80,7 @@ struct ToolSelection {
   std::vector<SiteSelection> sites;          // in the order given
   std::size_t unmachinable = 0;              // sites excluded (see above)
   std::size_t without_tool = 0;              // machinable sites where every tool gouges
+  std::size_t border_unresolved = 0;         // sites with border_search_converged false
 };
 
 // Throws InputError for an empty library.

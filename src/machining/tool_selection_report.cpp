@@ -72,7 +72,8 @@ std::string tool_selection_json(const Part& part, const std::string& part_path,
       sel.whole_surface >= 0 ? json(sel.library[sel.whole_surface].name()) : json(nullptr);
   doc["summary"] = {{"points", sel.sites.size()},
                     {"unmachinable", sel.unmachinable},
-                    {"without_tool", sel.without_tool}};
+                    {"without_tool", sel.without_tool},
+                    {"border_unresolved", sel.border_unresolved}};
   json points = json::array();
   for (const SiteSelection& s : sel.sites) {
     json j = sj::site(part, s.site, s.point, s.normal, s.k1, s.k2);
@@ -108,6 +109,9 @@ std::string tool_selection_text(const Part& part, const std::string& part_path,
       << sel.sites.size() << " contact points";
   if (sel.unmachinable) out << " (" << sel.unmachinable << " not machinable from above)";
   out << "\n";
+  if (sel.border_unresolved)
+    out << "  " << sel.border_unresolved
+        << " border points: the search for the neighbouring face did not converge (checked as free edges)\n";
   if (sel.whole_surface >= 0) {
     const Cutter& c = sel.library[sel.whole_surface];
     out << "  largest tool gouge-free everywhere: " << c.name() << " (" << to_string(c.type())

@@ -7,6 +7,7 @@
 
 #include "geometry/error.hpp"
 #include "geometry/primitives.hpp"
+#include "io/part_file.hpp"
 #include "io/tool_file.hpp"
 #include "machining/tool_selection.hpp"
 #include "cutter_reference.hpp"
@@ -149,4 +150,22 @@ TEST_CASE("tool selection: where even the smallest tool gouges, the curvature th
     CHECK(std::abs(s.needed.direction.y()) < 1e-9);  // across the groove
   }
   CHECK_THROWS_AS(select_tools(part, {}, grid_sites(part, 3)), InputError);
+}
+
+TEST_CASE("tool selection counts border sites whose neighbour search did not converge") {
+  const Part part = read_part(test::source_path("examples/parts/two_face.json"));
+  std::vector<ContactSite> sites(3);
+  sites[0].face = 0, sites[0].uv = {1.0, 0.37};  // valley_wall's edge against the crown
+  sites[1].face = 0, sites[1].uv = {0.5, 0.5};   // interior
+  sites[2].face = 1, sites[2].uv = {0.0, 0.37};  // the crown's side of the same edge
+  const std::vector<Cutter> library = {Cutter(read_tool_library(test::source_path("examples/tools/library.json")).back())};
+  const ToolSelection normal = select_tools(part, library, sites);
+  CHECK(normal.border_unresolved == 0);
+  ToolSelectionOptions starved;
+  starved.scan.border.max_iterations = 1;
+  const ToolSelection capped = select_tools(part, library, sites, starved);
+  CHECK(capped.border_unresolved == 2);  // both edge sites, not the interior one
+  CHECK_FALSE(capped.sites[0].border_search_converged);
+  CHECK(capped.sites[1].border_search_converged);
+  CHECK_FALSE(capped.sites[2].border_search_converged);
 }
