@@ -170,7 +170,15 @@ ClosestPoint ClosestPointFinder::project(const Eigen::Vector3d& q, const Closest
   return search(q, &hint);
 }
 
-ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestPoint* hint) const {
+std::optional<ClosestPoint> ClosestPointFinder::project_to_other_faces(const Eigen::Vector3d& q,
+                                                                      std::size_t face) const {
+  const ClosestPoint foot = search(q, nullptr, face);
+  if (foot.face == face || !std::isfinite(foot.distance)) return std::nullopt;
+  return foot;
+}
+
+ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestPoint* hint,
+                                        std::size_t excluded) const {
   const SeedGrid& grid = *grid_;
   const auto& cells = grid.cells();
   const auto& nodes = grid.nodes();
@@ -202,6 +210,7 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
       std::sort(order, order + n);
       for (std::uint32_t k = 0; k < n; ++k) {
         if (static_cast<int>(order[k].second) == hint_cell) continue;
+        if (cells[order[k].second].face == excluded) continue;
         if (order[k].first >= std::sqrt(best.squared_distance)) break;
         solve_cell(*part_, grid, cells[order[k].second], q, nullptr, options_, best);
         ++examined;
@@ -217,6 +226,12 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     if (std::min(bl, br) < best.squared_distance) stack[top++] = near;
   }
 
+  if (!std::isfinite(best.squared_distance)) {  // every cell was excluded
+    ClosestPoint none;
+    none.face = excluded;
+    none.distance = std::numeric_limits<double>::infinity();
+    return none;
+  }
   const Face& face = part_->faces[best.face];
   const ParameterDomain& dom = face.domain();
   const bool inside_cell = (best.uv.array() > best.cell_lo.array()).all() &&

@@ -31,6 +31,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>
+#include <optional>
 
 #include "geometry/part.hpp"
 
@@ -106,8 +107,14 @@ class ClosestPointFinder {
   // still the global minimum; a bad hint only costs time.
   ClosestPoint project(const Eigen::Vector3d& q, const ClosestPoint& hint) const;
 
+  // Global closest point over every face except `face`: what touches a
+  // point of that face from elsewhere (a neighbouring face across an edge).
+  // Empty when the part has no other face left after trimming.
+  std::optional<ClosestPoint> project_to_other_faces(const Eigen::Vector3d& q, std::size_t face) const;
+
  private:
-  ClosestPoint search(const Eigen::Vector3d& q, const ClosestPoint* hint) const;
+  static constexpr std::size_t kNoFace = static_cast<std::size_t>(-1);
+  ClosestPoint search(const Eigen::Vector3d& q, const ClosestPoint* hint, std::size_t excluded = kNoFace) const;
 
   const Part* part_;
   ClosestPointOptions options_;

@@ -69,17 +69,41 @@ bool Trim::contains(const Eigen::Vector2d& uv) const {
   return inside;
 }
 
+namespace {
+
+// Nearest point of segment ab to p.
+Eigen::Vector2d nearest_on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+}  // namespace
+
 double Trim::distance_to_boundary(const Eigen::Vector2d& uv) const {
   double best = std::numeric_limits<double>::infinity();
-  for (const auto& loop : loops_) {
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
-      const Eigen::Vector2d ab = b - a;
-      const double len2 = ab.squaredNorm();
-      const double t = len2 > 0 ? std::clamp((uv - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-      best = std::min(best, (a + t * ab - uv).norm());
+  for (const auto& loop : loops_)
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      best = std::min(best, (nearest_on_segment(loop[k], loop[(k + 1) % loop.size()], uv) - uv).norm());
+  return best;
+}
+
+std::optional<Trim::EdgePoint> Trim::edge_near(const Eigen::Vector2d& uv, double max_distance) const {
+  if (loops_.empty() || !(uv.y() >= v_min_ - max_distance && uv.y() <= v_max_ + max_distance)) return std::nullopt;
+  // An edge within max_distance overlaps [v - d, v + d], so it is in one of
+  // the bands that interval touches.
+  const double last_band = static_cast<double>(bands_.size() - 1);
+  const auto first = static_cast<std::size_t>(std::clamp((uv.y() - max_distance - v_min_) / band_height_, 0.0, last_band));
+  const auto last = static_cast<std::size_t>(std::clamp((uv.y() + max_distance - v_min_) / band_height_, 0.0, last_band));
+  std::optional<EdgePoint> best;
+  for (std::size_t b = first; b <= last; ++b)
+    for (const Edge& e : bands_[b]) {
+      const Eigen::Vector2d p = nearest_on_segment(e.a, e.b, uv);
+      const double d = (p - uv).norm();
+      if (d > max_distance || (best && d >= best->distance) || !((e.b - e.a).norm() > 0)) continue;
+      best = EdgePoint{p, (e.b - e.a).normalized(), d};
     }
-  }
   return best;
 }
 

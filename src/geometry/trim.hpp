@@ -11,6 +11,7 @@
 // The test is ours and fast: every loop edge is put into one of a fixed number
 // of horizontal (v) bands once, so a query crosses only the edges of its band.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,17 @@ class Trim {
 
   // Euclidean (u,v) distance to the nearest loop edge; +infinity for an empty trim.
   double distance_to_boundary(const Eigen::Vector2d& uv) const;
+
+  // The nearest point of a loop edge when one lies within `max_distance`
+  // (u,v units) of uv: the point, the distance and the edge's unit direction
+  // in (u,v). Only the bands near uv are searched, so this is cheap for the
+  // small distances that decide "is this point on the trim curve".
+  struct EdgePoint {
+    Eigen::Vector2d point = Eigen::Vector2d::Zero();
+    Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();
+    double distance = 0;
+  };
+  std::optional<EdgePoint> edge_near(const Eigen::Vector2d& uv, double max_distance) const;
 
  private:
   struct Edge {

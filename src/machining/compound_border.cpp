@@ -4,107 +4,82 @@
 #include <cmath>
 #include <limits>
 
-#include "machining/face_seeds.hpp"
 
 namespace furrow {
 
 namespace {
 
-// Point and derivative along a side: the side runs along v for u sides, along
-// u for v sides; t is that running parameter.
-struct SidePoint {
-  Eigen::Vector3d C, Ct, Ctt;
-};
-
-SidePoint side_point(const Face& face, unsigned side, double t) {
-  const Eigen::Vector2d uv = side_uv(face.domain(), side, t);
-  const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 2);
-  const bool along_v = runs_along_v(side);
-  return {d.S, along_v ? d.Sv : d.Su, along_v ? d.Svv : d.Suu};
+// Unit tangent across an edge with 3-D direction `edge`, into the face
+// (on the side of `across`); false when the edge direction is degenerate.
+bool inward_across(const Eigen::Vector3d& normal, const Eigen::Vector3d& edge, const Eigen::Vector3d& across,
+                   Eigen::Vector3d& out) {
+  Eigen::Vector3d in = normal.cross(edge);
+  if (!(in.norm() > 0)) return false;
+  in.normalize();
+  out = in.dot(across) < 0 ? Eigen::Vector3d(-in) : in;
+  return true;
 }
 
 }  // namespace
 
-int inward_directions(const SurfaceDerivatives& d, const Eigen::Vector3d& normal, unsigned sides,
-                      std::array<Eigen::Vector3d, 2>& out) {
-  int count = 0;
+BorderDirections border_directions(const Face& face, const Eigen::Vector2d& uv, const SurfaceDerivatives& d,
+                                   const Eigen::Vector3d& normal, const BorderOptions& options) {
+  BorderDirections b;
+  const ParameterDomain& dom = face.domain();
+  const double side_tolerance = options.side_tolerance;
+  b.sides = domain_sides(dom, uv, side_tolerance);
   for (const unsigned side : kAllSides) {
-    if (!(sides & side)) continue;
-    const bool u_side = runs_along_v(side);
-    const Eigen::Vector3d edge = u_side ? d.Sv : d.Su;                  // along the edge
-    const Eigen::Vector3d across = (side == kSideUMin) ? d.Su          // into the face
-                                   : (side == kSideUMax) ? Eigen::Vector3d(-d.Su)
-                                   : (side == kSideVMin) ? d.Sv
-                                                         : Eigen::Vector3d(-d.Sv);
-    Eigen::Vector3d in = normal.cross(edge);
-    if (!(in.norm() > 0)) continue;
-    in.normalize();
-    if (in.dot(across) < 0) in = -in;
-    out[count++] = in;
+    if (!(b.sides & side)) continue;
+    Eigen::Vector2d opposite = uv;
+    if (side == kSideUMin) opposite.x() = dom.u1;
+    if (side == kSideUMax) opposite.x() = dom.u0;
+    if (side == kSideVMin) opposite.y() = dom.v1;
+    if (side == kSideVMax) opposite.y() = dom.v0;
+    if ((face.surface().point(opposite.x(), opposite.y()) - d.S).norm() <= options.distance_tolerance)
+      b.sides &= ~side;  // a seam: the face goes on across it
   }
-  return count;
+  auto add = [&](const Eigen::Vector3d& edge, const Eigen::Vector3d& across) {
+    if (b.count < 2 && inward_across(normal, edge, across, b.inward[b.count])) ++b.count;
+  };
+  for (const unsigned side : kAllSides) {
+    if (!(b.sides & side)) continue;
+    const bool u_side = runs_along_v(side);
+    add(u_side ? d.Sv : d.Su, side == kSideUMin   ? d.Su
+                              : side == kSideUMax ? Eigen::Vector3d(-d.Su)
+                              : side == kSideVMin ? d.Sv
+                                                  : Eigen::Vector3d(-d.Sv));
+  }
+  const double width = std::max(dom.width_u(), dom.width_v());
+  if (const auto e = face.trim().edge_near(uv, side_tolerance * width)) {
+    b.sides |= kTrimEdge;
+    // Across the loop edge, toward the side the trim keeps.
+    Eigen::Vector2d across(-e->tangent.y(), e->tangent.x());
+    const double probe = 1e-6 * width;
+    if (!face.trim().contains(e->point + probe * across)) across = -across;
+    add(d.Su * e->tangent.x() + d.Sv * e->tangent.y(), d.Su * across.x() + d.Sv * across.y());
+  }
+  return b;
 }
 
 BorderLocator::BorderLocator(const Part& part, const BorderOptions& options)
-    : part_(part), options_(options) {
-  const int n = std::max(2, options.side_samples);
-  for (std::size_t f = 0; f < part.faces.size(); ++f) {
-    const Face& face = part.faces[f];
-    const ParameterDomain& d = face.domain();
-    for (const unsigned side : kAllSides) {
-      const auto [lo, hi] = side_range(d, side);
-      Side s{f, side, {}, 0.0};
-      for (int k = 0; k < n; ++k) {
-        const double t = grid_parameter(lo, hi, k, n);
-        const Eigen::Vector2d uv = side_uv(d, side, t);
-        s.samples.push_back({t, face.surface().point(uv.x(), uv.y())});
-        if (k > 0) s.spacing = std::max(s.spacing, (s.samples[k].point - s.samples[k - 1].point).norm());
-      }
-      sides_.push_back(std::move(s));
-    }
-  }
-}
+    : part_(part), options_(options), finder_(part, options.closest) {}
 
 BorderNeighbour BorderLocator::neighbour(std::size_t face, const Eigen::Vector3d& point) const {
-  BorderNeighbour best;
-  best.distance = std::numeric_limits<double>::infinity();
-  for (const Side& s : sides_) {
-    if (s.face == face) continue;
-    std::size_t k_best = 0;
-    double d_best = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < s.samples.size(); ++k) {
-      const double dist = (s.samples[k].point - point).norm();
-      if (dist < d_best) d_best = dist, k_best = k;
-    }
-    // Between samples the side can be no farther than about one spacing.
-    if (d_best > s.spacing + options_.distance_tolerance) continue;
-    // 1-D Newton on (C(t) - Q) . C'(t) = 0, clamped to the side.
-    const Face& f = part_.faces[s.face];
-    const double lo = s.samples.front().t, hi = s.samples.back().t;
-    double t = s.samples[k_best].t;
-    bool converged = false;
-    for (int it = 0; it < options_.max_iterations; ++it) {
-      const SidePoint p = side_point(f, s.side, t);
-      const Eigen::Vector3d r = p.C - point;
-      const double g = r.dot(p.Ct), dg = p.Ct.dot(p.Ct) + r.dot(p.Ctt);
-      if (!(dg > 0)) break;
-      const double next = std::clamp(t - g / dg, lo, hi);
-      converged = std::abs(next - t) <= 1e-14 * (hi - lo);
-      t = next;
-      if (converged) break;
-    }
-    if (!converged) best.converged = false;
-    const Eigen::Vector2d uv = side_uv(f.domain(), s.side, t);
-    const double dist = (f.surface().point(uv.x(), uv.y()) - point).norm();
-    if (dist <= options_.distance_tolerance && dist < best.distance) {
-      best.found = true;
-      best.face = s.face;
-      best.uv = uv;
-      best.distance = dist;
-    }
-  }
-  if (!best.found) best.distance = 0;
-  return best;
+  BorderNeighbour nb;
+  const std::optional<ClosestPoint> foot = finder_.project_to_other_faces(point, face);
+  if (!foot) return nb;
+  nb.converged = foot->converged;
+  if (!(foot->distance <= options_.distance_tolerance)) return nb;
+  // A touching face counts only where its own border is: an edge of this
+  // face resting on the inside of another is not a shared edge.
+  const Face& other = part_.faces[foot->face];
+  const SurfaceDerivatives d = other.surface().evaluate(foot->uv.x(), foot->uv.y(), 1);
+  if (border_directions(other, foot->uv, d, foot->normal, options_).sides == 0) return nb;
+  nb.found = true;
+  nb.face = foot->face;
+  nb.uv = foot->uv;
+  nb.distance = foot->distance;
+  return nb;
 }
 
 ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,
@@ -117,9 +92,11 @@ ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,
   const Face& f = part.faces[face];
   const SurfaceDerivatives d = f.surface().evaluate(uv.x(), uv.y(), 2);
   c.geometry = f.geometry(d);
-  c.sides = domain_sides(f.domain(), uv, options.side_tolerance);
+  const BorderDirections own = border_directions(f, uv, d, c.geometry.normal, options);
+  c.sides = own.sides;
   if (c.sides == 0 || c.geometry.degenerate) return c;
-  c.inward_count = inward_directions(d, c.geometry.normal, c.sides, c.inward);
+  c.inward = own.inward;
+  c.inward_count = own.count;
 
   const BorderNeighbour nb = locator.neighbour(face, c.geometry.point);
   c.border_search_converged = nb.converged;
@@ -132,8 +109,9 @@ ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,
   c.neighbour_face = nb.face;
   c.neighbour_uv = nb.uv;
   c.neighbour_geometry = gn;
-  c.neighbour_inward_count = inward_directions(
-      dn, gn.normal, domain_sides(g.domain(), nb.uv, options.side_tolerance), c.neighbour_inward);
+  const BorderDirections theirs = border_directions(g, nb.uv, dn, gn.normal, options);
+  c.neighbour_inward = theirs.inward;
+  c.neighbour_inward_count = theirs.count;
   c.crease_angle = std::acos(std::clamp(c.geometry.normal.dot(gn.normal), -1.0, 1.0));
   c.crease = c.crease_angle > options.crease_angle_deg * M_PI / 180;
   if (c.crease && c.neighbour_inward_count > 0)

@@ -12,11 +12,15 @@
 // face is compared over the directions into it only: beyond it there is no
 // part to gouge.
 //
-// Borders are found geometrically, so faces need not share parametrisations:
-// a point on a side of its face's parameter rectangle (u or v at a domain
-// end) is matched with the closest point of another face's domain sides
-// within `distance_tolerance`. Borders along trim curves are not detected
-// (the point is then treated as interior).
+// A point is on its face's border when it lies on a side of the face's
+// parameter rectangle or on one of its trim loops (kTrimEdge; the inward
+// direction then comes from the loop edge's tangent and the side the trim
+// keeps). Borders are found geometrically, so faces need not share
+// parametrisations: the neighbour is the global closest point of the other
+// faces (ClosestPointFinder, trims respected) when it lies within
+// `distance_tolerance` and on that face's own border. The finder reports
+// whether its local solve converged; a neighbour search that did not is
+// reported (BorderNeighbour::converged), never hidden.
 //
 // Tangent continuity: if the two faces' normals differ by more than
 // `crease_angle_deg` the edge is a crease, where curvatures do not describe
@@ -34,67 +38,69 @@
 #include <array>
 #include <vector>
 
+#include "geometry/closest_point.hpp"
 #include "geometry/part.hpp"
 #include "machining/domain_sides.hpp"
 #include "machining/local_gouge.hpp"
 
 namespace furrow {
 
+// Bit of ContactSurfaces::sides for a point on a trim loop (the domain
+// sides are DomainSide bits).
+constexpr unsigned kTrimEdge = 16;
+
 struct BorderOptions {
-  // (u,v) within this fraction of the domain width of a side lies on it.
+  // (u,v) within this fraction of the domain width of a side or a trim loop
+  // lies on it.
   double side_tolerance = 1e-9;
-  // A point of another face's side this close [mm] is the same point.
+  // A point of another face's border this close [mm] is the same point.
   double distance_tolerance = 1e-3;
   // Normals differing more than this [degrees] make the edge a crease.
   double crease_angle_deg = 0.5;
-  // Samples per side for seeding, and the 1-D Newton cap per side.
-  int side_samples = 64;
-  int max_iterations = 30;
+  // The neighbour search (its iteration caps and tolerances).
+  ClosestPointOptions closest;
 };
 
-// Unit tangent directions across each side in `sides` (at most two, a
-// corner), perpendicular to the edge and pointing into the face. Returns the
-// count.
-int inward_directions(const SurfaceDerivatives& d, const Eigen::Vector3d& normal, unsigned sides,
-                      std::array<Eigen::Vector3d, 2>& out);
+// Where (u,v) lies on its face's border: the sides (DomainSide bits, and
+// kTrimEdge) and the unit tangent directions across them pointing into the
+// face (at most two, a corner; a third side is dropped). A side whose
+// opposite side meets it in space (within distance_tolerance, at this
+// point) is a seam of a closed face, not a border, and is left out.
+struct BorderDirections {
+  unsigned sides = 0;
+  std::array<Eigen::Vector3d, 2> inward{};
+  int count = 0;
+};
+BorderDirections border_directions(const Face& face, const Eigen::Vector2d& uv, const SurfaceDerivatives& d,
+                                   const Eigen::Vector3d& normal, const BorderOptions& options);
 
 struct BorderNeighbour {
   bool found = false;
   std::size_t face = 0;
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
   double distance = 0;  // [mm]
-  // False when the 1-D search on some side near the point stopped at
-  // max_iterations or on a non-positive second derivative before it
-  // converged: a neighbour there may have been missed (then `found` is
-  // false and the point is treated as a free edge).
+  // False when the closest-point solve that decided the neighbour did not
+  // converge: a neighbour may have been missed (then `found` is false and
+  // the point is treated as a free edge).
   bool converged = true;
 };
 
 // Finds, for a point on a face's border, the matching point on another
-// face's border. Holds a reference to the part.
+// face's border. Holds a reference to the part and its own closest-point
+// finder (built once: a few surface evaluations per seed cell).
 class BorderLocator {
  public:
   explicit BorderLocator(const Part& part, const BorderOptions& options = {});
   const BorderOptions& options() const { return options_; }
   const Part& part() const { return part_; }
-  // The closest point within distance_tolerance on a domain side of a face
-  // other than `face`; found = false when there is none.
+  // The closest point of a face other than `face`, when it lies within
+  // distance_tolerance and on that face's border; found = false otherwise.
   BorderNeighbour neighbour(std::size_t face, const Eigen::Vector3d& point) const;
 
  private:
-  struct SideSample {
-    double t;
-    Eigen::Vector3d point;
-  };
-  struct Side {
-    std::size_t face;
-    unsigned side;
-    std::vector<SideSample> samples;
-    double spacing;  // largest distance between consecutive samples [mm]
-  };
   const Part& part_;
   BorderOptions options_;
-  std::vector<Side> sides_;
+  ClosestPointFinder finder_;
 };
 
 // Everything a gouge check needs at one contact point of a part.
@@ -102,7 +108,7 @@ struct ContactSurfaces {
   std::size_t face = 0;
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
   DifferentialGeometry geometry;
-  unsigned sides = 0;  // domain sides the point lies on (0: interior)
+  unsigned sides = 0;  // DomainSide bits and kTrimEdge the point lies on (0: interior)
   std::array<Eigen::Vector3d, 2> inward{};
   int inward_count = 0;
   bool has_neighbour = false;

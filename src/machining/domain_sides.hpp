@@ -1,8 +1,9 @@
 #pragma once
 // The four sides of a face's parameter rectangle: which sides a (u,v) lies
 // on, and each side as a curve with its own running parameter (v along the
-// u sides, u along the v sides). Face borders (compound_border.hpp) and edge
-// contacts (contact_from_tip.hpp) are found along them.
+// u sides, u along the v sides). Face borders (compound_border.hpp, which
+// adds the trim loops) and edge contacts (contact_from_tip.hpp) are found
+// along them.
 #include <Eigen/Core>
 #include <utility>
 

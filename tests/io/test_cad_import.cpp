@@ -32,6 +32,7 @@
 #include "io/cad_import.hpp"
 #include "io/cad_reference.hpp"
 #include "io/part_file.hpp"
+#include "machining/compound_border.hpp"
 #include "partition/classification.hpp"
 #include "support/run_cli.hpp"
 #include "support/trimmed_area.hpp"
@@ -726,4 +727,43 @@ TEST_CASE("CAD import: furrow import writes the part JSON; furrow info reads CAD
   CHECK(run_furrow({"import", model_file("step"), "--out", dir + "/x.json", "--trim-tolerance", "0"})
             .status == 2);
   CHECK(run_furrow({"info", dir + "/bad.step"}).status == 2);
+}
+
+TEST_CASE("CAD import: gouge borders along trim curves - the boss's base is a concave crease, the dimple's rim convex") {
+  // On the block's top face both holes are trim loops, not parameter sides.
+  // At the boss's base the plane meets the cylinder wall at 90 degrees, a
+  // corner a cutter cannot reach (concave crease); at the dimple's rim it
+  // falls away into the sphere at acos(0.6) = 53.13 degrees (convex crease:
+  // only the plane is compared, flat, so a ball is clear).
+  using G = ReferenceGeometry;
+  const CadImportResult result = import_cad(model_file("step"));
+  const std::size_t top = block_top_face();
+  Part top_only;
+  top_only.faces.push_back(result.part.faces[top]);
+  const ClosestPointFinder on_top(top_only);
+  const BorderLocator locator(result.part);
+  const Cutter ball("ball", 3, 3);
+  struct Case {
+    Eigen::Vector3d point;
+    const char* neighbour_type;
+    double crease_deg;
+    bool concave;
+  } cases[] = {{{G::boss_x + G::boss_r, G::boss_y, G::box_z}, "cylinder", 90, true},
+               {{G::dimple_x + dimple_hole_radius(), G::dimple_y, G::box_z}, "sphere", std::acos(0.6) * 180 / M_PI, false}};
+  for (const Case& k : cases) {
+    CAPTURE(k.neighbour_type);
+    const ClosestPoint foot = on_top.project(k.point);
+    REQUIRE(foot.location == FootLocation::trim_edge);
+    const ContactSurfaces c = contact_surfaces(locator, top, foot.uv);
+    CHECK((c.sides & kTrimEdge) != 0u);
+    REQUIRE(c.inward_count == 1);
+    CHECK(c.inward[0].x() > 0.999);  // away from the hole's centre, which lies at -x
+    REQUIRE(c.has_neighbour);
+    CHECK(result.part.faces[c.neighbour_face].source_type() == std::string(k.neighbour_type));
+    CHECK(c.crease);
+    CHECK(c.crease_angle * 180 / M_PI == doctest::Approx(k.crease_deg).epsilon(1e-4));
+    CHECK(c.concave_crease == k.concave);
+    const LocalGouge g = check_contact(ball, c);
+    CHECK(g.status == (k.concave ? GougeStatus::concave_crease : GougeStatus::clear));
+  }
 }

@@ -104,6 +104,53 @@ TEST_CASE("two-face part: the border finds the neighbour and compares each face 
   CHECK(check_contact(Cutter("ball", 30, 30), contact_surfaces(locator, 1, {0.5, 0.5})).status == GougeStatus::clear);
 }
 
+TEST_CASE("faces meeting along trim curves: the same half-circle rule as at a domain side") {
+  // A plane z = 0 and a trough z = c (x - 50)^2, both over x, y in [0, 100]
+  // and trimmed to x <= 50 and x >= 50: they meet tangentially along x = 50,
+  // which is a trim curve of both and a domain side of neither. Across the
+  // edge the plane is flat and the trough curves k = 2c (concave: > 0).
+  const double c = 0.025, k_trough = 2 * c;
+  Part part;
+  part.faces.emplace_back("plane", make_plane({0, 0, 0}, {100, 0, 0}, {0, 100, 0}),
+                          Trim({{{0, 0}, {0.5, 0}, {0.5, 1}, {0, 1}}}));
+  const double z_end = c * 2500;  // z at x = 0 and x = 100; the middle control point makes z(50) = 0
+  part.faces.emplace_back(
+      "trough",
+      NurbsSurface(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 1, 1},
+                   {{{0, 0, z_end}, {0, 100, z_end}}, {{50, 0, -z_end}, {50, 100, -z_end}}, {{100, 0, z_end}, {100, 100, z_end}}}),
+      Trim({{{0.5, 0}, {1, 0}, {1, 1}, {0.5, 1}}}));
+  const BorderLocator locator(part);
+  const double tol = GougeOptions().curvature_tolerance;
+  const Cutter ball("ball", 30, 30);  // 1/R = 0.033 < k_trough: gouges toward the trough
+  for (const std::size_t face : {std::size_t{0}, std::size_t{1}}) {
+    CAPTURE(face);
+    const ContactSurfaces on_edge = contact_surfaces(locator, face, {0.5, 0.37});
+    CHECK(on_edge.sides == kTrimEdge);
+    REQUIRE(on_edge.inward_count == 1);
+    CHECK(on_edge.inward[0].x() == doctest::Approx(face == 0 ? -1 : 1).epsilon(1e-12));
+    REQUIRE(on_edge.has_neighbour);
+    CHECK(on_edge.neighbour_face == 1 - face);
+    CHECK((on_edge.neighbour_uv - Eigen::Vector2d(0.5, 0.37)).norm() < 1e-9);
+    CHECK(on_edge.border_search_converged);
+    CHECK_FALSE(on_edge.crease);
+    const LocalGouge g = check_contact(ball, on_edge);
+    REQUIRE(g.gouges());
+    CHECK(g.max_excess == doctest::Approx(k_trough - 1.0 / 30).epsilon(1e-9));
+    // One range, centred on +x (into the trough), as wide as k cos^2 > 1/R allows.
+    REQUIRE(g.ranges.size() == 1);
+    const AngularRange& range = g.ranges[0];
+    CHECK(g.direction(range.start + 0.5 * range.width).x() == doctest::Approx(1).epsilon(1e-9));
+    CHECK(range.width == doctest::Approx(2 * std::acos(std::sqrt((1.0 / 30 + tol) / k_trough))).epsilon(1e-9));
+  }
+  // Without the trim edge the plane's point would be flat all round.
+  CHECK_FALSE(check_local_gouge(ball, contact_surfaces(locator, 0, {0.5, 0.37}).geometry).gouges());
+  // Off the edge the faces are interior points again.
+  CHECK(contact_surfaces(locator, 0, {0.3, 0.37}).sides == 0u);
+  CHECK(contact_surfaces(locator, 1, {0.7, 0.37}).sides == 0u);
+  // A smaller ball clears both sides.
+  CHECK_FALSE(check_contact(Cutter("ball", 15, 15), contact_surfaces(locator, 0, {0.5, 0.37})).gouges());
+}
+
 TEST_CASE("two-face border with a bull-nose: the flat bottom goes over the crown, so no gouge") {
   const Part part = read_part(source_path("examples/parts/two_face.json"));
   const BorderLocator locator(part);
@@ -147,21 +194,43 @@ TEST_CASE("domain sides and inward directions") {
   CHECK(domain_sides(d, {1, 0}, 1e-9) == 0u);
   const Face plane("p", make_plane({0, 0, 0}, {10, 0, 0}, {0, 5, 0}));
   const SurfaceDerivatives sd = plane.surface().evaluate(1, 0, 1);
-  std::array<Eigen::Vector3d, 2> in;
-  REQUIRE(inward_directions(sd, Eigen::Vector3d::UnitZ(), kSideUMax | kSideVMin, in) == 2);
-  CHECK((in[0] - Eigen::Vector3d(-1, 0, 0)).norm() < 1e-12);
-  CHECK((in[1] - Eigen::Vector3d(0, 1, 0)).norm() < 1e-12);
+  const BorderDirections b = border_directions(plane, {1, 0}, sd, Eigen::Vector3d::UnitZ(), BorderOptions());
+  CHECK(b.sides == (kSideUMax | kSideVMin));
+  REQUIRE(b.count == 2);
+  CHECK((b.inward[0] - Eigen::Vector3d(-1, 0, 0)).norm() < 1e-12);
+  CHECK((b.inward[1] - Eigen::Vector3d(0, 1, 0)).norm() < 1e-12);
+}
+
+TEST_CASE("the seam of a closed face is not a border; its ends are") {
+  // A whole tube: u runs once round (the sides u = u0 and u = u1 are the same
+  // line in space), v along the axis (y in [0, 50]).
+  const Face tube("tube", make_cylinder(10, 50, 0, 2 * M_PI));
+  const ParameterDomain& d = tube.domain();
+  auto sides_at = [&](double u, double v) {
+    const SurfaceDerivatives sd = tube.surface().evaluate(u, v, 1);
+    return border_directions(tube, {u, v}, sd, tube.geometry(sd).normal, BorderOptions()).sides;
+  };
+  const double v_mid = 0.5 * (d.v0 + d.v1);
+  CHECK(sides_at(d.u0, v_mid) == 0u);
+  CHECK(sides_at(d.u1, v_mid) == 0u);
+  CHECK(sides_at(d.u0, d.v0) == unsigned(kSideVMin));
+  CHECK(sides_at(d.u1, d.v1) == unsigned(kSideVMax));
+  // Half a tube has real sides there.
+  const Face half("half", make_cylinder(10, 50, 0, M_PI));
+  const SurfaceDerivatives sd = half.surface().evaluate(half.domain().u0, v_mid, 1);
+  CHECK(border_directions(half, {half.domain().u0, v_mid}, sd, half.geometry(sd).normal, BorderOptions()).sides ==
+        unsigned(kSideUMin));
 }
 
 TEST_CASE("a neighbour search that cannot converge says so instead of passing for a free edge") {
   const Part part = read_part(source_path("examples/parts/two_face.json"));
-  const Eigen::Vector2d on_edge(1.0, 0.37);  // valley_wall's x = 50 edge, between side samples
+  const Eigen::Vector2d on_edge(1.0, 0.37);  // valley_wall's x = 50 edge, between seed cells
   const ContactSurfaces converged = contact_surfaces(BorderLocator(part), 0, on_edge);
   CHECK(converged.border_search_converged);
   CHECK(converged.has_neighbour);
 
   BorderOptions capped;
-  capped.max_iterations = 1;  // one Newton step cannot also confirm its own convergence
+  capped.closest.max_newton_iterations = 1;  // one Newton step cannot also confirm its own convergence
   const BorderLocator starved(part, capped);
   const BorderNeighbour nb = starved.neighbour(0, part.faces[0].surface().point(on_edge.x(), on_edge.y()));
   CHECK_FALSE(nb.converged);

@@ -162,7 +162,7 @@ TEST_CASE("tool selection counts border sites whose neighbour search did not con
   const ToolSelection normal = select_tools(part, library, sites);
   CHECK(normal.border_unresolved == 0);
   ToolSelectionOptions starved;
-  starved.scan.border.max_iterations = 1;
+  starved.scan.border.closest.max_newton_iterations = 1;
   const ToolSelection capped = select_tools(part, library, sites, starved);
   CHECK(capped.border_unresolved == 2);  // both edge sites, not the interior one
   CHECK_FALSE(capped.sites[0].border_search_converged);
