@@ -330,6 +330,28 @@ TEST_CASE("sharp ridge and valley between two planar faces: nearest face wins") 
   }
 }
 
+TEST_CASE("closest point on the other faces: brute force over the part without that face") {
+  const Part part = read_part(test::source_path("examples/parts/two_face.json"));
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(20, 80), y(-5, 65), z(0, 30);
+  for (int k = 0; k < 40; ++k) {
+    const Eigen::Vector3d q(x(rng), y(rng), z(rng));
+    for (std::size_t excluded = 0; excluded < 2; ++excluded) {
+      const std::optional<ClosestPoint> c = finder.project_to_other_faces(q, excluded);
+      REQUIRE(c.has_value());
+      CHECK(c->face == 1 - excluded);
+      Part other;
+      other.faces.push_back(part.faces[1 - excluded]);
+      CHECK(c->distance == doctest::Approx(brute_force(other, q).distance).epsilon(1e-9).scale(1e-9));
+      CHECK(c->converged);
+    }
+  }
+  Part single;
+  single.faces.push_back(part.faces[0]);
+  CHECK_FALSE(ClosestPointFinder(single).project_to_other_faces({50, 30, 10}, 0).has_value());
+}
+
 TEST_CASE("trimmed plane with a hole: the foot is on the hole's boundary polygon") {
   // uv is scaled differently along x and y, so the hole is an ellipse in 3-D.
   const Trim trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, uv_circle(0.5, 0.5, 0.2, 48)});

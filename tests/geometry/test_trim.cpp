@@ -80,3 +80,32 @@ TEST_CASE("bad trim loops are rejected with the field named") {
                        doctest::Contains("faces[0].trim[0]"), InputError);
   CHECK_THROWS_AS(Trim({{{0, 0}, {1, 0}, {std::nan(""), 1}}}), InputError);
 }
+
+TEST_CASE("edge_near finds the nearest loop edge within the distance, as brute force does") {
+  std::vector<UvLoop> loops = {circle(0.5, 0.5, 0.45, 300), circle(0.3, 0.5, 0.1, 80), circle(0.7, 0.6, 0.12, 50)};
+  const Trim t(loops);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> unit(-0.1, 1.1);
+  int near = 0;
+  for (int k = 0; k < 5000; ++k) {
+    const Eigen::Vector2d p(unit(rng), unit(rng));
+    const double exact = t.distance_to_boundary(p);  // all edges, no bands
+    for (const double max_distance : {1e-3, 0.02}) {
+      const auto e = t.edge_near(p, max_distance);
+      REQUIRE(e.has_value() == (exact <= max_distance));
+      if (!e) continue;
+      ++near;
+      CHECK(e->distance == doctest::Approx(exact).epsilon(1e-12));
+      CHECK((e->point - p).norm() == doctest::Approx(exact).epsilon(1e-12));
+      CHECK(e->tangent.norm() == doctest::Approx(1).epsilon(1e-12));
+      CHECK(t.distance_to_boundary(e->point) < 1e-12);  // the point is on a loop
+    }
+  }
+  CHECK(near > 200);
+  // On a vertex-free stretch of a square loop the tangent is the edge's.
+  const Trim square({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
+  const auto e = square.edge_near({0.4, 1e-12}, 1e-9);
+  REQUIRE(e.has_value());
+  CHECK(std::abs(e->tangent.x()) == doctest::Approx(1));
+  CHECK_FALSE(Trim().edge_near({0.5, 0.5}, 1).has_value());
+}
