@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "io/cad_import.hpp"
+#include "io/cad/cad_import.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The whole `furrow demo` (issue 8 benchmark): examples/jobs/demo.json run
+// The whole `furrow demo`: examples/jobs/demo.json run
 // end to end in memory (everything but writing the folder), 3 times; prints
 // each stage's wall time and the total of every run, and the median total
 // (target < 30 s on the 2-core machine). Prints figures; it does not pass or
@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "report/job.hpp"
-#include "report/pipeline.hpp"
+#include "job/job.hpp"
+#include "job/pipeline.hpp"
 
 using namespace furrow;
 

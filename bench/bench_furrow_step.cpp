@@ -1,4 +1,4 @@
-// Per-step exact furrow predictor (issue 5 benchmark): steps per second,
+// Per-step exact furrow predictor: steps per second,
 // single thread, on the steps of a generated finishing path of the mould
 // (ball 6 mm, tolerance 0.01 mm), for a ball and for a bull-nose on the same
 // contact points; then the number of contact points the exact rule needs
@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "io/part_file.hpp"
-#include "machining/contact_planning.hpp"
+#include "machining/toolpath/contact_planning.hpp"
 
 using namespace furrow;
 

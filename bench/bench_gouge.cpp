@@ -1,4 +1,4 @@
-// Local gouge checks per second (issue 4; target >= 2 million per second on 2
+// Local gouge checks per second (target >= 2 million per second on 2
 // cores): a bull-nose end mill (diameter 10, corner radius 2) at every node
 // of a 1000 x 1000 grid over the mould example. Each check is the whole job
 // per contact point: surface evaluation with second derivatives, curvature
@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "io/part_file.hpp"
-#include "machining/compound_border.hpp"
-#include "machining/face_seeds.hpp"
+#include "machining/gouge/compound_border.hpp"
+#include "machining/cutter/face_seeds.hpp"
 
 using namespace furrow;
 

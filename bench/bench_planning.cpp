@@ -1,7 +1,7 @@
 // Probe planning of 5,000 points on examples/parts/mould.json with the
 // default options: regions, allocation, sampling, collision checks of every
 // point (ball, shaft, approach path, vertical access), ordering and moves
-// (issue 6; target < 2 s on the 2-core machine). The partition (the
+// (target < 2 s on the 2-core machine). The partition (the
 // planner's input, regions.json) is made once beforehand and not timed;
 // the program texts and the PNG are timed separately. Best of 5 because the
 // machine is shared. Also prints the tour length against nearest neighbour
@@ -16,8 +16,8 @@
 #include <limits>
 #include <string>
 
-#include "io/dmis_writer.hpp"
-#include "io/ippdme_writer.hpp"
+#include "io/cmm/dmis_writer.hpp"
+#include "io/cmm/ippdme_writer.hpp"
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
 #include "planning/plan_image.hpp"

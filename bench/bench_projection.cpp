@@ -1,7 +1,7 @@
 // Closest-point projection throughput and accuracy, side by side with
 // OpenCASCADE's GeomAPI_ProjectPointOnSurf on the same surface (the mould
 // example's bicubic 21 x 17 patch, rebuilt in OCCT as a Geom_BSplineSurface
-// from our control net) and the same points (issue 7; target: >= 10x faster,
+// from our control net) and the same points (target: >= 10x faster,
 // accuracy no worse). Prints figures; it does not pass or fail.
 //
 // Two point sets: "near" = typical CMM points (a surface point moved up to

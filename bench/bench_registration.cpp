@@ -1,5 +1,5 @@
 // Registration of 10 000 and 1 000 000 simulated CMM points on the mould
-// example (issue 7; targets <= 1 s and <= 60 s on this 2-core machine).
+// example (targets <= 1 s and <= 60 s on this 2-core machine).
 // Prints figures; it does not pass or fail.
 //
 // Data: an even (u,v) grid plan, probe 2 mm, the part misaligned by

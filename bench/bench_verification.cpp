@@ -1,7 +1,7 @@
-// What verification against a prediction adds to `furrow compare` (issue 8,
-// items 1-2): predicted vs measured with the prediction alignment, gouge
-// confirmation, and writing + reading comparison.json, for 10 000 and
-// 250 000 simulated points on the mould. Prints figures; it does not pass
+// What verification against a prediction adds to `furrow compare`: predicted
+// vs measured with the prediction alignment, gouge confirmation, and writing
+// and reading comparison.json, for 10 000 and 250 000 simulated points on
+// the mould. Prints figures; it does not pass
 // or fail.
 //
 // Data: a synthetic prediction of the mould (a smooth +-6 um error field on

@@ -1,5 +1,4 @@
-// Z-map of the mould example finished with a generated path (issue 5
-// benchmark): ball 6 mm, tolerance 0.01 mm, scallop 0.005 mm (the furrow
+// Z-map of the mould example finished with a generated path: ball 6 mm, tolerance 0.01 mm, scallop 0.005 mm (the furrow
 // toolpath defaults), z-map at 0.05 mm. Prints moves, nodes and seconds
 // (best of 3; target < 5 s on the 2-core machine), and for context the
 // planning and error-map times. Prints figures; it does not pass or fail.
@@ -11,10 +10,10 @@
 #include <cstdlib>
 
 #include "io/part_file.hpp"
-#include "machining/contact_planning.hpp"
-#include "machining/error_map.hpp"
-#include "machining/toolpath_generation.hpp"
-#include "machining/zmap.hpp"
+#include "machining/toolpath/contact_planning.hpp"
+#include "machining/prediction/error_map.hpp"
+#include "machining/toolpath/toolpath_generation.hpp"
+#include "machining/prediction/zmap.hpp"
 
 using namespace furrow;
 

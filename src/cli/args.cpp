@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "geometry/error.hpp"
-#include "io/text_fields.hpp"
+#include "base/error.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow::cli {
 

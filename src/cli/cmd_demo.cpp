@@ -3,7 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/job_output.hpp"
-#include "report/demo.hpp"
+#include "job/demo.hpp"
 
 namespace furrow::cli {
 

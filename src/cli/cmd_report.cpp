@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "report/report_sources.hpp"
 #include "report/verdict.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/job_output.hpp"
-#include "report/pipeline.hpp"
+#include "job/pipeline.hpp"
 
 namespace furrow::cli {
 

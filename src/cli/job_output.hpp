@@ -4,7 +4,7 @@
 // (0 pass or plan only, 1 fail).
 #include <ostream>
 
-#include "report/job.hpp"
+#include "job/job.hpp"
 
 namespace furrow::cli {
 

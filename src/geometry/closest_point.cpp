@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/local_foot_point.hpp"
 #include "geometry/seed_grid.hpp"
 

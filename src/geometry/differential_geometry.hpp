@@ -2,7 +2,7 @@
 // Local differential geometry of a surface point: normal, fundamental forms,
 // Gaussian and mean curvature, principal curvatures and directions.
 //
-// Sign convention (DESIGN.md): the normal n points out of the material, into
+// Sign convention (docs/architecture.md): the normal n points out of the material, into
 // the air. Normal curvature k_n(t) = II(t)/I(t) with L = Suu.n, M = Suv.n,
 // N = Svv.n, so a dome seen from the air has negative curvatures (convex =>
 // H < 0). k1 >= k2; K = k1 k2; H = (k1 + k2) / 2.
@@ -40,7 +40,7 @@ struct DifferentialGeometry {
 // both a collapsed edge (Su -> 0) and parallel tangents are caught.
 constexpr double kDegenerateRelativeTolerance = 1e-10;
 
-// `reversed` flips the normal (DESIGN.md: a face's normal is Su x Sv
+// `reversed` flips the normal (docs/architecture.md: a face's normal is Su x Sv
 // normalised, flipped when the face is reversed). `derivative_scale` is the
 // typical |Su||Sv| of the surface (see typical_derivative_scale).
 DifferentialGeometry differential_geometry(const SurfaceDerivatives& d, bool reversed,

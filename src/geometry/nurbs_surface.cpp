@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "geometry/bspline_basis.hpp"
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

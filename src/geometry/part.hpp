@@ -3,7 +3,7 @@
 // trim and an orientation flag. Everything is in millimetres.
 //
 // Face::normal-related calls honour `reversed`, so the normal always points
-// out of the material (DESIGN.md); code should go through Face rather than the
+// out of the material (docs/architecture.md); code should go through Face rather than the
 // bare surface whenever orientation matters.
 #include <Eigen/Geometry>
 #include <optional>

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

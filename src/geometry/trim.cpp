@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

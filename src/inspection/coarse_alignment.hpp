@@ -29,7 +29,7 @@
 #include <string>
 
 #include "geometry/closest_point.hpp"
-#include "io/measurement_file.hpp"
+#include "io/cmm/measurement_file.hpp"
 #include "io/plan_file.hpp"
 
 namespace furrow {

@@ -6,7 +6,7 @@
 //
 // Units: mm, except rotations [rad] in the covariance and registration
 // parameters and the placement's rotation_deg [deg]. Sign of deviations and
-// errors (DESIGN.md): + material left (undercut), - removed (overcut/gouge).
+// errors (docs/architecture.md): + material left (undercut), - removed (overcut/gouge).
 // Member names follow the file (docs/formats.md "Comparison").
 #include <Eigen/Core>
 #include <map>

@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 
 #include "inspection/comparison_document.hpp"
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow::comparison_json {
 

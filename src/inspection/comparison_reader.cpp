@@ -3,7 +3,7 @@
 // reported with its path.
 #include <algorithm>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/verification_json.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

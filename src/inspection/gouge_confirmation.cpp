@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/distance_clusters.hpp"
 
 namespace furrow {

@@ -1,5 +1,5 @@
 #pragma once
-// Gouge confirmation (DESIGN.md "Inspection"): did the gouges the machining
+// Gouge confirmation (docs/architecture.md "Inspection"): did the gouges the machining
 // prediction expects happen, and did anything cut into the part where
 // nothing was expected? The rules are defended in docs/verification.md.
 //
@@ -57,7 +57,7 @@
 #include "inspection/prediction_comparison.hpp"
 #include "inspection/registration.hpp"
 #include "inspection/tolerance_zone.hpp"
-#include "machining/prediction.hpp"
+#include "machining/prediction/prediction.hpp"
 
 namespace furrow {
 

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/surface_sampling.hpp"
 
 namespace furrow {

@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "geometry/part.hpp"
-#include "io/measurement_file.hpp"
+#include "io/cmm/measurement_file.hpp"
 #include "io/plan_file.hpp"
-#include "machining/prediction.hpp"
+#include "machining/prediction/prediction.hpp"
 
 namespace furrow {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <map>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/surface_fit.hpp"
 
 namespace furrow {

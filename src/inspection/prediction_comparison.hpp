@@ -43,7 +43,7 @@
 #include "geometry/part.hpp"
 #include "inspection/degrees_of_freedom.hpp"
 #include "inspection/registration.hpp"
-#include "machining/prediction.hpp"
+#include "machining/prediction/prediction.hpp"
 
 namespace furrow {
 

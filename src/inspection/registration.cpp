@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/outlier_detection.hpp"
 #include "inspection/surface_fit.hpp"
 

@@ -2,7 +2,7 @@
 // Registration of measured CMM points to the nominal part: the rigid
 // transform T (CMM frame -> part frame) minimising the robust sum of signed
 // point-to-surface distances, with probe compensation, outlier flagging and
-// the transform's covariance (DESIGN.md "Inspection").
+// the transform's covariance (docs/architecture.md "Inspection").
 //
 // Model. Point i (CMM) is moved to x_i = R(r) y_i + t with y_i = T0 p_i, T0
 // the coarse start (coarse_alignment.hpp; the identity for constrained DOF,
@@ -58,7 +58,7 @@
 #include "geometry/closest_point.hpp"
 #include "inspection/coarse_alignment.hpp"
 #include "inspection/degrees_of_freedom.hpp"
-#include "io/measurement_file.hpp"
+#include "io/cmm/measurement_file.hpp"
 #include "io/plan_file.hpp"
 
 namespace furrow {

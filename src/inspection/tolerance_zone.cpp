@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

@@ -1,6 +1,6 @@
 #include "inspection/verification_json.hpp"
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow::verification_json {
 

@@ -12,7 +12,7 @@
 
 #include "inspection/gouge_confirmation.hpp"
 #include "inspection/prediction_comparison.hpp"
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow::verification_json {
 

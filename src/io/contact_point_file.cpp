@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "geometry/error.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
 #include "io/part_file.hpp"
-#include "io/text_fields.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow {
 

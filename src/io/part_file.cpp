@@ -1,9 +1,9 @@
 #include "io/part_file.hpp"
 
-#include "geometry/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/cad_import.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/atomic_file.hpp"
+#include "io/cad/cad_import.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow {
 

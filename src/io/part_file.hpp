@@ -1,5 +1,5 @@
 #pragma once
-// Part files (DESIGN.md "Files", docs/formats.md "Part JSON").
+// Part files (docs/architecture.md "Files", docs/formats.md "Part JSON").
 //
 // Geometry is converted to millimetres at this boundary ("units": "inch"
 // multiplies coordinates by 25.4; knots and weights are unit-free). Writing

@@ -1,5 +1,5 @@
 #pragma once
-// CMM inspection plans: plan.json (DESIGN.md "Files", docs/formats.md "Plan").
+// CMM inspection plans: plan.json (docs/architecture.md "Files", docs/formats.md "Plan").
 //
 // A plan is what the probe planner decided and what every later step refers
 // back to: for each point its id (also the DMIS label), execution order,

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/atomic_file.hpp"
+#include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 
 namespace furrow {

@@ -1,11 +1,11 @@
 #pragma once
-// Tool files (DESIGN.md "Files", docs/formats.md "Tool JSON"): one end mill
+// Tool files (docs/architecture.md "Files", docs/formats.md "Tool JSON"): one end mill
 // as a JSON object, a shop's tool library as a JSON array of them.
 //
 //   {"name": "BN10R2", "type": "bull", "diameter": 10, "corner_radius": 2}
 //
 // This is plain data: the geometry (cutter location, curvatures, envelope)
-// lives in machining/cutter.hpp, which builds a Cutter from a ToolSpec. The
+// lives in machining/cutter/cutter.hpp, which builds a Cutter from a ToolSpec. The
 // reader validates everything a user can get wrong and throws InputError
 // naming the file and the field ("tools.json: [3].corner_radius: 6 exceeds
 // the tool radius 5 (diameter / 2)"): unknown members (a typo would otherwise
@@ -18,7 +18,7 @@
 
 namespace furrow {
 
-// The three end-mill families of DESIGN.md "Cutter geometry". The list is
+// The three end-mill families of docs/architecture.md "Cutter geometry". The list is
 // open: a tapered (APT) cutter would be a fourth value with its half-angle.
 enum class ToolType { ball, flat, bull };
 

@@ -10,10 +10,10 @@
 #include <map>
 #include <sstream>
 
-#include "geometry/error.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
 #include "io/part_file.hpp"
-#include "io/text_fields.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Tool paths: a G-code subset and CSV files (DESIGN.md "Files").
+// Tool paths: a G-code subset and CSV files (docs/architecture.md "Files").
 //
 // A path is a list of passes; a pass is a polyline the tool follows while
 // cutting (G1). Rapid moves (G0) separate passes and are not cut. Positions

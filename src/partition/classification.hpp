@@ -1,5 +1,5 @@
 #pragma once
-// Curvature class of a surface point (DESIGN.md "Conventions").
+// Curvature class of a surface point (docs/architecture.md "Conventions").
 //
 // With principal curvatures k1 >= k2 (normal out of the material, a dome has
 // negative curvatures) and a tolerance eps >= 0 [1/mm]:

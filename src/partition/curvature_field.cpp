@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

@@ -9,7 +9,7 @@
 // a few sharp spots (a fillet edge, a pole).
 //
 // Why both terms:
-// - The floor, 1e-4 /mm (a radius of 10 m), is DESIGN.md's default: over a
+// - The floor, 1e-4 /mm (a radius of 10 m), is docs/architecture.md's default: over a
 //   10 mm probe spacing such a surface leaves its tangent plane by
 //   k l^2 / 8 = 1.25 um, below what a CMM resolves, and it is 0.16 % of the
 //   curvature of a 32 mm ball end mill, so no cutter tells it from a plane.

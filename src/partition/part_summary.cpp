@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/error.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
 #include "partition/curvature_field.hpp"
 
 namespace furrow {

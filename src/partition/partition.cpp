@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "partition/border_polyline.hpp"
 #include "partition/curvature_field.hpp"
 #include "partition/curvature_tolerance.hpp"

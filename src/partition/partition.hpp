@@ -1,7 +1,6 @@
 #pragma once
 // Curvature partition of a part: every face split into a small number of
-// convex / concave / saddle / planar regions with exact borders (issue 3,
-// docs/partition.md).
+// convex / concave / saddle / planar regions with exact borders (// docs/partition.md).
 //
 // Per face, independently (regions never cross faces):
 //   1. curvature field on a cell-centred (u,v) grid (curvature_field.hpp;

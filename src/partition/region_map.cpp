@@ -1,6 +1,6 @@
 #include "partition/region_map.hpp"
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "partition/part_fingerprint.hpp"
 
 namespace furrow {

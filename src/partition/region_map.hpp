@@ -12,7 +12,7 @@
 // face's domain, are in no region.
 //
 // Units: mm, mm^2, curvatures in 1/mm (K in 1/mm^2), sign convention of
-// DESIGN.md (normal out of the material; convex => H < 0).
+// docs/architecture.md (normal out of the material; convex => H < 0).
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>

@@ -3,7 +3,7 @@
 //
 // A metrologist plans and reports per region, so a speck of a few cells (a
 // ripple, an inflection line crossing the tolerance band) must not become a
-// region of its own. Rule (issue 3): the smallest region below `min_area`
+// region of its own. Rule : the smallest region below `min_area`
 // joins the neighbour with which it shares the longest border
 // (region_adjacency.hpp; ties go to the lower label), the merged region keeps
 // the neighbour's class, and this repeats until every region is at least

@@ -1,8 +1,8 @@
 #include "partition/regions_file.hpp"
 
-#include "geometry/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/atomic_file.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Can a CMM with a vertical stylus take this point? (issue 6, docs/cmm.md)
+// Can a CMM with a vertical stylus take this point? (docs/cmm.md)
 //
 // The probe is a ball of radius r on a vertical cylindrical shaft (radius
 // r_s <= r, from the ball up to `stylus_length` above the ball centre, where

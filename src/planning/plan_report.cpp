@@ -1,6 +1,6 @@
 #include "planning/plan_report.hpp"
 
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "planning/probe_planner.hpp"
 
 namespace furrow {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 
 namespace furrow {
 

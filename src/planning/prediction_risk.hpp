@@ -1,5 +1,5 @@
 #pragma once
-// The machining prediction (prediction.json, machining/prediction.hpp) seen
+// The machining prediction (prediction.json, machining/prediction/prediction.hpp) seen
 // through the planner's RiskMap: the predicted |error| at a surface point
 // and the predicted gouge sites.
 //
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
-#include "machining/prediction.hpp"
+#include "machining/prediction/prediction.hpp"
 #include "planning/risk_map.hpp"
 
 namespace furrow {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "planning/relocation.hpp"
 
 namespace furrow {

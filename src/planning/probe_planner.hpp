@@ -1,6 +1,5 @@
 #pragma once
-// Probe planning for a part: the planner's entry point (issue 6,
-// docs/cmm.md). From a part, its curvature partition and optionally a
+// Probe planning for a part: the planner's entry point (// docs/cmm.md). From a part, its curvature partition and optionally a
 // machining risk map, it decides how many points each region gets, where
 // they go, which of them a vertical stylus can take, in which order, and
 // how the probe travels between them.
@@ -35,7 +34,7 @@
 
 #include "geometry/part.hpp"
 #include "io/plan_file.hpp"
-#include "io/probe_program.hpp"
+#include "io/cmm/probe_program.hpp"
 #include "partition/region_map.hpp"
 #include "planning/accessibility.hpp"
 #include "planning/allocation.hpp"

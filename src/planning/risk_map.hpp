@@ -1,7 +1,7 @@
 #pragma once
 // What the planner needs to know about predicted machining errors: how large
 // the error is expected to be at a surface point, and where local gouges are
-// predicted. The machining prediction (prediction.json, issue 5) is one
+// predicted. The machining prediction (prediction.json) is one
 // source; tests use synthetic maps. The planner never sees a file format,
 // only this interface, so it is tested without the predictor.
 //

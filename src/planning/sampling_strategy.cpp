@@ -6,7 +6,7 @@
 #include <optional>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "planning/low_discrepancy.hpp"
 
 namespace furrow {

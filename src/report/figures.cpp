@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "report/plot_canvas.hpp"
+#include "render/plot_canvas.hpp"
 
 namespace furrow {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow {
 

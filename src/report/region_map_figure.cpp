@@ -5,7 +5,7 @@
 #include <map>
 
 #include "report/part_outlines.hpp"
-#include "report/plot_canvas.hpp"
+#include "render/plot_canvas.hpp"
 
 namespace furrow {
 

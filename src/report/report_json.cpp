@@ -4,7 +4,7 @@
 
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 
 namespace furrow {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
 #include "io/part_file.hpp"
 #include "partition/regions_file.hpp"

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "io/toolpath_file.hpp"
-#include "machining/cutter_location.hpp"
-#include "machining/prediction_file.hpp"
+#include "machining/cutter/cutter_location.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "geometry/bspline_basis.hpp"
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "support/random_surface.hpp"
 
 using namespace furrow;

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "geometry/closest_point.hpp"
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/local_foot_point.hpp"
 #include "geometry/primitives.hpp"
 #include "geometry/seed_grid.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/primitives.hpp"
 #include "support/random_surface.hpp"

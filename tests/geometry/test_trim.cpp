@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/trim.hpp"
 
 using namespace furrow;

@@ -9,7 +9,7 @@
 
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
-#include "io/json_fields.hpp"
+#include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "partition/regions_file.hpp"

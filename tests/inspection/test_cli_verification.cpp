@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "inspection/comparison_file.hpp"
-#include "io/measurement_file.hpp"
-#include "machining/prediction_file.hpp"
+#include "io/cmm/measurement_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "verification_fixture.hpp"
 
 using namespace furrow;

@@ -2,7 +2,7 @@
 // exactly, and a broken file is refused naming the file and the field.
 #include <doctest/doctest.h>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "io/part_file.hpp"

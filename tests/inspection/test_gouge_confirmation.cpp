@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/comparison.hpp"
 #include "inspection/distance_clusters.hpp"
 #include "verification_fixture.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "inspection/comparison.hpp"
 #include "inspection/measurement_simulation.hpp"

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <map>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "inspection/comparison.hpp"
 #include "partition/partition.hpp"
 #include "verification_fixture.hpp"

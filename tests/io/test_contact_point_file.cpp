@@ -1,6 +1,6 @@
 #include <doctest/doctest.h>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/contact_point_file.hpp"
 
 using namespace furrow;

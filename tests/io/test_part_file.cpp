@@ -5,7 +5,7 @@
 #include <fstream>
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
 #include "support/random_surface.hpp"

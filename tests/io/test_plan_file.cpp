@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "support/run_cli.hpp"

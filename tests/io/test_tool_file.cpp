@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/tool_file.hpp"
 #include "support/run_cli.hpp"
 

@@ -1,6 +1,6 @@
 #include <doctest/doctest.h>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/toolpath_file.hpp"
 
 using namespace furrow;

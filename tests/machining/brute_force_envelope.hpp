@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "machining/cutter.hpp"
+#include "machining/cutter/cutter.hpp"
 
 namespace furrow::test {
 

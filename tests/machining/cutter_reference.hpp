@@ -1,5 +1,5 @@
 #pragma once
-// Reference geometry for cutter tests, written from DESIGN.md's description
+// Reference geometry for cutter tests, written from docs/architecture.md's description
 // of the end mill and not from the library's code: the corner surface as an
 // explicit surface of revolution and its curvature by finite differences, a
 // part's normal curvature straight from its fundamental forms, and the

@@ -6,7 +6,7 @@
 #include "cutter_reference.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "machining/compound_border.hpp"
+#include "machining/gouge/compound_border.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;

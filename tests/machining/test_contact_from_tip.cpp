@@ -4,7 +4,7 @@
 #include <random>
 
 #include "io/part_file.hpp"
-#include "machining/contact_from_tip.hpp"
+#include "machining/cutter/contact_from_tip.hpp"
 #include "cutter_reference.hpp"
 #include "support/run_cli.hpp"
 

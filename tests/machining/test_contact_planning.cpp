@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "machining/contact_planning.hpp"
-#include "machining/pass_scallops.hpp"
-#include "machining/zmap.hpp"
+#include "machining/toolpath/contact_planning.hpp"
+#include "machining/prediction/pass_scallops.hpp"
+#include "machining/prediction/zmap.hpp"
 
 using namespace furrow;
 

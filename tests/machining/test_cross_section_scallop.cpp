@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "geometry/primitives.hpp"
-#include "machining/cross_section_scallop.hpp"
-#include "machining/cutter_location.hpp"
-#include "machining/pass_scallops.hpp"
+#include "machining/prediction/cross_section_scallop.hpp"
+#include "machining/cutter/cutter_location.hpp"
+#include "machining/prediction/pass_scallops.hpp"
 
 using namespace furrow;
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/error.hpp"
-#include "machining/cutter.hpp"
-#include "machining/cutter_curvature.hpp"
+#include "base/error.hpp"
+#include "machining/cutter/cutter.hpp"
+#include "machining/cutter/cutter_curvature.hpp"
 #include "cutter_reference.hpp"
 
 using namespace furrow;

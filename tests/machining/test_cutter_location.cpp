@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "machining/cutter_location.hpp"
+#include "machining/cutter/cutter_location.hpp"
 
 using namespace furrow;
 
@@ -70,7 +70,7 @@ TEST_CASE("cutter location: the contact lies on the cutter and the cutter normal
   }
 }
 
-TEST_CASE("cutter location: DESIGN.md formulas for a bull-nose, and the horizontal case") {
+TEST_CASE("cutter location: docs/architecture.md formulas for a bull-nose, and the horizontal case") {
   const Cutter bull("t", 6, 2);
   const Eigen::Vector3d P(10, 20, 30);
   const double t = 0.5;

@@ -6,8 +6,8 @@
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
 #include "machining/brute_force_envelope.hpp"
-#include "machining/cutter_location.hpp"
-#include "machining/furrow_step.hpp"
+#include "machining/cutter/cutter_location.hpp"
+#include "machining/prediction/furrow_step.hpp"
 
 using namespace furrow;
 
@@ -88,7 +88,7 @@ TEST_CASE("reference figure: ball R 12.7, convex cylinder 25.4, 3.68 mm step ove
     REQUIRE(s.valid);
     CHECK(s.converged);
     CHECK(s.unreached == 0);
-    // DESIGN.md's figure, and the closed form behind it.
+    // docs/architecture.md's figure, and the closed form behind it.
     CHECK(std::fabs(s.overcut.error - (-0.100)) <= 0.001);
     CHECK(std::fabs(s.overcut.error - analytic_overcut) < 1e-7);
     CHECK(s.overcut.at.point.x() == doctest::Approx(0).scale(1).epsilon(1e-4));  // mid-step: the top

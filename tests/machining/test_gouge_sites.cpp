@@ -5,8 +5,8 @@
 
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "machining/cutter_location.hpp"
-#include "machining/gouge_sites.hpp"
+#include "machining/cutter/cutter_location.hpp"
+#include "machining/prediction/gouge_sites.hpp"
 
 using namespace furrow;
 

@@ -8,7 +8,7 @@
 #include "cutter_reference.hpp"
 #include "geometry/part.hpp"
 #include "geometry/primitives.hpp"
-#include "machining/local_gouge.hpp"
+#include "machining/gouge/local_gouge.hpp"
 
 using namespace furrow;
 using namespace furrow::test;
@@ -189,7 +189,7 @@ TEST_CASE("flat end mill in a spherical bowl: the cutting circle gouges exactly 
     const Cutter flat("flat", R, 0);
     const LocalGouge result = check_local_gouge(flat, g);
     CHECK(result.cutter.sharp);
-    // Brute force over the rim circle, tip located per DESIGN.md.
+    // Brute force over the rim circle, tip located per docs/architecture.md.
     const Eigen::Vector3d e = Eigen::Vector3d(g.normal.x(), g.normal.y(), 0).normalized();
     const Eigen::Vector3d axis = g.point + R * e;
     double outside = -1e9;

@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/part_file.hpp"
-#include "machining/contact_planning.hpp"
-#include "machining/path_prediction.hpp"
-#include "machining/prediction_file.hpp"
-#include "machining/toolpath_generation.hpp"
+#include "machining/toolpath/contact_planning.hpp"
+#include "machining/prediction/path_prediction.hpp"
+#include "machining/prediction/prediction_file.hpp"
+#include "machining/toolpath/toolpath_generation.hpp"
 
 using namespace furrow;
 

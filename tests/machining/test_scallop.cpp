@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "machining/scallop.hpp"
+#include "machining/prediction/scallop.hpp"
 
 using namespace furrow;
 

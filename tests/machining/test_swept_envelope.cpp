@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "machining/brute_force_envelope.hpp"
-#include "machining/swept_envelope.hpp"
+#include "machining/prediction/swept_envelope.hpp"
 
 using namespace furrow;
 using furrow::test::brute_force_height;

@@ -5,11 +5,11 @@
 #include <limits>
 #include <vector>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/tool_selection.hpp"
+#include "machining/gouge/tool_selection.hpp"
 #include "cutter_reference.hpp"
 #include "support/run_cli.hpp"
 
@@ -35,7 +35,7 @@ double drop_cutter(const HeightField& z, double R, double r, double x, double y)
 // The library's pick by the rules written out: local comparison for a part
 // with equal-or-known principal curvatures (given as a function of the tool
 // and the contact angle), interference by the brute-force drop cutter with
-// the tip from DESIGN.md's formula.
+// the tip from docs/architecture.md's formula.
 struct Oracle {
   HeightField z;
   // Local gouge for (R, r, theta0) by the analytic rule for this part.

@@ -7,12 +7,12 @@
 
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "machining/cutter_location.hpp"
-#include "machining/error_map.hpp"
-#include "machining/furrow_step.hpp"
-#include "machining/pass_scallops.hpp"
-#include "machining/scallop.hpp"
-#include "machining/zmap.hpp"
+#include "machining/cutter/cutter_location.hpp"
+#include "machining/prediction/error_map.hpp"
+#include "machining/prediction/furrow_step.hpp"
+#include "machining/prediction/pass_scallops.hpp"
+#include "machining/prediction/scallop.hpp"
+#include "machining/prediction/zmap.hpp"
 
 using namespace furrow;
 

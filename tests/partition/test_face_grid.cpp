@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "partition/curvature_field.hpp"
 #include "partition/curvature_tolerance.hpp"

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
 #include "partition/part_fingerprint.hpp"

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "io/dmis_program_reader.hpp"
-#include "io/ippdme_reader.hpp"
+#include "io/cmm/dmis_program_reader.hpp"
+#include "io/cmm/ippdme_reader.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
-#include "machining/prediction_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 #include "prediction_fixture.hpp"
 #include "support/run_cli.hpp"

@@ -3,8 +3,8 @@
 // another part refused.
 #include <doctest/doctest.h>
 
-#include "geometry/error.hpp"
-#include "machining/prediction_file.hpp"
+#include "base/error.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "plan_fixtures.hpp"
 #include "prediction_fixture.hpp"

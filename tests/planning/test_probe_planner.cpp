@@ -7,7 +7,7 @@
 #include <cmath>
 #include <map>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "io/plan_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "planning/probe_planner.hpp"

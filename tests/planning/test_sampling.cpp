@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "planning/sampling_strategy.hpp"
 #include "plan_fixtures.hpp"
 

@@ -7,7 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "geometry/error.hpp"
+#include "base/error.hpp"
 #include "report/points_csv.hpp"
 #include "report/qa_report.hpp"
 #include "report/verdict.hpp"

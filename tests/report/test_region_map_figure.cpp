@@ -4,7 +4,7 @@
 
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
-#include "report/colour_scale.hpp"
+#include "render/colour_scale.hpp"
 #include "report/part_outlines.hpp"
 #include "report/region_map_figure.hpp"
 

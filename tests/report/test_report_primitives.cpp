@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "report/colour_scale.hpp"
+#include "render/colour_scale.hpp"
 #include "report/file_digest.hpp"
 #include "report/html.hpp"
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
-#include "machining/prediction.hpp"
+#include "machining/prediction/prediction.hpp"
 
 namespace furrow::test {
 

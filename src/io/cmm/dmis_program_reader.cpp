@@ -1,0 +1,172 @@
+#include "io/cmm/dmis_program_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
+#include "io/cmm/measurement_file.hpp"
+
+namespace furrow {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& name, int line, const std::string& what) {
+  throw InputError(name + ":" + std::to_string(line) + ": " + what);
+}
+
+// A number as the writer prints it: optional '-', digits, optional fraction.
+const std::regex kNumber(R"(-?[0-9]+(\.[0-9]+)?)");
+
+double number(const std::string& text, const std::string& name, int line) {
+  if (!std::regex_match(text, kNumber)) fail(name, line, "\"" + text + "\" is not a number as Furrow writes them");
+  double v = 0;
+  std::from_chars(text.data(), text.data() + text.size(), v);
+  if (!std::isfinite(v)) fail(name, line, "\"" + text + "\" is not finite");
+  return v;
+}
+
+std::vector<std::string> fields(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
+Eigen::Vector3d point3(const std::vector<std::string>& f, std::size_t first, const std::string& name, int line) {
+  return {number(f[first], name, line), number(f[first + 1], name, line), number(f[first + 2], name, line)};
+}
+
+class Cursor {
+ public:
+  Cursor(std::vector<DmisStatement> statements, std::string name)
+      : st_(std::move(statements)), name_(std::move(name)) {}
+  bool done() const { return k_ >= st_.size(); }
+  const DmisStatement& peek() const { return st_[k_]; }
+  const DmisStatement& take(const char* what) {
+    if (done()) fail(name_, st_.empty() ? 1 : st_.back().line, std::string("the program ends before ") + what);
+    return st_[k_++];
+  }
+  // The next statement, which must match `pattern`; returns the whole
+  // match and the captures as strings.
+  std::vector<std::string> expect(const std::regex& pattern, const char* what) {
+    const DmisStatement& s = take(what);
+    line_ = s.line;
+    std::smatch m;
+    if (!std::regex_match(s.text, m, pattern))
+      fail(name_, s.line, std::string("expected ") + what + ", got \"" + s.text + "\"");
+    return std::vector<std::string>(m.begin(), m.end());
+  }
+  bool next_is(const std::regex& pattern) const { return !done() && std::regex_match(peek().text, pattern); }
+  int line() const { return line_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::vector<DmisStatement> st_;
+  std::string name_;
+  std::size_t k_ = 0;
+  int line_ = 0;
+};
+
+const std::string kNum = R"((-?[0-9]+(?:\.[0-9]+)?))";
+const std::string kLabel = R"(([A-Za-z0-9_]+))";
+
+}  // namespace
+
+ProbeProgram parse_dmis_program(const std::string& text, const std::string& name) {
+  Cursor in(dmis_statements(text), name);
+  ProbeProgram program;
+  const std::regex dmismn(R"(DMISMN/'([A-Za-z0-9_-]+)',05\.2)");
+  program.name = in.expect(dmismn, "DMISMN/'name',05.2")[1];
+  const std::vector<std::string> filnam = in.expect(std::regex(R"(FILNAM/'([A-Za-z0-9_-]+)',05\.2)"), "FILNAM/'name',05.2");
+  if (filnam[1] != program.name) fail(name, in.line(), "FILNAM differs from DMISMN");
+  in.expect(std::regex("UNITS/MM,ANGDEC"), "UNITS/MM,ANGDEC");
+  in.expect(std::regex("PRCOMP/ON"), "PRCOMP/ON");
+  const std::vector<std::string> sensor = in.expect(
+      std::regex("S\\(" + kLabel + "\\)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + kNum + "," + kNum),
+      "S(label)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,length,diameter");
+  program.probe.name = sensor[1];
+  program.stylus_length = number(sensor[2], name, in.line());
+  program.probe.diameter = number(sensor[3], name, in.line());
+  if (!(program.probe.diameter > 0) || !(program.stylus_length > 0))
+    fail(name, in.line(), "stylus length and ball diameter must be positive");
+  if (in.expect(std::regex("SNSLCT/S\\(" + kLabel + "\\)"), "SNSLCT/S(label)")[1] != program.probe.name)
+    fail(name, in.line(), "SNSLCT selects a sensor that was not defined");
+  auto setting = [&](const char* key) {
+    const double v = number(in.expect(std::regex(std::string("SNSET/") + key + "," + kNum),
+                                      (std::string("SNSET/") + key + ",value").c_str())[1],
+                            name, in.line());
+    if (!(v > 0)) fail(name, in.line(), std::string(key) + " must be positive");
+    return v;
+  };
+  program.approach = setting("APPRCH");
+  program.retract = setting("RETRCT");
+  program.search = setting("SEARCH");
+  if (in.expect(std::regex(R"(DID\(RESULTS\)=DEVICE/STOR,'([A-Za-z0-9_-]+)\.dmo')"),
+                "DID(RESULTS)=DEVICE/STOR,'name.dmo'")[1] != program.name)
+    fail(name, in.line(), "the results file is not named after the program");
+  in.expect(std::regex("OPEN/DID\\(RESULTS\\),FDATA,DMIS,OUTPUT"), "OPEN/DID(RESULTS),FDATA,DMIS,OUTPUT");
+  in.expect(std::regex("MODE/PROG,MAN"), "MODE/PROG,MAN");
+
+  const std::regex go_to("GOTO/" + kNum + "," + kNum + "," + kNum);
+  const std::regex feature("F\\(" + kLabel + "\\)=FEAT/POINT,CART(,-?[0-9]+(\\.[0-9]+)?){6}");
+  const std::regex meas("MEAS/POINT,F\\(" + kLabel + "\\),1");
+  const std::regex ptmeas("PTMEAS/CART(,-?[0-9]+(\\.[0-9]+)?){6}");
+  const std::regex output("OUTPUT/FA\\(" + kLabel + "\\)");
+  std::set<std::string> labels;
+  std::vector<Eigen::Vector3d> moves;
+  auto read_move = [&] {
+    const std::vector<std::string> m = in.expect(go_to, "GOTO/x,y,z");
+    moves.emplace_back(number(m[1], name, in.line()), number(m[2], name, in.line()), number(m[3], name, in.line()));
+  };
+  for (;;) {
+    while (in.next_is(go_to)) read_move();
+    if (!in.next_is(feature)) break;
+    const DmisStatement& fs = in.take("a feature");
+    const std::optional<DmisPointFeature> f = parse_dmis_point_feature(fs, name, 1.0);
+    if (!f || f->actual) fail(name, fs.line, "expected a nominal point feature F(label)=FEAT/POINT,...");
+    if (!labels.insert(f->label).second) fail(name, fs.line, "feature " + f->label + " is defined twice");
+    if (in.expect(meas, "MEAS/POINT,F(label),1")[1] != f->label)
+      fail(name, in.line(), "MEAS refers to another feature than the one just defined (" + f->label + ")");
+    const DmisStatement& ps = in.take("PTMEAS");
+    if (!std::regex_match(ps.text, ptmeas)) fail(name, ps.line, "expected PTMEAS/CART,x,y,z,i,j,k, got \"" + ps.text + "\"");
+    const std::vector<std::string> pf = fields(ps.text.substr(ps.text.find('/') + 1));
+    const Eigen::Vector3d touch = point3(pf, 1, name, ps.line);
+    const Eigen::Vector3d touch_ijk = point3(pf, 4, name, ps.line);
+    // The nominal is as printed (f->xyz); the direction as printed too, before normalising.
+    const std::vector<std::string> ff = fields(fs.text.substr(fs.text.find('/') + 1));
+    if (touch != point3(ff, 2, name, fs.line) || touch_ijk != point3(ff, 5, name, fs.line))
+      fail(name, ps.line, "PTMEAS differs from the nominal of " + f->label);
+    in.expect(std::regex("ENDMES"), "ENDMES");
+    if (in.expect(output, "OUTPUT/FA(label)")[1] != f->label)
+      fail(name, in.line(), "OUTPUT refers to another feature than " + f->label);
+    ProgramStep step;
+    step.point.id = f->label;
+    step.point.order = static_cast<int>(program.steps.size()) + 1;
+    step.point.xyz = f->xyz;
+    step.point.ijk = f->ijk;
+    step.moves_before = std::move(moves);
+    moves.clear();
+    program.steps.push_back(std::move(step));
+  }
+  program.final_moves = std::move(moves);
+  in.expect(std::regex("CLOSE/DID\\(RESULTS\\)"), "CLOSE/DID(RESULTS)");
+  in.expect(std::regex("ENDFIL"), "ENDFIL");
+  if (!in.done()) fail(name, in.peek().line, "statements after ENDFIL");
+  if (program.steps.empty()) throw InputError(name + ": the program measures no point");
+  return program;
+}
+
+ProbeProgram read_dmis_program(const std::string& path) {
+  return parse_dmis_program(json_fields::read_text(path), path);
+}
+
+}  // namespace furrow

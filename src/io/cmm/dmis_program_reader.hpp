@@ -1,0 +1,30 @@
+#pragma once
+// Strict reader of the DMIS programs Furrow writes (dmis_writer.hpp): every
+// statement must be one the writer emits, in the writer's order, with the
+// writer's spelling (upper case, no spaces, fixed-point numbers), so a
+// program edited by hand into something else is refused rather than half
+// understood. Used to round-trip programs in tests and to check a program
+// before it is sent to a machine.
+//
+// Checked besides the syntax: DMISMN first and ENDFIL last; UNITS/MM; the
+// sensor selected is the one defined; every MEAS refers to the feature
+// defined just before it and holds exactly one PTMEAS equal to the nominal;
+// every feature is measured and output exactly once; labels are unique.
+// Point feature statements are parsed by the measurement reader's DMIS
+// functions (measurement_file.hpp), so the results file a CMM writes for the
+// program reads back with the same labels and nominals.
+//
+// Errors: InputError "name:line: what".
+#include <string>
+
+#include "io/cmm/probe_program.hpp"
+
+namespace furrow {
+
+// Points come back with id, order (1, 2, ... in program order), xyz and ijk
+// (normalised); the probe with name and diameter; moves as written. Fields
+// the program does not carry (face, region, u, v) stay default.
+ProbeProgram parse_dmis_program(const std::string& text, const std::string& name);
+ProbeProgram read_dmis_program(const std::string& path);
+
+}  // namespace furrow

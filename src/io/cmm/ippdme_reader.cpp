@@ -1,0 +1,190 @@
+#include "io/cmm/ippdme_reader.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+
+#include "base/error.hpp"
+#include "io/cmm/ippdme_writer.hpp"
+#include "base/json_fields.hpp"
+
+namespace furrow {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& name, int line, const std::string& what) {
+  throw InputError(name + ":" + std::to_string(line) + ": " + what);
+}
+
+struct Line {
+  int number;
+  std::string text;
+};
+
+std::vector<Line> crlf_lines(const std::string& text, const std::string& name) {
+  std::vector<Line> lines;
+  std::size_t start = 0;
+  int number = 0;
+  while (start < text.size()) {
+    ++number;
+    const std::size_t lf = text.find('\n', start);
+    if (lf == std::string::npos) fail(name, number, "the last line is not ended by CR LF");
+    if (lf == start || text[lf - 1] != '\r') fail(name, number, "line not ended by CR LF");
+    lines.push_back({number, text.substr(start, lf - 1 - start)});
+    start = lf + 1;
+  }
+  return lines;
+}
+
+// Removes spaces next to '(', ')' and ','; refuses any other space outside
+// strings (NIST parserCmd: ILLEGAL SPACE).
+std::string unspace(const std::string& s, const std::string& name, int line) {
+  std::string out;
+  bool in_string = false;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const char c = s[k];
+    if (in_string) {
+      if (c == '"') in_string = false;
+      else if (c < 32 || c > 126) fail(name, line, "non-printable character in a string");
+      out += c;
+      continue;
+    }
+    if (c == ' ') {
+      const char before = out.empty() ? '(' : out.back();
+      std::size_t j = k;
+      while (j < s.size() && s[j] == ' ') ++j;
+      const char after = j < s.size() ? s[j] : ')';
+      auto punct = [](char x) { return x == '(' || x == ')' || x == ','; };
+      if (!punct(before) && !punct(after)) fail(name, line, "illegal space");
+      continue;
+    }
+    if (c == '"') in_string = true;
+    out += c;
+  }
+  if (in_string) fail(name, line, "unterminated string");
+  return out;
+}
+
+double number(const std::string& text, const std::string& name, int line) {
+  if (!is_ippdme_number(text)) fail(name, line, "\"" + text + "\" is not an I++ DME number");
+  return std::strtod(text.c_str(), nullptr);
+}
+
+Eigen::Vector3d xyz(const std::smatch& m, std::size_t first, const std::string& name, int line) {
+  return {number(m[first], name, line), number(m[first + 1], name, line), number(m[first + 2], name, line)};
+}
+
+const std::string kNum = R"(([-+.0-9][-+.0-9eE]*))";
+
+}  // namespace
+
+bool is_ippdme_number(const std::string& t) {
+  std::size_t k = 0;
+  if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+  int digits = 0, dots = 0;
+  for (; k < t.size() && (std::isdigit(static_cast<unsigned char>(t[k])) || t[k] == '.'); ++k) {
+    if (t[k] == '.') ++dots;
+    else ++digits;
+  }
+  if (digits < 1 || digits > 16 || dots > 1) return false;
+  if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
+    ++k;
+    if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+    int exponent = 0;
+    for (; k < t.size() && std::isdigit(static_cast<unsigned char>(t[k])); ++k) ++exponent;
+    if (exponent < 1 || exponent > 3) return false;
+  }
+  return k == t.size();
+}
+
+ProbeProgram parse_ippdme_program(const std::string& text, const std::string& name) {
+  const std::vector<Line> lines = crlf_lines(text, name);
+  const std::regex command_line(R"(([0-9]{5}) (.*))");
+  const std::regex go_to("GoTo\\(X\\(" + kNum + "\\),Y\\(" + kNum + "\\),Z\\(" + kNum + "\\)\\)");
+  const std::regex pt_meas("PtMeas\\(X\\(" + kNum + "\\),Y\\(" + kNum + "\\),Z\\(" + kNum + "\\),IJK\\(" + kNum +
+                           "," + kNum + "," + kNum + "\\)\\)");
+  const std::regex change_tool(R"re(ChangeTool\("([A-Za-z0-9_]+)"\))re");
+  const std::regex set_prop("SetProp\\(Tool\\.PtMeasPar\\.(Approach|Retract|Search)\\(" + kNum + "\\)\\)");
+
+  ProbeProgram program;
+  enum class Stage { start, home, csy, tool, approach, retract, search, report, body, ended };
+  Stage stage = Stage::start;
+  int expected_tag = 1;
+  std::size_t k = 0;
+  std::vector<Eigen::Vector3d> moves;
+  for (; k < lines.size() && lines[k].text != ":"; k += 2) {
+    const Line& line = lines[k];
+    std::smatch m;
+    if (!std::regex_match(line.text, m, command_line))
+      fail(name, line.number, "expected `TTTTT Command(...)` (five-digit tag, one space), got \"" + line.text + "\"");
+    const int tag = std::stoi(m[1]);
+    if (tag != expected_tag)
+      fail(name, line.number, "tag " + m[1].str() + " out of sequence (expected " + std::to_string(expected_tag) + ")");
+    expected_tag = expected_tag == kMaxIppTag ? 1 : expected_tag + 1;
+    if (k + 1 >= lines.size() || lines[k + 1].text != "\\\\")
+      fail(name, line.number + 1, "a command must be followed by a line holding \\\\");
+    const std::string cmd = unspace(m[2], name, line.number);
+    const int n = line.number;
+    auto require = [&](Stage want, const char* what) {
+      if (stage != want) fail(name, n, std::string(what) + " out of order");
+    };
+    std::smatch a;
+    if (cmd == "StartSession()") {
+      require(Stage::start, "StartSession");
+      stage = Stage::home;
+    } else if (cmd == "Home()") {
+      require(Stage::home, "Home");
+      stage = Stage::csy;
+    } else if (cmd == "SetCoordSystem(PartCsy)") {
+      require(Stage::csy, "SetCoordSystem");
+      stage = Stage::tool;
+    } else if (std::regex_match(cmd, a, change_tool)) {
+      require(Stage::tool, "ChangeTool");
+      program.probe.name = a[1];
+      stage = Stage::approach;
+    } else if (std::regex_match(cmd, a, set_prop)) {
+      const std::string key = a[1];
+      const double v = number(a[2], name, n);
+      if (!(v > 0)) fail(name, n, key + " must be positive");
+      if (key == "Approach") require(Stage::approach, "SetProp(Approach)"), program.approach = v, stage = Stage::retract;
+      else if (key == "Retract") require(Stage::retract, "SetProp(Retract)"), program.retract = v, stage = Stage::search;
+      else require(Stage::search, "SetProp(Search)"), program.search = v, stage = Stage::report;
+    } else if (cmd == "OnPtMeasReport(X(),Y(),Z(),IJK())") {
+      require(Stage::report, "OnPtMeasReport");
+      stage = Stage::body;
+    } else if (std::regex_match(cmd, a, go_to)) {
+      require(Stage::body, "GoTo");
+      moves.push_back(xyz(a, 1, name, n));
+    } else if (std::regex_match(cmd, a, pt_meas)) {
+      require(Stage::body, "PtMeas");
+      const Eigen::Vector3d ijk = xyz(a, 4, name, n);
+      if (!(ijk.norm() > 0)) fail(name, n, "PtMeas direction IJK has zero length");
+      ProgramStep step;
+      step.point.order = static_cast<int>(program.steps.size()) + 1;
+      step.point.xyz = xyz(a, 1, name, n);
+      step.point.ijk = ijk.normalized();
+      step.moves_before = std::move(moves);
+      moves.clear();
+      program.steps.push_back(std::move(step));
+    } else if (cmd == "EndSession()") {
+      require(Stage::body, "EndSession");
+      stage = Stage::ended;
+    } else {
+      fail(name, n, "\"" + cmd + "\" is not a command Furrow writes");
+    }
+  }
+  if (stage != Stage::ended) fail(name, k < lines.size() ? lines[k].number : static_cast<int>(lines.size()), "the file does not end with EndSession()");
+  if (k >= lines.size()) fail(name, static_cast<int>(lines.size()), "missing the closing `:` line");
+  if (k + 2 < lines.size() || (k + 1 < lines.size() && lines[k + 1].text != ":"))
+    fail(name, lines[k].number + 1, "text after the closing `:` line");
+  program.final_moves = std::move(moves);
+  if (program.steps.empty()) throw InputError(name + ": the program measures no point");
+  return program;
+}
+
+ProbeProgram read_ippdme_program(const std::string& path) {
+  return parse_ippdme_program(json_fields::read_text(path), path);
+}
+
+}  // namespace furrow

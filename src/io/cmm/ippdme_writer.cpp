@@ -1,0 +1,57 @@
+#include "io/cmm/ippdme_writer.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace furrow {
+
+namespace {
+
+class CommandFile {
+ public:
+  void command(const std::string& text) {
+    char tag[8];
+    std::snprintf(tag, sizeof tag, "%05d", tag_);
+    out_ << tag << ' ' << text << "\r\n\\\\\r\n";
+    tag_ = tag_ == kMaxIppTag ? 1 : tag_ + 1;
+  }
+  std::string finish() {
+    out_ << ":\r\n:\r\n";
+    return out_.str();
+  }
+
+ private:
+  std::ostringstream out_;
+  int tag_ = 1;
+};
+
+std::string position(const Eigen::Vector3d& p) {
+  return "X(" + fixed_number(p.x(), kProgramDecimals) + "), Y(" + fixed_number(p.y(), kProgramDecimals) + "), Z(" +
+         fixed_number(p.z(), kProgramDecimals) + ")";
+}
+
+}  // namespace
+
+std::string ippdme_program_text(const ProbeProgram& program) {
+  check_program(program, "I++ DME");
+  CommandFile file;
+  file.command("StartSession()");
+  file.command("Home()");
+  file.command("SetCoordSystem(PartCsy)");
+  file.command("ChangeTool(\"" + program.probe.name + "\")");
+  file.command("SetProp(Tool.PtMeasPar.Approach(" + fixed_number(program.approach, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.PtMeasPar.Retract(" + fixed_number(program.retract, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.PtMeasPar.Search(" + fixed_number(program.search, kProgramDecimals) + "))");
+  file.command("OnPtMeasReport(X(), Y(), Z(), IJK())");
+  for (const ProgramStep& step : program.steps) {
+    for (const Eigen::Vector3d& m : step.moves_before) file.command("GoTo(" + position(m) + ")");
+    const Eigen::Vector3d& n = step.point.ijk;
+    file.command("PtMeas(" + position(step.point.xyz) + ", IJK(" + fixed_number(n.x(), kDirectionDecimals) + ", " +
+                 fixed_number(n.y(), kDirectionDecimals) + ", " + fixed_number(n.z(), kDirectionDecimals) + "))");
+  }
+  for (const Eigen::Vector3d& m : program.final_moves) file.command("GoTo(" + position(m) + ")");
+  file.command("EndSession()");
+  return file.finish();
+}
+
+}  // namespace furrow

@@ -1,0 +1,90 @@
+#pragma once
+// A job file (job.json): one inspection job end to end, for `furrow run`
+// and `furrow demo` (docs/formats.md "Job file"). It names the part, the
+// tool, the tool path (a file, or options to generate one), the profile
+// tolerance, the options of every stage and the measurements (a file, or a
+// simulation of them - a test and demo aid), and the output folder.
+//
+// Paths in the file are relative to the job file's folder (so a job and its
+// inputs can move together); read_job() resolves them. Every member is
+// checked: unknown keys are errors (a typo must never run silently with a
+// default), as are wrong types, out-of-range numbers and missing required
+// members - InputError naming the file and the field ("job.json:
+// plan.density: expected a positive number").
+//
+// The option structs are the library's own, so a job runs exactly what the
+// matching command-line options would (the defaults are the commands').
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inspection/comparison.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "io/cmm/measurement_file.hpp"
+#include "io/toolpath_file.hpp"
+#include "machining/toolpath/contact_planning.hpp"
+#include "machining/prediction/path_prediction.hpp"
+#include "machining/toolpath/toolpath_generation.hpp"
+#include "partition/partition.hpp"
+#include "planning/probe_planner.hpp"
+
+namespace furrow {
+
+constexpr int kJobFormatVersion = 1;
+
+// `furrow toolpath` options: a finishing path planned on the part.
+struct ToolpathGeneration {
+  PassDirectionSpec direction;
+  ContactPlanOptions contacts;  // tolerance, rule, max step, scallop
+  ToolpathWriteOptions write;   // clearance, feed
+};
+
+// `furrow simulate-measurement` options: CMM points of the plan on the part
+// as machined (nominal + predicted error when `from_prediction`), plus any
+// planted bumps, misaligned, with noise and blunders.
+struct MeasurementSimulationJob {
+  bool from_prediction = true;
+  SimulationOptions options;  // surface_offset is set by the pipeline
+};
+
+struct Job {
+  std::string file;    // the job file as given ("" for a job built in code)
+  std::string folder;  // its folder: relative paths were resolved against it
+  std::string name;    // "name", default the job file's stem
+  std::string description;  // free text for people, optional
+  std::string part, tool;  // resolved paths
+
+  // Tool path: a file, or generated (exactly one of the two).
+  std::optional<std::string> toolpath_file;
+  ToolpathReadOptions toolpath_read;
+  std::optional<ToolpathGeneration> generate;
+
+  PartitionOptions partition;
+  PathPredictionOptions prediction;
+  double prediction_map_scale = 0;  // [mm] colour saturation of prediction.png; 0: 2 x tolerance
+
+  PlannerOptions plan;
+  bool plan_with_prediction = true;  // risk-weighted plan, points on every gouge site
+
+  // Measurements: a file, a simulation, or neither (the job stops after the plan).
+  std::optional<std::string> measurements_file;
+  MeasurementReadOptions measurement_read;  // probe diameter 0: the plan's probe
+  std::optional<MeasurementSimulationJob> simulate;
+
+  CompareOptions compare;              // tolerance zone, registration, verification rules
+  bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
+
+  std::string output;  // resolved output folder
+
+  bool has_measurements() const { return measurements_file.has_value() || simulate.has_value(); }
+};
+
+// Reads and checks a job file; relative paths become relative to its folder
+// (joined with it, so they stay relative when the job path is relative).
+Job read_job(const std::string& path);
+// `name` stands for the source in messages; `folder` is where relative paths
+// in the text start.
+Job parse_job(const std::string& text, const std::string& name, const std::string& folder);
+
+}  // namespace furrow

@@ -1,0 +1,305 @@
+#include "job/pipeline.hpp"
+
+#include <cctype>
+#include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "geometry/closest_point.hpp"
+#include "inspection/comparison_file.hpp"
+#include "inspection/prediction_comparison.hpp"
+#include "base/atomic_file.hpp"
+#include "io/cmm/dmis_writer.hpp"
+#include "io/cmm/ippdme_writer.hpp"
+#include "base/json_fields.hpp"
+#include "io/part_file.hpp"
+#include "io/plan_csv.hpp"
+#include "io/plan_file.hpp"
+#include "io/tool_file.hpp"
+#include "machining/prediction/error_map_image.hpp"
+#include "machining/prediction/prediction_file.hpp"
+#include "machining/prediction/region_errors.hpp"
+#include "partition/region_image.hpp"
+#include "partition/regions_file.hpp"
+#include "planning/plan_image.hpp"
+#include "planning/plan_report.hpp"
+#include "planning/prediction_risk.hpp"
+#include "job/job_options.hpp"
+
+namespace furrow {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Wall time of each stage, in order.
+class StageClock {
+ public:
+  explicit StageClock(std::vector<StageTime>& out) : out_(out), start_(Clock::now()), stage_start_(start_) {}
+  void done(const std::string& stage) {
+    const Clock::time_point now = Clock::now();
+    out_.push_back({stage, std::chrono::duration<double>(now - stage_start_).count()});
+    stage_start_ = now;
+  }
+  double total() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  std::vector<StageTime>& out_;
+  Clock::time_point start_, stage_start_;
+};
+
+std::string as_text(const std::vector<unsigned char>& png) { return std::string(png.begin(), png.end()); }
+
+// CMM program names: letters, digits, '_' and '-' (as `furrow plan`).
+std::string program_name(const std::string& name) {
+  std::string out;
+  for (unsigned char c : name) out += (std::isalnum(c) || c == '_' || c == '-') ? static_cast<char>(c) : '_';
+  if (out.size() > 64) out.resize(64);
+  return out.empty() ? "furrow_job" : out;
+}
+
+std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string line(const char* format, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  return buf;
+}
+
+// `path` as seen from `folder` (both taken from the current directory), so
+// that comparison.json names its sources relative to itself and `furrow
+// report` finds them from anywhere (report_sources.hpp).
+std::string relative_to_folder(const std::string& folder, const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target = fs::absolute(path).lexically_normal();
+  const fs::path relative = target.lexically_relative(fs::absolute(folder).lexically_normal());
+  return relative.empty() ? target.string() : relative.string();
+}
+
+struct Staged {
+  const Job& job;
+  const PipelineProgress& progress;
+  PipelineResult& result;
+  std::vector<InputDigest> inputs;
+  // How the generated files name the part: relative to the output folder,
+  // as the commands run inside that folder would.
+  std::string part_name;
+
+  void add(const std::string& path, std::string bytes) { result.files.push_back({path, std::move(bytes)}); }
+  // A generated file that a later stage reads: recorded with its digest.
+  void add_input(const std::string& role, const std::string& path, std::string bytes) {
+    inputs.push_back(digest_generated(role, path, bytes));
+    add(path, std::move(bytes));
+  }
+  void note(const std::string& stage, std::size_t done = 0, std::size_t total = 0) const {
+    if (progress) progress(stage, done, total);
+  }
+};
+
+Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
+  const Job& job = s.job;
+  if (job.toolpath_file) return read_toolpath(*job.toolpath_file, job.toolpath_read);
+  const ToolpathGeneration& g = *job.generate;
+  const ContactPlan plan = plan_contact_points(part, cutter, g.direction, g.contacts, [&](std::size_t d, std::size_t t) {
+    s.note("toolpath", d, t);
+  });
+  // The header `furrow toolpath` writes, so the G-code is the command's.
+  const std::string header = line("furrow toolpath %s: direction %s, %s steps, tolerance %g mm, scallop %g mm",
+                                  std::filesystem::path(job.part).filename().c_str(), to_string(g.direction).c_str(),
+                                  to_string(g.contacts.forward.rule), g.contacts.forward.tolerance,
+                                  g.contacts.scallop);
+  std::string gcode = plan_gcode(plan, cutter, header, g.write);
+  s.add("toolpath.csv", plan_contact_csv(part, plan));
+  s.result.summary.push_back(line("tool path: %zu passes, %zu contact points (generated)", plan.passes.size(),
+                                  plan.points));
+  Toolpath path = parse_gcode(gcode, "toolpath.nc");
+  s.add_input("toolpath", "toolpath.nc", std::move(gcode));
+  return path;
+}
+
+Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, const Toolpath& path,
+                         const RegionMap& map) {
+  const Job& job = s.job;
+  const PathPrediction computed = predict_path(part, cutter, path, job.prediction,
+                                               [&](const std::string& stage, std::size_t d, std::size_t t) {
+                                                 s.note("predict: " + stage, d, t);
+                                               });
+  Prediction record = make_prediction(part, cutter, computed, job.prediction, s.part_name,
+                                      job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file)
+                                                        : "toolpath.nc");
+  record.has_regions = true;
+  record.regions_file = "regions.json";
+  record.regions = errors_by_region(part, computed.map, map.regions.size(),
+                                    [&](int face, double u, double v) { return map.region_at(face, u, v); });
+  for (RegionErrorRecord& r : record.regions)
+    r.curvature_class = to_string(map.regions[static_cast<std::size_t>(r.region)].curvature_class);
+  const double scale = job.prediction_map_scale > 0 ? job.prediction_map_scale : 2 * job.prediction.tolerance;
+  s.add("prediction.png", error_map_png(part, computed.map, {scale, 900}));
+  std::string text = prediction_to_json_text(record);
+  // Later stages see what prediction.json holds (its numbers are rounded).
+  Prediction read_back = parse_prediction_json(text, "prediction.json");
+  s.add_input("prediction", "prediction.json", std::move(text));
+  const PredictionSummary& p = read_back.summary;
+  s.result.summary.push_back(line("prediction: max undercut %.1f um, max overcut %.1f um, %zu gouge sites",
+                                  p.max_undercut.error * 1000, p.max_overcut.error * 1000, p.gouge_sites));
+  return read_back;
+}
+
+InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, const Prediction& prediction) {
+  const Job& job = s.job;
+  PlannerOptions o = job.plan;
+  o.part_name = s.part_name;
+  std::optional<PredictionRiskMap> risk;
+  if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json", s.part_name);
+  const PlanResult r = plan_probe_points(part, map, o, risk ? &*risk : nullptr,
+                                         [&](const char* stage, std::size_t d, std::size_t t) {
+                                           s.note(std::string("plan: ") + stage, d, t);
+                                         });
+  const std::string name = program_name(job.name);
+  const ProbeProgram program = make_probe_program(r, name, o.stylus_length);
+  std::string plan_json = plan_to_json_text(r.plan);
+  InspectionPlan read_back = parse_plan(plan_json, "plan/plan.json");
+  s.add_input("plan", "plan/plan.json", std::move(plan_json));
+  s.add("plan/plan.csv", plan_to_csv_text(r.plan));
+  s.add("plan/" + name + ".dmi", dmis_program_text(program));
+  s.add("plan/" + name + ".prg", ippdme_program_text(program));
+  s.add("plan/report.json", plan_report_json(r, o, s.part_name, "regions.json",
+                                             job.plan_with_prediction ? "prediction.json" : ""));
+  s.add("plan/plan.png", as_text(plan_image_png(part, map, r)));
+  s.result.summary.push_back(line("plan: %zu points in %zu regions%s, cycle about %.1f min", r.plan.points.size(),
+                                  r.regions.size(), job.plan_with_prediction ? " (risk-weighted)" : "",
+                                  r.cycle.seconds / 60));
+  return read_back;
+}
+
+MeasurementSet measurement_stage(Staged& s, const InspectionPlan& plan, const Prediction& prediction) {
+  const Job& job = s.job;
+  MeasurementReadOptions read = job.measurement_read;
+  if (read.probe_diameter == 0) read.probe_diameter = plan.probe.diameter;
+  if (!job.simulate) return read_measurements(*job.measurements_file, read);
+  SimulationOptions o = job.simulate->options;
+  PredictedSurfaceOffsets machined;
+  if (job.simulate->from_prediction) {
+    machined = predicted_surface_offsets(plan, prediction);
+    o.surface_offset = machined.lookup(plan);
+  }
+  const SimulatedMeasurement sim = simulate_measurement(plan, o, "plan/plan.json");
+  std::string csv = measurements_to_csv(sim.set);
+  read.kind = o.kind;
+  MeasurementSet set = parse_measurements(csv, "measurements.csv", MeasurementFormat::csv, read);
+  s.add_input("measurements", "measurements.csv", std::move(csv));
+  s.result.summary.push_back(line("measurements: %zu simulated points (%s surface, noise %g mm, %d blunders, %zu "
+                                  "bumps, seed %u)",
+                                  set.points.size(), job.simulate->from_prediction ? "predicted" : "nominal",
+                                  o.noise_sigma, o.blunders, o.bumps.size(), o.seed));
+  return set;
+}
+
+ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPlan& plan, const RegionMap& map,
+                                 const Prediction& prediction, const MeasurementSet& set) {
+  const Job& job = s.job;
+  CompareOptions options = job.compare;
+  options.registration.progress = [&](const std::string& what) { s.note("compare: " + what); };
+  const ClosestPointFinder finder(part);
+  Comparison c = compare_measurements(finder, set, &plan, options);
+  assign_regions(c, map);
+  summarize(c);
+  if (job.compare_with_prediction) verify_prediction(c, part, set.probe_radius, prediction, options);
+  ComparisonSources sources;
+  sources.part = s.part_name;
+  sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, *job.measurements_file);
+  sources.plan = "plan/plan.json";
+  sources.regions = "regions.json";
+  sources.prediction = job.compare_with_prediction ? "prediction.json" : "";
+  sources.measurement_units = job.measurement_read.units;
+  std::string text = comparison_to_json_text(c, set, part, options, sources);
+  ComparisonDocument doc = parse_comparison(text, "comparison.json");
+  s.add_input("comparison", "comparison.json", std::move(text));
+  return doc;
+}
+
+}  // namespace
+
+PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
+  PipelineResult result;
+  StageClock clock(result.stages);
+  Staged s{job, progress, result, {}, relative_to_folder(job.output, job.part)};
+
+  s.note("reading inputs");
+  if (!job.file.empty()) {
+    s.inputs.push_back(digest_file("job", job.file));
+    result.files.push_back({"job.json", json_fields::read_text(job.file)});
+  }
+  s.inputs.push_back(digest_file("part", job.part));
+  s.inputs.push_back(digest_file("tool", job.tool));
+  if (job.toolpath_file) s.inputs.push_back(digest_file("toolpath", *job.toolpath_file));
+  if (job.measurements_file) s.inputs.push_back(digest_file("measurements", *job.measurements_file));
+  check_inputs_outside(job.output, s.inputs);  // before the work, not after it
+  const Part part = read_part(job.part);
+  const Cutter cutter(read_tool_file(job.tool));
+  clock.done("read inputs");
+
+  const PartitionResult partition = partition_part(part, job.partition, [&](std::size_t d, std::size_t t) {
+    s.note("partition", d, t);
+  });
+  s.add_input("regions", "regions.json", regions_to_json_text(partition.map));
+  s.add("regions.png", as_text(region_image_png(part, partition)));
+  const RegionMap& map = partition.map;
+  result.summary.push_back(line("partition: %zu regions on %zu faces", map.regions.size(), map.faces.size()));
+  clock.done("partition");
+
+  const Toolpath path = toolpath_stage(s, part, cutter);
+  clock.done(job.generate ? "toolpath" : "read toolpath");
+  const Prediction prediction = predict_stage(s, part, cutter, path, map);
+  clock.done("predict");
+  const InspectionPlan plan = plan_stage(s, part, map, prediction);
+  clock.done("plan");
+
+  if (job.has_measurements()) {
+    const MeasurementSet set = measurement_stage(s, plan, prediction);
+    clock.done(job.simulate ? "simulate measurement" : "read measurements");
+    const ComparisonDocument doc = compare_stage(s, part, plan, map, prediction, set);
+    clock.done("compare");
+
+    s.note("report");
+    ReportContext context;
+    context.title = job.name;
+    context.description = job.description;
+    context.generated = utc_timestamp();
+    context.inputs = s.inputs;
+    context.job_options_json = job_options_json(job);
+    // The report's stage time is that of its figures (the costly part): it
+    // is printed in the report rendered right after.
+    const Clock::time_point report_start = Clock::now();
+    check_comparison_faces(doc, part);
+    const std::vector<ReportFigure> figures = make_report_figures(doc, part, &map);
+    context.stages = result.stages;
+    context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
+    context.total_seconds = clock.total();
+    std::vector<FolderFile> report = render_report(doc, &map, figures, context);
+    clock.done("report");
+    for (FolderFile& f : report) result.files.push_back(std::move(f));
+    result.measured = true;
+    result.pass = doc.summary.pass;
+    result.summary.push_back(line("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance)",
+                                  doc.summary.pass ? "PASS" : "FAIL", doc.summary.profile * 1000,
+                                  doc.options.tolerance.width * 1000, doc.summary.out_of_tolerance,
+                                  doc.summary.evaluated));
+  } else {
+    result.summary.push_back("no measurements in the job: stopped after the plan");
+  }
+  result.total_seconds = clock.total();
+  result.inputs = s.inputs;
+  return result;
+}
+
+void write_job_output(const Job& job, const PipelineResult& result) {
+  check_inputs_outside(job.output, result.inputs);
+  write_folder_atomically(job.output, [&](const std::string& staging) { write_folder_files(staging, result.files); });
+}
+
+}  // namespace furrow

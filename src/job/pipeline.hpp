@@ -1,0 +1,60 @@
+#pragma once
+// One inspection job end to end (`furrow run job.json`, `furrow demo`):
+//   partition -> tool path (read, or generated) -> predict -> plan
+//   -> measurements (read, or simulated) -> compare (regions, prediction,
+//   gouge confirmation) -> report
+// with the library functions the single commands use, in the same order
+// and with the same files in between: each stage's output is rendered to
+// the text its command writes and the next stage reads that text back, so a
+// job gives exactly what the chain of commands would (prediction.json, for
+// one, rounds its numbers, and the plan works from the rounded ones).
+// Without measurements the job stops after the plan.
+//
+// Everything is rendered in memory first; write_job_output() then replaces
+// the output folder as a whole (write_folder_atomically), so a failed job
+// leaves no half-written folder:
+//   job.json            the job file as given (absent for a job built in code)
+//   regions.json, regions.png
+//   toolpath.nc, toolpath.csv     (generated paths only)
+//   prediction.json, prediction.png
+//   plan/               plan.json, plan.csv, NAME.dmi, NAME.prg, plan.png, report.json
+//   measurements.csv    (simulated measurements only)
+//   comparison.json
+//   report.html, report.json, points.csv, figures/*.png   (qa_report.hpp)
+// The paths inside comparison.json are relative to the output folder (the
+// part's and a measurement file's too), so `furrow report OUT/comparison.json`
+// finds them from any directory.
+//
+// Deterministic: the same job gives the same files, except the report's
+// timestamp and stage times (qa_report.hpp).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "job/job.hpp"
+#include "report/qa_report.hpp"
+
+namespace furrow {
+
+// (stage, done, total); total 0 when a stage cannot count its work. Calls
+// never overlap but may come from worker threads.
+using PipelineProgress = std::function<void(const std::string& stage, std::size_t done, std::size_t total)>;
+
+struct PipelineResult {
+  std::vector<FolderFile> files;  // the output folder, rendered
+  std::vector<StageTime> stages;  // wall time per stage
+  std::vector<InputDigest> inputs;  // files given and files generated for later stages
+  double total_seconds = 0;
+  bool measured = false;  // the job had measurements: comparison and report exist
+  bool pass = false;      // the verdict (when measured)
+  std::vector<std::string> summary;  // a few lines for people
+};
+
+// Throws InputError for bad inputs (file, field or option named).
+PipelineResult run_job(const Job& job, const PipelineProgress& progress = {});
+
+// Replaces job.output atomically with result.files. Throws InputError when
+// an input file lies inside job.output (replacing it would delete it).
+void write_job_output(const Job& job, const PipelineResult& result);
+
+}  // namespace furrow

@@ -1,0 +1,136 @@
+#include "machining/gouge/tool_selection.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "base/error.hpp"
+
+namespace furrow {
+
+namespace {
+
+// Per site and tool, what the tool does there.
+enum Verdict : unsigned char { kClear = 0, kLocal = 1, kInterferes = 2 };
+
+// How far the cutter located by `g` at `point` would rest above its location
+// when lowered at its axis (> 0: it cuts in elsewhere) [mm].
+double interference_depth(const Cutter& cutter, const TipContactFinder& finder,
+                          const Eigen::Vector3d& point, const LocalGouge& g,
+                          const GougeOptions& options) {
+  CutterLocationOptions placed = options.location;
+  placed.horizontal_side = g.cutter.toward_axis;
+  const CutterLocation loc = cutter_location(cutter, point, g.cutter.normal, placed);
+  const TipContactResult r = finder.find(loc.tip);
+  return r.status == TipContactStatus::found ? -r.gap : 0.0;
+}
+
+}  // namespace
+
+std::vector<Cutter> order_by_size(std::vector<Cutter> library) {
+  std::stable_sort(library.begin(), library.end(), [](const Cutter& a, const Cutter& b) {
+    if (a.radius() != b.radius()) return a.radius() > b.radius();
+    if (a.corner_radius() != b.corner_radius()) return a.corner_radius() > b.corner_radius();
+    return a.name() < b.name();
+  });
+  return library;
+}
+
+ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
+                           const std::vector<ContactSite>& sites,
+                           const ToolSelectionOptions& options,
+                           const std::function<void(std::size_t, std::size_t)>& progress) {
+  if (library.empty()) throw InputError("tool selection: the tool library is empty");
+  ToolSelection result;
+  result.library = order_by_size(std::move(library));
+  const std::size_t tools = result.library.size();
+  std::vector<std::unique_ptr<TipContactFinder>> finders;
+  if (options.check_interference)
+    for (const Cutter& c : result.library)
+      finders.push_back(std::make_unique<TipContactFinder>(part, c, options.contact));
+
+  result.sites.resize(sites.size());
+  std::vector<unsigned char> verdicts(sites.size() * tools, kClear);  // [site * tools + tool]
+  const GougeOptions& gouge = options.scan.gouge;
+  const BorderLocator locator(part, options.scan.border);
+  const long n = static_cast<long>(sites.size());
+  long done = 0;
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long k = 0; k < n; ++k) {
+    const ContactSite& site = sites[static_cast<std::size_t>(k)];
+    const ContactSurfaces surfaces = contact_surfaces(locator, site.face, site.uv);
+    SiteSelection& s = result.sites[static_cast<std::size_t>(k)];
+    unsigned char* verdict = &verdicts[static_cast<std::size_t>(k) * tools];
+    s.site = site;
+    s.point = surfaces.geometry.point;
+    s.normal = surfaces.geometry.normal;
+    s.k1 = surfaces.geometry.k1;
+    s.k2 = surfaces.geometry.k2;
+    s.border_search_converged = surfaces.border_search_converged;
+    for (std::size_t t = 0; t < tools; ++t) {
+      const Cutter& cutter = result.library[t];
+      const LocalGouge g = check_contact(cutter, surfaces, gouge);
+      const bool last = t + 1 == tools;
+      if (g.status == GougeStatus::unreachable || g.status == GougeStatus::degenerate ||
+          g.status == GougeStatus::concave_crease) {
+        s.machinable = false;
+        s.smallest_status = g.status;
+        break;
+      }
+      double depth = 0;
+      if (g.gouges()) {
+        verdict[t] = kLocal;
+      } else if (options.check_interference) {
+        depth = interference_depth(cutter, *finders[t], s.point, g, gouge);
+        if (depth > options.interference_tolerance) verdict[t] = kInterferes;
+      }
+      if (verdict[t] == kClear && s.tool < 0) s.tool = static_cast<int>(t);
+      if (!last) continue;
+      s.smallest_status = g.status;
+      if (s.tool >= 0) continue;
+      s.smallest_gouges_locally = g.gouges();
+      if (verdict[t] == kInterferes) s.interference = depth;
+      if (g.gouges()) {
+        s.needed.direction = g.direction(g.max_excess_angle);
+        s.needed.excess = g.max_excess;
+        // The part's curvature in that direction, from the face it points
+        // into (the neighbour's at a border when it points there).
+        const DifferentialGeometry* geometry = &surfaces.geometry;
+        if (surfaces.has_neighbour && surfaces.neighbour_inward_count > 0 &&
+            s.needed.direction.dot(surfaces.neighbour_inward[0]) > 0)
+          geometry = &surfaces.neighbour_geometry;
+        s.needed.design_curvature = geometry->normal_curvature(s.needed.direction);
+        s.needed.allowed_curvature = s.needed.design_curvature - s.needed.excess;
+      }
+    }
+    if (progress) {
+      long seen;
+#pragma omp atomic capture
+      seen = ++done;
+      if (omp_get_thread_num() == 0 && k % 256 == 0) progress(static_cast<std::size_t>(seen), sites.size());
+    }
+  }
+  if (progress) progress(sites.size(), sites.size());
+
+  result.gouging_sites.assign(tools, 0);
+  result.interfering_sites.assign(tools, 0);
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const SiteSelection& s = result.sites[k];
+    result.border_unresolved += !s.border_search_converged;
+    if (!s.machinable) {
+      ++result.unmachinable;
+      continue;
+    }
+    if (s.tool < 0) ++result.without_tool;
+    for (std::size_t t = 0; t < tools; ++t) {
+      result.gouging_sites[t] += verdicts[k * tools + t] != kClear;
+      result.interfering_sites[t] += verdicts[k * tools + t] == kInterferes;
+    }
+  }
+  for (std::size_t t = 0; t < tools && result.whole_surface < 0; ++t)
+    if (result.gouging_sites[t] == 0) result.whole_surface = static_cast<int>(t);
+  return result;
+}
+
+}  // namespace furrow

@@ -1,0 +1,28 @@
+#pragma once
+// The error map as a picture (furrow predict --map errors.png): each face's
+// (u, v) domain as an image (u to the right, v up), faces side by side, the
+// error coloured on a diverging scale — blue for overcut, white for zero,
+// red for material left — saturating at +-scale, with a colour bar labelled
+// in micrometres. Samples the tool did not reach are light grey, samples
+// that cannot be machined from above dark grey, trimmed-away areas white
+// with a thin frame around each face.
+#include <string>
+
+#include "geometry/part.hpp"
+#include "machining/prediction/error_map.hpp"
+
+namespace furrow {
+
+struct ErrorImageOptions {
+  double scale = 0.02;  // [mm] colour saturation (+-)
+  int max_side = 900;   // pixels along the longer side of each face's picture
+};
+
+// PNG bytes (OpenCV). Deterministic for the same map and options.
+std::string error_map_png(const Part& part, const ErrorMap& map, const ErrorImageOptions& options = {});
+
+// Writes the PNG atomically.
+void write_error_map_png(const Part& part, const ErrorMap& map, const std::string& path,
+                         const ErrorImageOptions& options = {});
+
+}  // namespace furrow

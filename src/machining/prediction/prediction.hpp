@@ -1,0 +1,153 @@
+#pragma once
+// A machining-error prediction as later stages see it (probe planning,
+// simulated measurements, gouge confirmation, the QA report): plain data,
+// read from prediction.json by prediction_file.hpp, with one query,
+// predicted_error_at(face, u, v). Nothing here depends on how the prediction
+// was computed (path_prediction.hpp builds it from the z-map and the
+// per-step predictor).
+//
+// The error field is stored per face as a grid of cells over the face's
+// parameter rectangle (about 1 mm on the surface by default): cell
+// (ci, cj) covers [u0 + ci du, u0 + (ci + 1) du] x [v0 + cj dv, ...] and
+// holds, over the error-map samples inside it that the tool reached, the
+// mean error and the band [max_overcut, max_undercut]. A cell that no
+// reached sample falls in has a status saying why (not reached by the tool,
+// trimmed away, not machinable) and no numbers.
+// Sign convention (docs/architecture.md): positive = material left, negative = overcut.
+// Lengths in millimetres.
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "geometry/nurbs_surface.hpp"
+#include "geometry/part.hpp"
+#include "io/tool_file.hpp"
+#include "machining/prediction/error_map.hpp"
+
+namespace furrow {
+
+struct SurfaceLocation {
+  std::string face;
+  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
+};
+
+struct ErrorAt {
+  bool found = false;  // false: nothing was evaluated (e.g. no reached sample)
+  double error = 0;    // [mm]
+  SurfaceLocation at;
+};
+
+struct StepRecord {
+  int pass = 0, step = 0;
+  std::string status;  // path_steps.hpp StepStatus names; the numbers below only when "evaluated"
+  double length = 0;   // [mm] between the contact points
+  ErrorAt undercut;    // largest error of the step (>= 0)
+  ErrorAt overcut;     // smallest error of the step (<= 0)
+  double chord_deviation = 0;  // [mm] chord estimate, for comparison
+};
+
+struct ScallopRecord {
+  int pass_a = 0, pass_b = 0;
+  double height = 0;  // [mm]
+  SurfaceLocation at;
+};
+
+struct GougeSiteRecord {
+  int id = 0;
+  std::string face;
+  double depth = 0;  // [mm], positive
+  SurfaceLocation deepest;
+  double area = 0;  // [mm^2]
+  int samples = 0;
+  SurfaceLocation centroid;
+  Eigen::AlignedBox3d box;
+  Eigen::AlignedBox2d uv_box;
+};
+
+struct LocalGougeRecord {
+  int pass = 0, point = 0, line = 0;  // path point (index in its pass) and source line
+  SurfaceLocation at;
+  std::string status;     // local_gouge.hpp GougeStatus name ("gouge", "concave_crease")
+  double max_excess = 0;  // [1/mm] largest part-minus-cutter curvature
+  std::vector<Eigen::Vector2d> directions_deg;  // (start, width) arcs from the cutter's meridian
+};
+
+// Error summary of one region of a partition (regions.json), when given.
+struct RegionErrorRecord {
+  int region = 0;               // region id of the partition
+  std::string face;             // its face
+  std::string curvature_class;  // planar, convex, concave, saddle
+  int samples = 0, reached = 0; // error-map samples in the region, and reached
+  double mean = 0;              // [mm] over the reached samples
+  ErrorAt max_undercut, max_overcut;  // best samples
+};
+
+struct FaceGridRecord {
+  std::string name;
+  ParameterDomain domain;
+  int cells_u = 0, cells_v = 0;
+  std::vector<ErrorCellStatus> status;  // [cj * cells_u + ci]
+  std::vector<double> mean, max_undercut, max_overcut;  // same index; 0 unless reached
+};
+
+struct ZMapRecord {
+  double resolution = 0;  // [mm]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+  int nx = 0, ny = 0;
+  std::size_t moves = 0, cut_nodes = 0;
+};
+
+struct PredictionSummary {
+  ErrorAt max_undercut, max_overcut;  // over the error map (refined)
+  std::size_t steps = 0, steps_evaluated = 0, steps_over_tolerance = 0;
+  double max_step_error = 0;  // [mm] largest |error| of an evaluated step
+  double max_scallop = 0;     // [mm] over the pass pairs
+  std::size_t gouge_sites = 0, local_gouge_points = 0;
+  std::size_t path_points = 0, points_without_contact = 0, points_in_air = 0, points_below_surface = 0;
+  double lowest_gap = 0;  // [mm]
+  std::size_t samples_reached = 0, samples_not_reached = 0, samples_not_machinable = 0;
+};
+
+struct PredictedError {
+  ErrorCellStatus status = ErrorCellStatus::outside;  // of the cell containing (u, v)
+  double value = 0;         // [mm] cell means interpolated bilinearly over reached cells
+  double max_undercut = 0;  // [mm] the containing cell's band
+  double max_overcut = 0;
+  int cell_u = -1, cell_v = -1;
+  bool reached() const { return status == ErrorCellStatus::reached; }
+};
+
+struct Prediction {
+  std::string part, toolpath;  // source files, as given
+  ToolSpec tool;
+  double tolerance = 0, gouge_threshold = 0;  // [mm]
+  ZMapRecord zmap;
+  PredictionSummary summary;
+  std::vector<StepRecord> steps;
+  std::vector<ScallopRecord> scallops;
+  std::vector<GougeSiteRecord> gouge_sites;
+  std::vector<LocalGougeRecord> local_gouges;
+  bool has_regions = false;  // a regions file was given
+  std::string regions_file;
+  std::vector<RegionErrorRecord> regions;
+  std::vector<FaceGridRecord> faces;
+
+  // The predicted error at (u, v) of a face. Throws InputError for a face
+  // the prediction does not have; (u, v) outside the face's parameter
+  // rectangle gives status `outside`.
+  PredictedError predicted_error_at(const std::string& face, double u, double v) const;
+  // Ids of the gouge sites whose uv box contains (u, v) on that face.
+  std::vector<int> gouge_sites_at(const std::string& face, double u, double v) const;
+  const FaceGridRecord* find_face(const std::string& face) const;
+};
+
+// Throws InputError (naming both files) unless every face the prediction
+// names is a face of the part with the same parameter domain and every
+// gouge site and local gouge lies on a face of the part: a prediction of
+// another part. Every stage that reads a prediction with a part calls it
+// before trusting a face name.
+void check_prediction_against_part(const Prediction& prediction, const Part& part,
+                                   const std::string& prediction_name, const std::string& part_name);
+
+}  // namespace furrow

@@ -1,0 +1,66 @@
+#pragma once
+// Contact points along one pass (pass_curve.hpp): each step as long as its
+// error allows (docs/architecture.md "Machining error between contact points").
+//
+// Three rules, so they can be compared on the same pass:
+//   exact         the step's largest error from the swept cutter
+//                 (furrow_step.hpp: max(undercut, |overcut|)) equals the
+//                 tolerance: a line search on the exact predictor;
+//   chord         the largest distance between the design curve and the
+//                 chord between the contact points equals the tolerance
+//                 (what CAM systems bound; it ignores the cutter, so on a
+//                 convex stretch the real error is larger by (rho + r)/rho);
+//   circular_arc  the curve is replaced by its osculating circle at the
+//                 step's start (normal curvature along the pass) and the
+//                 step follows from docs/architecture.md's ball formula with the
+//                 cutter's corner radius r: (rho + r)(1 - cos(ds / 2 rho)) = e
+//                 convex, (rho - r)(...) concave; unbounded on flat
+//                 stretches and in concave ones tighter than r. An estimate:
+//                 no search, no check.
+// Line search (exact, chord): from the circular-arc estimate the step is
+// doubled or halved until it brackets the tolerance, then bisected until the
+// bracket is below `precision` times the step. The accepted step always has
+// error <= tolerance as computed (a zero-length step has none), and the next
+// longer one tried exceeded it; the last step of a pass ends at the pass end
+// and may be shorter. `max_step` [mm, chord] caps every rule (0: no cap).
+#include <vector>
+
+#include "machining/cutter/cutter.hpp"
+#include "machining/prediction/furrow_step.hpp"
+#include "machining/toolpath/pass_curve.hpp"
+
+namespace furrow {
+
+enum class StepRule { exact, chord, circular_arc };
+const char* to_string(StepRule rule);
+
+struct ForwardStepOptions {
+  double tolerance = 0.01;  // [mm]
+  StepRule rule = StepRule::exact;
+  double precision = 1e-3;  // relative bracket width at which the search stops
+  int max_iterations = 60;  // per step (bracketing + bisection)
+  double max_step = 0;      // [mm] chord; 0: none
+  FurrowStepOptions predictor;
+};
+
+struct ForwardSteps {
+  std::vector<double> params;  // t of every contact point, t0 first, t1 last
+  int capped = 0;              // steps whose search hit max_iterations
+  int evaluations = 0;         // error evaluations (exact or chord)
+  int invalid = 0;             // evaluations on curves that could not be evaluated (treated as too long)
+};
+
+// The rule's error of one step (exact: max(undercut, |overcut|); chord: the
+// chord deviation); +infinity when the step cannot be evaluated.
+double step_error(const Cutter& cutter, const SurfaceCurve& curve, StepRule rule,
+                  const FurrowStepOptions& predictor = {});
+
+// Arc length of the circular-arc estimate at a point for a pass direction
+// (unit, tangent); +infinity when the formula gives no bound.
+double circular_arc_step(const Part& part, const Cutter& cutter, const SurfacePoint& at,
+                         const Eigen::Vector3d& direction, double tolerance);
+
+ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const Cutter& cutter,
+                                  const ForwardStepOptions& options = {});
+
+}  // namespace furrow
