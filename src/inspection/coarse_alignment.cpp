@@ -1,9 +1,5 @@
 #include "inspection/coarse_alignment.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -11,6 +7,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "geometry/point_search.hpp"
 #include "inspection/surface_sampling.hpp"
 
 namespace furrow {
@@ -30,8 +27,6 @@ const char* to_string(CoarseMethod method) {
 }
 
 namespace {
-
-using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
 // Every ceil(n / max)-th index: a deterministic, evenly spread subset.
 std::vector<std::size_t> stride_subset(std::size_t n, std::size_t max) {
@@ -106,14 +101,6 @@ std::vector<Eigen::Matrix3d> cube_rotations() {
   return out;
 }
 
-Cloud::Ptr to_cloud(const std::vector<Eigen::Vector3d>& pts) {
-  Cloud::Ptr cloud(new Cloud);
-  cloud->reserve(pts.size());
-  for (const auto& p : pts)
-    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  return cloud;
-}
-
 double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
   return Eigen::AngleAxisd(a.transpose() * b).angle();
 }
@@ -163,9 +150,7 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
     }
   }
 
-  const Cloud::Ptr target_cloud = to_cloud(target);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(target_cloud);
+  const PointSearch tree(target);
   Eigen::AlignedBox3d box;
   for (const auto& p : target) box.extend(p);
   const double diagonal = box.diagonal().norm();
@@ -178,22 +163,20 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   const std::vector<Eigen::Vector3d> screen = subset(options.screen_points);
   const std::vector<Eigen::Vector3d> refine = subset(options.refine_points);
 
-  // Trimmed point-to-point ICP against the sampling (PCL KD-tree, Umeyama
+  // Trimmed point-to-point ICP against the sampling (k-d tree, Umeyama
   // in double): pairs farther than max_distance or than three times the
   // median pair distance are dropped, so blunders do not pull.
   auto run_icp = [&](const std::vector<Eigen::Vector3d>& source, Eigen::Isometry3d t,
                      int iterations, double max_distance) {
-    std::vector<int> index(1);
-    std::vector<float> d2(1);
     for (int it = 0; it < iterations; ++it) {
       std::vector<std::pair<std::size_t, int>> pairs;
       std::vector<double> dist;
       for (std::size_t k = 0; k < source.size(); ++k) {
         const Eigen::Vector3d q = t * source[k];
-        tree.nearestKSearch(pcl::PointXYZ(float(q.x()), float(q.y()), float(q.z())), 1, index, d2);
-        const double d = (target[index[0]] - q).norm();
-        if (d <= max_distance) {
-          pairs.emplace_back(k, index[0]);
+        const PointNeighbour near = tree.nearest(q);
+        const double d = near.distance;
+        if (near.index < target.size() && d <= max_distance) {
+          pairs.emplace_back(k, static_cast<int>(near.index));
           dist.push_back(d);
         }
       }
@@ -220,13 +203,7 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   // Screening score: median distance to the nearest target sample.
   auto screen_score = [&](const Eigen::Isometry3d& t) {
     std::vector<double> d;
-    std::vector<int> index(1);
-    std::vector<float> d2(1);
-    for (const Eigen::Vector3d& p : screen) {
-      const Eigen::Vector3d q = t * p;
-      tree.nearestKSearch(pcl::PointXYZ(float(q.x()), float(q.y()), float(q.z())), 1, index, d2);
-      d.push_back(std::sqrt(double(d2[0])));
-    }
+    for (const Eigen::Vector3d& p : screen) d.push_back(tree.nearest(t * p).distance);
     return median(d);
   };
 

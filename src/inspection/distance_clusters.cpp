@@ -1,11 +1,9 @@
 #include "inspection/distance_clusters.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-
 #include <map>
 #include <numeric>
+
+#include "geometry/point_search.hpp"
 
 namespace furrow {
 
@@ -24,20 +22,11 @@ std::vector<std::vector<std::size_t>> distance_clusters(const std::vector<Eigen:
   std::vector<std::size_t> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   if (n > 1) {
-    pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-    for (const Eigen::Vector3d& p : points)
-      cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-    tree.setInputCloud(cloud);
-    // Float coordinates: search a little wider, decide in double.
-    const double search = distance * (1 + 1e-5) + 1e-5;
-    std::vector<int> found;
-    std::vector<float> squared;
+    const PointSearch search(points);
     for (std::size_t i = 0; i < n; ++i) {
-      tree.radiusSearch(cloud->points[i], search, found, squared);
-      for (int k : found) {
-        const std::size_t j = static_cast<std::size_t>(k);
-        if (j <= i || (points[i] - points[j]).norm() > distance) continue;
+      for (const PointNeighbour& found : search.within(points[i], distance)) {
+        const std::size_t j = found.index;
+        if (j <= i) continue;
         const std::size_t a = root(parent, i), b = root(parent, j);
         if (a != b) parent[std::max(a, b)] = std::min(a, b);
       }

@@ -1,12 +1,10 @@
 #include "inspection/outlier_detection.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/point_search.hpp"
 #include "inspection/registration.hpp"
 
 namespace furrow {
@@ -50,13 +48,9 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
   }
   if (!any) return v;
 
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  for (std::size_t k = 0; k < d.size(); ++k) {
-    const Eigen::Vector3d& p = positions[index[k]];
-    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  }
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(cloud);
+  std::vector<Eigen::Vector3d> evaluated(d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) evaluated[k] = positions[index[k]];
+  const PointSearch search(evaluated);
   // Agreeing neighbours of each large point: large too, on the same side
   // and alike - within the limit of its value, or within a factor
   // kAlikeRatio of its excess over the median - among its six nearest within
@@ -66,15 +60,11 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
   // next to a real deviation differs from it by its own unrelated size and
   // mostly stays a blunder.
   std::vector<std::vector<std::size_t>> agree(d.size());
-  std::vector<int> nearest;
-  std::vector<float> squared;
-  const double radius2 = rule.radius * rule.radius;
   for (std::size_t k = 0; k < d.size(); ++k) {
     if (!large[k]) continue;
-    const int found = tree.nearestKSearch(static_cast<int>(k), 7, nearest, squared);  // self + 6
-    for (int m = 0; m < found; ++m) {
-      const auto j = static_cast<std::size_t>(nearest[m]);
-      if (j == k || squared[m] > radius2 || !large[j]) continue;
+    for (const PointNeighbour& near : search.nearest(evaluated[k], 7)) {  // self + 6
+      const std::size_t j = near.index;
+      if (j == k || near.distance > rule.radius || !large[j]) continue;
       const double a = d[j] - v.median, b = d[k] - v.median;
       const bool alike = std::abs(a - b) <= v.limit ||
                          std::max(std::abs(a), std::abs(b)) <= kAlikeRatio * std::min(std::abs(a), std::abs(b));

@@ -1,18 +1,17 @@
 #include "planning/edge_distance.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "geometry/point_search.hpp"
+
 namespace furrow {
 
 struct EdgeDistance::Tree {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud{new pcl::PointCloud<pcl::PointXYZ>};
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  std::vector<Eigen::Vector3d> midpoints;
+  std::unique_ptr<PointSearch> search;
 };
 
 EdgeDistance::EdgeDistance() = default;
@@ -45,26 +44,20 @@ void EdgeDistance::build(double piece_length) {
       const Eigen::Vector3d a = s.a + (s.b - s.a) * (static_cast<double>(k) / pieces);
       const Eigen::Vector3d b = k + 1 == pieces ? s.b : Eigen::Vector3d(s.a + (s.b - s.a) * (static_cast<double>(k + 1) / pieces));
       pieces_.push_back({a, b});
-      const Eigen::Vector3d m = 0.5 * (a + b);
-      tree_->cloud->push_back(pcl::PointXYZ(static_cast<float>(m.x()), static_cast<float>(m.y()), static_cast<float>(m.z())));
+      tree_->midpoints.push_back(0.5 * (a + b));
     }
   }
-  if (!pieces_.empty()) tree_->tree.setInputCloud(tree_->cloud);
+  if (!pieces_.empty()) tree_->search = std::make_unique<PointSearch>(std::move(tree_->midpoints));
 }
 
 double EdgeDistance::distance(const Eigen::Vector3d& p, double reach) const {
   if (!tree_) throw std::logic_error("EdgeDistance: distance before build");
   if (pieces_.empty()) return std::numeric_limits<double>::infinity();
-  // Midpoints are stored in float: widen the search by their rounding.
-  const double slack = 1e-5 * (1.0 + p.cwiseAbs().maxCoeff());
-  const double radius = reach + 0.5 * piece_length_ + slack;
-  std::vector<int> index;
-  std::vector<float> squared;
-  const pcl::PointXYZ q(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
-  tree_->tree.radiusSearch(q, radius, index, squared);
+  // A piece within reach has its midpoint within reach + half a piece.
+  const double radius = reach + 0.5 * piece_length_;
   double best = std::numeric_limits<double>::infinity();
-  for (int i : index) {
-    const Segment& s = pieces_[static_cast<std::size_t>(i)];
+  for (const PointNeighbour& n : tree_->search->within(p, radius)) {
+    const Segment& s = pieces_[n.index];
     best = std::min(best, point_segment_distance(p, s.a, s.b));
   }
   return best <= reach ? best : std::numeric_limits<double>::infinity();

@@ -1,11 +1,11 @@
 #include "planning/tour.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+
+#include "geometry/point_search.hpp"
 
 namespace furrow {
 
@@ -191,22 +191,13 @@ std::vector<std::vector<int>> neighbour_lists(const std::vector<Eigen::Vector3d>
   const int n = static_cast<int>(p.size());
   std::vector<std::vector<int>> out(static_cast<std::size_t>(n));
   if (n < 2 || k < 1) return out;
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  for (const Eigen::Vector3d& q : p)
-    cloud->push_back(pcl::PointXYZ(static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())));
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(cloud);
-  const int want = std::min(n, k + 2);  // self, and one spare for float ties
-  std::vector<int> index;
-  std::vector<float> squared;
+  const PointSearch search(p);
   for (int i = 0; i < n; ++i) {
-    tree.nearestKSearch((*cloud)[static_cast<std::size_t>(i)], want, index, squared);
-    std::vector<std::pair<double, int>> found;
-    for (int j : index)
-      if (j != i) found.emplace_back((p[static_cast<std::size_t>(i)] - p[static_cast<std::size_t>(j)]).norm(), j);
-    std::sort(found.begin(), found.end());
-    for (std::size_t q = 0; q < found.size() && static_cast<int>(q) < k; ++q)
-      out[static_cast<std::size_t>(i)].push_back(found[q].second);
+    // k + 1: the point itself comes back among its own nearest.
+    for (const PointNeighbour& m : search.nearest(p[static_cast<std::size_t>(i)], static_cast<std::size_t>(k) + 1)) {
+      if (static_cast<int>(m.index) == i || static_cast<int>(out[static_cast<std::size_t>(i)].size()) == k) continue;
+      out[static_cast<std::size_t>(i)].push_back(static_cast<int>(m.index));
+    }
   }
   return out;
 }
