@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "partition/face_grid.hpp"
+#include "render/plot_canvas.hpp"
 
 namespace furrow {
 
@@ -155,8 +155,7 @@ std::vector<unsigned char> region_image_png(const Part& part, const PartitionRes
                static_cast<int>(f));
   }
   draw_legend(canvas, row_top[rows]);
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", canvas, png)) throw std::runtime_error("region image: PNG encoding failed");
+  const std::vector<unsigned char> png = plot::encode_png(canvas);
   return png;
 }
 

@@ -7,7 +7,7 @@
 // the face's aspect on the surface (face_extent), not the raw parameter
 // square, so the picture looks like the part seen along its normal.
 //
-// PNG bytes come from cv::imencode; writing goes through
+// PNG bytes come from render/png.hpp; writing goes through
 // write_file_atomically, so a failed run leaves no partial image.
 #include <string>
 #include <vector>

@@ -1,9 +1,9 @@
 #include "planning/plan_image.hpp"
+#include "render/plot_canvas.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -148,8 +148,7 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
   }
   const std::string title = std::to_string(points.size()) + " points, top view (x right, y up)";
   cv::putText(canvas, title, {kMargin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kInk, 1, cv::LINE_AA);
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", canvas, png)) throw std::runtime_error("plan image: PNG encoding failed");
+  const std::vector<unsigned char> png = plot::encode_png(canvas);
   return png;
 }
 

@@ -9,7 +9,7 @@
 // cross), the first point (green) and the last (red).
 // Surfaces overlapping in the view are painted bottom to top.
 //
-// PNG bytes from cv::imencode; deterministic for the same plan.
+// PNG bytes from render/png.hpp; deterministic for the same plan.
 #include <vector>
 
 #include "geometry/part.hpp"
