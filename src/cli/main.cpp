@@ -8,13 +8,14 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "geometry/error.hpp"
+#include "cli/manual.hpp"
+#include "base/error.hpp"
 
 namespace {
 
 using furrow::cli::Command;
 
-const Command* const kCommands[] = {
+const std::vector<const Command*> kCommands = {
     &furrow::cli::kInfoCommand,
     &furrow::cli::kImportCommand,
     &furrow::cli::kPartitionCommand,
@@ -54,6 +55,14 @@ void print_overview(std::ostream& out) {
 int main(int argc, char** argv) {
   std::vector<std::string> words(argv + 1, argv + argc);
   if (words.empty() || words[0] == "help" || words[0] == "--help" || words[0] == "-h") {
+    if (words.size() == 2 && words[1] == "--man") {
+      furrow::cli::write_man_page(std::cout, kCommands);
+      return furrow::cli::kExitOk;
+    }
+    if (words.size() == 2 && words[1] == "--completion") {
+      furrow::cli::write_bash_completion(std::cout, kCommands);
+      return furrow::cli::kExitOk;
+    }
     if (words.size() >= 2) {
       if (const Command* c = find_command(words[1])) {
         std::cout << c->usage;

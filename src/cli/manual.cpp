@@ -1,0 +1,75 @@
+#include "cli/manual.hpp"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace furrow::cli {
+
+namespace {
+
+// troff treats a leading '.' or '\'' as a request and '\' as an escape.
+std::string troff_line(const std::string& line) {
+  std::string out;
+  for (char c : line) {
+    if (c == '\\')
+      out += "\\e";
+    else if (c == '-')
+      out += "\\-";
+    else
+      out += c;
+  }
+  if (!out.empty() && (out[0] == '.' || out[0] == '\'')) out.insert(0, "\\&");
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> options_in_usage(const std::string& usage) {
+  std::vector<std::string> out;
+  static const std::regex option("--[a-z][a-z0-9-]*");
+  for (auto it = std::sregex_iterator(usage.begin(), usage.end(), option); it != std::sregex_iterator(); ++it)
+    if (std::find(out.begin(), out.end(), it->str()) == out.end()) out.push_back(it->str());
+  return out;
+}
+
+void write_man_page(std::ostream& out, const std::vector<const Command*>& commands) {
+  out << ".TH FURROW 1 \"\" \"furrow " << FURROW_VERSION << "\" \"User Commands\"\n"
+      << ".SH NAME\nfurrow \\- inspection planning and machining\\-error verification of "
+         "sculptured surfaces\n"
+      << ".SH SYNOPSIS\n.B furrow\n.I COMMAND\n[options]\n"
+      << ".SH DESCRIPTION\nFurrow partitions free\\-form faces by curvature, predicts the "
+         "errors a 3\\-axis finishing path leaves, plans CMM probe points and programs, "
+         "registers measured points to the CAD surface and writes a QA report.\n"
+      << ".SH COMMANDS\n";
+  for (const Command* c : commands) {
+    out << ".SS " << c->name << "\n" << troff_line(c->summary) << "\n.PP\n.nf\n";
+    std::istringstream usage(c->usage);
+    for (std::string line; std::getline(usage, line);) out << troff_line(line) << "\n";
+    out << ".fi\n";
+  }
+  out << ".SH EXIT STATUS\n.TP\n0\nok, or the part passes\n.TP\n1\nthe part fails (out of "
+         "tolerance, gouge, uncovered)\n.TP\n2\nbad input: a file, option or value to fix; "
+         "nothing is written\n.TP\n3\nthe computation did not succeed\n";
+}
+
+void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {
+  out << "# bash completion for furrow " << FURROW_VERSION << " (written by `furrow help --completion`)\n"
+      << "_furrow() {\n"
+      << "  local cur=${COMP_WORDS[COMP_CWORD]}\n"
+      << "  if [ \"$COMP_CWORD\" -eq 1 ]; then\n"
+      << "    COMPREPLY=($(compgen -W \"help --version";
+  for (const Command* c : commands) out << " " << c->name;
+  out << "\" -- \"$cur\"))\n    return\n  fi\n"
+      << "  case \"$cur\" in\n    -*)\n      case \"${COMP_WORDS[1]}\" in\n";
+  for (const Command* c : commands) {
+    out << "        " << c->name << ") COMPREPLY=($(compgen -W \"";
+    const std::vector<std::string> options = options_in_usage(c->usage);
+    for (std::size_t k = 0; k < options.size(); ++k) out << (k ? " " : "") << options[k];
+    out << "\" -- \"$cur\")) ;;\n";
+  }
+  out << "      esac ;;\n    *) COMPREPLY=($(compgen -f -- \"$cur\")) ;;\n  esac\n}\n"
+      << "complete -o filenames -F _furrow furrow\n";
+}
+
+}  // namespace furrow::cli
