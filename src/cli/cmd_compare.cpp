@@ -8,9 +8,9 @@
 #include "cli/commands.hpp"
 #include "geometry/closest_point.hpp"
 #include "inspection/comparison_file.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
-#include "machining/prediction_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 
 namespace furrow::cli {
@@ -61,10 +61,13 @@ int run_compare(Args& args) {
       std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
     };
 
-  for (const std::string* input : {&part_path, &measurements})
-    check_not_overwriting_input(out, *input);
-  for (const auto* input : {&plan_path, &regions_path, &prediction_path})
-    if (*input) check_not_overwriting_input(out, **input);
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(measurements, "measurements");
+  if (plan_path) outputs.add_input(*plan_path, "plan");
+  if (regions_path) outputs.add_input(*regions_path, "regions");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
+  outputs.will_write(out);
 
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
@@ -103,7 +106,8 @@ int run_compare(Args& args) {
   sources.regions = regions_path.value_or("");
   sources.prediction = prediction_path.value_or("");
   sources.measurement_units = units;
-  write_file_atomically(out, comparison_to_json_text(c, set, part, options, sources));
+  outputs.file(out, comparison_to_json_text(c, set, part, options, sources));
+  outputs.publish();
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;

@@ -5,11 +5,11 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/gouge_map.hpp"
-#include "machining/gouge_report.hpp"
+#include "machining/gouge/gouge_map.hpp"
+#include "machining/gouge/gouge_report.hpp"
 
 namespace furrow::cli {
 
@@ -32,13 +32,12 @@ int run_gouge(Args& args) {
   const long grid = grid_option.value_or(50);
   if (grid < 2 || grid > kMaxGrid)
     args.fail("--grid must be between 2 and " + std::to_string(kMaxGrid) + ", got " + std::to_string(grid));
-  if (map_path && *map_path == out_path) args.fail("--out and --map name the same file");
-  for (const std::string* output : {&out_path, map_path ? &*map_path : nullptr}) {
-    if (!output) continue;
-    check_not_overwriting_input(*output, part_path);
-    check_not_overwriting_input(*output, tool_path);
-    if (points_path) check_not_overwriting_input(*output, *points_path);
-  }
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(tool_path, "tool");
+  if (points_path) outputs.add_input(*points_path, "contact points");
+  outputs.will_write(out_path);
+  if (map_path) outputs.will_write(*map_path);
 
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
@@ -61,11 +60,9 @@ int run_gouge(Args& args) {
   if (show_progress) std::cerr << "\n";
 
   const SiteSource source{points_path ? 0 : static_cast<int>(grid), points_path.value_or("")};
-  // Build everything before writing anything: a failure leaves no output.
-  const std::string report = gouge_report_json(part, part_path, cutter, points, source, options);
-  const std::string png = map_path ? gouge_map_png(part, cutter, points, source.grid) : std::string();
-  write_file_atomically(out_path, report);
-  if (map_path) write_file_atomically(*map_path, png);
+  if (map_path) outputs.file(*map_path, gouge_map_png(part, cutter, points, source.grid));
+  outputs.file(out_path, gouge_report_json(part, part_path, cutter, points, source, options));
+  outputs.publish(out_path);
 
   std::cout << gouge_summary_text(part, part_path, cutter, points);
   std::cout << "  wrote " << out_path << (map_path ? " and " + *map_path : std::string()) << "\n";

@@ -5,9 +5,9 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/cad_import.hpp"
-#include "io/cad_import_report.hpp"
+#include "base/output_set.hpp"
+#include "io/cad/cad_import.hpp"
+#include "io/cad/cad_import_report.hpp"
 #include "io/part_file.hpp"
 
 namespace furrow::cli {
@@ -25,7 +25,9 @@ int run_import(Args& args) {
   const std::string path = args.positional("CAD_FILE (a .step, .stp, .iges or .igs file)");
   args.finish();
   if (!is_cad_file(path)) args.fail(path + " is not a STEP or IGES file name (.step .stp .iges .igs)");
-  check_not_overwriting_input(out_path, path);
+  OutputSet outputs;
+  outputs.add_input(path, "CAD");
+  outputs.will_write(out_path);
 
   if (isatty(STDERR_FILENO)) {
     options.progress = [](std::size_t done, std::size_t total) {
@@ -34,7 +36,8 @@ int run_import(Args& args) {
     };
   }
   const CadImportResult result = import_cad(path, options);
-  write_part_json(result.part, out_path);
+  outputs.file(out_path, part_to_json_text(result.part));
+  outputs.publish();
   std::cout << (as_json ? cad_import_report_json(result, path, out_path)
                         : cad_import_report_text(result, path, out_path));
   return kExitOk;

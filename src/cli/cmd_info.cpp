@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "partition/classification.hpp"
 #include "partition/part_summary.hpp"
@@ -79,8 +79,10 @@ int run_info(Args& args) {
     print_text(text, path, summary);
   }
   if (out_path) {
-    check_not_overwriting_input(*out_path, path);
-    write_file_atomically(*out_path, text.str());
+    OutputSet outputs;
+    outputs.add_input(path, "part");
+    outputs.file(*out_path, text.str());
+    outputs.publish();
   } else {
     std::cout << text.str();
   }

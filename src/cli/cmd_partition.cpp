@@ -1,5 +1,5 @@
 // furrow partition PART --out regions.json [--image regions.png]: split every
-// face into convex / concave / saddle / planar regions (issue 3).
+// face into convex / concave / saddle / planar regions.
 #include <unistd.h>
 
 #include <cctype>
@@ -8,12 +8,12 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
 #include "partition/region_image.hpp"
 #include "partition/regions_file.hpp"
-#include "io/text_fields.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow::cli {
 
@@ -74,8 +74,10 @@ int run_partition(Args& args) {
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (image_path && lower_extension(*image_path) != ".png")
     args.fail("--image " + *image_path + ": expected a .png file name");
-  check_not_overwriting_input(out_path, part_path);
-  if (image_path) check_not_overwriting_input(*image_path, part_path);
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.will_write(out_path);
+  if (image_path) outputs.will_write(*image_path);
 
   const Part part = read_part(part_path);
   const bool show_progress = ::isatty(2) && part.faces.size() > 1;
@@ -84,12 +86,12 @@ int run_partition(Args& args) {
   });
   if (show_progress) std::cerr << "\n";
 
-  // The image is rendered before anything is written, so a failure there
-  // leaves neither file behind.
-  std::vector<unsigned char> png;
-  if (image_path) png = region_image_png(part, result);
-  write_regions(result.map, out_path);
-  if (image_path) write_file_atomically(*image_path, std::string(png.begin(), png.end()));
+  if (image_path) {
+    const std::vector<unsigned char> png = region_image_png(part, result);
+    outputs.file(*image_path, std::string(png.begin(), png.end()));
+  }
+  outputs.file(out_path, regions_to_json_text(result.map));
+  outputs.publish(out_path);
 
   print_summary(std::cout, part_path, result);
   std::cout << "wrote " << out_path << (image_path ? " and " + *image_path : std::string()) << "\n";

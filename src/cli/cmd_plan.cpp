@@ -1,5 +1,5 @@
 // furrow plan PART --regions REGIONS.json --out plans/NAME: probe points per
-// region, collision-checked, ordered, with DMIS and I++ DME programs (issue 6).
+// region, collision-checked, ordered, with DMIS and I++ DME programs.
 #include <unistd.h>
 
 #include <cctype>
@@ -8,14 +8,15 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "geometry/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/dmis_writer.hpp"
-#include "io/ippdme_writer.hpp"
+#include "base/error.hpp"
+#include "base/atomic_file.hpp"
+#include "base/output_set.hpp"
+#include "io/cmm/dmis_writer.hpp"
+#include "io/cmm/ippdme_writer.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_csv.hpp"
 #include "io/plan_file.hpp"
-#include "machining/prediction_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 #include "planning/plan_image.hpp"
 #include "planning/plan_report.hpp"
@@ -99,9 +100,11 @@ int run_plan(Args& args) {
   }
   if (needs_risk(o.strategy) && !prediction_path)
     args.fail(std::string("--strategy ") + to_string(o.strategy) + " needs a machining prediction (--prediction)");
-  check_not_overwriting_input(out, part_path);
-  check_not_overwriting_input(out, regions_path);
-  if (prediction_path) check_not_overwriting_input(out, *prediction_path);
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(regions_path, "regions");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
+  outputs.will_write(out);
   o.part_name = part_path;
 
   const Part part = read_part(part_path);
@@ -134,10 +137,10 @@ int run_plan(Args& args) {
       {"report.json", plan_report_json(result, o, part_path, regions_path, prediction_path.value_or(""))},
   };
   const std::vector<unsigned char> png = plan_image_png(part, map, result);
-  write_folder_atomically(out, [&](const std::string& staging) {
-    for (const auto& f : files) write_file_atomically(staging + "/" + f[0], f[1]);
-    write_file_atomically(staging + "/plan.png", std::string(png.begin(), png.end()));
-  });
+  const std::string staging = outputs.folder(out);
+  for (const auto& f : files) write_file_atomically(staging + "/" + f[0], f[1]);
+  write_file_atomically(staging + "/plan.png", std::string(png.begin(), png.end()));
+  outputs.publish();
   print_summary(std::cout, result, out);
   std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json}\n";
   return kExitOk;

@@ -7,16 +7,16 @@
 
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/error_map_image.hpp"
-#include "machining/path_prediction.hpp"
-#include "machining/prediction_file.hpp"
-#include "machining/region_errors.hpp"
+#include "machining/prediction/error_map_image.hpp"
+#include "machining/prediction/path_prediction.hpp"
+#include "machining/prediction/prediction_file.hpp"
+#include "machining/prediction/region_errors.hpp"
 #include "partition/classification.hpp"
 #include "partition/regions_file.hpp"
-#include "io/text_fields.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow::cli {
 
@@ -112,10 +112,13 @@ int run_predict(Args& args) {
   }
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
-  for (const std::string* input : {&part_path, &tool_path, &toolpath_path}) {
-    check_not_overwriting_input(out_path, *input);
-    if (map_path) check_not_overwriting_input(*map_path, *input);
-  }
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(tool_path, "tool");
+  outputs.add_input(toolpath_path, "tool path");
+  if (regions) outputs.add_input(*regions, "regions");
+  outputs.will_write(out_path);
+  if (map_path) outputs.will_write(*map_path);
 
   const Part part = read_part(part_path);
   std::optional<RegionMap> region_map;
@@ -145,8 +148,9 @@ int run_predict(Args& args) {
   const std::string json_text = prediction_to_json_text(prediction);
   std::string png;
   if (map_path) png = error_map_png(part, result.map, {scale_um / 1000, 900});
-  write_file_atomically(out_path, json_text);
-  if (map_path) write_file_atomically(*map_path, png);
+  if (map_path) outputs.file(*map_path, png);
+  outputs.file(out_path, json_text);
+  outputs.publish(out_path);
   print_summary(std::cout, prediction);
   std::cout << "wrote " << out_path << (map_path ? " and " + *map_path : std::string()) << "\n";
   return kExitOk;

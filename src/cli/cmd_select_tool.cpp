@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/tool_selection_report.hpp"
+#include "machining/gouge/tool_selection_report.hpp"
 
 namespace furrow::cli {
 
@@ -32,10 +32,12 @@ int run_select_tool(Args& args) {
   const long grid = grid_option.value_or(30);
   if (grid < 2 || grid > kMaxGrid)
     args.fail("--grid must be between 2 and " + std::to_string(kMaxGrid) + ", got " + std::to_string(grid));
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(library_path, "tool library");
+  if (points_path) outputs.add_input(*points_path, "contact points");
   if (out_path) {
-    check_not_overwriting_input(*out_path, part_path);
-    check_not_overwriting_input(*out_path, library_path);
-    if (points_path) check_not_overwriting_input(*out_path, *points_path);
+    outputs.will_write(*out_path);
   }
 
   const Part part = read_part(part_path);
@@ -58,8 +60,8 @@ int run_select_tool(Args& args) {
 
   if (out_path) {
     const SiteSource source{points_path ? 0 : static_cast<int>(grid), points_path.value_or("")};
-    write_file_atomically(*out_path, tool_selection_json(part, part_path, library_path, selection,
-                                                         source, options));
+    outputs.file(*out_path, tool_selection_json(part, part_path, library_path, selection, source, options));
+    outputs.publish();
   }
   std::cout << tool_selection_text(part, part_path, selection);
   if (out_path) std::cout << "  wrote " << *out_path << "\n";

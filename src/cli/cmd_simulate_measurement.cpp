@@ -5,9 +5,9 @@
 #include "cli/commands.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/prediction_comparison.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
-#include "machining/prediction_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 
 namespace furrow::cli {
 
@@ -46,9 +46,11 @@ int run_simulate(Args& args) {
     o.bumps.push_back({{b[0], b[1], b[2]}, b[3], b[4]});
   }
 
-  check_not_overwriting_input(out, part_path);
-  check_not_overwriting_input(out, plan_path);
-  if (prediction_path) check_not_overwriting_input(out, *prediction_path);
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(plan_path, "plan");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
+  outputs.will_write(out);
   const Part part = read_part(part_path);
   const InspectionPlan plan = read_plan(plan_path);
   check_plan_against_part(plan, part, plan_path);
@@ -60,7 +62,8 @@ int run_simulate(Args& args) {
     o.surface_offset = machined.lookup(plan);
   }
   const SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
-  write_measurements_csv(sim.set, out);
+  outputs.file(out, measurements_to_csv(sim.set));
+  outputs.publish();
   std::printf("%zu points (%s, probe %g mm), %d blunders, noise %g mm, seed %u -> %s\n",
               sim.set.points.size(), to_string(sim.set.kind), plan.probe.diameter, o.blunders,
               o.noise_sigma, o.seed, out.c_str());

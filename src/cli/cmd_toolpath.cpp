@@ -7,10 +7,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
-#include "io/atomic_file.hpp"
+#include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/toolpath_generation.hpp"
+#include "machining/toolpath/toolpath_generation.hpp"
 
 namespace furrow::cli {
 
@@ -65,11 +65,11 @@ int run_toolpath(Args& args) {
   options.forward.rule = parse_rule(rule_text, args);
   std::string contacts_path = contacts_option.value_or(
       (std::filesystem::path(out_path).parent_path() / std::filesystem::path(out_path).stem()).string() + ".csv");
-  if (contacts_path == out_path) args.fail("--contacts must differ from --out");
-  for (const std::string* input : {&part_path, &tool_path}) {
-    check_not_overwriting_input(out_path, *input);
-    check_not_overwriting_input(contacts_path, *input);
-  }
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(tool_path, "tool");
+  outputs.will_write(out_path);
+  outputs.will_write(contacts_path);
 
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
@@ -84,8 +84,9 @@ int run_toolpath(Args& args) {
                 to_string(options.forward.rule), options.forward.tolerance, options.scallop);
   const std::string gcode = plan_gcode(plan, cutter, header, write);
   const std::string csv = plan_contact_csv(part, plan);
-  write_file_atomically(out_path, gcode);
-  write_file_atomically(contacts_path, csv);
+  outputs.file(contacts_path, csv);
+  outputs.file(out_path, gcode);
+  outputs.publish(out_path);
   print_summary(std::cout, plan, options);
   std::cout << "wrote " << out_path << " (tool tips) and " << contacts_path << " (contact points)\n";
   return kExitOk;

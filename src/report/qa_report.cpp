@@ -3,9 +3,10 @@
 #include <ctime>
 #include <filesystem>
 
-#include "geometry/error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_fields.hpp"
+#include "base/error.hpp"
+#include "base/atomic_file.hpp"
+#include "base/output_set.hpp"
+#include "base/json_fields.hpp"
 #include "report/file_digest.hpp"
 #include "report/points_csv.hpp"
 #include "report/report_figures.hpp"
@@ -76,19 +77,8 @@ std::vector<FolderFile> render_report(const ComparisonDocument& doc, const Regio
 }
 
 void check_inputs_outside(const std::string& folder, const std::vector<InputDigest>& inputs) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path out = fs::weakly_canonical(folder, ec);
-  if (ec) return;  // nothing there yet that could hold an input
-  for (const InputDigest& in : inputs) {
-    if (in.generated) continue;
-    const fs::path p = fs::weakly_canonical(in.path, ec);
-    if (ec) continue;
-    const fs::path rel = p.lexically_relative(out);
-    if (!rel.empty() && *rel.begin() != ".." && rel.is_relative())
-      throw InputError("output folder " + folder + " holds the input " + in.path + " (" + in.role +
-                       "): it would be deleted when the folder is replaced; choose another folder");
-  }
+  for (const InputDigest& in : inputs)
+    if (!in.generated) check_output_spares_input(folder, in.path, in.role);
 }
 
 void write_folder_files(const std::string& folder, const std::vector<FolderFile>& files) {
