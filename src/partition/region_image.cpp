@@ -13,13 +13,12 @@ namespace furrow {
 
 namespace {
 
-// BGR. Colour-blind-safe enough: the four classes differ in hue and lightness.
-const cv::Vec3b kClassColour[kCurvatureClassCount] = {
-    {170, 214, 232},  // planar: sand
-    {72, 130, 238},   // convex: orange
-    {207, 160, 86},   // concave: blue
-    {110, 186, 112},  // saddle: green
-};
+// The curvature-class colours every figure uses (render/colour_scale.hpp),
+// in OpenCV's BGR order.
+cv::Vec3b class_colour(CurvatureClass c) {
+  const Rgb rgb = curvature_class_colour(to_string(c));
+  return {rgb[2], rgb[1], rgb[0]};
+}
 const cv::Vec3b kTrimmedColour{222, 222, 222};
 const cv::Vec3b kDegenerateColour{110, 110, 110};
 const cv::Scalar kInk(30, 30, 30), kPaper(255, 255, 255);
@@ -49,7 +48,7 @@ cv::Mat class_image(const FaceCells& cells, const RegionMap& map) {
       cv::Vec3b colour = code == kDegenerateCell ? kDegenerateColour : kTrimmedColour;
       if (l >= 0) {
         const Region& r = map.regions[static_cast<std::size_t>(cells.first_id + l)];
-        colour = kClassColour[static_cast<int>(r.curvature_class)];
+        colour = class_colour(r.curvature_class);
       }
       img.at<cv::Vec3b>(L.nv - 1 - j, i) = colour;
     }
@@ -102,10 +101,10 @@ void draw_legend(cv::Mat& canvas, int top) {
     cv::Vec3b colour;
     const char* text;
   };
-  const Entry entries[] = {{kClassColour[1], "convex (bulges toward the tool)"},
-                           {kClassColour[2], "concave"},
-                           {kClassColour[3], "saddle"},
-                           {kClassColour[0], "planar"},
+  const Entry entries[] = {{class_colour(CurvatureClass::convex), "convex (bulges toward the tool)"},
+                           {class_colour(CurvatureClass::concave), "concave"},
+                           {class_colour(CurvatureClass::saddle), "saddle"},
+                           {class_colour(CurvatureClass::planar), "planar"},
                            {kTrimmedColour, "trimmed"},
                            {kDegenerateColour, "degenerate"}};
   int x = kMargin;

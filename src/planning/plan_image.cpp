@@ -1,5 +1,4 @@
 #include "planning/plan_image.hpp"
-#include "render/plot_canvas.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,16 +6,15 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "render/colour_scale.hpp"
+#include "render/plot_canvas.hpp"
+
 namespace furrow {
 
 namespace {
 
-const cv::Scalar kClassColour[] = {
-    {170, 214, 232},  // planar: sand (BGR)
-    {72, 130, 238},   // convex: orange
-    {207, 160, 86},   // concave: blue
-    {110, 186, 112},  // saddle: green
-};
+// The curvature-class colours every figure uses (render/colour_scale.hpp).
+cv::Scalar class_colour(CurvatureClass c) { return plot::bgr(curvature_class_colour(to_string(c))); }
 const cv::Scalar kOutside(215, 215, 215), kInk(30, 30, 30), kPaper(255, 255, 255);
 const cv::Scalar kStraight(120, 40, 10), kOver(230, 190, 150), kMoved(0, 140, 255), kDropped(40, 40, 220);
 const cv::Scalar kGouge(200, 40, 200);
@@ -54,7 +52,7 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
         const std::optional<int> region = map.region_at(static_cast<int>(f), u, v);
         Quad q;
         q.index = quads.size();
-        q.colour = region ? kClassColour[static_cast<int>(map.regions[static_cast<std::size_t>(*region)].curvature_class)] : kOutside;
+        q.colour = region ? class_colour(map.regions[static_cast<std::size_t>(*region)].curvature_class) : kOutside;
         const Eigen::Vector3d* c[4] = {&nodes[static_cast<std::size_t>(i) * (kCells + 1) + j],
                                        &nodes[static_cast<std::size_t>(i + 1) * (kCells + 1) + j],
                                        &nodes[static_cast<std::size_t>(i + 1) * (kCells + 1) + j + 1],
@@ -130,8 +128,10 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
     cv::Scalar colour;
     const char* text;
   };
-  const Entry entries[] = {{kClassColour[1], "convex"}, {kClassColour[2], "concave"}, {kClassColour[3], "saddle"},
-                           {kClassColour[0], "planar"}, {kStraight, "straight move"}, {kOver, "over clearance plane"},
+  const Entry entries[] = {{class_colour(CurvatureClass::convex), "convex"},
+                           {class_colour(CurvatureClass::concave), "concave"},
+                           {class_colour(CurvatureClass::saddle), "saddle"},
+                           {class_colour(CurvatureClass::planar), "planar"}, {kStraight, "straight move"}, {kOver, "over clearance plane"},
                            {kMoved, "moved"}, {kGouge, "on a gouge site"}, {kDropped, "dropped / last"}};
   int x = kMargin, y = top;
   for (const Entry& e : entries) {

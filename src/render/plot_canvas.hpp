@@ -1,6 +1,7 @@
 #pragma once
-// Drawing helpers for the report's figures (internal to src/report: this
-// header includes OpenCV and is included only by report .cpp files).
+// Drawing helpers for every figure (internal: this header includes OpenCV
+// and is included only by the .cpp files that draw figures; it is not
+// installed).
 //
 // A PlotArea maps data coordinates to pixels inside a rectangle of an image,
 // y up, and draws the frame, "nice" 1-2-5 ticks and axis labels. Text uses
