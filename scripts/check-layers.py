@@ -9,7 +9,7 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 LAYERS = [
     "base", "geometry", "io/cad", "io", "io/cmm", "render", "partition",
     "machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
-    "planning", "inspection", "report", "job", "cli",
+    "planning", "inspection", "report", "stage", "job", "cli",
 ]
 # Layers that sit side by side: neither may include the other.
 MACHINING = {"machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath"}

@@ -6,12 +6,12 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "geometry/closest_point.hpp"
 #include "inspection/comparison_file.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
+#include "stage/compare_stage.hpp"
 
 namespace furrow::cli {
 
@@ -52,8 +52,7 @@ int run_compare(Args& args) {
   RegistrationOptions& reg = options.registration;
   reg.dof = DegreesOfFreedom::parse(dof, "--dof");
   reg.loss = parse_robust_loss(loss, "--loss");
-  reg.loss_scale = tolerance / 2;
-  reg.outlier_floor = tolerance / 2;
+  scale_registration_to_tolerance(options);
   reg.outlier_sigma = sigmas;
   reg.flag_outliers = !keep_all;
   if (isatty(STDERR_FILENO))
@@ -91,13 +90,8 @@ int run_compare(Args& args) {
   read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
   const MeasurementSet set = read_measurements(measurements, read);
 
-  const ClosestPointFinder finder(part);
-  Comparison c = compare_measurements(finder, set, plan ? &*plan : nullptr, options);
-  if (regions) {
-    assign_regions(c, *regions);
-    summarize(c);
-  }
-  if (prediction) verify_prediction(c, part, set.probe_radius, *prediction, options);
+  const Comparison c = compare_stage(part, set, plan ? &*plan : nullptr, regions ? &*regions : nullptr,
+                                     prediction ? &*prediction : nullptr, options);
   if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
   ComparisonSources sources;
   sources.part = part_path;

@@ -2,7 +2,6 @@
 // region, collision-checked, ordered, with DMIS and I++ DME programs.
 #include <unistd.h>
 
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,31 +10,22 @@
 #include "base/error.hpp"
 #include "base/atomic_file.hpp"
 #include "base/output_set.hpp"
-#include "io/cmm/dmis_writer.hpp"
-#include "io/cmm/ippdme_writer.hpp"
 #include "io/part_file.hpp"
-#include "io/plan_csv.hpp"
-#include "io/plan_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
-#include "planning/plan_image.hpp"
-#include "planning/plan_report.hpp"
 #include "planning/prediction_risk.hpp"
-#include "planning/probe_planner.hpp"
+#include "stage/plan_stage.hpp"
 
 namespace furrow::cli {
 
 namespace {
 
-// The program name: the output folder's name in letters, digits, '_' and '-'.
+// The program name: the output folder's name (stage/plan_stage.hpp).
 std::string program_name(const std::string& out) {
   std::string base = std::filesystem::path(out).lexically_normal().filename().string();
   if (base.empty() || base == "." || base == "..")
     base = std::filesystem::path(out).lexically_normal().parent_path().filename().string();
-  std::string name;
-  for (unsigned char c : base) name += (std::isalnum(c) || c == '_' || c == '-') ? static_cast<char>(c) : '_';
-  if (name.size() > 64) name.resize(64);
-  return name.empty() ? "furrow_plan" : name;
+  return cmm_program_name(base, "furrow_plan");
 }
 
 std::string fixed(double v, int decimals) {
@@ -119,28 +109,19 @@ int run_plan(Args& args) {
 
   const bool show = ::isatty(2);
   const char* shown = nullptr;
-  const PlanResult result = plan_probe_points(part, map, o, risk ? &*risk : nullptr, [&](const char* stage, std::size_t done, std::size_t total) {
+  const std::string name = program_name(out);
+  const PlanStage stage = plan_stage(part, map, o, risk ? &*risk : nullptr, name, regions_path,
+                                     prediction_path.value_or(""), [&](const char* step, std::size_t done, std::size_t total) {
     if (!show) return;
-    std::cerr << "\rplan: " << stage << " " << done << "/" << total << "        " << std::flush;
-    shown = stage;
+    std::cerr << "\rplan: " << step << " " << done << "/" << total << "        " << std::flush;
+    shown = step;
   });
   if (show && shown) std::cerr << "\n";
 
-  // Everything is rendered before the folder is written: a failure leaves nothing.
-  const std::string name = program_name(out);
-  const ProbeProgram program = make_probe_program(result, name, o.stylus_length);
-  const std::string files[][2] = {
-      {"plan.json", plan_to_json_text(result.plan)},
-      {"plan.csv", plan_to_csv_text(result.plan)},
-      {name + ".dmi", dmis_program_text(program)},
-      {name + ".prg", ippdme_program_text(program)},
-      {"report.json", plan_report_json(result, o, part_path, regions_path, prediction_path.value_or(""))},
-  };
-  const std::vector<unsigned char> png = plan_image_png(part, map, result);
   const std::string staging = outputs.folder(out);
-  for (const auto& f : files) write_file_atomically(staging + "/" + f[0], f[1]);
-  write_file_atomically(staging + "/plan.png", std::string(png.begin(), png.end()));
+  for (const FolderFile& f : stage.files) write_file_atomically(staging + "/" + f.path, f.bytes);
   outputs.publish();
+  const PlanResult& result = stage.result;
   print_summary(std::cout, result, out);
   std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json}\n";
   return kExitOk;

@@ -10,12 +10,10 @@
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/prediction/error_map_image.hpp"
-#include "machining/prediction/path_prediction.hpp"
-#include "machining/prediction/prediction_file.hpp"
-#include "machining/prediction/region_errors.hpp"
+#include "io/toolpath_file.hpp"
 #include "partition/classification.hpp"
 #include "partition/regions_file.hpp"
+#include "stage/predict_stage.hpp"
 #include "base/text_fields.hpp"
 
 namespace furrow::cli {
@@ -129,29 +127,17 @@ int run_predict(Args& args) {
   const Cutter cutter(read_tool_file(tool_path));
   const Toolpath path = read_toolpath(toolpath_path, read_options);
   TerminalProgress progress;
-  const PathPrediction result =
-      predict_path(part, cutter, path, options, [&](const std::string& stage, std::size_t done, std::size_t total) {
-        progress.update(stage, done, total);
-      });
+  const PredictedPath predicted =
+      predict_stage(part, cutter, path, options, {part_path, toolpath_path, regions.value_or("")},
+                    region_map ? &*region_map : nullptr,
+                    [&](const std::string& stage, std::size_t done, std::size_t total) {
+                      progress.update(stage, done, total);
+                    });
   progress.finish();
-  Prediction prediction = make_prediction(part, cutter, result, options, part_path, toolpath_path);
-  if (region_map) {
-    prediction.has_regions = true;
-    prediction.regions_file = *regions;
-    prediction.regions = errors_by_region(part, result.map, region_map->regions.size(),
-                                          [&](int face, double u, double v) { return region_map->region_at(face, u, v); });
-    for (RegionErrorRecord& r : prediction.regions)
-      r.curvature_class = to_string(region_map->regions[static_cast<std::size_t>(r.region)].curvature_class);
-  }
-  // Everything is rendered before anything is written: a failure leaves no
-  // output behind.
-  const std::string json_text = prediction_to_json_text(prediction);
-  std::string png;
-  if (map_path) png = error_map_png(part, result.map, {scale_um / 1000, 900});
-  if (map_path) outputs.file(*map_path, png);
-  outputs.file(out_path, json_text);
+  if (map_path) outputs.file(*map_path, prediction_map_png(part, predicted, options, scale_um / 1000));
+  outputs.file(out_path, predicted.json);
   outputs.publish(out_path);
-  print_summary(std::cout, prediction);
+  print_summary(std::cout, predicted.record);
   std::cout << "wrote " << out_path << (map_path ? " and " + *map_path : std::string()) << "\n";
   return kExitOk;
 }

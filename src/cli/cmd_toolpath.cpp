@@ -10,7 +10,7 @@
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/toolpath/toolpath_generation.hpp"
+#include "stage/toolpath_stage.hpp"
 
 namespace furrow::cli {
 
@@ -74,20 +74,15 @@ int run_toolpath(Args& args) {
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
   TerminalProgress progress;
-  const ContactPlan plan = plan_contact_points(part, cutter, direction, options, [&](std::size_t d, std::size_t t) {
-    progress.update("planning passes", d, t);
-  });
+  const GeneratedToolpath path = generate_toolpath(part, part_path, cutter, {direction, options, write},
+                                                   [&](std::size_t d, std::size_t t) {
+                                                     progress.update("planning passes", d, t);
+                                                   });
   progress.finish();
-  char header[256];
-  std::snprintf(header, sizeof header, "furrow toolpath %s: direction %s, %s steps, tolerance %g mm, scallop %g mm",
-                std::filesystem::path(part_path).filename().c_str(), to_string(direction).c_str(),
-                to_string(options.forward.rule), options.forward.tolerance, options.scallop);
-  const std::string gcode = plan_gcode(plan, cutter, header, write);
-  const std::string csv = plan_contact_csv(part, plan);
-  outputs.file(contacts_path, csv);
-  outputs.file(out_path, gcode);
+  outputs.file(contacts_path, path.contacts_csv);
+  outputs.file(out_path, path.gcode);
   outputs.publish(out_path);
-  print_summary(std::cout, plan, options);
+  print_summary(std::cout, path.plan, options);
   std::cout << "wrote " << out_path << " (tool tips) and " << contacts_path << " (contact points)\n";
   return kExitOk;
 }

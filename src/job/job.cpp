@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
+#include "stage/compare_stage.hpp"
 
 namespace furrow {
 
@@ -329,10 +330,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   if (auto s = root.section("comparison")) read_comparison(*s, job);
   job.output = path_member(root, "output", folder);
   root.finish();
-  // The registration's robust scale and outlier floor follow the tolerance,
-  // as in `furrow compare`.
-  job.compare.registration.loss_scale = job.compare.tolerance.width / 2;
-  job.compare.registration.outlier_floor = job.compare.tolerance.width / 2;
+  scale_registration_to_tolerance(job.compare);
   for (const std::string* input : {&job.part, &job.tool})
     if (*input == job.output) throw InputError(root.at("output") + ": the output folder is an input file");
   return job;

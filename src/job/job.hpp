@@ -23,22 +23,14 @@
 #include "inspection/measurement_simulation.hpp"
 #include "io/cmm/measurement_file.hpp"
 #include "io/toolpath_file.hpp"
-#include "machining/toolpath/contact_planning.hpp"
 #include "machining/prediction/path_prediction.hpp"
-#include "machining/toolpath/toolpath_generation.hpp"
 #include "partition/partition.hpp"
 #include "planning/probe_planner.hpp"
+#include "stage/toolpath_stage.hpp"
 
 namespace furrow {
 
 constexpr int kJobFormatVersion = 1;
-
-// `furrow toolpath` options: a finishing path planned on the part.
-struct ToolpathGeneration {
-  PassDirectionSpec direction;
-  ContactPlanOptions contacts;  // tolerance, rule, max step, scallop
-  ToolpathWriteOptions write;   // clearance, feed
-};
 
 // `furrow simulate-measurement` options: CMM points of the plan on the part
 // as machined (nominal + predicted error when `from_prediction`), plus any

@@ -1,32 +1,26 @@
 #include "job/pipeline.hpp"
 
-#include <cctype>
 #include <chrono>
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 
-#include "geometry/closest_point.hpp"
-#include "inspection/comparison_file.hpp"
-#include "inspection/prediction_comparison.hpp"
 #include "base/atomic_file.hpp"
-#include "io/cmm/dmis_writer.hpp"
-#include "io/cmm/ippdme_writer.hpp"
 #include "base/json_fields.hpp"
+#include "inspection/comparison_file.hpp"
 #include "io/part_file.hpp"
-#include "io/plan_csv.hpp"
 #include "io/plan_file.hpp"
 #include "io/tool_file.hpp"
-#include "machining/prediction/error_map_image.hpp"
+#include "job/job_options.hpp"
 #include "machining/prediction/prediction_file.hpp"
-#include "machining/prediction/region_errors.hpp"
 #include "partition/region_image.hpp"
 #include "partition/regions_file.hpp"
-#include "planning/plan_image.hpp"
-#include "planning/plan_report.hpp"
 #include "planning/prediction_risk.hpp"
-#include "job/job_options.hpp"
+#include "stage/compare_stage.hpp"
+#include "stage/plan_stage.hpp"
+#include "stage/predict_stage.hpp"
+#include "stage/toolpath_stage.hpp"
 
 namespace furrow {
 
@@ -51,14 +45,6 @@ class StageClock {
 };
 
 std::string as_text(const std::vector<unsigned char>& png) { return std::string(png.begin(), png.end()); }
-
-// CMM program names: letters, digits, '_' and '-' (as `furrow plan`).
-std::string program_name(const std::string& name) {
-  std::string out;
-  for (unsigned char c : name) out += (std::isalnum(c) || c == '_' || c == '-') ? static_cast<char>(c) : '_';
-  if (out.size() > 64) out.resize(64);
-  return out.empty() ? "furrow_job" : out;
-}
 
 std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
 std::string line(const char* format, ...) {
@@ -103,43 +89,28 @@ struct Staged {
 Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
   const Job& job = s.job;
   if (job.toolpath_file) return read_toolpath(*job.toolpath_file, job.toolpath_read);
-  const ToolpathGeneration& g = *job.generate;
-  const ContactPlan plan = plan_contact_points(part, cutter, g.direction, g.contacts, [&](std::size_t d, std::size_t t) {
-    s.note("toolpath", d, t);
-  });
-  // The header `furrow toolpath` writes, so the G-code is the command's.
-  const std::string header = line("furrow toolpath %s: direction %s, %s steps, tolerance %g mm, scallop %g mm",
-                                  std::filesystem::path(job.part).filename().c_str(), to_string(g.direction).c_str(),
-                                  to_string(g.contacts.forward.rule), g.contacts.forward.tolerance,
-                                  g.contacts.scallop);
-  std::string gcode = plan_gcode(plan, cutter, header, g.write);
-  s.add("toolpath.csv", plan_contact_csv(part, plan));
-  s.result.summary.push_back(line("tool path: %zu passes, %zu contact points (generated)", plan.passes.size(),
-                                  plan.points));
-  Toolpath path = parse_gcode(gcode, "toolpath.nc");
-  s.add_input("toolpath", "toolpath.nc", std::move(gcode));
+  GeneratedToolpath generated = generate_toolpath(part, job.part, cutter, *job.generate,
+                                                  [&](std::size_t d, std::size_t t) { s.note("toolpath", d, t); });
+  s.add("toolpath.csv", std::move(generated.contacts_csv));
+  s.result.summary.push_back(line("tool path: %zu passes, %zu contact points (generated)",
+                                  generated.plan.passes.size(), generated.plan.points));
+  Toolpath path = parse_gcode(generated.gcode, "toolpath.nc");
+  s.add_input("toolpath", "toolpath.nc", std::move(generated.gcode));
   return path;
 }
 
 Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, const Toolpath& path,
                          const RegionMap& map) {
   const Job& job = s.job;
-  const PathPrediction computed = predict_path(part, cutter, path, job.prediction,
-                                               [&](const std::string& stage, std::size_t d, std::size_t t) {
-                                                 s.note("predict: " + stage, d, t);
-                                               });
-  Prediction record = make_prediction(part, cutter, computed, job.prediction, s.part_name,
-                                      job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file)
-                                                        : "toolpath.nc");
-  record.has_regions = true;
-  record.regions_file = "regions.json";
-  record.regions = errors_by_region(part, computed.map, map.regions.size(),
-                                    [&](int face, double u, double v) { return map.region_at(face, u, v); });
-  for (RegionErrorRecord& r : record.regions)
-    r.curvature_class = to_string(map.regions[static_cast<std::size_t>(r.region)].curvature_class);
-  const double scale = job.prediction_map_scale > 0 ? job.prediction_map_scale : 2 * job.prediction.tolerance;
-  s.add("prediction.png", error_map_png(part, computed.map, {scale, 900}));
-  std::string text = prediction_to_json_text(record);
+  const PredictionSources names{
+      s.part_name, job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file) : "toolpath.nc",
+      "regions.json"};
+  PredictedPath predicted = predict_stage(part, cutter, path, job.prediction, names, &map,
+                                          [&](const std::string& stage, std::size_t d, std::size_t t) {
+                                            s.note("predict: " + stage, d, t);
+                                          });
+  s.add("prediction.png", prediction_map_png(part, predicted, job.prediction, job.prediction_map_scale));
+  std::string text = std::move(predicted.json);
   // Later stages see what prediction.json holds (its numbers are rounded).
   Prediction read_back = parse_prediction_json(text, "prediction.json");
   s.add_input("prediction", "prediction.json", std::move(text));
@@ -155,21 +126,19 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   o.part_name = s.part_name;
   std::optional<PredictionRiskMap> risk;
   if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json", s.part_name);
-  const PlanResult r = plan_probe_points(part, map, o, risk ? &*risk : nullptr,
-                                         [&](const char* stage, std::size_t d, std::size_t t) {
-                                           s.note(std::string("plan: ") + stage, d, t);
-                                         });
-  const std::string name = program_name(job.name);
-  const ProbeProgram program = make_probe_program(r, name, o.stylus_length);
-  std::string plan_json = plan_to_json_text(r.plan);
-  InspectionPlan read_back = parse_plan(plan_json, "plan/plan.json");
-  s.add_input("plan", "plan/plan.json", std::move(plan_json));
-  s.add("plan/plan.csv", plan_to_csv_text(r.plan));
-  s.add("plan/" + name + ".dmi", dmis_program_text(program));
-  s.add("plan/" + name + ".prg", ippdme_program_text(program));
-  s.add("plan/report.json", plan_report_json(r, o, s.part_name, "regions.json",
-                                             job.plan_with_prediction ? "prediction.json" : ""));
-  s.add("plan/plan.png", as_text(plan_image_png(part, map, r)));
+  PlanStage stage = plan_stage(part, map, o, risk ? &*risk : nullptr, cmm_program_name(job.name, "furrow_job"),
+                               "regions.json", job.plan_with_prediction ? "prediction.json" : "",
+                               [&](const char* step, std::size_t d, std::size_t t) {
+                                 s.note(std::string("plan: ") + step, d, t);
+                               });
+  InspectionPlan read_back = parse_plan(stage.plan_json, "plan/plan.json");
+  for (FolderFile& f : stage.files) {
+    if (f.path == "plan.json")
+      s.add_input("plan", "plan/plan.json", std::move(f.bytes));
+    else
+      s.add("plan/" + f.path, std::move(f.bytes));
+  }
+  const PlanResult& r = stage.result;
   s.result.summary.push_back(line("plan: %zu points in %zu regions%s, cycle about %.1f min", r.plan.points.size(),
                                   r.regions.size(), job.plan_with_prediction ? " (risk-weighted)" : "",
                                   r.cycle.seconds / 60));
@@ -204,11 +173,8 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
   const Job& job = s.job;
   CompareOptions options = job.compare;
   options.registration.progress = [&](const std::string& what) { s.note("compare: " + what); };
-  const ClosestPointFinder finder(part);
-  Comparison c = compare_measurements(finder, set, &plan, options);
-  assign_regions(c, map);
-  summarize(c);
-  if (job.compare_with_prediction) verify_prediction(c, part, set.probe_radius, prediction, options);
+  const Comparison c =
+      compare_stage(part, set, &plan, &map, job.compare_with_prediction ? &prediction : nullptr, options);
   ComparisonSources sources;
   sources.part = s.part_name;
   sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, *job.measurements_file);

@@ -1,0 +1,41 @@
+#include "stage/plan_stage.hpp"
+
+#include <cctype>
+
+#include "io/cmm/dmis_writer.hpp"
+#include "io/cmm/ippdme_writer.hpp"
+#include "io/plan_csv.hpp"
+#include "io/plan_file.hpp"
+#include "planning/plan_image.hpp"
+#include "planning/plan_report.hpp"
+
+namespace furrow {
+
+std::string cmm_program_name(const std::string& text, const std::string& fallback) {
+  std::string name;
+  for (unsigned char c : text) name += (std::isalnum(c) || c == '_' || c == '-') ? static_cast<char>(c) : '_';
+  if (name.size() > 64) name.resize(64);
+  return name.empty() ? fallback : name;
+}
+
+PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOptions& options, const RiskMap* risk,
+                     const std::string& program, const std::string& regions_name,
+                     const std::string& prediction_name, const PlanProgress& progress) {
+  PlanStage out;
+  out.result = plan_probe_points(part, map, options, risk, progress);
+  out.program = program;
+  const ProbeProgram cmm = make_probe_program(out.result, program, options.stylus_length);
+  out.plan_json = plan_to_json_text(out.result.plan);
+  const std::vector<unsigned char> png = plan_image_png(part, map, out.result);
+  out.files = {
+      {"plan.json", out.plan_json},
+      {"plan.csv", plan_to_csv_text(out.result.plan)},
+      {program + ".dmi", dmis_program_text(cmm)},
+      {program + ".prg", ippdme_program_text(cmm)},
+      {"report.json", plan_report_json(out.result, options, options.part_name, regions_name, prediction_name)},
+      {"plan.png", std::string(png.begin(), png.end())},
+  };
+  return out;
+}
+
+}  // namespace furrow
