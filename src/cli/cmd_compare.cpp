@@ -124,8 +124,9 @@ int run_compare(Args& args) {
     std::printf("gouge sites: %zu confirmed, %zu not confirmed, %zu not measured; %zu unexplained overcuts\n",
                 by_status[0], by_status[1], by_status[2], s.unexplained_overcuts);
   }
-  std::printf("%s\n", s.pass ? "PASS" : "FAIL");
-  return s.pass ? kExitOk : kExitFail;
+  std::printf("%s\n", to_string(s.verdict));
+  for (const InconclusiveReason& r : s.inconclusive) std::printf("  %s\n", r.text.c_str());
+  return exit_status(s.verdict);
 }
 
 }  // namespace
@@ -137,9 +138,12 @@ const Command kCompareCommand = {
     "Registers measured points (CSV, XYZ text or DMIS results; docs/formats.md)\n"
     "to PART by a robust best fit with probe compensation, computes each point's\n"
     "signed deviation along the nominal normal (+ material left, - removed) and\n"
-    "checks it against a surface profile tolerance. Writes comparison.json; exit\n"
-    "status 0 when every evaluated point is in tolerance (and, with a prediction,\n"
-    "no predicted gouge is confirmed), 1 otherwise.\n"
+    "checks it against a surface profile tolerance. Writes comparison.json. Exit\n"
+    "status: 0 PASS (every evaluated point in tolerance, no predicted gouge\n"
+    "confirmed, nothing left unseen), 1 FAIL, 4 INCONCLUSIVE (nothing failed, but\n"
+    "a suspected blunder lies outside the zone, a predicted gouge was not\n"
+    "measured, or the points do not determine the alignment: the reasons say\n"
+    "what to measure again; docs/verification.md \"Verdict\").\n"
     "\n"
     "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res)\n"
     "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"

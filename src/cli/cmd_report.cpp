@@ -34,7 +34,7 @@ int run_report(Args& args) {
               v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
   if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
   std::printf(")\nwrote %s/report.html (and report.json, points.csv, %zu figures)\n", out.c_str(), files.size() - 3);
-  return v.pass ? kExitOk : kExitFail;
+  return exit_status(v.verdict);
 }
 
 }  // namespace
@@ -51,7 +51,8 @@ const Command kReportCommand = {
     "names every input file with its SHA-256 (docs/report.md).\n"
     "The part, plan, regions and prediction the comparison names are looked up\n"
     "relative to the current directory, then next to COMPARISON.\n"
-    "Exit status 0 when the comparison passed, 1 when it failed.\n"
+    "Exit status 0 when the comparison passed, 1 when it failed, 4 when it was\n"
+    "inconclusive.\n"
     "\n"
     "  --out FOLDER   report folder to write (required)\n"
     "  --title TEXT   heading (default: the folder's name)\n",

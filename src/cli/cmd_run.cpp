@@ -37,7 +37,8 @@ const Command kRunCommand = {
     "                 current directory)\n"
     "\n"
     "Exit status: 0 pass (or plan only), 1 fail (out of tolerance or a\n"
-    "confirmed gouge), 2 bad input, 3 internal error.\n",
+    "confirmed gouge), 2 bad input, 3 the computation did not succeed,\n"
+    "4 inconclusive (see furrow compare).\n",
     run_run};
 
 }  // namespace furrow::cli

@@ -4,6 +4,7 @@
 // status; bad input is thrown as InputError (status 2), never printed and
 // carried on.
 #include "cli/args.hpp"
+#include "inspection/comparison.hpp"
 
 namespace furrow::cli {
 
@@ -11,7 +12,11 @@ namespace furrow::cli {
 constexpr int kExitOk = 0;
 constexpr int kExitFail = 1;        // the part fails inspection (out of tolerance, gouge)
 constexpr int kExitBadInput = 2;    // a file, option or value the user must fix
-constexpr int kExitInternal = 3;    // a bug or an unexpected system failure
+constexpr int kExitInternal = 3;    // the computation did not succeed (or a bug)
+constexpr int kExitInconclusive = 4;  // nothing failed, but not everything was shown to be good
+
+// The exit status of a verdict: PASS 0, FAIL 1, INCONCLUSIVE 4.
+int exit_status(Verdict verdict);
 
 struct Command {
   const char* name;

@@ -47,7 +47,8 @@ void print_overview(std::ostream& out) {
     out << "  " << name << c->summary << "\n";
   }
   out << "\n'furrow help COMMAND' shows a command's options.\n"
-         "Exit status: 0 ok/pass, 1 inspection fail, 2 bad input, 3 internal error.\n";
+         "Exit status: 0 ok/pass, 1 fail, 2 bad input, 3 the computation did not succeed,\n"
+         "4 inconclusive (nothing failed, but not everything was shown to be good).\n";
 }
 
 }  // namespace

@@ -50,7 +50,9 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
   }
   out << ".SH EXIT STATUS\n.TP\n0\nok, or the part passes\n.TP\n1\nthe part fails (out of "
          "tolerance, gouge, uncovered)\n.TP\n2\nbad input: a file, option or value to fix; "
-         "nothing is written\n.TP\n3\nthe computation did not succeed\n";
+         "nothing is written\n.TP\n3\nthe computation did not succeed\n.TP\n4\ninconclusive: nothing failed, but "
+         "something was not shown to be good (a suspected blunder outside the zone, an unmeasured predicted gouge, "
+         "an undetermined alignment)\n";
 }
 
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {

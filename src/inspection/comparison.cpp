@@ -2,9 +2,67 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
+#include "base/error.hpp"
+
 namespace furrow {
+
+const char* to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass:
+      return "PASS";
+    case Verdict::fail:
+      return "FAIL";
+    case Verdict::inconclusive:
+      return "INCONCLUSIVE";
+  }
+  return "?";
+}
+
+Verdict parse_verdict(const std::string& text, const std::string& where) {
+  for (Verdict v : {Verdict::pass, Verdict::fail, Verdict::inconclusive})
+    if (text == to_string(v)) return v;
+  throw InputError(where + ": unknown verdict \"" + text + "\" (valid: PASS, FAIL, INCONCLUSIVE)");
+}
+
+namespace {
+
+std::string micrometres(double mm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f um", mm * 1000);
+  return buf;
+}
+
+// What was not shown to be good (the header's INCONCLUSIVE rules).
+std::vector<InconclusiveReason> open_questions(const Comparison& c) {
+  std::vector<InconclusiveReason> out;
+  const std::vector<RegisteredPoint>& pts = c.registration.points;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const RegisteredPoint& p = pts[i];
+    if (p.outlier != OutlierReason::blunder || c.tolerance.contains(p.deviation)) continue;
+    const std::string id = i < c.point_ids.size() ? c.point_ids[i] : std::to_string(i + 1);
+    out.push_back({"suspected_blunder", id,
+                   "re-measure point " + id + ": its deviation " + micrometres(p.deviation) +
+                       " is outside the zone, but the outlier rule suspects a blunder (" + p.outlier_detail + ")"});
+  }
+  if (c.gouges)
+    for (const GougeSiteCheck& site : c.gouges->sites)
+      if (site.status == GougeSiteStatus::not_measured)
+        out.push_back({"gouge_not_measured", site.id,
+                       "predicted gouge " + site.id +
+                           (site.predicted_depth ? " (" + micrometres(*site.predicted_depth) + " deep)" : std::string()) +
+                           " on face " + site.face + " was not measured: probe its site"});
+  const std::string& covariance = c.registration.covariance_status;
+  if (covariance.find("rank deficient") != std::string::npos)
+    out.push_back({"alignment_undetermined", "",
+                   "the measured points do not determine the part's position (" + covariance +
+                       "): measure more points spread over the part, or lock the free motions with --dof"});
+  return out;
+}
+
+}  // namespace
 
 DeviationStatistics deviation_statistics(const std::vector<double>& values) {
   DeviationStatistics s;
@@ -55,8 +113,11 @@ void summarize(Comparison& c) {
     s.unexplained_overcuts = c.gouges->unexplained.size();
   }
   // An alignment that did not converge cannot certify anything.
-  s.pass = c.registration.converged && s.evaluated > 0 && s.out_of_tolerance == 0 &&
-           s.confirmed_gouges == 0;
+  const bool failed = !c.registration.converged || s.evaluated == 0 || s.out_of_tolerance > 0 ||
+                      s.confirmed_gouges > 0;
+  if (!failed) s.inconclusive = open_questions(c);
+  s.verdict = failed ? Verdict::fail : s.inconclusive.empty() ? Verdict::pass : Verdict::inconclusive;
+  s.pass = s.verdict == Verdict::pass;
   for (const auto& [region, values] : by_region)
     s.regions.push_back({region, deviation_statistics(values), region_out[region]});
   c.summary = s;
@@ -92,6 +153,7 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
                                 const InspectionPlan* plan, const CompareOptions& options) {
   Comparison c;
   c.tolerance = options.tolerance;
+  for (const MeasuredPoint& p : set.points) c.point_ids.push_back(p.id);
   c.registration = register_measurements(finder, set, plan, options.registration);
   c.region.assign(set.points.size(), std::nullopt);
   if (plan && set.ids_from_file) {

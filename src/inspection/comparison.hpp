@@ -1,7 +1,17 @@
 #pragma once
 // Measured versus nominal: registration, per-point deviations against a
-// profile tolerance zone, statistics overall and per region, pass/fail.
-// What `furrow compare` computes and comparison_file.hpp writes.
+// profile tolerance zone, statistics overall and per region, and the
+// verdict. What `furrow compare` computes and comparison_file.hpp writes.
+//
+// The verdict has three states (docs/verification.md "Verdict"):
+// - FAIL: something was shown to be bad — an evaluated point outside the
+//   zone, a predicted gouge confirmed — or the registration did not
+//   converge, or no point could be evaluated;
+// - INCONCLUSIVE: nothing was shown to be bad, but something was not shown
+//   to be good: a point outside the zone that the outlier rule suspects of
+//   being a blunder (re-measure it), a predicted gouge site with no point on
+//   it, or an alignment that the points do not determine (rank-deficient);
+// - PASS: neither. PASS is never given for what was not seen.
 //
 // Which points count: a point is evaluated unless it is a blunder, beyond a
 // face edge or has no foot point (registration.hpp). Large real deviations
@@ -32,6 +42,18 @@ struct DeviationStatistics {
 // Deterministic (sums in index order). All zero for no values.
 DeviationStatistics deviation_statistics(const std::vector<double>& values);
 
+enum class Verdict { pass, fail, inconclusive };
+const char* to_string(Verdict verdict);  // "PASS", "FAIL", "INCONCLUSIVE"
+// Throws InputError naming `where` for any other text.
+Verdict parse_verdict(const std::string& text, const std::string& where);
+
+// Why a comparison that found nothing bad still cannot pass.
+struct InconclusiveReason {
+  std::string kind;     // "suspected_blunder", "gouge_not_measured" or "alignment_undetermined"
+  std::string subject;  // the point id, the gouge site id, or "" for the alignment
+  std::string text;     // for people, saying what to do ("re-measure point P0006: ...")
+};
+
 struct RegionStatistics {
   int region = 0;
   DeviationStatistics deviations;
@@ -45,13 +67,14 @@ struct ComparisonSummary {
   double profile = 0;                     // 2 max |d| over evaluated points [mm]
   std::size_t confirmed_gouges = 0;       // predicted gouge sites CONFIRMED (with a prediction)
   std::size_t unexplained_overcuts = 0;   // clusters of UNEXPLAINED overcut (with a prediction)
-  // Registration converged, every evaluated point in the zone and no
-  // predicted gouge confirmed.
-  bool pass = false;
+  Verdict verdict = Verdict::fail;
+  std::vector<InconclusiveReason> inconclusive;  // set when verdict is inconclusive
+  bool pass = false;                             // verdict == pass
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids
 };
 
 struct Comparison {
+  std::vector<std::string> point_ids;  // per point, as in the measurement set
   RegistrationResult registration;
   ToleranceZone tolerance;
   std::vector<std::optional<int>> region;  // per point

@@ -103,6 +103,13 @@ json options_json(const CompareOptions& o, const MeasurementSet& set, const Comp
   return j;
 }
 
+json inconclusive_json(const std::vector<InconclusiveReason>& reasons) {
+  json out = json::array();
+  for (const InconclusiveReason& r : reasons)
+    out.push_back({{"kind", r.kind}, {"subject", r.subject}, {"text", r.text}});
+  return out;
+}
+
 json outlier_counts_json(const RegistrationResult& r) {
   json counts = json::object();
   for (OutlierReason reason : {OutlierReason::blunder, OutlierReason::large_deviation,
@@ -179,6 +186,8 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                     {"profile", jf::finite(s.profile, "profile")},
                     {"confirmed_gouges", s.confirmed_gouges},
                     {"unexplained_overcuts", s.unexplained_overcuts},
+                    {"verdict", to_string(s.verdict)},
+                    {"inconclusive", inconclusive_json(s.inconclusive)},
                     {"pass", s.pass}};
   json regions = json::array();
   for (const RegionStatistics& r : s.regions) {

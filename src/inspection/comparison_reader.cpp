@@ -135,6 +135,20 @@ ComparisonSummary read_summary(const Node& n) {
   s.confirmed_gouges = n.count("confirmed_gouges");
   s.unexplained_overcuts = n.count("unexplained_overcuts");
   s.pass = n.boolean("pass");
+  // Files written before the three-state verdict have only "pass".
+  s.verdict = n.has("verdict") ? parse_verdict(n.string("verdict"), n.path("verdict"))
+                               : s.pass ? Verdict::pass : Verdict::fail;
+  if (s.pass != (s.verdict == Verdict::pass))
+    throw InputError(n.path("verdict") + ": " + to_string(s.verdict) + " contradicts \"pass\"");
+  if (n.has("inconclusive")) {
+    const json& list = n.array("inconclusive");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const Node r(list[k], jf::child(n.path("inconclusive"), k));
+      s.inconclusive.push_back({r.string("kind"), r.string("subject"), r.string("text")});
+    }
+  }
+  if ((s.verdict == Verdict::inconclusive) == s.inconclusive.empty())
+    throw InputError(n.path("inconclusive") + ": an INCONCLUSIVE verdict and its reasons go together");
   return s;
 }
 

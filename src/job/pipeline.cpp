@@ -251,8 +251,9 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     for (FolderFile& f : report) result.files.push_back(std::move(f));
     result.measured = true;
     result.pass = doc.summary.pass;
+    result.verdict = doc.summary.verdict;
     result.summary.push_back(line("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance)",
-                                  doc.summary.pass ? "PASS" : "FAIL", doc.summary.profile * 1000,
+                                  to_string(doc.summary.verdict), doc.summary.profile * 1000,
                                   doc.options.tolerance.width * 1000, doc.summary.out_of_tolerance,
                                   doc.summary.evaluated));
   } else {

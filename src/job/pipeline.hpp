@@ -46,7 +46,8 @@ struct PipelineResult {
   std::vector<InputDigest> inputs;  // files given and files generated for later stages
   double total_seconds = 0;
   bool measured = false;  // the job had measurements: comparison and report exist
-  bool pass = false;      // the verdict (when measured)
+  bool pass = false;      // the verdict is PASS (when measured)
+  Verdict verdict = Verdict::fail;  // when measured
   std::vector<std::string> summary;  // a few lines for people
 };
 

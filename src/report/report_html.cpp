@@ -32,7 +32,7 @@ body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;color:#222;margin:0 au
 h1{font-size:1.6em;margin:0.2em 0}h2{font-size:1.25em;border-bottom:2px solid #ccc;padding-bottom:3px;margin-top:1.6em}
 h3{font-size:1.05em;margin-bottom:0.3em}.meta{color:#555;margin:0}
 .verdict{display:flex;gap:24px;align-items:center;border-radius:8px;padding:18px 24px;margin:16px 0;color:#fff}
-.verdict.pass{background:#28963c}.verdict.fail{background:#c81e1e}
+.verdict.pass{background:#28963c}.verdict.fail{background:#c81e1e}.verdict.inconclusive{background:#b86e00}
 .verdict .result{font-size:3.2em;font-weight:bold;letter-spacing:0.05em;min-width:3.6em;text-align:center}
 .verdict .facts p{margin:0.25em 0;font-size:1.05em}.verdict ul{margin:0.4em 0 0 1.2em;padding:0}
 nav{font-size:0.95em;color:#555}nav a{margin-right:1em}
@@ -76,7 +76,7 @@ std::string figures_of(const std::vector<ReportFigure>& figures, const std::stri
 }
 
 std::string verdict_section(const ReportVerdict& v) {
-  std::string out = std::string("<section id=\"verdict\" class=\"verdict ") + (v.pass ? "pass" : "fail") + "\">\n";
+  std::string out = std::string("<section id=\"verdict\" class=\"verdict ") + (v.pass ? "pass" : v.verdict == Verdict::inconclusive ? "inconclusive" : "fail") + "\">\n";
   out += std::string("<div class=\"result\" id=\"verdict-result\">") + v.result() + "</div>\n<div class=\"facts\">\n";
   out += "<p>Profile <b>" + fixed(v.profile * 1000, 1) + " &micro;m</b> against a tolerance zone of <b>" +
          fixed(v.zone.width * 1000, 1) + " &micro;m</b> [" + um(v.zone.lower()) + ", " + um(v.zone.upper()) +

@@ -30,6 +30,10 @@ json verdict_json(const ReportVerdict& v) {
   j["result"] = v.result();
   j["pass"] = v.pass;
   j["reasons"] = v.reasons;
+  json open = json::array();
+  for (const InconclusiveReason& r : v.inconclusive)
+    open.push_back({{"kind", r.kind}, {"subject", r.subject}, {"text", r.text}});
+  j["inconclusive"] = std::move(open);
   j["profile"] = num(v.profile, "profile");
   j["tolerance"] = zone_json(v.zone);
   j["evaluated"] = v.evaluated;

@@ -17,7 +17,9 @@ std::string um(double mm) {
 ReportVerdict report_verdict(const ComparisonDocument& doc) {
   ReportVerdict v;
   const ComparisonSummary& s = doc.summary;
+  v.verdict = s.verdict;
   v.pass = s.pass;
+  v.inconclusive = s.inconclusive;
   v.profile = s.profile;
   v.zone = doc.options.tolerance;
   v.evaluated = s.evaluated;
@@ -49,6 +51,7 @@ ReportVerdict report_verdict(const ComparisonDocument& doc) {
         v.reasons.push_back("predicted gouge " + site.id + " confirmed: measured depth " +
                             um(site.measured_depth.value_or(0)) +
                             (site.predicted_depth ? ", predicted " + um(*site.predicted_depth) : std::string()));
+  for (const InconclusiveReason& r : v.inconclusive) v.reasons.push_back(r.text);
   if (!v.pass && v.reasons.empty()) v.reasons.push_back("the comparison failed the part");
   return v;
 }

@@ -192,15 +192,31 @@ TEST_CASE("furrow demo: the planted gouge is confirmed, the report renders, a se
   }
 }
 
-TEST_CASE("furrow run: an error-free part (nominal surface, noise and blunders only) passes with exit status 0") {
+TEST_CASE("furrow run: an error-free part passes with exit status 0; with blunders outside the zone it is INCONCLUSIVE") {
   const std::string dir = scratch_dir("cli-run-error-free");
+  const std::string clean = demo_variant(dir, [](json& j) {
+    j["measurements"]["simulate"]["prediction"] = false;
+    j["measurements"]["simulate"]["blunders"] = 0;
+    j["output"] = "clean";
+  });
+  const CliResult pass = run_furrow({"run", clean});
+  INFO(pass.out << pass.err);
+  CHECK(pass.status == 0);
+  const json passed = read_json(dir + "/clean/report.json");
+  CHECK(passed["verdict"]["result"] == "PASS");
+  CHECK(passed["verdict"]["reasons"].empty());
+  CHECK(passed["verdict"]["inconclusive"].empty());
+
   const std::string job = demo_variant(dir, [](json& j) { j["measurements"]["simulate"]["prediction"] = false; });
   const CliResult r = run_furrow({"run", job});
   INFO(r.out << r.err);
-  CHECK(r.status == 0);
+  // The two planted blunders lie outside the zone: the part cannot pass
+  // until they are measured again.
+  CHECK(r.status == 4);
   const json report = read_json(dir + "/out/report.json");
-  CHECK(report["verdict"]["result"] == "PASS");
-  CHECK(report["verdict"]["reasons"].empty());
+  CHECK(report["verdict"]["result"] == "INCONCLUSIVE");
+  REQUIRE(report["verdict"]["inconclusive"].size() == 2);
+  for (const json& reason : report["verdict"]["inconclusive"]) CHECK(reason["kind"] == "suspected_blunder");
   CHECK(report["verdict"]["out_of_tolerance"] == 0);
   // The predicted site was probed (risk-weighted plan) and found intact.
   CHECK(only_zmap_site(report)["status"] == "NOT CONFIRMED");
@@ -208,7 +224,7 @@ TEST_CASE("furrow run: an error-free part (nominal surface, noise and blunders o
   CHECK(report["alignment"]["outliers"]["blunder"] == 2);  // the two planted blunders, set aside
 }
 
-TEST_CASE("furrow run: planned without the prediction, the predicted gouge site is NOT MEASURED") {
+TEST_CASE("furrow run: planned without the prediction, the predicted gouge site is NOT MEASURED and the verdict INCONCLUSIVE") {
   const std::string dir = scratch_dir("cli-run-not-measured");
   const std::string job = demo_variant(dir, [](json& j) {
     // A sparse plan without a floor per region: the dimple's small concave
@@ -218,10 +234,24 @@ TEST_CASE("furrow run: planned without the prediction, the predicted gouge site 
   });
   const CliResult r = run_furrow({"run", job});
   INFO(r.out << r.err);
-  CHECK(r.status == 0);  // the gouge is there, but nobody looked: in tolerance where probed
+  // The gouge is there, but nobody looked: in tolerance where probed, and
+  // yet never a PASS - INCONCLUSIVE, exit 4, the site named.
+  CHECK(r.status == 4);
   const json report = read_json(dir + "/out/report.json");
   const json& site = only_zmap_site(report);
   CHECK(site["status"] == "NOT MEASURED");
+  CHECK(report["verdict"]["result"] == "INCONCLUSIVE");
+  std::size_t unmeasured = 0;  // the site; the simulation's two blunders are reasons too
+  for (const json& reason : report["verdict"]["inconclusive"]) {
+    if (reason["kind"] == "gouge_not_measured") {
+      ++unmeasured;
+      CHECK(reason["subject"] == site["id"]);
+    } else {
+      CHECK(reason["kind"] == "suspected_blunder");
+    }
+  }
+  CHECK(unmeasured == 1);
+  CHECK(report["verdict"]["out_of_tolerance"] == 0);
   CHECK(site["points"].empty());
   CHECK(report["verdict"]["gouge_sites"]["not_measured"] == 1);
   // Independently: no measured point lies on the site's extent in the

@@ -1,0 +1,124 @@
+// The three-state verdict end to end: what was not shown to be good is never
+// PASS. Each case plants one known cause (a one-point dent, an undetermined
+// alignment) and checks that the verdict names it.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "base/json_fields.hpp"
+#include "inspection/comparison_file.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "io/part_file.hpp"
+#include "io/plan_file.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+
+namespace {
+
+const std::string kMould = test::source_path("examples/parts/mould.json");
+
+std::string write_grid_plan(const std::string& dir, int nu, int nv) {
+  const Part part = read_part(kMould);
+  InspectionPlan plan = grid_plan(part, nu, nv, {"ruby 2 mm", 2});
+  plan.part = kMould;
+  write_plan(plan, dir + "/plan.json");
+  return dir + "/plan.json";
+}
+
+std::string number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+}  // namespace
+
+TEST_CASE("verdict: a dent seen by one probe point is INCONCLUSIVE and names the point to re-measure") {
+  const std::string dir = test::scratch_dir("verdict-dent");
+  const std::string plan_path = write_grid_plan(dir, 12, 10);  // points about 8 mm apart
+  const InspectionPlan plan = read_plan(plan_path);
+  // A dent 6 mm across and 80 um deep centred on one planned point: no
+  // neighbour sees it, so the outlier rule cannot confirm it.
+  const PlannedPoint& target = plan.points[plan.points.size() / 2 + 3];
+  const std::string bump = number(target.xyz.x()) + "," + number(target.xyz.y()) + "," + number(target.xyz.z()) +
+                           ",3,-0.08";
+  REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", plan_path, "--noise", "0.002", "--outliers",
+                            "0", "--bump", bump, "--out", dir + "/m.csv"})
+              .status == 0);
+  const test::CliResult r = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.csv", "--plan",
+                                              plan_path, "--tolerance", "0.05", "--out", dir + "/c.json"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 4);
+  CHECK(r.out.find("INCONCLUSIVE") != std::string::npos);
+  CHECK(r.out.find("re-measure point " + target.id) != std::string::npos);
+  const ComparisonDocument doc = read_comparison(dir + "/c.json");
+  CHECK(doc.summary.verdict == Verdict::inconclusive);
+  CHECK_FALSE(doc.summary.pass);
+  REQUIRE(doc.summary.inconclusive.size() == 1);
+  CHECK(doc.summary.inconclusive[0].kind == "suspected_blunder");
+  CHECK(doc.summary.inconclusive[0].subject == target.id);
+  CHECK(doc.summary.out_of_tolerance == 0);  // nothing was shown to be bad
+
+  // The same measurement without the dent passes: the dent alone made the
+  // difference.
+  REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", plan_path, "--noise", "0.002", "--outliers",
+                            "0", "--out", dir + "/clean.csv"})
+              .status == 0);
+  const test::CliResult clean = test::run_furrow({"compare", kMould, "--measurements", dir + "/clean.csv", "--plan",
+                                                  plan_path, "--tolerance", "0.05", "--out", dir + "/clean.json"});
+  CHECK(clean.status == 0);
+  CHECK(read_comparison(dir + "/clean.json").summary.verdict == Verdict::pass);
+
+  // The report of the comparison says INCONCLUSIVE with the reason, exit 4.
+  const test::CliResult report = test::run_furrow({"report", dir + "/c.json", "--out", dir + "/report"});
+  CHECK(report.status == 4);
+  const json_fields::json rj = json_fields::load_file(dir + "/report/report.json");
+  CHECK(rj["verdict"]["result"] == "INCONCLUSIVE");
+  REQUIRE(rj["verdict"]["inconclusive"].size() == 1);
+  CHECK(rj["verdict"]["inconclusive"][0]["subject"] == target.id);
+  CHECK(test::slurp(dir + "/report/report.html").find("class=\"verdict inconclusive\"") != std::string::npos);
+}
+
+TEST_CASE("verdict: identical or collinear points never PASS (the alignment is undetermined)") {
+  const std::string dir = test::scratch_dir("verdict-degenerate");
+  const std::string plan_path = write_grid_plan(dir, 12, 10);
+  const InspectionPlan plan = read_plan(plan_path);
+  // Contact points on the nominal surface, in the part frame: every point
+  // has deviation 0, so only the alignment can stop a PASS.
+  const Eigen::Vector3d a = plan.points[30].xyz;
+  const Eigen::Vector3d b = plan.points[31].xyz;
+  std::string identical = "id,x,y,z\n", collinear = "id,x,y,z\n";
+  for (int k = 0; k < 40; ++k)
+    identical += "Q" + std::to_string(k) + "," + number(a.x()) + "," + number(a.y()) + "," + number(a.z()) + "\n";
+  for (int k = 0; k < 20; ++k) {
+    const Eigen::Vector3d p = a + (b - a) * (k / 19.0);  // a chord: off the surface between a and b
+    collinear += "L" + std::to_string(k) + "," + number(p.x()) + "," + number(p.y()) + "," + number(p.z()) + "\n";
+  }
+  test::write_text(dir + "/identical.csv", identical);
+  test::write_text(dir + "/collinear.csv", collinear);
+  auto compare = [&](const std::string& name) {
+    const test::CliResult r =
+        test::run_furrow({"compare", kMould, "--measurements", dir + "/" + name + ".csv", "--points", "contact",
+                          "--tolerance", "1", "--out", dir + "/" + name + ".json"});
+    INFO(r.out << r.err);
+    CHECK(r.out.find("PASS") == std::string::npos);
+    return std::make_pair(r.status, read_comparison(dir + "/" + name + ".json"));
+  };
+  {  // 40 copies of one point: every deviation 0, the fit converges, nothing fixes the pose
+    const auto [status, doc] = compare("identical");
+    CHECK(status == 4);
+    CHECK(doc.summary.verdict == Verdict::inconclusive);
+    bool undetermined = false;
+    for (const InconclusiveReason& reason : doc.summary.inconclusive)
+      undetermined = undetermined || reason.kind == "alignment_undetermined";
+    CHECK(undetermined);
+  }
+  {  // points on one line: either the fit does not settle (FAIL) or it is undetermined
+    const auto [status, doc] = compare("collinear");
+    CHECK((status == 1 || status == 4));
+    CHECK(doc.summary.verdict != Verdict::pass);
+  }
+}
