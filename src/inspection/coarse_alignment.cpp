@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
 #include "geometry/point_search.hpp"
+#include "inspection/point_subsets.hpp"
 #include "inspection/surface_sampling.hpp"
 
 namespace furrow {
@@ -114,11 +116,21 @@ struct Candidate {
 
 double median_surface_distance(const ClosestPointFinder& finder, const MeasurementSet& set,
                                const Eigen::Isometry3d& transform, std::size_t max_points) {
-  const std::vector<std::size_t> subset = stride_subset(set.points.size(), max_points);
+  // Scored on the points that can lie on the part in this placement: a
+  // blunder far away would only cost a projection and cannot move a median.
+  const Eigen::AlignedBox3d box = finder.part().control_box();
+  const double reach = 1.5 * box.diagonal().norm();
+  std::vector<Eigen::Vector3d> all(set.points.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = transform * set.points[k].xyz;
+  std::vector<std::size_t> near;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (all[k].allFinite() && box.exteriorDistance(all[k]) <= reach) near.push_back(k);
+  const std::vector<std::size_t> subset = spread_subset(all, near, max_points);
+  if (subset.empty()) return std::numeric_limits<double>::infinity();
   std::vector<double> d(subset.size());
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < subset.size(); ++k) {
-    const ClosestPoint c = finder.project(transform * set.points[subset[k]].xyz);
+    const ClosestPoint c = finder.project(all[subset[k]]);
     d[k] = std::abs(c.signed_distance - set.probe_radius);
   }
   return median(d);
@@ -131,8 +143,19 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   std::vector<Eigen::Vector3d> target(samples.size());
   for (std::size_t k = 0; k < samples.size(); ++k)
     target[k] = samples[k].point + set.probe_radius * samples[k].normal;
-  std::vector<Eigen::Vector3d> measured(set.points.size());
-  for (std::size_t k = 0; k < measured.size(); ++k) measured[k] = set.points[k].xyz;
+  Eigen::AlignedBox3d box;
+  for (const auto& p : target) box.extend(p);
+  const double diagonal = box.diagonal().norm();
+  // Points that cannot lie on the part in any placement (blunders metres
+  // away, at any finite magnitude) take no part in the search; the fine fit
+  // later flags them. Without a bulk (fewer than 3 points near the median)
+  // every finite point is used.
+  std::vector<Eigen::Vector3d> all(set.points.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = set.points[k].xyz;
+  std::vector<std::size_t> usable = points_near_the_bulk(all, 1.5 * diagonal);
+  if (usable.size() < 3) usable = points_near_the_bulk(all, std::numeric_limits<double>::max());
+  std::vector<Eigen::Vector3d> measured;
+  for (std::size_t k : usable) measured.push_back(all[k]);
 
   Eigen::Vector3d c_surface, c_measured;
   Eigen::Matrix3d e_surface, e_measured;
@@ -151,13 +174,11 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   }
 
   const PointSearch tree(target);
-  Eigen::AlignedBox3d box;
-  for (const auto& p : target) box.extend(p);
-  const double diagonal = box.diagonal().norm();
 
+  // Spread over the part, not by file order (point_subsets.hpp says why).
   auto subset = [&](std::size_t max) {
     std::vector<Eigen::Vector3d> pts;
-    for (std::size_t k : stride_subset(measured.size(), max)) pts.push_back(measured[k]);
+    for (std::size_t k : spread_subset(all, usable, max)) pts.push_back(all[k]);
     return pts;
   };
   const std::vector<Eigen::Vector3d> screen = subset(options.screen_points);

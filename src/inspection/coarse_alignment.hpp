@@ -70,8 +70,10 @@ CoarseResult coarse_alignment(const ClosestPointFinder& finder, const Measuremen
 CoarseResult coarse_global_search(const ClosestPointFinder& finder, const MeasurementSet& set,
                                   const CoarseOptions& options);
 
-// Median over (a deterministic subset of at most `max_points` of) the points
-// of |signed distance - probe radius| after `transform` [mm].
+// Median over (a deterministic, spread subset of at most `max_points` of)
+// the points that can lie on the part after `transform` (within 1.5 part
+// diagonals of its control box) of |signed distance - probe radius| [mm];
+// +infinity when no point can.
 double median_surface_distance(const ClosestPointFinder& finder, const MeasurementSet& set,
                                const Eigen::Isometry3d& transform, std::size_t max_points);
 
