@@ -192,7 +192,7 @@ TEST_CASE("furrow demo: the planted gouge is confirmed, the report renders, a se
   }
 }
 
-TEST_CASE("furrow run: an error-free part passes with exit status 0; with blunders outside the zone it is INCONCLUSIVE") {
+TEST_CASE("furrow run: an error-free part passes with exit status 0, with blunders outside the zone it is INCONCLUSIVE") {
   const std::string dir = scratch_dir("cli-run-error-free");
   const std::string clean = demo_variant(dir, [](json& j) {
     j["measurements"]["simulate"]["prediction"] = false;

@@ -104,7 +104,7 @@ TEST_CASE("furrow info --out writes the file whole and refuses to overwrite its 
   CHECK(files == 2);
 }
 
-TEST_CASE("help and version exit 0; no arguments exits 2 with the overview") {
+TEST_CASE("help and version exit 0, no arguments exits 2 with the overview") {
   CHECK(run_furrow({"--version"}).status == 0);
   const CliResult help = run_furrow({"help", "info"});
   CHECK(help.status == 0);

@@ -96,7 +96,7 @@ TEST_CASE("simulate-measurement then compare: the misalignment comes back, same 
                  180) < 0.05);
 }
 
-TEST_CASE("compare: out of tolerance is exit status 1; locked DOF and loss options are honoured") {
+TEST_CASE("compare: out of tolerance is exit status 1, locked DOF and loss options are honoured") {
   const std::string dir = test::scratch_dir("cli-compare-fail");
   const std::string plan = write_mould_plan(dir);
   REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", plan, "--noise", "0.004",

@@ -32,7 +32,7 @@ TEST_CASE("degrees of freedom: names, lists, refusals") {
                        "--dof: no degree of freedom left to fit", InputError);
 }
 
-TEST_CASE("tolerance zones: bilateral, unilateral, unequal; limits are in") {
+TEST_CASE("tolerance zones: bilateral, unilateral, unequal, limits are in") {
   const ToleranceZone b = ToleranceZone::make(0.1, 0.05, "t");
   CHECK(b.disposition() == "bilateral");
   CHECK(b.contains(0.05));

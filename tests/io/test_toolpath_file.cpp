@@ -108,7 +108,7 @@ TEST_CASE("CSV: tips or contact points, header in any order, passes by blank lin
   CHECK(error_of("", true) == "path.csv: no tool-path points in the file");
 }
 
-TEST_CASE("CSV: contact points may carry their face and (u, v); unknown columns are refused") {
+TEST_CASE("CSV: contact points may carry their face and (u, v), unknown columns are refused") {
   const Toolpath cc = parse_toolpath_csv(
       "pass,x,y,z,nx,ny,nz,face,u,v\n0,1,2,3,0,0,1,mould,0.25,0.5\n0,2,2,3,0,0,1,mould,0.5,0.5\n", "c.csv");
   REQUIRE(cc.passes.size() == 1);

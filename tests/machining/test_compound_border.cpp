@@ -201,7 +201,7 @@ TEST_CASE("domain sides and inward directions") {
   CHECK((b.inward[1] - Eigen::Vector3d(0, 1, 0)).norm() < 1e-12);
 }
 
-TEST_CASE("the seam of a closed face is not a border; its ends are") {
+TEST_CASE("the seam of a closed face is not a border, its ends are") {
   // A whole tube: u runs once round (the sides u = u0 and u = u1 are the same
   // line in space), v along the axis (y in [0, 50]).
   const Face tube("tube", make_cylinder(10, 50, 0, 2 * M_PI));

@@ -107,7 +107,7 @@ TEST_CASE("a face trimmed away entirely has no regions and is no error") {
   CHECK(parse_regions_json(regions_to_json_text(res.map), "r.json").faces[0].regions.empty());
 }
 
-TEST_CASE("a speck below min-area disappears into its neighbour; total area conserved to 1e-9") {
+TEST_CASE("a speck below min-area disappears into its neighbour, total area conserved to 1e-9") {
   // A flat 100 x 100 plate with one small bump: a few mm wide, curved far
   // beyond eps, so it makes convex / saddle / concave specks.
   const NurbsSurface s = height_field_patch(100, 100, 40, [](double x, double y) {

@@ -686,7 +686,7 @@ TEST_CASE("CAD import: read_part takes .step/.stp/.iges/.igs in any case") {
   CHECK(read_part(model_file("igs")).faces.size() == part.faces.size());
 }
 
-TEST_CASE("CAD import: furrow import writes the part JSON; furrow info reads CAD files") {
+TEST_CASE("CAD import: furrow import writes the part JSON, furrow info reads CAD files") {
   const std::string dir = scratch_dir("cad-cli");
   const CliResult ok = run_furrow({"import", model_file("step"), "--out", dir + "/part.json"});
   CHECK(ok.status == 0);

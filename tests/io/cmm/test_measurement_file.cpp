@@ -50,7 +50,7 @@ TEST_CASE("CSV: any column order and case, directions normalised, inch converted
   CHECK(*set.points[1].ijk == Eigen::Vector3d(-1, 0, 0));
 }
 
-TEST_CASE("CSV without ids numbers the points; contact points need no probe") {
+TEST_CASE("CSV without ids numbers the points, contact points need no probe") {
   MeasurementReadOptions o;
   o.kind = ProbePointKind::contact;
   const MeasurementSet set =
