@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("run %d:", r + 1);
     for (const StageTime& t : result.stages) std::printf(" %s %.2f s;", t.stage.c_str(), t.seconds);
-    std::printf(" total %.2f s (%s, %zu files)\n", wall, result.pass ? "PASS" : "FAIL", result.files.size());
+    std::printf(" total %.2f s (%s, %zu files)\n", wall, to_string(result.verdict), result.files.size());
     totals.push_back(wall);
   }
   std::sort(totals.begin(), totals.end());
