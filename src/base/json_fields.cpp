@@ -162,7 +162,7 @@ Eigen::Vector3d vector3(const json& v, const std::string& where) {
 
 json finite(double value, const char* what) {
   if (!std::isfinite(value))
-    throw std::logic_error(std::string("internal error: non-finite value for ") + what);
+    throw std::logic_error(std::string("non-finite value for ") + what);
   return value;
 }
 

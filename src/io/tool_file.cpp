@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
@@ -96,10 +97,19 @@ void validate_tool(const ToolSpec& tool, const std::string& where) {
   if (!std::isfinite(tool.diameter) || !(tool.diameter > 0))
     throw InputError(jf::child(where, "diameter") + ": must be positive, got " +
                      number_text(tool.diameter));
+  // Physical range (docs/formats.md "Limits"): a micro-tool to a 10 m cutter.
+  if (tool.diameter < limits::kMinToolDiameterMm || tool.diameter > limits::kMaxToolDiameterMm)
+    throw InputError(jf::child(where, "diameter") + ": " + number_text(tool.diameter) +
+                     " mm is outside the tool diameter range " +
+                     number_text(limits::kMinToolDiameterMm) + " to " +
+                     number_text(limits::kMaxToolDiameterMm) + " mm");
   const std::string r_where = jf::child(where, "corner_radius");
   const double radius = 0.5 * tool.diameter, r = tool.corner_radius;
   if (!std::isfinite(r) || r < 0)
     throw InputError(r_where + ": must not be negative, got " + number_text(r));
+  if (r > 0 && r < limits::kMinCornerRadiusMm)
+    throw InputError(r_where + ": " + number_text(r) + " mm is below the smallest corner radius " +
+                     number_text(limits::kMinCornerRadiusMm) + " mm (use 0, a flat end mill)");
   if (r > radius)
     throw InputError(r_where + ": " + number_text(r) + " exceeds the tool radius " +
                      number_text(radius) + " (diameter / 2)");
