@@ -33,7 +33,7 @@ std::string lower_extension(const std::string& path) {
   return to_lower(std::filesystem::path(path).extension().string());
 }
 
-std::string quoted(const std::string& text) {
+std::string quote_field(const std::string& text) {
   // At most 80 characters in all: 78 inside the quotes, or 75 and "...".
   constexpr std::size_t kInside = 78, kCut = 75;
   static const char* kHex = "0123456789abcdef";

@@ -23,7 +23,7 @@ std::string lower_extension(const std::string& path);
 // (the first 75 and "...") so a huge field is never echoed whole; control
 // characters as \xHH, quotes and backslashes escaped, a UTF-8 character never
 // cut in half (docs/formats.md "Limits").
-std::string quoted(const std::string& text);
+std::string quote_field(const std::string& text);
 
 // `text` without a leading UTF-8 byte-order mark (EF BB BF), as Excel and
 // some CAM packages write it; every text reader calls this first.

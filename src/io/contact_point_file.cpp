@@ -47,9 +47,9 @@ Columns parse_header(const std::vector<std::string>& cells, const std::string& w
               : name == "nx" ? &c.nx : name == "ny" ? &c.ny : name == "nz" ? &c.nz
               : name == "id" ? &c.id : nullptr;
     if (!slot)
-      throw InputError(where + ": unknown column " + quoted(cells[i]) +
+      throw InputError(where + ": unknown column " + quote_field(cells[i]) +
                        " in the header (expected x, y, z, optional nx, ny, nz, id)");
-    if (*slot >= 0) throw InputError(where + ": column " + quoted(cells[i]) + " appears twice");
+    if (*slot >= 0) throw InputError(where + ": column " + quote_field(cells[i]) + " appears twice");
     *slot = static_cast<int>(i);
   }
   if (c.x < 0 || c.y < 0 || c.z < 0)
@@ -105,7 +105,7 @@ std::vector<ContactPointRecord> parse_contact_points_csv(const std::string& text
     auto value = [&](int column, const char* what) {
       double v = 0;
       if (!parse_finite(cells[column], v))
-        throw InputError(where + ": " + what + " " + quoted(cells[column]) + " is not a finite number");
+        throw InputError(where + ": " + what + " " + quote_field(cells[column]) + " is not a finite number");
       return v;
     };
     ContactPointRecord p;

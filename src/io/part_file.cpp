@@ -1,6 +1,7 @@
 #include "io/part_file.hpp"
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "io/cad/cad_import.hpp"
 #include "base/json_fields.hpp"
@@ -13,7 +14,7 @@ using jf::json;
 double units_to_mm(const std::string& units, const std::string& where) {
   if (units == "mm" || units == "millimetre" || units == "millimeter") return 1.0;
   if (units == "inch" || units == "in") return 25.4;
-  throw InputError(where + ": unknown units \"" + units + "\" (expected \"mm\" or \"inch\")");
+  throw InputError(where + ": unknown units " + quote_field(units) + " (expected \"mm\" or \"inch\")");
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/limits.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
@@ -30,8 +31,7 @@ ToolType parse_type(const json& value, const std::string& where) {
   if (text == "ball") return ToolType::ball;
   if (text == "flat") return ToolType::flat;
   if (text == "bull") return ToolType::bull;
-  throw InputError(where + ": unknown tool type \"" + text +
-                   "\" (expected \"ball\", \"flat\" or \"bull\")");
+  throw InputError(where + ": unknown tool type " + quote_field(text) + " (expected \"ball\", \"flat\" or \"bull\")");
 }
 
 ToolSpec parse_tool(const json& jtool, const std::string& where) {
@@ -158,8 +158,7 @@ std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std
     ToolSpec tool = parse_tool(doc[i], where);
     for (std::size_t k = 0; k < tools.size(); ++k)
       if (tools[k].name == tool.name)
-        throw InputError(jf::child(where, "name") + ": duplicate tool name \"" + tool.name +
-                         "\" (also [" + std::to_string(k) + "])");
+        throw InputError(jf::child(where, "name") + ": duplicate tool name " + quote_field(tool.name) + " (also [" + std::to_string(k) + "])");
     tools.push_back(std::move(tool));
   }
   return tools;

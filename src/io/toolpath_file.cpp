@@ -87,7 +87,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
       continue;
     }
     if (!std::isalpha(static_cast<unsigned char>(c)))
-      fail_line(name, number, "unexpected character " + quoted(std::string(1, c)));
+      fail_line(name, number, "unexpected character " + quote_field(std::string(1, c)));
     Word w{static_cast<char>(std::toupper(static_cast<unsigned char>(c))), "", 0.0};
     ++i;
     while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
@@ -95,7 +95,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
                                code[i] == '-' || code[i] == '+'))
       w.text += code[i++];
     if (!parse_finite(w.text, w.value))
-      fail_line(name, number, "word " + quoted(std::string(1, w.letter) + w.text) + " has no valid number");
+      fail_line(name, number, "word " + quote_field(std::string(1, w.letter) + w.text) + " has no valid number");
     words.push_back(w);
   }
   return words;
@@ -289,7 +289,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       for (std::size_t c = 0; c < fields.size(); ++c) {
         std::string key = fields[c];
         std::transform(key.begin(), key.end(), key.begin(), [](unsigned char ch) { return std::tolower(ch); });
-        if (column.count(key)) fail_line(name, number, "column " + quoted(key) + " appears twice");
+        if (column.count(key)) fail_line(name, number, "column " + quote_field(key) + " appears twice");
         column[key] = static_cast<int>(c);
       }
       for (const char* needed : {"x", "y", "z"})
@@ -303,7 +303,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
         static const char* const kKnown[] = {"x", "y", "z", "nx", "ny", "nz", "pass", "u", "v", "face"};
         if (std::find_if(std::begin(kKnown), std::end(kKnown), [&](const char* k) { return key == k; }) ==
             std::end(kKnown))
-          fail_line(name, number, "unknown column " + quoted(key) + " (known: x y z nx ny nz pass u v face)");
+          fail_line(name, number, "unknown column " + quote_field(key) + " (known: x y z nx ny nz pass u v face)");
         (void)index;
       }
       path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
@@ -327,13 +327,13 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     auto value = [&](const char* key) {
       double x = 0;
       const std::string& f = fields[column.at(key)];
-      if (!parse_finite(f, x)) fail_line(name, number, std::string(key) + " " + quoted(f) + " is not a finite number");
+      if (!parse_finite(f, x)) fail_line(name, number, std::string(key) + " " + quote_field(f) + " is not a finite number");
       return x;
     };
     if (pass_column >= 0) {
       double pv = 0;
       if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv) || std::abs(pv) > 1e15)
-        fail_line(name, number, "pass " + quoted(fields[pass_column]) + " is not a whole number");
+        fail_line(name, number, "pass " + quote_field(fields[pass_column]) + " is not a whole number");
       const long pass = static_cast<long>(pv);
       if (!current.points.empty() && pass != last_pass) {
         if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");

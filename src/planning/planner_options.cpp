@@ -72,7 +72,7 @@ void validate(const PlannerOptions& o) {
   non_negative(o.motion.dwell, "--dwell (s)");
   if (o.gouge_points < 1) throw InputError("--gouge-points must be at least 1");
   for (unsigned char c : o.probe_name)
-    if (!std::isalnum(c) && c != '_') throw InputError("--probe-name " + quoted(o.probe_name) + ": use letters, digits and '_' only");
+    if (!std::isalnum(c) && c != '_') throw InputError("--probe-name " + quote_field(o.probe_name) + ": use letters, digits and '_' only");
   if (o.probe_name.empty() || o.probe_name.size() > 32) throw InputError("--probe-name must have 1 to 32 characters");
   non_negative(o.weights.curvature, "curvature weight");
   non_negative(o.weights.risk, "risk weight");

@@ -31,20 +31,20 @@ TEST_CASE("trim removes blanks at both ends only") {
 }
 
 TEST_CASE("quoted caps a value at 80 characters and escapes control characters") {
-  CHECK(quoted("abc") == "\"abc\"");
-  CHECK(quoted("") == "\"\"");
-  CHECK(quoted("a\"b") == "\"a\\\"b\"");
-  CHECK(quoted("a\tb") == "\"a\\x09b\"");
+  CHECK(quote_field("abc") == "\"abc\"");
+  CHECK(quote_field("") == "\"\"");
+  CHECK(quote_field("a\"b") == "\"a\\\"b\"");
+  CHECK(quote_field("a\tb") == "\"a\\x09b\"");
   const std::string exact(78, '7');
-  CHECK(quoted(exact) == "\"" + exact + "\"");
+  CHECK(quote_field(exact) == "\"" + exact + "\"");
   const std::string huge(10'000'000, '9');
-  const std::string q = quoted(huge);
+  const std::string q = quote_field(huge);
   CHECK(q.size() == 80);
   CHECK(q == "\"" + std::string(75, '9') + "...\"");
   // A multi-byte character is never cut in half.
   std::string accents;
   for (int k = 0; k < 60; ++k) accents += "\xC3\xA9";
-  const std::string qa = quoted(accents);
+  const std::string qa = quote_field(accents);
   CHECK(qa.size() <= 80);
   CHECK(qa.substr(qa.size() - 4) == "...\"");
   CHECK((static_cast<unsigned char>(qa[qa.size() - 5]) & 0xC0) != 0xC0);

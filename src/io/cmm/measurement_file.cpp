@@ -24,7 +24,7 @@ ProbePointKind parse_probe_point_kind(const std::string& text, const std::string
   if (text == "centre" || text == "center" || text == "centres" || text == "centers")
     return ProbePointKind::probe_centre;
   if (text == "contact") return ProbePointKind::contact;
-  throw InputError(where + ": " + quoted(text) + " is neither \"centre\" nor \"contact\"");
+  throw InputError(where + ": " + quote_field(text) + " is neither \"centre\" nor \"contact\"");
 }
 
 namespace {
@@ -61,8 +61,8 @@ double parse_number(std::string field, const std::string& name, int line, const 
   const char* last = field.data() + field.size();
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (field.empty() || ec != std::errc() || ptr != last)
-    fail(name, line, what + ": " + quoted(field) + " is not a number");
-  if (!std::isfinite(value)) fail(name, line, what + ": " + quoted(field) + " is not a finite number");
+    fail(name, line, what + ": " + quote_field(field) + " is not a number");
+  if (!std::isfinite(value)) fail(name, line, what + ": " + quote_field(field) + " is not a finite number");
   return value;
 }
 
@@ -93,7 +93,7 @@ void add_point(MeasurementSet& set, std::map<std::string, int>& seen, MeasuredPo
   const auto [it, inserted] = seen.emplace(p.id, p.line);
   if (!inserted)
     fail(name, p.line,
-         "duplicate id " + quoted(p.id) + " (first on line " + std::to_string(it->second) + ")");
+         "duplicate id " + quote_field(p.id) + " (first on line " + std::to_string(it->second) + ")");
   set.points.push_back(std::move(p));
 }
 
@@ -110,9 +110,9 @@ void parse_csv(const std::string& text, const std::string& name, double scale,
     const std::string h = to_lower(trim(header[c]));
     if (std::find(std::begin(known), std::end(known), h) == std::end(known))
       fail(name, lines[0].number,
-           "unknown column " + quoted(trim(header[c])) + " (the header names id, x, y, z, i, j, k)");
+           "unknown column " + quote_field(trim(header[c])) + " (the header names id, x, y, z, i, j, k)");
     if (!column.emplace(h, static_cast<int>(c)).second)
-      fail(name, lines[0].number, "column " + quoted(h) + " appears twice");
+      fail(name, lines[0].number, "column " + quote_field(h) + " appears twice");
   }
   for (const char* c : {"x", "y", "z"})
     if (!column.count(c))
@@ -199,7 +199,7 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
     if (!feature->actual) {
       const auto [it, inserted] = nominal_line.emplace(feature->label, st.line);
       if (!inserted)
-        fail(name, st.line, "duplicate nominal F(" + quoted(feature->label) + ") (first on line " + std::to_string(it->second) + ")");
+        fail(name, st.line, "duplicate nominal F(" + quote_field(feature->label) + ") (first on line " + std::to_string(it->second) + ")");
       nominals[feature->label] = {feature->xyz, feature->ijk};
       continue;
     }
@@ -234,7 +234,7 @@ MeasurementFormat measurement_format_from_path(const std::string& path) {
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
   if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res")
     return MeasurementFormat::dmis;
-  throw InputError(path + ": unknown measurement file type " + quoted(ext) +
+  throw InputError(path + ": unknown measurement file type " + quote_field(ext) +
                    " (expected .csv, .xyz/.txt or DMIS .dmi/.dmis/.dmo/.res)");
 }
 
@@ -346,7 +346,7 @@ std::optional<double> dmis_units_scale(const DmisStatement& st, const std::strin
   const std::string unit = up.substr(6, comma == std::string::npos ? std::string::npos : comma - 6);
   if (unit == "MM") return 1.0;
   if (unit == "INCH") return 25.4;
-  fail(name, st.line, "UNITS/" + quoted(unit) + " is not supported (MM or INCH)");
+  fail(name, st.line, "UNITS/" + quote_field(unit) + " is not supported (MM or INCH)");
 }
 
 std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st, const std::string& name,
@@ -370,7 +370,7 @@ std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st
   // Values from the statement as written, so messages quote the user's text.
   const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
   if (fields.empty() || to_lower(fields[0]) != "cart")
-    fail(name, st.line, "only CART points are supported, got " + quoted(fields.empty() ? std::string() : fields[0]));
+    fail(name, st.line, "only CART points are supported, got " + quote_field(fields.empty() ? std::string() : fields[0]));
   if (fields.size() != 7)
     fail(name, st.line, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " + std::to_string(fields.size() - 1));
   double v[6];
