@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow::json_fields {
 
@@ -73,7 +74,9 @@ std::string read_text(const std::string& path) {
 
 json load_file(const std::string& path) { return parse_text(read_text(path), path); }
 
-std::string child(const std::string& where, const std::string& key) {
+std::string child(const std::string& where, const std::string& key_text) {
+  // A member name from the file is shown whole only when short (docs/formats.md "Limits").
+  const std::string key = key_text.size() <= 78 ? key_text : quote_field(key_text);
   if (!where.empty() && where.back() == ':') return where + " " + key;  // document root
   return where + "." + key;
 }

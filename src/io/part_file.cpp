@@ -94,8 +94,8 @@ Part parse_part_json(const std::string& text, const std::string& name) {
   for (std::size_t f = 0; f < jfaces.size(); ++f) {
     Face face = parse_face(jfaces[f], jf::child(faces_where, f), scale);
     if (part.find_face(face.name()))
-      throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name \"" +
-                       face.name() + "\"");
+      throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name " +
+                       quote_field(face.name()));
     part.faces.push_back(std::move(face));
   }
   return part;

@@ -648,7 +648,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
   const Conversion conversion = convert_surface(basis, bounds, options);
   report.exact = conversion.exact;
   report.approximation_bound = conversion.bound;
-  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face \"" + name + "\"");
+  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face " + quote_field(name));
 
   // The original's parametrisation is kept unless the conversion changed it.
   const ParameterMap::Evaluator original = [&basis](double u, double v) {
@@ -718,7 +718,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
     }
   const bool reversed = (face.Orientation() == TopAbs_REVERSED) != (sense < 0);
 
-  Trim trim(std::move(loops), "face \"" + name + "\" trim");
+  Trim trim(std::move(loops), "face " + quote_field(name) + " trim");
   return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
 }
 
