@@ -291,6 +291,7 @@ def measurement_cases():
         "inf.csv": "id,x,y,z\nP1,1,2,-inf\n",
         "x_1e308.csv": "id,x,y,z\nP1,1e308,2,3\n",
         "x_2e6.csv": "id,x,y,z\nP1,2e6,2,3\n",
+        "inch_overflow.csv": "id,x,y,z\nP1,1e307,2,3\n",
         "huge_digits.csv": "id,x,y,z\nP1," + HUGE_NUMBER + ",2,3\n",
         "duplicate_id.csv": "id,x,y,z\nP1,1,2,3\nP1,1,2,3\n",
         "empty_id.csv": "id,x,y,z\n,1,2,3\n",

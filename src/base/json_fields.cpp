@@ -31,6 +31,13 @@ const char* type_name(const json& v) {
   }
 }
 
+// The parser's own words, which quote the offending token: cut like any
+// quoted value (docs/formats.md "Limits"), control bytes escaped.
+std::string brief(const std::string& detail) {
+  const std::string q = quote_field(detail.size() > 200 ? detail.substr(0, 200) : detail);
+  return q.substr(1, q.size() - 2);
+}
+
 }  // namespace
 
 json parse_text(const std::string& text, const std::string& name) {
@@ -53,11 +60,11 @@ json parse_text(const std::string& text, const std::string& name) {
     s << "line " << line << ", column " << column << ": not valid JSON";
     std::string detail = e.what();
     const auto pos = detail.find("syntax error");
-    if (pos != std::string::npos) s << " (" << detail.substr(pos) << ")";
+    if (pos != std::string::npos) s << " (" << brief(detail.substr(pos)) << ")";
     fail(name, s.str());
   } catch (const json::exception& e) {
     // e.g. a number too large for a double: not a line-level syntax error.
-    fail(name, std::string("not valid JSON (") + e.what() + ")");
+    fail(name, std::string("not valid JSON (") + brief(e.what()) + ")");
   }
 }
 

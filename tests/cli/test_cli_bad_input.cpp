@@ -82,6 +82,10 @@ TEST_CASE("bad input: every file of the corpus is refused with exit 2, one line 
       {"part/coordinate_1e308.json", {"partition", "{FILE}", "--out", "{OUT}/regions.json"}},
       {"tool/diameter_1e-300.json", {"toolpath", part, "--tool", "{FILE}", "--out", "{OUT}/path.nc"}},
       {"tool/diameter_1e300.json", {"gouge", part, "--tool", "{FILE}", "--out", "{OUT}/gouge.json"}},
+      {"tool/diameter_1e300.json", {"toolpath", part, "--tool", "{FILE}", "--out", "{OUT}/path.nc"}},
+      {"measurements_csv/inch_overflow.csv",
+       {"compare", part, "--measurements", "{FILE}", "--units", "inch", "--probe-diameter", "2", "--out",
+        "{OUT}/comparison.json"}},
       {"cad/garbage.step", {"info", "{FILE}"}},
   };
 
