@@ -1,5 +1,6 @@
 #include "io/plan_file.hpp"
 
+#include <sstream>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -100,9 +101,12 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
   plan.probe.diameter = scale * jf::positive_number(jf::member(jprobe, "diameter", probe_where),
                                                     jf::child(probe_where, "diameter"));
   if (plan.probe.diameter < limits::kMinProbeDiameterMm || plan.probe.diameter > limits::kMaxProbeDiameterMm)
-    throw InputError(jf::child(probe_where, "diameter") + ": " + std::to_string(plan.probe.diameter) +
-                     " mm is outside the probe range " + std::to_string(limits::kMinProbeDiameterMm) + " to " +
-                     std::to_string(limits::kMaxProbeDiameterMm) + " mm (docs/formats.md \"Limits\")");
+  {
+    std::ostringstream s;
+    s << jf::child(probe_where, "diameter") << ": " << plan.probe.diameter << " mm is outside the probe range "
+      << limits::kMinProbeDiameterMm << " to " << limits::kMaxProbeDiameterMm << " mm (docs/formats.md \"Limits\")";
+    throw InputError(s.str());
+  }
 
   const std::string points_where = jf::child(root, "points");
   const json& jpoints = jf::array(jf::member(doc, "points", root), points_where);
