@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
@@ -74,9 +75,16 @@ int run_toolpath(Args& args) {
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
   TerminalProgress progress;
-  const ContactPlan plan = plan_contact_points(part, cutter, direction, options, [&](std::size_t d, std::size_t t) {
-    progress.update("planning passes", d, t);
-  });
+  const ContactPlan plan = [&] {
+    try {
+      return plan_contact_points(part, cutter, direction, options, [&](std::size_t d, std::size_t t) {
+        progress.update("planning passes", d, t);
+      });
+    } catch (const InputError& e) {
+      // The work depends on the part and the tool: both files are named.
+      throw InputError(part_path + " with " + tool_path + ": " + e.what());
+    }
+  }();
   progress.finish();
   char header[256];
   std::snprintf(header, sizeof header, "furrow toolpath %s: direction %s, %s steps, tolerance %g mm, scallop %g mm",

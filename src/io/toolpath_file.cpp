@@ -36,6 +36,9 @@ namespace {
   throw InputError(name + ":" + std::to_string(line) + ": " + what);
 }
 
+// A value cut and escaped by quote_field, for G-code's 'word' style.
+std::string unquoted(const std::string& quoted_text) { return quoted_text.substr(1, quoted_text.size() - 2); }
+
 std::vector<std::string> split_lines(const std::string& text) {
   std::vector<std::string> lines;
   std::string line;
@@ -87,7 +90,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
       continue;
     }
     if (!std::isalpha(static_cast<unsigned char>(c)))
-      fail_line(name, number, "unexpected character " + quote_field(std::string(1, c)));
+      fail_line(name, number, "unexpected character '" + unquoted(quote_field(std::string(1, c))) + "'");
     Word w{static_cast<char>(std::toupper(static_cast<unsigned char>(c))), "", 0.0};
     ++i;
     while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
@@ -95,7 +98,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
                                code[i] == '-' || code[i] == '+'))
       w.text += code[i++];
     if (!parse_finite(w.text, w.value))
-      fail_line(name, number, "word " + quote_field(std::string(1, w.letter) + w.text) + " has no valid number");
+      fail_line(name, number, "word '" + unquoted(quote_field(std::string(1, w.letter) + w.text)) + "' has no valid number");
     words.push_back(w);
   }
   return words;
