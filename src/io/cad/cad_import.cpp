@@ -229,10 +229,24 @@ void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
                              std::vector<CadSkippedFace>& untranslated) {
   std::set<std::string> reported;
   for (const CadSkippedFace& f : untranslated) reported.insert(f.entity);
-  for (int i = 1; i <= model->NbEntities(); ++i) {
+  auto failed = [&](int i) {
     const Handle(Interface_Check)& syntax = model->Check(i, true);
-    const bool failed = model->IsErrorEntity(i) || (!syntax.IsNull() && syntax->HasFailed());
-    if (!failed) continue;
+    return model->IsErrorEntity(i) || (!syntax.IsNull() && syntax->HasFailed());
+  };
+  auto unknown_in = [&](int i) {
+    std::vector<Handle(Standard_Transient)> unknown;
+    if (model->IsRedefinedContent(i) && !model->ReportEntity(i).IsNull())
+      collect_unknown(model, Handle(StepData_UndefinedEntity)::DownCast(model->ReportEntity(i)->Content()),
+                      unknown, 0);
+    return unknown;
+  };
+  // What a failed face refers to is reported with the face (by the caller).
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (failed(i) && !Handle(StepShape_FaceSurface)::DownCast(model->Value(i)).IsNull())
+      for (const Handle(Standard_Transient)& e : unknown_in(i)) reported.insert(entity_label(model, e));
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    if (!failed(i)) continue;
+    const Handle(Interface_Check)& syntax = model->Check(i, true);
     const Handle(Standard_Transient) entity = model->Value(i);
     if (!Handle(StepShape_FaceSurface)::DownCast(entity).IsNull()) continue;
     std::string why;
@@ -240,10 +254,7 @@ void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
       why += (why.empty() ? "" : "; ") + trim(syntax->CFail(k));
     if (why.empty()) why = "OpenCASCADE could not read it";
     const std::string label = entity_label(model, entity);
-    std::vector<Handle(Standard_Transient)> unknown;
-    if (model->IsRedefinedContent(i) && !model->ReportEntity(i).IsNull())
-      collect_unknown(model, Handle(StepData_UndefinedEntity)::DownCast(model->ReportEntity(i)->Content()),
-                      unknown, 0);
+    const std::vector<Handle(Standard_Transient)> unknown = unknown_in(i);
     if (unknown.empty()) {
       if (reported.insert(label).second)
         untranslated.push_back({"", "entity " + label, "could not be read (" + why + ")"});

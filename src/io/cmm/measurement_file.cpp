@@ -346,7 +346,8 @@ std::optional<double> dmis_units_scale(const DmisStatement& st, const std::strin
   const std::string unit = up.substr(6, comma == std::string::npos ? std::string::npos : comma - 6);
   if (unit == "MM") return 1.0;
   if (unit == "INCH") return 25.4;
-  fail(name, st.line, "UNITS/" + quote_field(unit) + " is not supported (MM or INCH)");
+  const std::string shown = quote_field(unit);  // cut when long, shown without its quotes
+  fail(name, st.line, "UNITS/" + shown.substr(1, shown.size() - 2) + " is not supported (MM or INCH)");
 }
 
 std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st, const std::string& name,
