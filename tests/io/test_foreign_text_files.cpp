@@ -10,6 +10,8 @@
 #include "base/error.hpp"
 #include "io/cmm/measurement_file.hpp"
 #include "io/contact_point_file.hpp"
+#include "io/part_file.hpp"
+#include "io/tool_file.hpp"
 #include "io/toolpath_file.hpp"
 
 using namespace furrow;
@@ -140,4 +142,17 @@ TEST_CASE("G-code: a coordinate beyond the range after G20 or G91 names the line
   const std::string huge = error_of([&] { parse_gcode("G1 X" + std::string(5000, '9') + "\n", "p.nc", {}); });
   CHECK(huge.size() < 140);
   CHECK(huge.find("...'") != std::string::npos);
+}
+
+TEST_CASE("JSON inputs with a byte-order mark and CRLF (as Windows editors save them)") {
+  const Part part = parse_part_json(
+      kBom + crlf("{\"units\": \"mm\", \"faces\": [{\"name\": \"p\", \"degree_u\": 1, \"degree_v\": 1,\n"
+                  "\"knots_u\": [0, 0, 1, 1], \"knots_v\": [0, 0, 1, 1],\n"
+                  "\"control_points\": [[[0, 0, 0], [0, 10, 0]], [[10, 0, 0], [10, 10, 1]]]}]}\n"),
+      "part.json");
+  REQUIRE(part.faces.size() == 1);
+  CHECK(part.faces[0].surface().control_point(1, 1) == Eigen::Vector3d(10, 10, 1));
+  const ToolSpec tool =
+      parse_tool_json(kBom + crlf("{\"name\": \"B\",\n\"type\": \"ball\", \"diameter\": 6}\n"), "tool.json");
+  CHECK(tool.corner_radius == 3);
 }
