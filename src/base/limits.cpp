@@ -16,7 +16,7 @@ void check_coordinate(double value, const std::string& where) {
     s << value << " mm is outside the coordinate range of ±" << kMaxCoordinateMm
       << " mm (docs/formats.md \"Limits\")";
   else
-    s << "not a finite number";
+    s << "not a finite number";  // also a finite file value beyond a double once in mm
   throw InputError(s.str());
 }
 

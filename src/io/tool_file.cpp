@@ -94,7 +94,9 @@ const char* to_string(ToolType type) {
 
 void validate_tool(const ToolSpec& tool, const std::string& where) {
   if (tool.name.empty()) throw InputError(jf::child(where, "name") + ": must not be empty");
-  if (!std::isfinite(tool.diameter) || !(tool.diameter > 0))
+  if (!std::isfinite(tool.diameter))  // e.g. 1e307 inch, beyond a double in mm
+    throw InputError(jf::child(where, "diameter") + ": not a finite number of millimetres");
+  if (!(tool.diameter > 0))
     throw InputError(jf::child(where, "diameter") + ": must be positive, got " +
                      number_text(tool.diameter));
   // Physical range (docs/formats.md "Limits"): a micro-tool to a 10 m cutter.
