@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
@@ -129,10 +130,19 @@ int run_predict(Args& args) {
   const Cutter cutter(read_tool_file(tool_path));
   const Toolpath path = read_toolpath(toolpath_path, read_options);
   TerminalProgress progress;
-  const PathPrediction result =
-      predict_path(part, cutter, path, options, [&](const std::string& stage, std::size_t done, std::size_t total) {
-        progress.update(stage, done, total);
-      });
+  const PathPrediction result = [&] {
+    try {
+      return predict_path(part, cutter, path, options,
+                          [&](const std::string& stage, std::size_t done, std::size_t total) {
+                            progress.update(stage, done, total);
+                          });
+    } catch (const InputError& e) {
+      // A limit of the work (z-map, error map) depends on the part and the path: name them.
+      const std::string message = e.what();
+      if (message.find(toolpath_path) != std::string::npos || message.find(part_path) != std::string::npos) throw;
+      throw InputError(part_path + " with " + toolpath_path + ": " + message);
+    }
+  }();
   progress.finish();
   Prediction prediction = make_prediction(part, cutter, result, options, part_path, toolpath_path);
   if (region_map) {
