@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow::json_fields {
 
@@ -30,6 +31,13 @@ const char* type_name(const json& v) {
   }
 }
 
+// The parser's own words, which quote the offending token: cut like any
+// quoted value (docs/formats.md "Limits"), control bytes escaped.
+std::string brief(const std::string& detail) {
+  const std::string q = quote_field(detail.size() > 200 ? detail.substr(0, 200) : detail);
+  return q.substr(1, q.size() - 2);
+}
+
 }  // namespace
 
 json parse_text(const std::string& text, const std::string& name) {
@@ -52,11 +60,11 @@ json parse_text(const std::string& text, const std::string& name) {
     s << "line " << line << ", column " << column << ": not valid JSON";
     std::string detail = e.what();
     const auto pos = detail.find("syntax error");
-    if (pos != std::string::npos) s << " (" << detail.substr(pos) << ")";
+    if (pos != std::string::npos) s << " (" << brief(detail.substr(pos)) << ")";
     fail(name, s.str());
   } catch (const json::exception& e) {
     // e.g. a number too large for a double: not a line-level syntax error.
-    fail(name, std::string("not valid JSON (") + e.what() + ")");
+    fail(name, std::string("not valid JSON (") + brief(e.what()) + ")");
   }
 }
 
@@ -73,7 +81,9 @@ std::string read_text(const std::string& path) {
 
 json load_file(const std::string& path) { return parse_text(read_text(path), path); }
 
-std::string child(const std::string& where, const std::string& key) {
+std::string child(const std::string& where, const std::string& key_text) {
+  // A member name from the file is shown whole only when short (docs/formats.md "Limits").
+  const std::string key = key_text.size() <= 78 ? key_text : quote_field(key_text);
   if (!where.empty() && where.back() == ':') return where + " " + key;  // document root
   return where + "." + key;
 }
@@ -162,7 +172,7 @@ Eigen::Vector3d vector3(const json& v, const std::string& where) {
 
 json finite(double value, const char* what) {
   if (!std::isfinite(value))
-    throw std::logic_error(std::string("internal error: non-finite value for ") + what);
+    throw std::logic_error(std::string("non-finite value for ") + what);
   return value;
 }
 

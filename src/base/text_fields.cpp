@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 namespace furrow {
 
@@ -30,6 +31,42 @@ std::string to_lower(std::string text) {
 
 std::string lower_extension(const std::string& path) {
   return to_lower(std::filesystem::path(path).extension().string());
+}
+
+std::string quote_field(const std::string& text) {
+  // At most 80 characters in all: 78 inside the quotes, or 75 and "...".
+  constexpr std::size_t kInside = 78, kCut = 75;
+  static const char* kHex = "0123456789abcdef";
+  std::string body;
+  std::size_t keep = 0;  // body size at the last whole character within kCut
+  std::size_t i = 0;
+  for (; i < text.size() && body.size() <= kInside; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f)
+      body += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+    else if (c == '"' || c == '\\')
+      body += std::string("\\") + static_cast<char>(c);
+    else
+      body += static_cast<char>(c);
+    // A UTF-8 continuation byte belongs to the character before it.
+    const bool continues =
+        i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xC0) == 0x80;
+    if (!continues && body.size() <= kCut) keep = body.size();
+  }
+  if (i == text.size() && body.size() <= kInside) return "\"" + body + "\"";
+  return "\"" + body.substr(0, keep) + "...\"";
+}
+
+bool has_bom(const std::string& text) { return text.rfind("\xEF\xBB\xBF", 0) == 0; }
+
+std::string strip_bom(std::string text) {
+  if (has_bom(text)) text.erase(0, 3);
+  return text;
+}
+
+char csv_separator(const std::string& first_line) {
+  const bool semicolon = first_line.find(';') != std::string::npos;
+  return semicolon && first_line.find(',') == std::string::npos ? ';' : ',';
 }
 
 }  // namespace furrow

@@ -90,7 +90,7 @@ std::optional<double> Args::number(const std::string& name) {
   auto v = option(name);
   if (!v) return std::nullopt;
   double x = 0;
-  if (!parse_finite(*v, x)) fail("--" + name + " expects a number, got \"" + *v + "\"");
+  if (!parse_finite(*v, x)) fail("--" + name + " expects a number, got " + quote_field(*v));
   return x;
 }
 
@@ -122,7 +122,7 @@ std::optional<long> Args::integer(const std::string& name) {
   errno = 0;
   const long x = std::strtol(v->c_str(), &end, 10);
   if (v->empty() || end != v->c_str() + v->size() || errno != 0)
-    fail("--" + name + " expects a whole number, got \"" + *v + "\"");
+    fail("--" + name + " expects a whole number, got " + quote_field(*v));
   return x;
 }
 
@@ -138,7 +138,7 @@ void Args::finish() const {
   for (std::size_t i = 0; i < words_.size(); ++i) {
     if (used_[i]) continue;
     if (words_[i].rfind("--", 0) == 0) fail("unknown option " + words_[i]);
-    fail("unexpected argument \"" + words_[i] + "\"");
+    fail("unexpected argument " + quote_field(words_[i]));
   }
 }
 
@@ -146,7 +146,7 @@ std::pair<int, int> parse_grid(const std::string& text, const std::string& optio
   const auto x = text.find('x');
   auto bad = [&]() -> std::pair<int, int> {
     throw InputError("--" + option + " expects COUNTUxCOUNTV with counts of at least 1 "
-                     "(e.g. 400x300), got \"" + text + "\"");
+                     "(e.g. 400x300), got " + quote_field(text));
   };
   if (x == std::string::npos) {
     // A single count means the same in both directions.
@@ -174,12 +174,12 @@ std::vector<double> parse_number_list(const std::string& text, std::size_t count
   while (std::getline(ss, item, ',')) {
     double x = 0;
     if (!parse_finite(item, x))
-      throw InputError("--" + option + ": \"" + item + "\" is not a finite number");
+      throw InputError("--" + option + ": " + quote_field(item) + " is not a finite number");
     out.push_back(x);
   }
   if (out.size() != count)
     throw InputError("--" + option + " expects " + std::to_string(count) +
-                     " comma-separated numbers, got \"" + text + "\"");
+                     " comma-separated numbers, got " + quote_field(text));
   return out;
 }
 

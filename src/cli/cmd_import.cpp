@@ -36,6 +36,10 @@ int run_import(Args& args) {
     };
   }
   const CadImportResult result = import_cad(path, options);
+  // One warning line per face left out (docs/formats.md "CAD import").
+  for (const CadSkippedFace& s : result.skipped)
+    std::cerr << "warning: " << path << ": " << (s.entity.rfind("entity ", 0) == 0 ? "" : "face ")
+              << (s.name.empty() ? "" : "\"" + s.name + "\" ") << s.entity << " left out: " << s.reason << "\n";
   outputs.file(out_path, part_to_json_text(result.part));
   outputs.publish();
   std::cout << (as_json ? cad_import_report_json(result, path, out_path)
@@ -59,7 +63,8 @@ const Command kImportCommand = {
     "\n"
     "  --out FILE                   part JSON to write (required)\n"
     "  --json                       print the import report as JSON\n"
-    "  --skip-bad-faces             leave out (and list) faces that cannot be converted\n"
+    "  --skip-bad-faces             leave out (and list) faces that cannot be read or converted,\n"
+    "                               one warning line each (default: any is an error)\n"
     "                               instead of failing\n"
     "  --trim-tolerance MM          3-D distance between trim polygon and true\n"
     "                               boundary (default 1e-5)\n"

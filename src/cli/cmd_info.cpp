@@ -71,6 +71,12 @@ int run_info(Args& args) {
   if (grid > 4000) args.fail("--grid " + std::to_string(grid) + " is too fine (at most 4000)");
 
   const Part part = read_part(path);
+  // Work is bounded over all faces too (docs/formats.md "Limits").
+  constexpr double kMaxSamples = 64e6;
+  const double samples = static_cast<double>(grid) * grid * static_cast<double>(part.faces.size());
+  if (samples > kMaxSamples)
+    args.fail("--grid " + std::to_string(grid) + " over the " + std::to_string(part.faces.size()) + " faces of " + path +
+              " is " + std::to_string(static_cast<long long>(samples)) + " samples, more than the limit of 64000000");
   const PartSummary summary = summarize_part(part, static_cast<int>(grid), eps);
   std::ostringstream text;
   if (as_json) {

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "base/error.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
@@ -81,9 +82,16 @@ int run_partition(Args& args) {
 
   const Part part = read_part(part_path);
   const bool show_progress = ::isatty(2) && part.faces.size() > 1;
-  const PartitionResult result = partition_part(part, options, [&](std::size_t done, std::size_t total) {
-    if (show_progress) std::cerr << "\rpartition: face " << done << "/" << total << std::flush;
-  });
+  const PartitionResult result = [&] {
+    try {
+      return partition_part(part, options, [&](std::size_t done, std::size_t total) {
+        if (show_progress) std::cerr << "\rpartition: face " << done << "/" << total << std::flush;
+      });
+    } catch (const InputError& e) {
+      // What is wrong with the part's geometry: the message names the file.
+      throw InputError(part_path + ": " + e.what());
+    }
+  }();
   if (show_progress) std::cerr << "\n";
 
   if (image_path) {

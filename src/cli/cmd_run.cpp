@@ -2,6 +2,7 @@
 // one go, from a job file (docs/formats.md "Job file").
 #include <iostream>
 
+#include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/job_output.hpp"
 #include "job/pipeline.hpp"
@@ -16,7 +17,14 @@ int run_run(Args& args) {
   args.finish();
   Job job = read_job(job_path);
   if (out) job.output = *out;
-  return run_and_report(job, std::cout);
+  try {
+    return run_and_report(job, std::cout);
+  } catch (const InputError& e) {
+    // A stage's option or input came from the job: the message names it.
+    const std::string message = e.what();
+    if (message.find(job_path) != std::string::npos) throw;
+    throw InputError(job_path + ": " + message);
+  }
 }
 
 }  // namespace

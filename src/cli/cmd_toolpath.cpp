@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
@@ -74,10 +75,16 @@ int run_toolpath(Args& args) {
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
   TerminalProgress progress;
-  const GeneratedToolpath path = generate_toolpath(part, part_path, cutter, {direction, options, write},
-                                                   [&](std::size_t d, std::size_t t) {
-                                                     progress.update("planning passes", d, t);
-                                                   });
+  const GeneratedToolpath path = [&] {
+    try {
+      return generate_toolpath(part, part_path, cutter, {direction, options, write}, [&](std::size_t d, std::size_t t) {
+        progress.update("planning passes", d, t);
+      });
+    } catch (const InputError& e) {
+      // The work depends on the part and the tool: both files are named.
+      throw InputError(part_path + " with " + tool_path + ": " + e.what());
+    }
+  }();
   progress.finish();
   outputs.file(contacts_path, path.contacts_csv);
   outputs.file(out_path, path.gcode);

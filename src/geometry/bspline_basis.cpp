@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 
 namespace furrow {
 
@@ -113,6 +114,13 @@ void validate_knot_vector(const std::vector<double>& knots, int degree, int num_
   }
   for (std::size_t i = 0; i < knots.size(); ++i) {
     if (!std::isfinite(knots[i])) fail("knot " + std::to_string(i) + " is not a finite number");
+    // Bounded so knot differences and their reciprocals stay finite
+    // (docs/formats.md "Limits").
+    if (std::abs(knots[i]) > limits::kMaxKnot) {
+      std::ostringstream s;
+      s << "knot " << i << " (" << knots[i] << ") is outside ±" << limits::kMaxKnot;
+      fail(s.str());
+    }
     if (i > 0 && knots[i] < knots[i - 1]) {
       std::ostringstream s;
       s << "knots decrease at index " << i << " (" << knots[i - 1] << " then " << knots[i] << ")";

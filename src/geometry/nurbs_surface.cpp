@@ -2,12 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "geometry/bspline_basis.hpp"
 #include "base/error.hpp"
+#include "base/limits.hpp"
 
 namespace furrow {
+
+namespace {
+constexpr double kMinDomainWidth = 1e-9;
+}  // namespace
 
 NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u,
                            std::vector<double> knots_v,
@@ -39,6 +45,7 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
     throw InputError(s.str());
   }
   homogeneous_.resize(static_cast<std::size_t>(num_u_) * num_v_);
+  double w_min = std::numeric_limits<double>::infinity(), w_max = 0;
   points_.resize(homogeneous_.size());
   for (int i = 0; i < num_u_; ++i) {
     if (has_weights && static_cast<int>(weights[i].size()) != num_v_) {
@@ -49,24 +56,48 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
     }
     for (int j = 0; j < num_v_; ++j) {
       const Eigen::Vector3d& p = control_points[i][j];
-      if (!p.allFinite()) {
-        std::ostringstream s;
-        s << field << ".control_points[" << i << "][" << j << "]: not a finite number";
-        throw InputError(s.str());
-      }
+      const std::string p_where =
+          field + ".control_points[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+      static const char* kAxis[] = {"x", "y", "z"};
+      for (int k = 0; k < 3; ++k) limits::check_coordinate(p[k], p_where + " " + kAxis[k]);
       const double w = has_weights ? weights[i][j] : 1.0;
+      const std::string w_where =
+          field + ".weights[" + std::to_string(i) + "][" + std::to_string(j) + "]";
       if (!std::isfinite(w) || !(w > 0.0)) {
         std::ostringstream s;
-        s << field << ".weights[" << i << "][" << j << "]: " << w
-          << " is not a positive finite weight";
+        s << w_where << ": " << w << " is not a positive finite weight";
+        throw InputError(s.str());
+      }
+      if (w < limits::kMinWeight || w > limits::kMaxWeight) {
+        std::ostringstream s;
+        s << w_where << ": " << w << " is outside the weight range [" << limits::kMinWeight
+          << ", " << limits::kMaxWeight << "] (docs/formats.md \"Limits\")";
+        throw InputError(s.str());
+      }
+      w_min = std::min(w_min, w);
+      w_max = std::max(w_max, w);
+      if (w_max > limits::kMaxWeightRatio * w_min) {
+        std::ostringstream s;
+        s << w_where << ": weights from " << w_min << " to " << w_max << " differ by more than a factor "
+          << limits::kMaxWeightRatio << " (docs/formats.md \"Limits\")";
         throw InputError(s.str());
       }
       if (w != 1.0) rational_ = true;
+      // The product evaluation sums: finite by the ranges above, checked anyway.
+      if (!(w * p).allFinite())
+        throw InputError(w_where + ": weight times control point is not a finite number");
       homogeneous_[index(i, j)] << w * p, w;
       points_[index(i, j)] = p;
     }
   }
   domain_ = {knots_u_[degree_u_], knots_u_[num_u_], knots_v_[degree_v_], knots_v_[num_v_]};
+  // A vanishing parameter width makes the derivatives overflow.
+  if (!(domain_.width_u() >= kMinDomainWidth) || !(domain_.width_v() >= kMinDomainWidth)) {
+    std::ostringstream s;
+    s << field << ": the parameter domain is " << domain_.width_u() << " x " << domain_.width_v()
+      << " wide, below " << kMinDomainWidth << " (docs/formats.md \"Limits\")";
+    throw InputError(s.str());
+  }
 }
 
 Eigen::AlignedBox3d NurbsSurface::control_box() const {

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/verification_json.hpp"
 
@@ -192,7 +193,7 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
     const std::string where = jf::child(root.path("points"), k);
     d.points.push_back(read_point(Node(points[k], where)));
     if (!d.points_by_id.emplace(d.points.back().id, k).second)
-      throw InputError(where + ".id: duplicate id \"" + d.points.back().id + "\"");
+      throw InputError(where + ".id: duplicate id " + quote_field(d.points.back().id));
   }
   if (d.points.size() != d.summary.points)
     throw InputError(root.path("points") + ": " + std::to_string(d.points.size()) +

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 #include "base/text_fields.hpp"
@@ -15,12 +16,12 @@ namespace furrow {
 
 namespace {
 
-std::vector<std::string> split(const std::string& line) {
+std::vector<std::string> split(const std::string& line, char separator) {
   std::vector<std::string> cells;
   std::string cell;
   std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') cells.push_back({});
+  while (std::getline(in, cell, separator)) cells.push_back(trim(cell));
+  if (!line.empty() && line.back() == separator) cells.push_back({});
   return cells;
 }
 
@@ -46,9 +47,9 @@ Columns parse_header(const std::vector<std::string>& cells, const std::string& w
               : name == "nx" ? &c.nx : name == "ny" ? &c.ny : name == "nz" ? &c.nz
               : name == "id" ? &c.id : nullptr;
     if (!slot)
-      throw InputError(where + ": unknown column \"" + cells[i] +
-                       "\" in the header (expected x, y, z, optional nx, ny, nz, id)");
-    if (*slot >= 0) throw InputError(where + ": column \"" + cells[i] + "\" appears twice");
+      throw InputError(where + ": unknown column " + quote_field(cells[i]) +
+                       " in the header (expected x, y, z, optional nx, ny, nz, id)");
+    if (*slot >= 0) throw InputError(where + ": column " + quote_field(cells[i]) + " appears twice");
     *slot = static_cast<int>(i);
   }
   if (c.x < 0 || c.y < 0 || c.z < 0)
@@ -66,9 +67,11 @@ std::vector<ContactPointRecord> parse_contact_points_csv(const std::string& text
                                                          const std::string& units) {
   const double scale = units_to_mm(units, name + ": units");
   std::vector<ContactPointRecord> points;
-  std::istringstream in(text);
+  // A byte-order mark (Excel's "CSV UTF-8") is not content.
+  std::istringstream in(strip_bom(text));
   std::string raw;
   int line_no = 0;
+  char separator = 0;  // from the first line with content
   bool header_allowed = true, have_columns = false;
   Columns columns;
   while (std::getline(in, raw)) {
@@ -79,7 +82,8 @@ std::vector<ContactPointRecord> parse_contact_points_csv(const std::string& text
     if (hash != std::string::npos) line.resize(hash);
     line = trim(line);
     if (line.empty()) continue;
-    const std::vector<std::string> cells = split(line);
+    if (!separator) separator = csv_separator(line);
+    const std::vector<std::string> cells = split(line, separator);
     if (header_allowed && is_header(cells)) {
       columns = parse_header(cells, where);
       have_columns = true;
@@ -101,13 +105,18 @@ std::vector<ContactPointRecord> parse_contact_points_csv(const std::string& text
     auto value = [&](int column, const char* what) {
       double v = 0;
       if (!parse_finite(cells[column], v))
-        throw InputError(where + ": " + what + " \"" + cells[column] + "\" is not a finite number");
+        throw InputError(where + ": " + what + " " + quote_field(cells[column]) + " is not a finite number");
       return v;
     };
     ContactPointRecord p;
     p.line = line_no;
     p.position = scale * Eigen::Vector3d(value(columns.x, "x"), value(columns.y, "y"),
                                          value(columns.z, "z"));
+    // After unit conversion (docs/formats.md "Limits").
+    for (int a = 0; a < 3; ++a) limits::check_coordinate(p.position[a], where + ": " + char('x' + a));
+    if (static_cast<long>(points.size()) >= limits::kMaxFilePoints)
+      throw InputError(where + ": more than " + std::to_string(limits::kMaxFilePoints) +
+                       " contact points (docs/formats.md \"Limits\")");
     if (columns.nx >= 0) {
       const Eigen::Vector3d n(value(columns.nx, "nx"), value(columns.ny, "ny"), value(columns.nz, "nz"));
       if (!(n.norm() > 0)) throw InputError(where + ": the normal (0, 0, 0) has no direction");

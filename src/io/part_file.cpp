@@ -1,6 +1,7 @@
 #include "io/part_file.hpp"
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "io/cad/cad_import.hpp"
 #include "base/json_fields.hpp"
@@ -13,7 +14,7 @@ using jf::json;
 double units_to_mm(const std::string& units, const std::string& where) {
   if (units == "mm" || units == "millimetre" || units == "millimeter") return 1.0;
   if (units == "inch" || units == "in") return 25.4;
-  throw InputError(where + ": unknown units \"" + units + "\" (expected \"mm\" or \"inch\")");
+  throw InputError(where + ": unknown units " + quote_field(units) + " (expected \"mm\" or \"inch\")");
 }
 
 namespace {
@@ -93,8 +94,8 @@ Part parse_part_json(const std::string& text, const std::string& name) {
   for (std::size_t f = 0; f < jfaces.size(); ++f) {
     Face face = parse_face(jfaces[f], jf::child(faces_where, f), scale);
     if (part.find_face(face.name()))
-      throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name \"" +
-                       face.name() + "\"");
+      throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name " +
+                       quote_field(face.name()));
     part.faces.push_back(std::move(face));
   }
   return part;

@@ -1,10 +1,13 @@
 #include "io/plan_file.hpp"
 
+#include <sstream>
 #include <cctype>
 #include <cmath>
 #include <map>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
+#include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
@@ -33,8 +36,7 @@ void check_id(const std::string& id, const std::string& where) {
   if (id.empty()) throw InputError(where + ": empty id");
   for (unsigned char c : id)
     if (c == ',' || std::isspace(c) || c < 0x20 || c == '(' || c == ')')
-      throw InputError(where + ": id \"" + id +
-                       "\" contains a comma, a parenthesis or white space (ids are also CSV "
+      throw InputError(where + ": id " + quote_field(id) + " contains a comma, a parenthesis or white space (ids are also CSV "
                        "fields and DMIS labels)");
 }
 
@@ -66,6 +68,11 @@ PlannedPoint parse_point(const json& jp, const std::string& where, double scale)
   p.ijk = unit(jf::vector3(field("ijk"), at("ijk")), at("ijk"));
   p.approach = scale * jf::vector3(field("approach"), at("approach"));
   p.retract = scale * jf::vector3(field("retract"), at("retract"));
+  // After unit conversion (docs/formats.md "Limits").
+  for (const char* key : {"xyz", "approach", "retract"}) {
+    const Eigen::Vector3d& v = key[0] == 'x' ? p.xyz : key[0] == 'a' ? p.approach : p.retract;
+    for (int a = 0; a < 3; ++a) limits::check_coordinate(v[a], jf::child(at(key), a));
+  }
   return p;
 }
 
@@ -93,6 +100,13 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
       jf::string(jf::member(jprobe, "name", probe_where), jf::child(probe_where, "name"));
   plan.probe.diameter = scale * jf::positive_number(jf::member(jprobe, "diameter", probe_where),
                                                     jf::child(probe_where, "diameter"));
+  if (plan.probe.diameter < limits::kMinProbeDiameterMm || plan.probe.diameter > limits::kMaxProbeDiameterMm)
+  {
+    std::ostringstream s;
+    s << jf::child(probe_where, "diameter") << ": " << plan.probe.diameter << " mm is outside the probe range "
+      << limits::kMinProbeDiameterMm << " to " << limits::kMaxProbeDiameterMm << " mm (docs/formats.md \"Limits\")";
+    throw InputError(s.str());
+  }
 
   const std::string points_where = jf::child(root, "points");
   const json& jpoints = jf::array(jf::member(doc, "points", root), points_where);
@@ -103,7 +117,7 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
     const std::string where = jf::child(points_where, k);
     PlannedPoint p = parse_point(jpoints[k], where, scale);
     if (const auto [it, fresh] = ids.emplace(p.id, k); !fresh)
-      throw InputError(jf::child(where, "id") + ": duplicate id \"" + p.id + "\" (also points[" +
+      throw InputError(jf::child(where, "id") + ": duplicate id " + quote_field(p.id) + " (also points[" +
                        std::to_string(it->second) + "])");
     if (const auto [it, fresh] = orders.emplace(p.order, k); !fresh)
       throw InputError(jf::child(where, "order") + ": duplicate order " + std::to_string(p.order) +
@@ -156,8 +170,8 @@ void check_plan_against_part(const InspectionPlan& plan, const Part& part, const
                        " but the part has " + std::to_string(part.faces.size()) + " faces");
     const Face& face = part.faces[p.face_index];
     if (face.name() != p.face)
-      throw InputError(where + ": face \"" + p.face + "\" but face " +
-                       std::to_string(p.face_index) + " of the part is \"" + face.name() + "\"");
+      throw InputError(where + ": face " + quote_field(p.face) + " but face " +
+                       std::to_string(p.face_index) + " of the part is " + quote_field(face.name()));
     const double off = (face.surface().point(p.uv.x(), p.uv.y()) - p.xyz).norm();
     if (!(off <= tolerance))
       throw InputError(where + ": xyz is " + std::to_string(off) +

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
+#include "base/limits.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
@@ -29,8 +31,7 @@ ToolType parse_type(const json& value, const std::string& where) {
   if (text == "ball") return ToolType::ball;
   if (text == "flat") return ToolType::flat;
   if (text == "bull") return ToolType::bull;
-  throw InputError(where + ": unknown tool type \"" + text +
-                   "\" (expected \"ball\", \"flat\" or \"bull\")");
+  throw InputError(where + ": unknown tool type " + quote_field(text) + " (expected \"ball\", \"flat\" or \"bull\")");
 }
 
 ToolSpec parse_tool(const json& jtool, const std::string& where) {
@@ -93,13 +94,24 @@ const char* to_string(ToolType type) {
 
 void validate_tool(const ToolSpec& tool, const std::string& where) {
   if (tool.name.empty()) throw InputError(jf::child(where, "name") + ": must not be empty");
-  if (!std::isfinite(tool.diameter) || !(tool.diameter > 0))
+  if (!std::isfinite(tool.diameter))  // e.g. 1e307 inch, beyond a double in mm
+    throw InputError(jf::child(where, "diameter") + ": not a finite number of millimetres");
+  if (!(tool.diameter > 0))
     throw InputError(jf::child(where, "diameter") + ": must be positive, got " +
                      number_text(tool.diameter));
+  // Physical range (docs/formats.md "Limits"): a micro-tool to a 10 m cutter.
+  if (tool.diameter < limits::kMinToolDiameterMm || tool.diameter > limits::kMaxToolDiameterMm)
+    throw InputError(jf::child(where, "diameter") + ": " + number_text(tool.diameter) +
+                     " mm is outside the tool diameter range " +
+                     number_text(limits::kMinToolDiameterMm) + " to " +
+                     number_text(limits::kMaxToolDiameterMm) + " mm");
   const std::string r_where = jf::child(where, "corner_radius");
   const double radius = 0.5 * tool.diameter, r = tool.corner_radius;
   if (!std::isfinite(r) || r < 0)
     throw InputError(r_where + ": must not be negative, got " + number_text(r));
+  if (r > 0 && r < limits::kMinCornerRadiusMm)
+    throw InputError(r_where + ": " + number_text(r) + " mm is below the smallest corner radius " +
+                     number_text(limits::kMinCornerRadiusMm) + " mm (use 0, a flat end mill)");
   if (r > radius)
     throw InputError(r_where + ": " + number_text(r) + " exceeds the tool radius " +
                      number_text(radius) + " (diameter / 2)");
@@ -148,8 +160,7 @@ std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std
     ToolSpec tool = parse_tool(doc[i], where);
     for (std::size_t k = 0; k < tools.size(); ++k)
       if (tools[k].name == tool.name)
-        throw InputError(jf::child(where, "name") + ": duplicate tool name \"" + tool.name +
-                         "\" (also [" + std::to_string(k) + "])");
+        throw InputError(jf::child(where, "name") + ": duplicate tool name " + quote_field(tool.name) + " (also [" + std::to_string(k) + "])");
     tools.push_back(std::move(tool));
   }
   return tools;

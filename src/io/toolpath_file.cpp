@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 #include "base/text_fields.hpp"
@@ -35,10 +36,14 @@ namespace {
   throw InputError(name + ":" + std::to_string(line) + ": " + what);
 }
 
+// A value cut and escaped by quote_field, for G-code's 'word' style.
+std::string unquoted(const std::string& quoted_text) { return quoted_text.substr(1, quoted_text.size() - 2); }
+
 std::vector<std::string> split_lines(const std::string& text) {
   std::vector<std::string> lines;
   std::string line;
-  std::istringstream in(text);
+  // A byte-order mark (as Excel and some CAM packages write) is not content.
+  std::istringstream in(strip_bom(text));
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     lines.push_back(line);
@@ -85,7 +90,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
       continue;
     }
     if (!std::isalpha(static_cast<unsigned char>(c)))
-      fail_line(name, number, std::string("unexpected character '") + c + "'");
+      fail_line(name, number, "unexpected character '" + unquoted(quote_field(std::string(1, c))) + "'");
     Word w{static_cast<char>(std::toupper(static_cast<unsigned char>(c))), "", 0.0};
     ++i;
     while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
@@ -93,7 +98,7 @@ std::vector<Word> split_words(const std::string& code, const std::string& name, 
                                code[i] == '-' || code[i] == '+'))
       w.text += code[i++];
     if (!parse_finite(w.text, w.value))
-      fail_line(name, number, std::string("word '") + w.letter + w.text + "' has no valid number");
+      fail_line(name, number, "word '" + unquoted(quote_field(std::string(1, w.letter) + w.text)) + "' has no valid number");
     words.push_back(w);
   }
   return words;
@@ -126,6 +131,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name,
   };
 
   const std::vector<std::string> lines = split_lines(text);
+  long points = 0;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     const int number = static_cast<int>(k) + 1;
     std::string code = strip_comments(lines[k], name, number);
@@ -209,6 +215,8 @@ Toolpath parse_gcode(const std::string& text, const std::string& name,
                                       " before the position is known (give an absolute position first)");
         next[a] = position[a] + value;
       }
+      // After unit conversion and relative moves (docs/formats.md "Limits").
+      limits::check_coordinate(next[a], name + ":" + std::to_string(number) + ": " + char('X' + a));
     }
     for (int a = 0; a < 3; ++a) known[a] = known[a] || axis_given[a];
     if (motion == 1) {
@@ -225,6 +233,9 @@ Toolpath parse_gcode(const std::string& text, const std::string& name,
       const Eigen::Vector3d p(next[0], next[1], next[2]);
       if ((p - current.points.back().position).norm() > 0)  // zero-length moves add nothing
         current.points.push_back(tip(p));
+      if (++points > limits::kMaxFilePoints)
+        fail_line(name, number, "more than " + std::to_string(limits::kMaxFilePoints) +
+                                    " tool-path points (docs/formats.md \"Limits\")");
     } else {
       close_pass();
     }
@@ -254,15 +265,18 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     if (current.points.size() >= 2) path.passes.push_back(std::move(current));
     current = ToolpathPass{};
   };
+  char separator = 0;  // from the first line with content
+  long points = 0;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     const int number = static_cast<int>(k) + 1;
     std::string line = lines[k];
     const auto hash = line.find('#');
     if (hash != std::string::npos) line = line.substr(0, hash);
+    if (!separator && line.find_first_not_of(" \t") != std::string::npos) separator = csv_separator(line);
     std::vector<std::string> fields;
     std::stringstream ss(line);
     std::string field;
-    while (std::getline(ss, field, ',')) {
+    while (std::getline(ss, field, separator ? separator : ',')) {
       field.erase(0, field.find_first_not_of(" \t"));
       field.erase(field.find_last_not_of(" \t") + 1);
       fields.push_back(field);
@@ -278,7 +292,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       for (std::size_t c = 0; c < fields.size(); ++c) {
         std::string key = fields[c];
         std::transform(key.begin(), key.end(), key.begin(), [](unsigned char ch) { return std::tolower(ch); });
-        if (column.count(key)) fail_line(name, number, "column \"" + key + "\" appears twice");
+        if (column.count(key)) fail_line(name, number, "column " + quote_field(key) + " appears twice");
         column[key] = static_cast<int>(c);
       }
       for (const char* needed : {"x", "y", "z"})
@@ -292,7 +306,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
         static const char* const kKnown[] = {"x", "y", "z", "nx", "ny", "nz", "pass", "u", "v", "face"};
         if (std::find_if(std::begin(kKnown), std::end(kKnown), [&](const char* k) { return key == k; }) ==
             std::end(kKnown))
-          fail_line(name, number, "unknown column \"" + key + "\" (known: x y z nx ny nz pass u v face)");
+          fail_line(name, number, "unknown column " + quote_field(key) + " (known: x y z nx ny nz pass u v face)");
         (void)index;
       }
       path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
@@ -316,13 +330,13 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     auto value = [&](const char* key) {
       double x = 0;
       const std::string& f = fields[column.at(key)];
-      if (!parse_finite(f, x)) fail_line(name, number, std::string(key) + " \"" + f + "\" is not a finite number");
+      if (!parse_finite(f, x)) fail_line(name, number, std::string(key) + " " + quote_field(f) + " is not a finite number");
       return x;
     };
     if (pass_column >= 0) {
       double pv = 0;
-      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv))
-        fail_line(name, number, "pass \"" + fields[pass_column] + "\" is not a whole number");
+      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv) || std::abs(pv) > 1e15)
+        fail_line(name, number, "pass " + quote_field(fields[pass_column]) + " is not a whole number");
       const long pass = static_cast<long>(pv);
       if (!current.points.empty() && pass != last_pass) {
         if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");
@@ -333,6 +347,12 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     ToolpathPoint p;
     p.line = number;
     p.position = scale * Eigen::Vector3d(value("x"), value("y"), value("z"));
+    // After unit conversion (docs/formats.md "Limits").
+    for (int a = 0; a < 3; ++a)
+      limits::check_coordinate(p.position[a], name + ":" + std::to_string(number) + ": " + char('x' + a));
+    if (++points > limits::kMaxFilePoints)
+      fail_line(name, number, "more than " + std::to_string(limits::kMaxFilePoints) +
+                                  " tool-path points (docs/formats.md \"Limits\")");
     if (path.kind == ToolpathKind::contact_points) {
       const Eigen::Vector3d n(value("nx"), value("ny"), value("nz"));
       if (!(n.norm() > 1e-9)) fail_line(name, number, "the normal (nx, ny, nz) is zero");

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
 #include "stage/compare_stage.hpp"
 
@@ -106,7 +107,7 @@ std::string path_member(Section& s, const std::string& key, const std::string& f
 StepRule parse_step_rule(const std::string& text, const std::string& where) {
   for (StepRule r : {StepRule::exact, StepRule::chord, StepRule::circular_arc})
     if (text == to_string(r)) return r;
-  throw InputError(where + ": unknown rule \"" + text + "\" (valid: exact, chord, circular_arc)");
+  throw InputError(where + ": unknown rule " + quote_field(text) + " (valid: exact, chord, circular_arc)");
 }
 
 void read_generation(Section g, Job& job) {

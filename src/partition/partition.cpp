@@ -143,6 +143,10 @@ PartitionResult partition_part(const Part& part, const PartitionOptions& options
     result.timing.region_seconds += seconds_since(t1);
     if (progress) progress(f + 1, part.faces.size());
   }
+  // Nothing to sample anywhere (every cell degenerate or trimmed away): a
+  // regions file without regions would only move the failure downstream.
+  if (result.map.regions.empty())
+    throw InputError("the part has no face of positive size to sample");
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "partition/regions_file.hpp"
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 
@@ -156,7 +157,7 @@ RegionFace parse_face(const json& j, const std::string& where) {
   const Field source = get(j, "eps_source", where);
   const std::string s = jf::string(source.value, source.where);
   if (s != "option" && s != "default")
-    throw InputError(source.where + ": expected \"option\" or \"default\", got \"" + s + "\"");
+    throw InputError(source.where + ": expected \"option\" or \"default\", got " + quote_field(s));
   f.eps_from_user = s == "option";
   f.curvature_scale = non_negative_at(j, "curvature_scale", where);
   f.min_area = non_negative_at(j, "min_area_mm2", where);
@@ -182,7 +183,7 @@ BorderLoop parse_loop(const json& j, const std::string& where) {
   const Field kind = get(j, "kind", where);
   const std::string k = jf::string(kind.value, kind.where);
   if (k != "outer" && k != "hole")
-    throw InputError(kind.where + ": expected \"outer\" or \"hole\", got \"" + k + "\"");
+    throw InputError(kind.where + ": expected \"outer\" or \"hole\", got " + quote_field(k));
   loop.hole = k == "hole";
   const Field uv = get(j, "uv", where), xyz = get(j, "xyz", where);
   jf::array(uv.value, uv.where);
@@ -208,7 +209,7 @@ Region parse_region(const json& j, const std::string& where) {
   const Field cls = get(j, "class", where);
   const std::string c = jf::string(cls.value, cls.where);
   if (!parse_curvature_class(c, r.curvature_class))
-    throw InputError(cls.where + ": expected planar, convex, concave or saddle, got \"" + c + "\"");
+    throw InputError(cls.where + ": expected planar, convex, concave or saddle, got " + quote_field(c));
   r.area = non_negative_at(j, "area_mm2", where);
   r.absorbed_area = non_negative_at(j, "absorbed_area_mm2", where);
   r.cells = count_at(j, "cells", where, 1);
@@ -311,8 +312,7 @@ RegionMap parse_regions_json(const std::string& text, const std::string& name) {
   jf::object(doc, root);
   const Field format = get(doc, "format", root);
   if (!format.value.is_string() || format.value.get<std::string>() != kRegionsFormat)
-    throw InputError(format.where + ": expected \"" + kRegionsFormat +
-                     "\" (is this a regions file from furrow partition?)");
+    throw InputError(format.where + ": expected " + quote_field(kRegionsFormat) + " (is this a regions file from furrow partition?)");
   const Field version = get(doc, "version", root);
   if (jf::integer(version.value, version.where) != kRegionsVersion)
     throw InputError(version.where + ": version " + version.value.dump() +

@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
+#include "base/text_fields.hpp"
 #include "planning/probe_planner.hpp"
 
 namespace furrow {
@@ -33,7 +35,20 @@ void validate(const PlannerOptions& o) {
   if (o.points && o.density) throw InputError("--points and --density exclude each other");
   if (o.points && *o.points < 1)
     throw InputError("--points must be at least 1, got " + std::to_string(*o.points) + " (a plan needs points)");
+  if (o.points && *o.points > limits::kMaxPlanPoints)
+    throw InputError("--points " + std::to_string(*o.points) + " is more than the limit of " +
+                     std::to_string(limits::kMaxPlanPoints) + " (docs/formats.md \"Limits\")");
   if (o.density) positive(*o.density, "--density (points per cm^2)");
+  if (o.min_per_region > limits::kMaxPlanPoints)
+    throw InputError("--min-per-region " + std::to_string(o.min_per_region) + " is more than the limit of " +
+                     std::to_string(limits::kMaxPlanPoints) + " points (docs/formats.md \"Limits\")");
+  if (o.gouge_points > limits::kMaxPlanPoints)
+    throw InputError("--gouge-points " + std::to_string(o.gouge_points) + " is more than the limit of " +
+                     std::to_string(limits::kMaxPlanPoints) + " points (docs/formats.md \"Limits\")");
+  if (o.probe_diameter < limits::kMinProbeDiameterMm || o.probe_diameter > limits::kMaxProbeDiameterMm)
+    throw InputError("--probe-diameter " + text(o.probe_diameter) + " mm is outside the range " +
+                     text(limits::kMinProbeDiameterMm) + " to " + text(limits::kMaxProbeDiameterMm) +
+                     " mm (docs/formats.md \"Limits\")");
   if (o.min_per_region < 0) throw InputError("--min-per-region must not be negative");
   if (o.border) non_negative(*o.border, "--border (mm)");
   positive(o.probe_diameter, "--probe-diameter (mm)");
@@ -57,7 +72,7 @@ void validate(const PlannerOptions& o) {
   non_negative(o.motion.dwell, "--dwell (s)");
   if (o.gouge_points < 1) throw InputError("--gouge-points must be at least 1");
   for (unsigned char c : o.probe_name)
-    if (!std::isalnum(c) && c != '_') throw InputError("--probe-name \"" + o.probe_name + "\": use letters, digits and '_' only");
+    if (!std::isalnum(c) && c != '_') throw InputError("--probe-name " + quote_field(o.probe_name) + ": use letters, digits and '_' only");
   if (o.probe_name.empty() || o.probe_name.size() > 32) throw InputError("--probe-name must have 1 to 32 characters");
   non_negative(o.weights.curvature, "curvature weight");
   non_negative(o.weights.risk, "risk weight");

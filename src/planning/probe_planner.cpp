@@ -1,11 +1,13 @@
 #include "planning/probe_planner.hpp"
 
+#include <sstream>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "planning/relocation.hpp"
 
 namespace furrow {
@@ -158,8 +160,17 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   double samplable_area = 0;
   for (std::size_t r = 0; r < region_count; ++r)
     if (demands[r].samplable) samplable_area += demands[r].area;
-  const long budget = options.points ? *options.points
-                                     : std::lround(options.density.value_or(kDefaultDensity) * samplable_area / 100.0);
+  // Counted in double first: a huge density must not overflow (docs/formats.md "Limits").
+  const double wanted = options.points ? static_cast<double>(*options.points)
+                                       : options.density.value_or(kDefaultDensity) * samplable_area / 100.0;
+  if (!(wanted <= static_cast<double>(limits::kMaxPlanPoints))) {
+    std::ostringstream s;
+    s << "--density " << options.density.value_or(kDefaultDensity) << " points per cm^2 over " << samplable_area
+      << " mm^2 asks for " << wanted << " points, more than the limit of " << limits::kMaxPlanPoints
+      << " (docs/formats.md \"Limits\")";
+    throw InputError(s.str());
+  }
+  const long budget = std::lround(wanted);
   result.allocation = allocate_points(demands, budget, options.min_per_region, options.weights);
   if (result.allocation.total == 0)
     throw InputError(samplable_area > 0 ? "the plan would have no points: raise --density or --points"

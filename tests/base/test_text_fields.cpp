@@ -29,3 +29,32 @@ TEST_CASE("trim removes blanks at both ends only") {
   CHECK(trim("") == "");
   CHECK(trim("a  b") == "a  b");
 }
+
+TEST_CASE("quoted caps a value at 80 characters and escapes control characters") {
+  CHECK(quote_field("abc") == "\"abc\"");
+  CHECK(quote_field("") == "\"\"");
+  CHECK(quote_field("a\"b") == "\"a\\\"b\"");
+  CHECK(quote_field("a\tb") == "\"a\\x09b\"");
+  const std::string exact(78, '7');
+  CHECK(quote_field(exact) == "\"" + exact + "\"");
+  const std::string huge(10'000'000, '9');
+  const std::string q = quote_field(huge);
+  CHECK(q.size() == 80);
+  CHECK(q == "\"" + std::string(75, '9') + "...\"");
+  // A multi-byte character is never cut in half.
+  std::string accents;
+  for (int k = 0; k < 60; ++k) accents += "\xC3\xA9";
+  const std::string qa = quote_field(accents);
+  CHECK(qa.size() <= 80);
+  CHECK(qa.substr(qa.size() - 4) == "...\"");
+  CHECK((static_cast<unsigned char>(qa[qa.size() - 5]) & 0xC0) != 0xC0);
+}
+
+TEST_CASE("strip_bom removes one leading UTF-8 byte-order mark") {
+  CHECK(strip_bom("\xEF\xBB\xBFid,x") == "id,x");
+  CHECK(strip_bom("id,x") == "id,x");
+  CHECK(strip_bom("\xEF\xBB") == "\xEF\xBB");
+  CHECK(strip_bom("a\xEF\xBB\xBF") == "a\xEF\xBB\xBF");
+  CHECK(has_bom("\xEF\xBB\xBF"));
+  CHECK_FALSE(has_bom(""));
+}

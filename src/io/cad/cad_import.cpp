@@ -28,6 +28,9 @@
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Check.hxx>
+#include <Interface_ReportEntity.hxx>
+#include <Interface_UndefinedContent.hxx>
+#include <StepData_UndefinedEntity.hxx>
 #include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -199,6 +202,75 @@ bool attempted(const Handle(Interface_InterfaceModel)& model,
   return process->IsBound(entity) || (!syntax.IsNull() && syntax->HasFailed());
 }
 
+// Unknown entities (a misspelt or unsupported type) that a readable entity
+// refers to, found in the raw parameters OpenCASCADE kept for it.
+void collect_unknown(const Handle(Interface_InterfaceModel)& model, const Handle(StepData_UndefinedEntity)& raw,
+                     std::vector<Handle(Standard_Transient)>& found, int depth) {
+  if (raw.IsNull() || depth > 8) return;
+  const Handle(Interface_UndefinedContent) content = raw->UndefinedContent();
+  for (int k = 1; !content.IsNull() && k <= content->NbParams(); ++k) {
+    if (!content->IsParamEntity(k)) continue;
+    const Handle(Standard_Transient) e = content->ParamEntity(k);
+    const auto sub = Handle(StepData_UndefinedEntity)::DownCast(e);
+    if (sub.IsNull()) continue;
+    if (sub->IsSub() || model->Number(e) == 0)
+      collect_unknown(model, sub, found, depth + 1);  // a list in the parameters
+    else if (std::find(found.begin(), found.end(), e) == found.end())
+      found.push_back(e);
+  }
+}
+
+// Strict import (docs/formats.md "CAD import"): every entity OpenCASCADE
+// could not read is an error, not only faces. An entity with a failed syntax
+// check (not a face: those are reported by the caller with their names) is
+// reported through the unknown entities it refers to, when there are any, so
+// the message names the misspelt one ("#17 (ADVANCED_FACX)"), else itself.
+void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
+                             std::vector<CadSkippedFace>& untranslated) {
+  std::set<std::string> reported;
+  for (const CadSkippedFace& f : untranslated) reported.insert(f.entity);
+  auto failed = [&](int i) {
+    const Handle(Interface_Check)& syntax = model->Check(i, true);
+    return model->IsErrorEntity(i) || (!syntax.IsNull() && syntax->HasFailed());
+  };
+  auto unknown_in = [&](int i) {
+    std::vector<Handle(Standard_Transient)> unknown;
+    if (model->IsRedefinedContent(i) && !model->ReportEntity(i).IsNull())
+      collect_unknown(model, Handle(StepData_UndefinedEntity)::DownCast(model->ReportEntity(i)->Content()),
+                      unknown, 0);
+    return unknown;
+  };
+  // What a failed face refers to is reported with the face (by the caller).
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (failed(i) && !Handle(StepShape_FaceSurface)::DownCast(model->Value(i)).IsNull())
+      for (const Handle(Standard_Transient)& e : unknown_in(i)) reported.insert(entity_label(model, e));
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    if (!failed(i)) continue;
+    const Handle(Interface_Check)& syntax = model->Check(i, true);
+    const Handle(Standard_Transient) entity = model->Value(i);
+    if (!Handle(StepShape_FaceSurface)::DownCast(entity).IsNull()) continue;
+    std::string why;
+    for (int k = 1; !syntax.IsNull() && k <= syntax->NbFails(); ++k)
+      why += (why.empty() ? "" : "; ") + trim(syntax->CFail(k));
+    if (why.empty()) why = "OpenCASCADE could not read it";
+    const std::string label = entity_label(model, entity);
+    const std::vector<Handle(Standard_Transient)> unknown = unknown_in(i);
+    if (unknown.empty()) {
+      if (reported.insert(label).second)
+        untranslated.push_back({"", "entity " + label, "could not be read (" + why + ")"});
+      continue;
+    }
+    for (const Handle(Standard_Transient)& e : unknown) {
+      const auto raw = Handle(StepData_UndefinedEntity)::DownCast(e);
+      const std::string unknown_label = entity_label(model, e);
+      if (!reported.insert(unknown_label).second) continue;
+      untranslated.push_back({"", "entity " + unknown_label + " (" + quote_field(raw->StepType()) + ")",
+                              "not an entity type OpenCASCADE knows, referred to by " + label + " (" + why +
+                                  ")"});
+    }
+  }
+}
+
 std::string unit_name(const std::string& occt_unit) {
   const std::string u = to_lower(trim(occt_unit));
   if (u == "mm" || u == "millimetre" || u == "millimeter") return "mm";
@@ -271,6 +343,7 @@ LoadedFile read_file(const std::string& path, Format format) {
                                    entity_problems(model, process, entity)});
     }
   }
+  if (format == Format::step) add_unreadable_entities(model, file.untranslated);
   if (format == Format::iges) {
     // IGES faces are roots (trimmed/bounded surfaces, MSBO solids): a root
     // without a result is a face or solid OpenCASCADE could not translate.
@@ -586,7 +659,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
   const Conversion conversion = convert_surface(basis, bounds, options);
   report.exact = conversion.exact;
   report.approximation_bound = conversion.bound;
-  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face \"" + name + "\"");
+  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face " + quote_field(name));
 
   // The original's parametrisation is kept unless the conversion changed it.
   const ParameterMap::Evaluator original = [&basis](double u, double v) {
@@ -656,7 +729,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
     }
   const bool reversed = (face.Orientation() == TopAbs_REVERSED) != (sense < 0);
 
-  Trim trim(std::move(loops), "face \"" + name + "\" trim");
+  Trim trim(std::move(loops), "face " + quote_field(name) + " trim");
   return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
 }
 
@@ -684,8 +757,9 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
   result.products = file.products;
   result.part.source_units = file.units;
   auto face_label = [](const std::string& name, const std::string& entity) {
+    if (entity.rfind("entity ", 0) == 0) return entity;  // not a face (add_unreadable_entities)
     std::string label = "face";
-    if (!name.empty()) label += " \"" + name + "\"";
+    if (!name.empty()) label += " " + quote_field(name);
     if (!entity.empty()) label += " " + entity;
     return label;
   };

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
 #include "io/cmm/measurement_file.hpp"
 
@@ -23,10 +24,10 @@ namespace {
 const std::regex kNumber(R"(-?[0-9]+(\.[0-9]+)?)");
 
 double number(const std::string& text, const std::string& name, int line) {
-  if (!std::regex_match(text, kNumber)) fail(name, line, "\"" + text + "\" is not a number as Furrow writes them");
+  if (!std::regex_match(text, kNumber)) fail(name, line, quote_field(text) + " is not a number as Furrow writes them");
   double v = 0;
   std::from_chars(text.data(), text.data() + text.size(), v);
-  if (!std::isfinite(v)) fail(name, line, "\"" + text + "\" is not finite");
+  if (!std::isfinite(v)) fail(name, line, quote_field(text) + " is not finite");
   return v;
 }
 
@@ -62,7 +63,7 @@ class Cursor {
     line_ = s.line;
     std::smatch m;
     if (!std::regex_match(s.text, m, pattern))
-      fail(name_, s.line, std::string("expected ") + what + ", got \"" + s.text + "\"");
+      fail(name_, s.line, std::string("expected ") + what + ", got " + quote_field(s.text));
     return std::vector<std::string>(m.begin(), m.end());
   }
   bool next_is(const std::regex& pattern) const { return !done() && std::regex_match(peek().text, pattern); }
@@ -137,7 +138,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     if (in.expect(meas, "MEAS/POINT,F(label),1")[1] != f->label)
       fail(name, in.line(), "MEAS refers to another feature than the one just defined (" + f->label + ")");
     const DmisStatement& ps = in.take("PTMEAS");
-    if (!std::regex_match(ps.text, ptmeas)) fail(name, ps.line, "expected PTMEAS/CART,x,y,z,i,j,k, got \"" + ps.text + "\"");
+    if (!std::regex_match(ps.text, ptmeas)) fail(name, ps.line, "expected PTMEAS/CART,x,y,z,i,j,k, got " + quote_field(ps.text));
     const std::vector<std::string> pf = fields(ps.text.substr(ps.text.find('/') + 1));
     const Eigen::Vector3d touch = point3(pf, 1, name, ps.line);
     const Eigen::Vector3d touch_ijk = point3(pf, 4, name, ps.line);

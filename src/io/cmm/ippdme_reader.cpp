@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "io/cmm/ippdme_writer.hpp"
 #include "base/json_fields.hpp"
 
@@ -22,7 +23,8 @@ struct Line {
   std::string text;
 };
 
-std::vector<Line> crlf_lines(const std::string& text, const std::string& name) {
+std::vector<Line> crlf_lines(const std::string& file_text, const std::string& name) {
+  const std::string text = strip_bom(file_text);  // a byte-order mark is not content
   std::vector<Line> lines;
   std::size_t start = 0;
   int number = 0;
@@ -67,7 +69,7 @@ std::string unspace(const std::string& s, const std::string& name, int line) {
 }
 
 double number(const std::string& text, const std::string& name, int line) {
-  if (!is_ippdme_number(text)) fail(name, line, "\"" + text + "\" is not an I++ DME number");
+  if (!is_ippdme_number(text)) fail(name, line, quote_field(text) + " is not an I++ DME number");
   return std::strtod(text.c_str(), nullptr);
 }
 
@@ -117,7 +119,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
     const Line& line = lines[k];
     std::smatch m;
     if (!std::regex_match(line.text, m, command_line))
-      fail(name, line.number, "expected `TTTTT Command(...)` (five-digit tag, one space), got \"" + line.text + "\"");
+      fail(name, line.number, "expected `TTTTT Command(...)` (five-digit tag, one space), got " + quote_field(line.text));
     const int tag = std::stoi(m[1]);
     if (tag != expected_tag)
       fail(name, line.number, "tag " + m[1].str() + " out of sequence (expected " + std::to_string(expected_tag) + ")");
@@ -171,7 +173,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
       require(Stage::body, "EndSession");
       stage = Stage::ended;
     } else {
-      fail(name, n, "\"" + cmd + "\" is not a command Furrow writes");
+      fail(name, n, quote_field(cmd) + " is not a command Furrow writes");
     }
   }
   if (stage != Stage::ended) fail(name, k < lines.size() ? lines[k].number : static_cast<int>(lines.size()), "the file does not end with EndSession()");

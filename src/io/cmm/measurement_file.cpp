@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
@@ -23,7 +24,7 @@ ProbePointKind parse_probe_point_kind(const std::string& text, const std::string
   if (text == "centre" || text == "center" || text == "centres" || text == "centers")
     return ProbePointKind::probe_centre;
   if (text == "contact") return ProbePointKind::contact;
-  throw InputError(where + ": \"" + text + "\" is neither \"centre\" nor \"contact\"");
+  throw InputError(where + ": " + quote_field(text) + " is neither \"centre\" nor \"contact\"");
 }
 
 namespace {
@@ -60,8 +61,8 @@ double parse_number(std::string field, const std::string& name, int line, const 
   const char* last = field.data() + field.size();
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (field.empty() || ec != std::errc() || ptr != last)
-    fail(name, line, what + ": \"" + field + "\" is not a number");
-  if (!std::isfinite(value)) fail(name, line, what + ": \"" + field + "\" is not a finite number");
+    fail(name, line, what + ": " + quote_field(field) + " is not a number");
+  if (!std::isfinite(value)) fail(name, line, what + ": " + quote_field(field) + " is not a finite number");
   return value;
 }
 
@@ -83,10 +84,16 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 void add_point(MeasurementSet& set, std::map<std::string, int>& seen, MeasuredPoint p,
                const std::string& name) {
+  // After unit conversion (docs/formats.md "Limits").
+  for (int a = 0; a < 3; ++a)
+    limits::check_coordinate(p.xyz[a], name + ":" + std::to_string(p.line) + ": " + char('x' + a));
+  if (static_cast<long>(set.points.size()) >= limits::kMaxFilePoints)
+    fail(name, p.line, "more than " + std::to_string(limits::kMaxFilePoints) +
+                           " measured points (docs/formats.md \"Limits\")");
   const auto [it, inserted] = seen.emplace(p.id, p.line);
   if (!inserted)
     fail(name, p.line,
-         "duplicate id \"" + p.id + "\" (first on line " + std::to_string(it->second) + ")");
+         "duplicate id " + quote_field(p.id) + " (first on line " + std::to_string(it->second) + ")");
   set.points.push_back(std::move(p));
 }
 
@@ -96,14 +103,16 @@ void parse_csv(const std::string& text, const std::string& name, double scale,
   if (lines.empty()) throw InputError(name + ": no header line (expected id,x,y,z[,i,j,k])");
   const char* known[] = {"id", "x", "y", "z", "i", "j", "k"};
   std::map<std::string, int> column;
-  const std::vector<std::string> header = split(lines[0].text, ',');
+  // Excel writes ';' where the decimal mark is a comma.
+  const char separator = csv_separator(lines[0].text);
+  const std::vector<std::string> header = split(lines[0].text, separator);
   for (std::size_t c = 0; c < header.size(); ++c) {
     const std::string h = to_lower(trim(header[c]));
     if (std::find(std::begin(known), std::end(known), h) == std::end(known))
       fail(name, lines[0].number,
-           "unknown column \"" + trim(header[c]) + "\" (the header names id, x, y, z, i, j, k)");
+           "unknown column " + quote_field(trim(header[c])) + " (the header names id, x, y, z, i, j, k)");
     if (!column.emplace(h, static_cast<int>(c)).second)
-      fail(name, lines[0].number, "column \"" + h + "\" appears twice");
+      fail(name, lines[0].number, "column " + quote_field(h) + " appears twice");
   }
   for (const char* c : {"x", "y", "z"})
     if (!column.count(c))
@@ -117,7 +126,7 @@ void parse_csv(const std::string& text, const std::string& name, double scale,
   std::map<std::string, int> seen;
   for (std::size_t l = 1; l < lines.size(); ++l) {
     const Line& line = lines[l];
-    const std::vector<std::string> fields = split(line.text, ',');
+    const std::vector<std::string> fields = split(line.text, separator);
     if (fields.size() != header.size())
       fail(name, line.number,
            "expected " + std::to_string(header.size()) + " fields, got " +
@@ -190,7 +199,7 @@ void parse_dmis_results(const std::string& text, const std::string& name, Measur
     if (!feature->actual) {
       const auto [it, inserted] = nominal_line.emplace(feature->label, st.line);
       if (!inserted)
-        fail(name, st.line, "duplicate nominal F(" + feature->label + ") (first on line " + std::to_string(it->second) + ")");
+        fail(name, st.line, "duplicate nominal F(" + quote_field(feature->label) + ") (first on line " + std::to_string(it->second) + ")");
       nominals[feature->label] = {feature->xyz, feature->ijk};
       continue;
     }
@@ -225,12 +234,14 @@ MeasurementFormat measurement_format_from_path(const std::string& path) {
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
   if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res")
     return MeasurementFormat::dmis;
-  throw InputError(path + ": unknown measurement file type \"" + ext +
-                   "\" (expected .csv, .xyz/.txt or DMIS .dmi/.dmis/.dmo/.res)");
+  throw InputError(path + ": unknown measurement file type " + quote_field(ext) +
+                   " (expected .csv, .xyz/.txt or DMIS .dmi/.dmis/.dmo/.res)");
 }
 
-MeasurementSet parse_measurements(const std::string& text, const std::string& name,
+MeasurementSet parse_measurements(const std::string& file_text, const std::string& name,
                                   MeasurementFormat format, const MeasurementReadOptions& options) {
+  // A byte-order mark (Excel's "CSV UTF-8", some CMM software) is not content.
+  const std::string text = strip_bom(file_text);
   MeasurementSet set;
   set.source = name;
   const double scale = units_to_mm(options.units, name + ": units");
@@ -307,7 +318,7 @@ void write_measurements_csv(const MeasurementSet& set, const std::string& path) 
 
 std::vector<DmisStatement> dmis_statements(const std::string& text) {
   std::vector<DmisStatement> out;
-  std::istringstream in(text);
+  std::istringstream in(strip_bom(text));
   std::string raw, pending;
   int number = 0, start = 0;
   while (std::getline(in, raw)) {
@@ -335,7 +346,8 @@ std::optional<double> dmis_units_scale(const DmisStatement& st, const std::strin
   const std::string unit = up.substr(6, comma == std::string::npos ? std::string::npos : comma - 6);
   if (unit == "MM") return 1.0;
   if (unit == "INCH") return 25.4;
-  fail(name, st.line, "UNITS/" + unit + " is not supported (MM or INCH)");
+  const std::string shown = quote_field(unit);  // cut when long, shown without its quotes
+  fail(name, st.line, "UNITS/" + shown.substr(1, shown.size() - 2) + " is not supported (MM or INCH)");
 }
 
 std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st, const std::string& name,
@@ -359,12 +371,15 @@ std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st
   // Values from the statement as written, so messages quote the user's text.
   const std::vector<std::string> fields = split(original.substr(equals + 1 + 11), ',');
   if (fields.empty() || to_lower(fields[0]) != "cart")
-    fail(name, st.line, "only CART points are supported, got \"" + (fields.empty() ? std::string() : fields[0]) + "\"");
+    fail(name, st.line, "only CART points are supported, got " + quote_field(fields.empty() ? std::string() : fields[0]));
   if (fields.size() != 7)
     fail(name, st.line, "FEAT/POINT,CART needs x,y,z,i,j,k (6 numbers), got " + std::to_string(fields.size() - 1));
   double v[6];
   for (int c = 0; c < 6; ++c) v[c] = parse_number(fields[c + 1], name, st.line, "value " + std::to_string(c + 1));
   f.xyz = scale * Eigen::Vector3d(v[0], v[1], v[2]);
+  // After unit conversion (docs/formats.md "Limits").
+  for (int a = 0; a < 3; ++a)
+    limits::check_coordinate(f.xyz[a], name + ":" + std::to_string(st.line) + ": " + char('x' + a));
   f.ijk = unit_direction({v[3], v[4], v[5]}, name, st.line, "i, j, k");
   return f;
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 
 namespace furrow {
 
@@ -43,7 +44,7 @@ void check_vector(const Eigen::Vector3d& v, const std::string& where) {
 void check_program(const ProbeProgram& program, const std::string& format) {
   const std::string what = format + " program";
   if (!is_name(program.name))
-    throw InputError(what + ": name \"" + program.name + "\" must be 1-64 letters, digits, '_' or '-'");
+    throw InputError(what + ": name " + quote_field(program.name) + " must be 1-64 letters, digits, '_' or '-'");
   if (!is_label(program.probe.name))
     throw InputError(what + ": probe name \"" + program.probe.name +
                      "\" must be 1-32 letters, digits or '_' (a DMIS sensor label and an I++ tool name)");
@@ -60,7 +61,7 @@ void check_program(const ProbeProgram& program, const std::string& format) {
   positive(program.search, "search distance");
   for (const ProgramStep& s : program.steps) {
     if (!is_label(s.point.id))
-      throw InputError(what + ": point id \"" + s.point.id + "\" is not a label (1-32 letters, digits or '_')");
+      throw InputError(what + ": point id " + quote_field(s.point.id) + " is not a label (1-32 letters, digits or '_')");
     check_vector(s.point.xyz, what + ": point " + s.point.id);
     check_vector(s.point.ijk, what + ": point " + s.point.id);
     if (!(s.point.ijk.norm() > 0.5)) throw InputError(what + ": point " + s.point.id + ": ijk is not a unit vector");

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
@@ -252,7 +253,7 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
     p.faces.push_back(read_face(faces[k], jf::child(wf, k)));
     for (std::size_t l = 0; l < k; ++l)
       if (p.faces[l].name == p.faces[k].name)
-        throw InputError(jf::child(jf::child(wf, k), "name") + ": face \"" + p.faces[k].name + "\" appears twice");
+        throw InputError(jf::child(jf::child(wf, k), "name") + ": face " + quote_field(p.faces[k].name) + " appears twice");
   }
   return p;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/text_fields.hpp"
 #include "machining/prediction/error_map.hpp"
 #include "machining/prediction/zmap.hpp"
 
@@ -25,7 +26,7 @@ PassDirectionSpec parse_pass_direction(const std::string& text, const std::strin
     if (!number.empty() && end == number.c_str() + number.size() && std::isfinite(angle))
       return {PassDirection::plane, angle};
   }
-  throw InputError(where + ": \"" + text + "\" is not a direction (expected u, v or plane:ANGLE in degrees)");
+  throw InputError(where + ": " + quote_field(text) + " is not a direction (expected u, v or plane:ANGLE in degrees)");
 }
 
 std::string to_string(const PassDirectionSpec& d) {
@@ -39,6 +40,7 @@ std::string to_string(const PassDirectionSpec& d) {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMinToleranceMm = 1e-4, kMaxToleranceMm = 10;
 
 // One family of passes: iso-parametric on a face, or iso-planar over the
 // part. A pass is a level (v, u or plane offset) and a t range along it.
@@ -177,6 +179,15 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
   if (!(options.scallop > 0) || !std::isfinite(options.scallop))
     throw InputError("toolpath: the scallop height must be a positive number of millimetres");
   if (!(options.sample_spacing > 0)) throw InputError("toolpath: the sample spacing must be positive");
+  // Physical ranges (docs/formats.md "Limits"): below 0.1 um no machine cuts.
+  for (const auto& [value, what] : {std::pair{options.forward.tolerance, "tolerance"},
+                                    std::pair{options.scallop, "scallop height"}})
+    if (value < kMinToleranceMm || value > kMaxToleranceMm) {
+      std::ostringstream s;
+      s << "toolpath: the " << what << " " << value << " mm is outside " << kMinToleranceMm << " to "
+        << kMaxToleranceMm << " mm (docs/formats.md \"Limits\")";
+      throw InputError(s.str());
+    }
   const VerticalProjector projector(part);
   std::vector<Family> families;
   if (direction.kind == PassDirection::plane) {
@@ -209,6 +220,32 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
       const Eigen::Vector2d len = face_extent_lengths(part.faces[k]);
       f.samples = std::max(8, static_cast<int>(std::ceil((f.along_u ? len.x() : len.y()) / options.sample_spacing)));
       families.push_back(f);
+    }
+  }
+
+  // The work before doing it (docs/formats.md "Limits"): the passes a flat
+  // surface needs at the flat side step, and the samples along them.
+  {
+    const double flat_w =
+        cutter_side_step_for_scallop(cutter, 0.0, 0.0, options.scallop, options.cross_section).side_step;
+    double passes = 0, samples = 0;
+    for (const Family& f : families) {
+      double across = f.level1 - f.level0;  // plane: mm
+      if (f.face >= 0) {
+        const Eigen::Vector2d len = face_extent_lengths(part.faces[f.face]);
+        across = f.along_u ? len.y() : len.x();
+      }
+      const double n = std::ceil(across / std::max(flat_w, 1e-300)) + 1;
+      passes += n;
+      samples += n * (f.samples + 1.0);
+    }
+    if (!(passes <= options.max_passes) || !(samples <= static_cast<double>(options.max_pass_samples))) {
+      std::ostringstream s;
+      s << "toolpath: a scallop height of " << options.scallop << " mm with this " << cutter.diameter()
+        << " mm tool needs about " << passes << " passes (" << samples << " samples along them), more than the limit of "
+        << options.max_passes << " passes and " << options.max_pass_samples
+        << " samples (docs/formats.md \"Limits\"): use a larger scallop height or tool";
+      throw InputError(s.str());
     }
   }
 
@@ -254,12 +291,17 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
   plan.passes.resize(pieces.size());
   std::vector<int> capped(pieces.size(), 0), evaluations(pieces.size(), 0);
   std::atomic<std::size_t> done{0};
+  std::atomic<bool> truncated{false};
+  std::atomic<long> points_so_far{0};
+  ContactPlanOptions bounded = options;
+  bounded.forward.max_points = std::min(options.forward.max_points, options.max_points);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const Interval& i = pieces[k];
     const Family& f = families[piece_face[k] >= 0 ? piece_face[k] : 0];
     const PassCurve c = f.pass(i.level, i.a, i.b);
-    const ForwardSteps steps = place_contact_points(part, c, cutter, options.forward);
+    if (truncated || points_so_far > options.max_points) continue;  // failing anyway (below)
+    const ForwardSteps steps = place_contact_points(part, c, cutter, bounded.forward);
     PlannedPass& pass = plan.passes[k];
     pass.face = piece_face[k];
     pass.level = i.level;
@@ -274,9 +316,17 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
     }
     if (k % 2 == 1) std::reverse(pass.points.begin(), pass.points.end());  // zig-zag
     capped[k] = steps.capped;
+    if (steps.truncated) truncated = true;
+    points_so_far += static_cast<long>(steps.params.size());
     evaluations[k] = steps.evaluations;
     const std::size_t d = ++done;
     if (progress && omp_get_thread_num() == 0) progress(d, pieces.size());
+  }
+  if (truncated || points_so_far > options.max_points) {
+    std::ostringstream s;
+    s << "toolpath: the tolerance " << options.forward.tolerance << " mm needs more than " << options.max_points
+      << " contact points (docs/formats.md \"Limits\"): use a larger tolerance";
+    throw InputError(s.str());
   }
   if (progress) progress(pieces.size(), pieces.size());
   std::vector<PlannedPass> kept;

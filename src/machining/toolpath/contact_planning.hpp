@@ -50,7 +50,10 @@ struct ContactPlanOptions {
   double scallop = 0.005;        // [mm] target scallop height between passes
   double min_normal_z = 0.05;    // contacts steeper than acos(0.05) = 87 deg are left out
   double sample_spacing = 1.0;   // [mm] along a pass: side-step samples and split search
-  int max_passes = 100000;       // a safety cap (InputError beyond)
+  int max_passes = 5000;         // a cap, checked on an estimate first (InputError beyond;
+                                 // docs/formats.md "Limits")
+  long max_points = 5'000'000;   // contact points of the whole path (InputError beyond)
+  long max_pass_samples = 50'000'000;  // passes x samples along a pass (InputError beyond)
   CrossSectionOptions cross_section;
 };
 

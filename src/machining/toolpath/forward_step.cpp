@@ -76,6 +76,11 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
   };
   const double span = pass.t1 - pass.t0;
   while (t < pass.t1) {
+    // A count from the input's ratio of length to tolerance: bounded.
+    if (static_cast<long>(result.params.size()) > options.max_points) {
+      result.truncated = true;
+      break;
+    }
     // Upper end: the pass end, or the parameter at max_step.
     const double end = options.max_step > 0 ? param_at_chord(pass, t, options.max_step) : pass.t1;
     // Estimate: the circular-arc step at t.

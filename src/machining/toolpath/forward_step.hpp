@@ -40,6 +40,7 @@ struct ForwardStepOptions {
   double precision = 1e-3;  // relative bracket width at which the search stops
   int max_iterations = 60;  // per step (bracketing + bisection)
   double max_step = 0;      // [mm] chord; 0: none
+  long max_points = 1'000'000;  // per pass: beyond, the search stops (ForwardSteps::truncated)
   FurrowStepOptions predictor;
 };
 
@@ -48,6 +49,7 @@ struct ForwardSteps {
   int capped = 0;              // steps whose search hit max_iterations
   int evaluations = 0;         // error evaluations (exact or chord)
   int invalid = 0;             // evaluations on curves that could not be evaluated (treated as too long)
+  bool truncated = false;      // stopped at max_points (docs/formats.md "Limits")
 };
 
 // The rule's error of one step (exact: max(undercut, |overcut|); chord: the
