@@ -45,6 +45,9 @@ void unregister_temporary(const std::string& path) {
   }
 }
 
+// What was installed before ours, per signal, so that it still runs.
+struct sigaction g_previous[NSIG];
+
 extern "C" void remove_temporaries_and_die(int sig) {
   for (auto& slot : g_live) {
     char* p = slot.exchange(nullptr);
@@ -56,19 +59,31 @@ extern "C" void remove_temporaries_and_die(int sig) {
       fs::remove_all(p, ec);
     }
   }
+  // Then whatever handled the signal before us (a test runner, an
+  // embedding program), and finally the default action: the process ends as
+  // the signal says.
+  const struct sigaction& previous = g_previous[sig];
+  if (!(previous.sa_flags & SA_SIGINFO) && previous.sa_handler != SIG_DFL && previous.sa_handler != SIG_IGN &&
+      previous.sa_handler != remove_temporaries_and_die)
+    previous.sa_handler(sig);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
 }
 
+// Installed whenever a set is made, not once: a program that installs its
+// own handler later (doctest does, per test case) would otherwise silently
+// switch the clean-up off.
 void install_signal_handlers() {
-  static const bool installed = [] {
-    struct sigaction action {};
-    action.sa_handler = remove_temporaries_and_die;
-    sigemptyset(&action.sa_mask);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &action, nullptr);
-    return true;
-  }();
-  (void)installed;
+  struct sigaction action {};
+  action.sa_handler = remove_temporaries_and_die;
+  sigemptyset(&action.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction current {};
+    ::sigaction(sig, nullptr, &current);
+    if (current.sa_handler == remove_temporaries_and_die) continue;
+    g_previous[sig] = current;
+    ::sigaction(sig, &action, nullptr);
+  }
 }
 
 // ---- names -----------------------------------------------------------------
