@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -40,9 +41,9 @@ NurbsSurface sweep(const RationalCurve2d& unit_arc, const RationalCurve2d& profi
 
 RationalCurve2d make_circular_arc(double radius, double a0, double a1) {
   const double sweep_angle = a1 - a0;
-  if (!(radius > 0) || !(std::fabs(sweep_angle) > 0) || std::fabs(sweep_angle) > 2 * M_PI + 1e-12)
+  if (!(radius > 0) || !(std::fabs(sweep_angle) > 0) || std::fabs(sweep_angle) > 2 * kPi + 1e-12)
     throw InputError("circular arc: need radius > 0 and 0 < |a1 - a0| <= 2 pi");
-  const int pieces = static_cast<int>(std::ceil(std::fabs(sweep_angle) / (M_PI / 2) - 1e-9));
+  const int pieces = static_cast<int>(std::ceil(std::fabs(sweep_angle) / (kPi / 2) - 1e-9));
   const double step = sweep_angle / pieces;
   const double w_mid = std::cos(step / 2);
   RationalCurve2d c;
@@ -84,7 +85,7 @@ NurbsSurface make_cylinder(double radius, double length, double a0, double a1) {
 }
 
 NurbsSurface make_sphere(double radius, double phi0, double phi1, double lat0, double lat1) {
-  if (!(lat0 >= -M_PI / 2 - 1e-12 && lat1 <= M_PI / 2 + 1e-12 && lat1 > lat0))
+  if (!(lat0 >= -kPi / 2 - 1e-12 && lat1 <= kPi / 2 + 1e-12 && lat1 > lat0))
     throw InputError("sphere: latitudes must satisfy -pi/2 <= lat0 < lat1 <= pi/2");
   // Profile: meridian arc, points (cos lat, sin lat) * radius in (r, z).
   return make_revolution(make_circular_arc(radius, lat0, lat1), phi0, phi1);

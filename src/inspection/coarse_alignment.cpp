@@ -11,6 +11,7 @@
 #include "geometry/point_search.hpp"
 #include "inspection/point_subsets.hpp"
 #include "inspection/surface_sampling.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -256,7 +257,7 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
   out.transform = refined[0].transform;
   out.median_distance = refined[0].score;
   out.candidates = static_cast<int>(starts.size());
-  const double angle_limit = options.ambiguity_angle_deg * M_PI / 180;
+  const double angle_limit = options.ambiguity_angle_deg * kPi / 180;
   for (std::size_t k = 1; k < refined.size(); ++k) {
     if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit)
       continue;

@@ -6,6 +6,7 @@
 
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -20,7 +21,7 @@ namespace {
 void set_placement(const Eigen::Isometry3d& cmm_to_part, ComparisonDocument::Registration& r) {
   const Eigen::Isometry3d m = cmm_to_part.inverse();
   const Eigen::Matrix3d& rot = m.linear();
-  const double deg = 180 / M_PI;
+  const double deg = 180 / kPi;
   r.placement_rotation_deg = Eigen::Vector3d(std::atan2(rot(2, 1), rot(2, 2)),
                                              std::asin(std::clamp(-rot(2, 0), -1.0, 1.0)),
                                              std::atan2(rot(1, 0), rot(0, 0))) * deg;

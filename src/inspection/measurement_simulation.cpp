@@ -8,11 +8,12 @@
 
 #include "base/error.hpp"
 #include "inspection/surface_sampling.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
 Eigen::Isometry3d Misalignment::part_to_cmm() const {
-  const Eigen::Vector3d r = rotation_deg * (M_PI / 180);
+  const Eigen::Vector3d r = rotation_deg * (kPi / 180);
   Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
   m.linear() = (Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
                 Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
@@ -24,7 +25,7 @@ Eigen::Isometry3d Misalignment::part_to_cmm() const {
 
 double SurfaceBump::offset_at(const Eigen::Vector3d& point) const {
   const double rho = (point - centre).norm();
-  return rho < radius ? height * (1 + std::cos(M_PI * rho / radius)) / 2 : 0.0;
+  return rho < radius ? height * (1 + std::cos(kPi * rho / radius)) / 2 : 0.0;
 }
 
 PredictedSurfaceOffsets predicted_surface_offsets(const InspectionPlan& plan,

@@ -33,6 +33,7 @@
 #include <optional>
 
 #include "geometry/closest_point.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -45,7 +46,7 @@ struct ProbeGeometry {
 struct AccessOptions {
   double approach = 3;   // [mm] ball surface to the part where the touch starts, > 0
   double retract = 3;    // [mm] ball surface to the part after the touch, > 0
-  double max_tilt = 75 * 3.14159265358979323846 / 180;  // [rad]
+  double max_tilt = 75 * kPi / 180;  // [rad]
   double clearance_z = 0;  // ball-centre height of the clearance plane [mm]
   // How much nearer than r (r_s) the part may come to the ball centre (the
   // shaft axis) and still count as clear: closest-point round-off [mm].

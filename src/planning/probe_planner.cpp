@@ -9,6 +9,7 @@
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "planning/relocation.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -39,8 +40,7 @@ std::string at_text(const Eigen::Vector3d& p) { return "(" + mm(p.x()) + ", " + 
 
 std::string problem_text(const AccessResult& a, const ProbeGeometry& probe) {
   std::string s = to_string(a.problem);
-  const double pi = 3.14159265358979323846;
-  if (a.problem == AccessProblem::tilt) return s + " (" + mm(a.tilt * 180 / pi) + " degrees)";
+  if (a.problem == AccessProblem::tilt) return s + " (" + mm(degrees(a.tilt)) + " degrees)";
   const double allowed = a.problem == AccessProblem::stylus ? probe.stylus_radius : probe.ball_radius;
   if (a.step_cap) return s + " (the clearance march hit its step cap near " + at_text(a.where) + ")";
   return s + " (part " + mm(a.distance) + " mm from " + (a.problem == AccessProblem::stylus ? "the shaft axis" : "the ball centre") +
@@ -92,7 +92,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   AccessOptions access = options.access;
   access.approach = options.approach;
   access.retract = options.retract;
-  access.max_tilt = options.max_tilt_degrees * 3.14159265358979323846 / 180;
+  access.max_tilt = options.max_tilt_degrees * kPi / 180;
   access.clearance_z = result.clearance_z;
 
   // 1. Regions.

@@ -1,4 +1,5 @@
 #include "planning/relocation.hpp"
+#include "base/numbers.hpp"
 
 #include <cmath>
 
@@ -19,11 +20,10 @@ std::optional<Relocated> relocate(const RegionDomain& domain, const ClosestPoint
   if (!(std::abs(normal_matrix.determinant()) > 0)) return std::nullopt;
   const Eigen::Vector3d e1 = d.Su.normalized();
   const Eigen::Vector3d e2 = g.normal.cross(e1);
-  const double pi = 3.14159265358979323846;
   for (int ring = 1; ring <= options.rings; ++ring) {
     const double radius = options.max_distance * ring / options.rings;
     for (int k = 0; k < options.directions; ++k) {
-      const double angle = 2 * pi * (k + 0.5 * (ring % 2)) / options.directions;
+      const double angle = 2 * kPi * (k + 0.5 * (ring % 2)) / options.directions;
       const Eigen::Vector3d offset = radius * (std::cos(angle) * e1 + std::sin(angle) * e2);
       const Eigen::Vector2d candidate = uv + normal_matrix.ldlt().solve(J.transpose() * offset);
       if (keep && !keep(candidate)) continue;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "report/html.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -133,7 +134,7 @@ std::string alignment_section(const ComparisonDocument& doc) {
   };
   if (r.covariance) {
     const auto& c = *r.covariance;
-    const double deg = 180 / M_PI;
+    const double deg = 180 / kPi;
     kv.push_back({"Transform 1-sigma",
                   "rx " + fixed(std::sqrt(c(0, 0)) * deg * 3600, 2) + "&Prime;, ry " +
                       fixed(std::sqrt(c(1, 1)) * deg * 3600, 2) + "&Prime;, rz " +

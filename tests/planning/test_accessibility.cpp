@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "base/numbers.hpp"
 #include "geometry/primitives.hpp"
 #include "planning/accessibility.hpp"
 #include "plan_fixtures.hpp"
@@ -15,7 +16,6 @@ using namespace furrow::test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 AccessOptions options_with_plane(double clearance_z) {
   AccessOptions o;

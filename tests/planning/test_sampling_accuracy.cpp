@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 
+#include "base/numbers.hpp"
 #include "planning/sampling_strategy.hpp"
 #include "plan_fixtures.hpp"
 
@@ -23,7 +24,6 @@ using namespace furrow::test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kPoints = 30;
 constexpr int kSeeds = 40;
 

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -28,7 +29,7 @@ Cutter::Cutter(std::string name, double radius, double corner_radius, const std:
     throw InputError(where + ": the corner radius " + text(corner_radius) +
                      " exceeds the cutter radius " + text(radius));
   flat_radius_ = radius - corner_radius;
-  corner_ = ProfileArc{flat_radius_, corner_radius, corner_radius, 0.0, 0.5 * M_PI};
+  corner_ = ProfileArc{flat_radius_, corner_radius, corner_radius, 0.0, 0.5 * kPi};
 }
 
 Cutter::Cutter(const ToolSpec& spec)

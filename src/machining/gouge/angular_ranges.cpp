@@ -1,4 +1,5 @@
 #include "machining/gouge/angular_ranges.hpp"
+#include "base/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,7 @@
 namespace furrow {
 
 namespace {
-constexpr double kTwoPi = 2 * M_PI;
+constexpr double kTwoPi = 2 * kPi;
 }
 
 double wrap_angle(double angle) {

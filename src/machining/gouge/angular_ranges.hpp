@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "base/numbers.hpp"
+
 namespace furrow {
 
 // No default member initialisers: AngularRanges keeps uninitialised spare
@@ -23,8 +25,8 @@ struct AngularRange {
   double end() const { return start + width; }  // may exceed 2 pi
   bool contains(double angle) const;            // any angle; wraps
   // The same in degrees, as reports give them.
-  double start_deg() const { return start * (180 / M_PI); }
-  double end_deg() const { return end() * (180 / M_PI); }
+  double start_deg() const { return start * (180 / kPi); }
+  double end_deg() const { return end() * (180 / kPi); }
 };
 
 // Angle reduced to [0, 2 pi).

@@ -1,4 +1,5 @@
 #include "machining/gouge/compound_border.hpp"
+#include "base/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +114,7 @@ ContactSurfaces contact_surfaces(const BorderLocator& locator, std::size_t face,
   c.neighbour_inward = theirs.inward;
   c.neighbour_inward_count = theirs.count;
   c.crease_angle = std::acos(std::clamp(c.geometry.normal.dot(gn.normal), -1.0, 1.0));
-  c.crease = c.crease_angle > options.crease_angle_deg * M_PI / 180;
+  c.crease = c.crease_angle > options.crease_angle_deg * kPi / 180;
   if (c.crease && c.neighbour_inward_count > 0)
     c.concave_crease = c.neighbour_inward[0].dot(c.geometry.normal) > 0;
   return c;

@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "machining/cutter/face_seeds.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -43,7 +44,7 @@ std::vector<ContactSite> sites_from_points(const Part& part,
                                            const std::string& source,
                                            const PointSiteOptions& options) {
   const ClosestPointFinder projector(part, options.projection);
-  const double cos_limit = std::cos(options.max_normal_deviation_deg * M_PI / 180);
+  const double cos_limit = std::cos(options.max_normal_deviation_deg * kPi / 180);
   std::vector<ContactSite> sites;
   sites.reserve(points.size());
   for (const ContactPointRecord& p : points) {
@@ -71,7 +72,7 @@ std::vector<ContactSite> sites_from_points(const Part& part,
                     ": the given normal differs from the part's %s by %.3g degrees (at most %.3g; "
                     "wrong side or reversed face?)",
                     vec_text(g.normal).c_str(),
-                    std::acos(std::max(-1.0, std::min(1.0, n.dot(g.normal)))) * 180 / M_PI,
+                    std::acos(std::max(-1.0, std::min(1.0, n.dot(g.normal)))) * 180 / kPi,
                     options.max_normal_deviation_deg);
       throw InputError(where + buf);
     }

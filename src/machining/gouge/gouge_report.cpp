@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "machining/gouge/site_json.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -13,7 +14,7 @@ namespace {
 namespace sj = site_json;
 using sj::json;
 
-constexpr double kRadToDeg = 180 / M_PI;
+constexpr double kRadToDeg = 180 / kPi;
 
 json cutter_json(const LocalGouge& g) {
   const CutterCurvature& c = g.cutter;

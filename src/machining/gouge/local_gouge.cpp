@@ -1,4 +1,5 @@
 #include "machining/gouge/local_gouge.hpp"
+#include "base/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,7 @@ namespace furrow {
 
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
+constexpr double kTwoPi = 2 * kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A piece of the cutting surface: its curvatures over a window of angles.
@@ -24,8 +25,8 @@ int cutter_pieces(const CutterCurvature& c, std::array<CutterPiece, 2>& pieces) 
     return 1;
   }
   // dir_max = -e at a horizontal contact, so t . e > 0 is 90..270 degrees.
-  pieces[0] = {{0.5 * M_PI, M_PI}, 0.0, 0.0, false};
-  pieces[1] = {{1.5 * M_PI, M_PI}, c.k_max, c.k_min, c.sharp};
+  pieces[0] = {{0.5 * kPi, kPi}, 0.0, 0.0, false};
+  pieces[1] = {{1.5 * kPi, kPi}, c.k_max, c.k_min, c.sharp};
   return 2;
 }
 
@@ -68,7 +69,7 @@ Excess excess(const PartInFrame& p, const CutterPiece& piece) {
 // Largest f over the arc [lo, lo + w]; `where` receives the angle.
 double max_over(const Excess& f, const AngularRange& arc, double& where) {
   // The maxima of cos(2a - psi) are at a = psi/2 + k pi.
-  const double t = std::fmod(wrap_angle(0.5 * f.psi - arc.start), M_PI);
+  const double t = std::fmod(wrap_angle(0.5 * f.psi - arc.start), kPi);
   if (t <= arc.width) {
     where = arc.start + t;
     return f.A + f.D;
@@ -92,7 +93,7 @@ void gouge_arcs(const Excess& f, double tol, AngularRanges& out) {
   }
   const double beta = std::acos(c);  // half-width in 2a
   out.add(0.5 * (f.psi - beta), beta);
-  out.add(0.5 * (f.psi - beta) + M_PI, beta);
+  out.add(0.5 * (f.psi - beta) + kPi, beta);
 }
 
 // Windows of a side: the intersection of its half-planes, as arcs.
@@ -102,7 +103,7 @@ AngularRanges side_windows(const SurfaceSide& side, const CutterCurvature& c) {
   for (int i = 0; i < side.inward_count; ++i) {
     const Eigen::Vector3d& in = side.inward[i];
     const double alpha = std::atan2(in.dot(c.dir_min), in.dot(c.dir_max));
-    const AngularRange half{wrap_angle(alpha - 0.5 * M_PI), M_PI};
+    const AngularRange half{wrap_angle(alpha - 0.5 * kPi), kPi};
     AngularRanges clipped;
     for (const AngularRange& w : windows) clipped.add_clipped(w, half);
     windows = clipped;
@@ -172,7 +173,7 @@ LocalGouge check_local_gouge(const Cutter& cutter, const Eigen::Vector3d& contac
       for (const AngularRange& w : windows) compared.add_clipped(w, piece.window);
       if (piece.sharp) {
         // Cutting circle: only the two circumferential directions +-dir_min.
-        for (const double a : {0.5 * M_PI, 1.5 * M_PI}) {
+        for (const double a : {0.5 * kPi, 1.5 * kPi}) {
           if (!compared.contains(a)) continue;
           const double f = part.at(a) - piece.k_min;
           if (f > best) best = f, best_angle = a;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/scalar_search.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -26,14 +27,14 @@ std::optional<double> ball_scallop_height(double r, double k, double w) {
   if (k < 0) {  // convex
     const double a = rho + r;
     const double s = a * std::sin(phi);
-    if (phi >= M_PI / 2 || s >= r) return std::nullopt;
+    if (phi >= kPi / 2 || s >= r) return std::nullopt;
     const double d = a * std::cos(phi) - std::sqrt(r * r - s * s);
     return d - rho;
   }
   if (rho <= r) return std::nullopt;  // the ball does not fit the concave section
   const double a = rho - r;
   const double s = a * std::sin(phi);
-  if (phi >= M_PI || s >= r) return std::nullopt;
+  if (phi >= kPi || s >= r) return std::nullopt;
   const double d = a * std::cos(phi) + std::sqrt(r * r - s * s);
   return rho - d;
 }
@@ -47,7 +48,7 @@ SideStepResult ball_side_step_for_scallop(double r, double k, double height,
   // the curved cases; start from a bracket that surely contains the answer.
   double lo = 0.0;
   double hi = 2.0 * r;
-  if (std::fabs(k) >= kFlatCurvature) hi = std::max(hi, 2.0 * M_PI / std::fabs(k));
+  if (std::fabs(k) >= kFlatCurvature) hi = std::max(hi, 2.0 * kPi / std::fabs(k));
   auto below = [&](double w) {
     const auto h = ball_scallop_height(r, k, w);
     return h && *h <= height;

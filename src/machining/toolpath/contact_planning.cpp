@@ -13,6 +13,7 @@
 #include "base/text_fields.hpp"
 #include "machining/prediction/error_map.hpp"
 #include "machining/prediction/zmap.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -194,7 +195,7 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
     Family f;
     f.part = &part;
     f.projector = &projector;
-    const double a = direction.angle_deg * M_PI / 180;
+    const double a = direction.angle_deg * kPi / 180;
     f.d = {std::cos(a), std::sin(a)};
     f.m = {-std::sin(a), std::cos(a)};
     const Eigen::AlignedBox2d box = part_xy_extent(part);

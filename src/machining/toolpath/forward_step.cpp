@@ -1,4 +1,5 @@
 #include "machining/toolpath/forward_step.hpp"
+#include "base/numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +60,7 @@ double circular_arc_step(const Part& part, const Cutter& cutter, const SurfacePo
   const double a = k < 0 ? rho + r : rho - r;  // radius of the tool-reference path
   if (!(a > 0)) return kInf;
   const double c = 1 - tolerance / a;
-  if (c <= -1) return M_PI * rho;
+  if (c <= -1) return kPi * rho;
   return 2 * rho * std::acos(c);
 }
 
