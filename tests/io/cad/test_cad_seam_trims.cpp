@@ -9,7 +9,10 @@
 #include <doctest/doctest.h>
 #include <unistd.h>
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
@@ -132,6 +135,45 @@ TEST_CASE("CAD import: trims touching or crossing the seam keep the enclosed reg
       CHECK(area == doctest::Approx(cases[k].area).epsilon(1e-6));
       CHECK(area == doctest::Approx(trimmed_area(from_step)).epsilon(1e-6));
     }
+  }
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
+}
+
+TEST_CASE("CAD import: a cap around a sphere's pole from IGES with only 3-D curves runs along the seam") {
+  // The octant of a sphere whose axis points into it: a three-sided cap
+  // around the pole. IGES written without parameter-space curves makes
+  // OpenCASCADE project the edges and close the wire along the seam; the
+  // projected seam edges stray ~1e-8 rad past the period (within their
+  // 1e-7 mm tolerance), which must not make the face span "more than one
+  // period" (cad_import.cpp period_slack).
+  const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0)), 4.75).Shape();
+  const TopoDS_Shape octant = BRepAlgoAPI_Common(ball, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(50, 50, 50)).Shape()).Shape();
+  TopoDS_Face cap;
+  for (const TopoDS_Face& f : faces_of(octant))
+    if (BRepAdaptor_Surface(f).GetType() == GeomAbs_Sphere) cap = f;
+  REQUIRE(!cap.IsNull());
+  const double area = occt_area(cap);
+  CHECK(area == doctest::Approx(M_PI * 4.75 * 4.75 / 2).epsilon(1e-9));  // an eighth of the sphere
+  const std::string dir = scratch_dir("cad-seam-cap-" + std::to_string(getpid()));
+  // Written in BRep mode first, as a part is exported in several flavours:
+  // the writer leaves the face's edges with the curves that make the
+  // faces-mode file's projected seam stray past the period.
+  write_iges_mode(cap, dir + "/cap_brep.igs", 1);
+  silence_occt();
+  Interface_Static::SetIVal("write.surfacecurve.mode", 0);  // 3-D curves only
+  IGESControl_Writer writer("MM", 0);
+  writer.AddShape(cap);
+  writer.ComputeModel();
+  const bool written = writer.Write((dir + "/cap.igs").c_str());
+  Interface_Static::SetIVal("write.surfacecurve.mode", 1);
+  REQUIRE(written);
+  for (const char* file : {"cap.igs", "cap_brep.igs"}) {
+    CAPTURE(file);
+    const CadImportResult result = import_cad(dir + "/" + file);
+    REQUIRE(result.part.faces.size() == 1);
+    // Projected curves are OpenCASCADE's approximation (~1e-6 of the area).
+    CHECK(trimmed_area(result.part.faces[0]) == doctest::Approx(area).epsilon(1e-5));
   }
   std::error_code ignored;
   std::filesystem::remove_all(dir, ignored);
