@@ -467,6 +467,7 @@ struct EdgeUse {
   Handle(Geom2d_Curve) pcurve;
   double from = 0, to = 0;
   bool degenerate = false;
+  double tolerance = 0;  // the edge's 3-D tolerance [mm]
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // whole periods added to unwrap a seam
   Eigen::Vector2d uv(double t) const {
     const gp_Pnt2d p = pcurve->Value(t);
@@ -527,7 +528,8 @@ std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods)
         throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
       const bool reversed = edge.Orientation() == TopAbs_REVERSED;
       chain.push_back({pcurve, reversed ? last : first, reversed ? first : last,
-                       BRep_Tool::Degenerated(edge) == Standard_True, Eigen::Vector2d::Zero()});
+                       BRep_Tool::Degenerated(edge) == Standard_True, BRep_Tool::Tolerance(edge),
+                       Eigen::Vector2d::Zero()});
     }
     if (chain.empty()) continue;
     if (static_cast<int>(chain.size()) < edges_in_wire)
@@ -588,11 +590,10 @@ void add_seam_copies(std::vector<WireUse>& wires, const ParameterDomain& b, cons
 }
 
 // A periodic range from pcurve boxes is off by rounding (e.g. [-4e-13, 2 pi]);
-// OpenCASCADE's conversions of a full turn need it exact: ends within 1e-9 of
-// the period of a multiple of the period are moved onto it, and a range of
-// a period (or a hair more) is made exactly one period.
-void snap_to_period(double& a, double& b, double period, const char* direction) {
-  const double eps = 1e-9 * period;
+// OpenCASCADE's conversions of a full turn need it exact: ends within `eps`
+// of a multiple of the period are moved onto it, and a range of a period (or
+// up to `eps` more) is made exactly one period.
+void snap_to_period(double& a, double& b, double period, double eps, const char* direction) {
   auto snap = [&](double& x) {
     const double multiple = std::round(x / period) * period;
     if (std::abs(x - multiple) <= eps) x = multiple;
@@ -602,6 +603,34 @@ void snap_to_period(double& a, double& b, double period, const char* direction) 
   if (b - a > period + eps)
     throw FaceFailure(std::string("its boundary spans more than one period in ") + direction);
   if (b - a > period - eps) b = a + period;
+}
+
+// How far a wire's pcurves may stray in a periodic parameter without
+// meaning anything: rounding (1e-9 of the period), or the edges' own 3-D
+// tolerance in parameter units. Why the latter: a wire that runs along the
+// seam (a cap around a sphere's pole, an IGES file that gives only 3-D
+// curves, whose pcurves OpenCASCADE projects) has pcurves up to the edge
+// tolerance off the seam line, e.g. 1.3e-8 rad past 2 pi for 1e-7 mm on a
+// 4.75 mm sphere; with rounding alone such a face was refused as spanning
+// more than one period. The 3-D tolerance is turned into a parameter step
+// by the largest speed of the surface along that parameter over the face,
+// so the step is never larger than the tolerance on the surface.
+double period_slack(const std::vector<WireUse>& wires, const Handle(Geom_Surface)& surface, double u0, double u1,
+                    double v0, double v1, bool along_u, double period) {
+  double tolerance = 0;
+  for (const WireUse& w : wires)
+    for (const EdgeUse& e : w.edges) tolerance = std::max(tolerance, e.tolerance);
+  double speed = 0;
+  constexpr int kSamples = 7;
+  for (int i = 0; i < kSamples; ++i)
+    for (int j = 0; j < kSamples; ++j) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface->D1(u0 + (u1 - u0) * i / (kSamples - 1), v0 + (v1 - v0) * j / (kSamples - 1), p, du, dv);
+      speed = std::max(speed, (along_u ? du : dv).Magnitude());
+    }
+  const double rounding = 1e-9 * period;
+  return speed > 0 ? std::max(rounding, std::min(tolerance / speed, 1e-6 * period)) : rounding;
 }
 
 // Parameter rectangle of the face: the exact box of its outer wire's
@@ -623,8 +652,10 @@ ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>&
   surface->Bounds(su0, su1, sv0, sv1);
   if (!periods.u) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
   if (!periods.v) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-  if (periods.u) snap_to_period(u0, u1, periods.du, "u");
-  if (periods.v) snap_to_period(v0, v1, periods.dv, "v");
+  if (periods.u)
+    snap_to_period(u0, u1, periods.du, period_slack(wires, surface, u0, u1, v0, v1, true, periods.du), "u");
+  if (periods.v)
+    snap_to_period(v0, v1, periods.dv, period_slack(wires, surface, u0, u1, v0, v1, false, periods.dv), "v");
   if (!(std::abs(u0) < 1e50 && std::abs(u1) < 1e50 && std::abs(v0) < 1e50 && std::abs(v1) < 1e50))
     throw FaceFailure("it is unbounded (an infinite surface without a boundary)");
   if (!(u1 > u0 && v1 > v0)) throw FaceFailure("its parameter rectangle is empty");

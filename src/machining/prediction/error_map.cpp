@@ -29,6 +29,15 @@ NormalError zmap_error(const ZMap& zmap, const Eigen::Vector3d& point, const Eig
   return normal_error(height, point, normal, options);
 }
 
+bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                        const NormalError& e) {
+  if (zmap.near_boundary(point.x(), point.y())) return true;
+  if (!e.reached) return e.end != 0;  // the normal left the cut area (0: nothing above the point)
+  if (e.wall) return true;
+  const Eigen::Vector3d meet = point + e.end * normal;
+  return zmap.near_boundary(meet.x(), meet.y());
+}
+
 NormalError zmap_error(const ZMap& zmap, const Face& face, const Eigen::Vector2d& uv,
                        const NormalErrorOptions& options) {
   Eigen::Vector3d p, n;
@@ -108,6 +117,7 @@ void summarise_cells(FaceErrorMap& m) {
       for (int j = cj * m.block_v; j < (cj + 1) * m.block_v; ++j)
         for (int i = ci * m.block_u; i < (ci + 1) * m.block_u; ++i) {
           const ErrorCellStatus s = m.status[m.index(i, j)];
+          c.boundary += m.boundary[m.index(i, j)];
           inside = inside || s != ErrorCellStatus::outside;
           machinable = machinable || s == ErrorCellStatus::not_reached;
           if (s != ErrorCellStatus::reached) continue;
@@ -156,6 +166,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
     }
     m.error.assign(static_cast<std::size_t>(samples), 0.0f);
     m.status.assign(static_cast<std::size_t>(samples), ErrorCellStatus::not_reached);
+    m.boundary.assign(static_cast<std::size_t>(samples), 0);
     total_rows += m.nv;
     map.faces.push_back(std::move(m));
   }
@@ -178,6 +189,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
           continue;
         }
         const NormalError e = zmap_error(zmap, p, n, options.normal);
+        m.boundary[k] = is_boundary_sample(zmap, p, n, e) ? 1 : 0;
         if (!e.reached) continue;
         m.status[k] = ErrorCellStatus::reached;
         m.error[k] = static_cast<float>(e.error);
@@ -201,6 +213,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
       for (int i = 0; i < m.nu; ++i) {
         const std::size_t k = m.index(i, j);
         ++map.samples;
+        map.boundary += m.boundary[k];
         switch (m.status[k]) {
           case ErrorCellStatus::reached: ++map.reached; break;
           case ErrorCellStatus::not_reached: ++map.not_reached; break;

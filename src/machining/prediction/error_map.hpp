@@ -18,6 +18,17 @@
 // normal, or n_z <= 0: not reachable from above). Errors are only defined
 // where reached; nothing else carries a number.
 //
+// Boundary samples: a sample is flagged `boundary` when its error rests on
+// where the edge of a swept region lies rather than on the envelope's
+// height: the sample, or the point where its normal meets the machined
+// surface, is within one z-map cell of the swept region's boundary
+// (ZMap::near_boundary), the normal meets a vertical wall there
+// (NormalError::wall: a pass's edge), or the normal leaves the cut area.
+// Everywhere else the error converges with the path (a path of G1 chords
+// gives the same map, to far below 0.1 um, whether the chords' sag is 1e-6
+// or 1e-7 mm: zmap.hpp height_at); at boundary samples it moves with the
+// grid and the chords by up to the edge's displacement times the slope.
+//
 // The overall extremes are refined from the best sample by a local search in
 // (u, v) on the exact z-map error. Parallel over sample rows; each sample
 // depends on its position only and every sum runs in raster order, so the
@@ -48,6 +59,7 @@ struct ErrorMapOptions {
 struct ErrorCell {
   ErrorCellStatus status = ErrorCellStatus::not_reached;  // reached when any sample is
   int reached = 0;          // samples of the cell that were reached
+  int boundary = 0;         // samples of the cell flagged boundary (reached or not)
   double mean = 0;          // [mm] over the reached samples
   double max_undercut = 0;  // largest error over them (may be negative)
   double max_overcut = 0;   // smallest error over them (may be positive)
@@ -61,6 +73,7 @@ struct FaceErrorMap {
   int nu = 0, nv = 0;            // samples: nu = cells_u * block_u
   std::vector<float> error;      // [j * nu + i] (i along u) [mm]; 0 unless reached
   std::vector<ErrorCellStatus> status;
+  std::vector<std::uint8_t> boundary;  // 1: a boundary sample (see above)
   std::vector<ErrorCell> cells;  // [cj * cells_u + ci]
 
   double u(double i) const { return domain.u0 + (i + 0.5) * domain.width_u() / nu; }
@@ -79,7 +92,13 @@ struct ErrorMap {
   ErrorExtremum max_undercut;  // the largest error over the part (refined)
   ErrorExtremum max_overcut;   // the smallest
   std::size_t samples = 0, reached = 0, not_reached = 0, not_machinable = 0;
+  std::size_t boundary = 0;  // samples flagged boundary
 };
+
+// Whether a sample whose normal search gave `e` is a boundary sample (see
+// above): `point` and `normal` as given to zmap_error.
+bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                        const NormalError& e);
 
 // Error at one surface point from the z-map.
 NormalError zmap_error(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,

@@ -35,7 +35,14 @@ struct NormalError {
   double error = 0;        // [mm], positive = material left, negative = overcut
   bool reached = false;    // the normal line meets the machined surface
   bool converged = false;  // within the tolerance (false also when beyond max_distance)
+  bool wall = false;       // met at a jump of H (a vertical wall), see above
+  double end = 0;          // [mm] along the normal where the search ended (the crossing,
+                           // or where the normal left the cut area)
 };
+
+// A sign change of g with |g| still above this at the root is a jump of H,
+// not a crossing of a continuous surface [mm].
+constexpr double kWallJump = 1e-6;
 
 template <class Height>
 NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const Eigen::Vector3d& n,
@@ -61,7 +68,9 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
       const ScalarSearchResult r =
           find_bracketed_root(g, ta, ga, tb, gb, {options.tolerance, options.max_iterations});
       result.error = r.x;
+      result.end = r.x;
       result.converged = r.converged;
+      result.wall = !(std::fabs(r.value) <= std::max(kWallJump, 1e3 * options.tolerance));
       return result;
     }
     if (!std::isfinite(gb) || step >= options.max_distance) {
@@ -69,6 +78,7 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
       // surface. Going down beyond the range: an overcut deeper than it.
       result.reached = dir < 0;
       result.error = dir < 0 ? -options.max_distance : 0.0;
+      result.end = tb;
       return result;
     }
     ta = tb, ga = gb;

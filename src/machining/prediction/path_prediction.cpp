@@ -161,6 +161,7 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
   s.samples_reached = r.map.reached;
   s.samples_not_reached = r.map.not_reached;
   s.samples_not_machinable = r.map.not_machinable;
+  s.samples_boundary = r.map.boundary;
   for (const FaceErrorMap& m : r.map.faces) {
     FaceGridRecord f;
     f.name = part.faces[m.face].name();
@@ -172,6 +173,7 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
       f.mean.push_back(c.mean);
       f.max_undercut.push_back(c.max_undercut);
       f.max_overcut.push_back(c.max_overcut);
+      f.boundary.push_back(c.boundary);
     }
     p.faces.push_back(f);
   }

@@ -89,6 +89,10 @@ struct FaceGridRecord {
   int cells_u = 0, cells_v = 0;
   std::vector<ErrorCellStatus> status;  // [cj * cells_u + ci]
   std::vector<double> mean, max_undercut, max_overcut;  // same index; 0 unless reached
+  // Same index: the cell's samples within one z-map cell of a swept region's
+  // boundary, whose errors depend on the grid and the path's chords
+  // (error_map.hpp "Boundary samples"); all 0 when the file has none.
+  std::vector<int> boundary;
 };
 
 struct ZMapRecord {
@@ -107,6 +111,7 @@ struct PredictionSummary {
   std::size_t path_points = 0, points_without_contact = 0, points_in_air = 0, points_below_surface = 0;
   double lowest_gap = 0;  // [mm]
   std::size_t samples_reached = 0, samples_not_reached = 0, samples_not_machinable = 0;
+  std::size_t samples_boundary = 0;  // error-map samples flagged boundary
 };
 
 struct PredictedError {

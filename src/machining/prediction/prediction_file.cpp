@@ -69,7 +69,8 @@ json summary_json(const PredictionSummary& s) {
   j["lowest_gap"] = length(s.lowest_gap, "lowest_gap");
   j["samples"] = {{"reached", s.samples_reached},
                   {"not_reached", s.samples_not_reached},
-                  {"not_machinable", s.samples_not_machinable}};
+                  {"not_machinable", s.samples_not_machinable},
+                  {"boundary", s.samples_boundary}};
   return j;
 }
 
@@ -93,6 +94,9 @@ json face_json(const FaceGridRecord& f) {
       a.push_back(f.status[k] == ErrorCellStatus::reached ? length((*values)[k], key) : json(nullptr));
     j[key] = a;
   }
+  json boundary = json::array();
+  for (std::size_t k = 0; k < f.status.size(); ++k) boundary.push_back(k < f.boundary.size() ? f.boundary[k] : 0);
+  j["boundary"] = boundary;
   return j;
 }
 

@@ -92,6 +92,18 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
       if (reached) (*values)[k] = jf::number(a[k], jf::child(wk, k));
     }
   }
+  // Optional (files written before boundary samples were flagged): 0 each.
+  f.boundary.assign(n, 0);
+  if (o.contains("boundary")) {
+    const std::string wb = jf::child(where, "boundary");
+    const json& b = jf::array(o.at("boundary"), wb);
+    if (b.size() != n)
+      throw InputError(wb + ": expected " + std::to_string(n) + " values, got " + std::to_string(b.size()));
+    for (std::size_t k = 0; k < n; ++k) {
+      f.boundary[k] = jf::integer(b[k], jf::child(wb, k));
+      if (f.boundary[k] < 0) throw InputError(jf::child(wb, k) + ": expected a count (>= 0)");
+    }
+  }
   for (std::size_t k = 0; k < n; ++k)
     if (f.status[k] == ErrorCellStatus::reached && !(f.max_overcut[k] <= f.mean[k] && f.mean[k] <= f.max_undercut[k]))
       throw InputError(jf::child(where, "mean") + "[" + std::to_string(k) +
@@ -154,6 +166,8 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
   sum.samples_reached = count(jf::member(samples, "reached", wsam), jf::child(wsam, "reached"));
   sum.samples_not_reached = count(jf::member(samples, "not_reached", wsam), jf::child(wsam, "not_reached"));
   sum.samples_not_machinable = count(jf::member(samples, "not_machinable", wsam), jf::child(wsam, "not_machinable"));
+  if (samples.contains("boundary"))  // optional: older files have none
+    sum.samples_boundary = count(samples.at("boundary"), jf::child(wsam, "boundary"));
 
   const std::string wst = jf::child(root, "steps");
   const json& steps = jf::array(jf::member(doc, "steps", root), wst);

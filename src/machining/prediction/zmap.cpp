@@ -132,20 +132,123 @@ std::size_t ZMap::cut_node_count() const {
   return static_cast<std::size_t>(std::count_if(owners_.begin(), owners_.end(), [](std::int32_t o) { return o >= 0; }));
 }
 
+// Why a walk along the pass: the move that owns a node is the lowest there,
+// but a move is lowest only over a strip about as long as itself. When moves
+// are shorter than a cell (arcs cut into fine G1 chords: 4 um at 1e-7 mm sag
+// on a 20 mm radius, against 0.1 mm nodes) the move lowest at (x, y) owns
+// none of the four nodes around it, and the owners' envelopes evaluated
+// there are higher by up to the path's slope times the gap (more on a flat
+// end mill, whose lowest position jumps along the move), or miss (x, y)
+// altogether: the error map then depended on how finely the path was cut,
+// not on the path. The swept envelope of a pass is the minimum over its
+// positions; starting from an owner, the walk follows the pass while the
+// lowest position at (x, y) lies at the end of the current move (the lowest
+// position is interior to a move only at a local minimum along the pass),
+// and toward (x, y) while the move does not reach it. The result is the
+// pass's local minimum nearest the owner's position, whatever the chord
+// length (docs/architecture.md "Machining error between contact points").
+double ZMap::lowest_along_pass(std::int32_t start, double x, double y, std::int32_t& lo, std::int32_t& hi) const {
+  const auto count = static_cast<std::int32_t>(moves_.size());
+  // Whether move b continues move a along the same pass.
+  auto joined = [&](std::int32_t a, std::int32_t b) {
+    return moves_[a].pass == moves_[b].pass && moves_[a].to == moves_[b].from;
+  };
+  auto neighbour = [&](std::int32_t m, int dir) -> std::int32_t {
+    const std::int32_t n = m + dir;
+    if (n < 0 || n >= count) return -1;
+    return (dir > 0 ? joined(m, n) : joined(n, m)) ? n : -1;
+  };
+  // Horizontal distance from (x, y) to the move's projected segment: how
+  // far the move is from reaching the point.
+  auto distance = [&](std::int32_t m) {
+    const Eigen::Vector2d a = moves_[m].from.head<2>(), d = moves_[m].to.head<2>() - a, p(x, y);
+    const double len2 = d.squaredNorm();
+    const double s = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (a + s * d - p).norm();
+  };
+  struct Probe {
+    std::int32_t move;
+    EnvelopePoint point;
+    double distance;  // only when not reached
+  };
+  auto probe = [&](std::int32_t m) {
+    Probe p{m, envelopes_[m].evaluate(x, y), 0};
+    if (!std::isfinite(p.point.z)) p.distance = distance(m);
+    return p;
+  };
+  auto better = [](const Probe& a, const Probe& b) {
+    const bool ra = std::isfinite(a.point.z), rb = std::isfinite(b.point.z);
+    if (ra != rb) return ra;
+    return ra ? a.point.z < b.point.z : a.distance < b.distance;
+  };
+  // Directions in which the pass may go lower: toward the end of the move
+  // where the lowest position sits, both ways while (x, y) is not reached.
+  auto directions = [&](const Probe& p, int& first, int& second) {
+    first = second = 0;
+    if (!std::isfinite(p.point.z)) {
+      first = -1, second = 1;
+      return;
+    }
+    const double travel = (moves_[p.move].to - moves_[p.move].from).head<2>().norm();
+    const double end = 4 * options_.envelope.along_tolerance;
+    if (p.point.s * travel <= end) first = -1;
+    if ((1 - p.point.s) * travel <= end) second = 1;
+  };
+  lo = hi = start;
+  const Probe origin = probe(start);
+  Probe best = origin;
+  int first = 0, second = 0;
+  directions(origin, first, second);
+  for (int dir : {first, second}) {
+    if (dir == 0) continue;
+    Probe current = origin;
+    for (std::int32_t n = neighbour(current.move, dir); n >= 0; n = neighbour(current.move, dir)) {
+      const Probe next = probe(n);
+      if (!better(next, current)) break;
+      lo = std::min(lo, n), hi = std::max(hi, n);
+      current = next;
+      int back = 0, ahead = 0;
+      directions(current, back, ahead);
+      if ((dir < 0 ? back : ahead) == 0) break;  // the lowest position is inside this move
+    }
+    if (better(current, best)) best = current;
+  }
+  return best.point.z;
+}
+
 double ZMap::height_at(double x, double y) const {
   const int i = std::clamp(static_cast<int>(std::floor((x - x0_) / cell_)), 0, nx_ - 2);
   const int j = std::clamp(static_cast<int>(std::floor((y - y0_) / cell_)), 0, ny_ - 2);
   const std::int32_t candidates[4] = {owners_[index(i, j)], owners_[index(i + 1, j)], owners_[index(i, j + 1)],
                                       owners_[index(i + 1, j + 1)]};
   double best = kInf;
+  // Moves a walk went down through: a walk from one of them would follow
+  // the same descent to the same end, so it is not repeated.
+  std::int32_t walked_lo[4], walked_hi[4];
+  int walks = 0;
   for (int k = 0; k < 4; ++k) {
     const std::int32_t m = candidates[k];
     if (m < 0) continue;
     bool seen = false;
-    for (int l = 0; l < k; ++l) seen = seen || candidates[l] == m;
-    if (!seen) best = std::min(best, envelopes_[m].height_at(x, y));
+    for (int l = 0; l < walks; ++l) seen = seen || (m >= walked_lo[l] && m <= walked_hi[l]);
+    if (seen) continue;
+    best = std::min(best, lowest_along_pass(m, x, y, walked_lo[walks], walked_hi[walks]));
+    ++walks;
   }
   return best;
+}
+
+bool ZMap::near_boundary(double x, double y) const {
+  // Nodes within one cell of (x, y) in x and in y.
+  const int i0 = std::max(0, static_cast<int>(std::ceil((x - cell_ - x0_) / cell_)));
+  const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((x + cell_ - x0_) / cell_)));
+  const int j0 = std::max(0, static_cast<int>(std::ceil((y - cell_ - y0_) / cell_)));
+  const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((y + cell_ - y0_) / cell_)));
+  if (i1 < i0 || j1 < j0) return true;  // off the grid: the z-map knows nothing there
+  bool cut = false, uncut = false;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) (owners_[index(i, j)] < 0 ? uncut : cut) = true;
+  return cut && uncut;
 }
 
 double ZMap::interpolated_height_at(double x, double y) const {

@@ -11,11 +11,16 @@
 //
 // Why the move index: a grid stores heights only at nodes, and interpolating
 // between nodes rounds every cusp (a scallop's ridge, a gouge's rim) by up to
-// its slope times half a cell. height_at() instead evaluates the exact swept
-// envelopes of the moves that own the four nodes around the point and takes
-// their minimum; the result is exact wherever the move that is lowest at the
-// point is also lowest at one of those four nodes (true except for features
-// narrower than a cell, e.g. a move whose whole shadow falls between nodes).
+// its slope times half a cell. height_at() instead starts from the moves that
+// own the four nodes around the point and follows each one's pass (the moves
+// joined end to end) to the lowest position above the point; the result is
+// the exact swept envelope wherever the lowest pass at the point is also
+// lowest at one of those four nodes, however short the moves are (true
+// except for features narrower than a cell, e.g. a pass whose whole shadow
+// falls between nodes). Within one cell of the swept region's boundary the
+// four nodes need not all be cut and the point may be reached by a move none
+// of them saw: near_boundary() says where that can happen, so that callers
+// can report it instead of trusting the number.
 // interpolated_height_at() is the plain bilinear z-map for comparison.
 //
 // Parallel with OpenMP over bands of rows; within a band the moves are
@@ -84,15 +89,24 @@ class ZMap {
   std::size_t cut_node_count() const;
   const std::vector<ZMapMove>& moves() const { return moves_; }
 
-  // Machined height at any (x, y): the lowest exact envelope of the moves
-  // owning the four surrounding nodes; +infinity when none of them reaches.
+  // Machined height at any (x, y): the lowest exact envelope of the passes
+  // through the moves owning the four surrounding nodes; +infinity when none
+  // of them reaches.
   double height_at(double x, double y) const;
+  // True when the nodes within one cell of (x, y) (in x and in y) are some
+  // cut and some never cut, or (x, y) lies off the grid: (x, y) is within a
+  // cell of the swept region's boundary as the grid resolves it, where
+  // height_at() depends on the resolution.
+  bool near_boundary(double x, double y) const;
   // Bilinear interpolation of the node heights; +infinity when a node is
   // uncut or (x, y) is off the grid.
   double interpolated_height_at(double x, double y) const;
 
  private:
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx_ + i; }
+  // Lowest envelope at (x, y) along the pass from move `start`; [lo, hi]:
+  // the moves the walk went down through.
+  double lowest_along_pass(std::int32_t start, double x, double y, std::int32_t& lo, std::int32_t& hi) const;
 
   ZMapOptions options_;
   double x0_ = 0, y0_ = 0, cell_ = 0;
