@@ -288,12 +288,14 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       if (column.count("u") != column.count("v")) fail_line(name, number, "give both u and v columns or neither");
       if (column.count("face") && !column.count("u"))
         fail_line(name, number, "a face column needs u and v columns");
-      for (const auto& [key, index] : column) {
+      // Not a structured binding: C++17 does not let a lambda capture one
+      // (GCC accepts it, clang rejects it; the sanitizer build uses clang).
+      for (const auto& entry : column) {
+        const std::string& key = entry.first;
         static const char* const kKnown[] = {"x", "y", "z", "nx", "ny", "nz", "pass", "u", "v", "face"};
         if (std::find_if(std::begin(kKnown), std::end(kKnown), [&](const char* k) { return key == k; }) ==
             std::end(kKnown))
           fail_line(name, number, "unknown column \"" + key + "\" (known: x y z nx ny nz pass u v face)");
-        (void)index;
       }
       path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
       if (column.count("pass")) pass_column = column["pass"];
