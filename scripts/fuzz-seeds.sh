@@ -47,16 +47,15 @@ add dmis_program "$src"/tests/io/cmm/golden/*.dmi
 add ippdme_program "$src"/tests/io/cmm/golden/*.prg
 add measurements_dmis "$src"/tests/io/cmm/golden/*.dmi
 # A libFuzzer dictionary for the JSON targets: JSON's own tokens and every
-# short lower-case string literal of the JSON readers (the member names and
-# enumerated values), written as JSON strings. Made from the sources at build
-# time, so it follows the formats as they change.
+# short lower-case string literal of the sources that use the JSON helpers
+# (base/json_fields.hpp: the member names and enumerated values of every
+# Furrow JSON), written as JSON strings. Made from the sources at build time,
+# so it follows the formats as they change.
+mapfile -t json_sources < <(grep -rl --include='*.cpp' 'base/json_fields.hpp' "$src/src" | sort)
 {
   printf '%s\n' '"{"' '"}"' '"["' '"]"' '":"' '","' '"true"' '"false"' '"null"' '"-0"' '"1e308"' \
     '"-1e-320"' '"\\u0000"'
-  grep -ohE '"[a-z][a-z0-9_]{1,30}"' "$src"/src/io/*.cpp "$src"/src/partition/regions_file.cpp \
-    "$src"/src/machining/prediction/prediction_file.cpp "$src"/src/inspection/comparison_file.cpp \
-    "$src"/src/inspection/verification_json.cpp "$src"/src/job/job.cpp |
-    sort -u | sed 's/^"\(.*\)"$/"\\"\1\\""/'
+  grep -ohE '"[a-z][a-z0-9_]{1,30}"' "${json_sources[@]}" | sort -u | sed 's/^"\(.*\)"$/"\\"\1\\""/'
 } > "$out/json.dict"
 
 echo "fuzz-seeds: $(find "$out" -mindepth 2 -type f | wc -l) seed files in $(find "$out" -mindepth 1 -type d | wc -l) corpora under $out"
