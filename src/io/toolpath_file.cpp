@@ -246,7 +246,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
   std::map<std::string, int> column;  // name -> index, from the header
   int columns = -1;
   int pass_column = -1;
-  long last_pass = 0;
+  double last_pass = 0;  // a whole number; kept as read (see the pass column below)
   ToolpathPass current;
   auto close_pass = [&](int line) {
     if (current.points.size() == 1)
@@ -325,7 +325,10 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       double pv = 0;
       if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv))
         fail_line(name, number, "pass \"" + fields[pass_column] + "\" is not a whole number");
-      const long pass = static_cast<long>(pv);
+      // Compared as read: a whole number such as 1e300 is finite, and
+      // converting it to an integer type was undefined behaviour (UBSan in
+      // fuzz_toolpath_csv, docs/testing.md). Only the order matters.
+      const double pass = pv;
       if (!current.points.empty() && pass != last_pass) {
         if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");
         close_pass(number);
