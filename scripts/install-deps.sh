@@ -10,6 +10,9 @@ packages=(
   # tests only: the QA report is rendered in a real browser, and report.json
   # is checked against its schema by an independent validator
   chromium python3-jsonschema
+  # CI only: the sanitizer and fuzz build (docs/testing.md) - clang, its
+  # sanitizer runtimes, libFuzzer and clang's OpenMP runtime
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev
 )
 
 missing=()

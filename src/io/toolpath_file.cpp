@@ -257,7 +257,7 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
   std::map<std::string, int> column;  // name -> index, from the header
   int columns = -1;
   int pass_column = -1;
-  long last_pass = 0;
+  double last_pass = 0;  // a whole number; kept as read (see the pass column below)
   ToolpathPass current;
   auto close_pass = [&](int line) {
     if (current.points.size() == 1)
@@ -302,12 +302,14 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
       if (column.count("u") != column.count("v")) fail_line(name, number, "give both u and v columns or neither");
       if (column.count("face") && !column.count("u"))
         fail_line(name, number, "a face column needs u and v columns");
-      for (const auto& [key, index] : column) {
+      // Not a structured binding: C++17 does not let a lambda capture one
+      // (GCC accepts it, clang rejects it; the sanitizer build uses clang).
+      for (const auto& entry : column) {
+        const std::string& key = entry.first;
         static const char* const kKnown[] = {"x", "y", "z", "nx", "ny", "nz", "pass", "u", "v", "face"};
         if (std::find_if(std::begin(kKnown), std::end(kKnown), [&](const char* k) { return key == k; }) ==
             std::end(kKnown))
           fail_line(name, number, "unknown column " + quote_field(key) + " (known: x y z nx ny nz pass u v face)");
-        (void)index;
       }
       path.kind = normals == 3 ? ToolpathKind::contact_points : ToolpathKind::tool_tips;
       if (column.count("pass")) pass_column = column["pass"];
@@ -335,9 +337,12 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     };
     if (pass_column >= 0) {
       double pv = 0;
-      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv) || std::abs(pv) > 1e15)
+      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv))
         fail_line(name, number, "pass " + quote_field(fields[pass_column]) + " is not a whole number");
-      const long pass = static_cast<long>(pv);
+      // Compared as read: a whole number such as 1e300 is finite, and
+      // converting it to an integer type was undefined behaviour (UBSan in
+      // fuzz_toolpath_csv, docs/testing.md). Only the order matters.
+      const double pass = pv;
       if (!current.points.empty() && pass != last_pass) {
         if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");
         close_pass(number);

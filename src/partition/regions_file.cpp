@@ -4,6 +4,7 @@
 #include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
+#include "partition/face_grid.hpp"
 
 namespace furrow {
 
@@ -147,6 +148,12 @@ RegionFace parse_face(const json& j, const std::string& where) {
   const std::vector<double> g = jf::numbers(grid.value, grid.where);
   if (g.size() != 2 || g[0] < 1 || g[1] < 1 || g[0] != std::floor(g[0]) || g[1] != std::floor(g[1]))
     throw InputError(grid.where + ": expected two cell counts [nu, nv], each at least 1");
+  // The same bounds as a partition's grid (face_grid.hpp): a file can hold no
+  // finer grid, and a count beyond int would make the conversion below
+  // undefined behaviour (UBSan in fuzz_regions_json, docs/testing.md).
+  if (g[0] > kMaxCellsPerDirection || g[1] > kMaxCellsPerDirection || g[0] * g[1] > kMaxCellsPerFace)
+    throw InputError(grid.where + ": " + grid.value.dump() + " is finer than a partition makes (at most " + std::to_string(kMaxCellsPerDirection) +
+                     " per direction and " + std::to_string(kMaxCellsPerFace) + " cells per face)");
   f.nu = static_cast<int>(g[0]);
   f.nv = static_cast<int>(g[1]);
   const Field dom = get(j, "domain", where);

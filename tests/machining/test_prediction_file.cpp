@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "base/error.hpp"
 #include "io/part_file.hpp"
 #include "machining/toolpath/contact_planning.hpp"
@@ -164,6 +166,42 @@ TEST_CASE("prediction.json reader: errors name the field") {
   CHECK(reader_error(t).find("prediction.json: tolerance") == 0);
   CHECK(reader_error("{}").find("prediction.json: format") == 0);
   CHECK(reader_error("").find("prediction.json") == 0);
+}
+
+TEST_CASE("fuzz: z-map node counts and scallop passes are whole numbers, never converted from any double") {
+  // fuzz_prediction_json under UBSan: "nodes": [1e300, 41] and "passes":
+  // [1e300, 1] were read as doubles and converted to int, which is undefined
+  // behaviour; 1.5 was silently truncated.
+  Prediction p = small_prediction();
+  ScallopRecord scallop;
+  scallop.pass_a = 0;
+  scallop.pass_b = 1;
+  scallop.height = 0.004;
+  scallop.at = {"f", {0.5, 0.5}, {1, 2, 3}};
+  p.scallops.push_back(scallop);
+  const std::string good = prediction_to_json_text(p);
+  const Prediction back = parse_prediction_json(good, "prediction.json");
+  CHECK(back.zmap.nx == 61);
+  REQUIRE(back.scallops.size() == 1);
+  CHECK(back.scallops[0].pass_b == 1);
+  const nlohmann::json doc = nlohmann::json::parse(good);
+  const struct {
+    const char* pointer;  // JSON pointer of the member to spoil
+    nlohmann::json value;
+    const char* expected;
+  } cases[] = {
+      {"/zmap/nodes", {1e300, 41}, "prediction.json: zmap.nodes[0]: expected an integer"},
+      {"/zmap/nodes", {61, -41}, "prediction.json: zmap.nodes[1]: must not be negative"},
+      {"/zmap/nodes", {61}, "prediction.json: zmap.nodes: expected two whole numbers"},
+      {"/scallops/0/passes", {1e300, 1}, "prediction.json: scallops[0].passes[0]: expected an integer"},
+      {"/scallops/0/passes", {0, 1.5}, "prediction.json: scallops[0].passes[1]: expected an integer"},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(c.value.dump());
+    nlohmann::json spoilt = doc;
+    spoilt[nlohmann::json::json_pointer(c.pointer)] = c.value;
+    CHECK(reader_error(spoilt.dump()).find(c.expected) == 0);
+  }
 }
 
 TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, errors queryable where they are") {

@@ -101,6 +101,22 @@ TEST_CASE("bad regions files: one error naming the file and the field") {
   CHECK(error_of("{\"format\": ").find("r.json: line 1") != std::string::npos);
 }
 
+TEST_CASE("fuzz: a grid no partition makes is an InputError, not a cell count beyond int") {
+  // fuzz_regions_json under UBSan: [1e300, 160] was converted to int
+  // (undefined behaviour). The limits are the partition's own (face_grid.hpp).
+  const json good = json::parse(regions_to_json_text(mould_map()));
+  for (const json& grid : {json::array({1e300, 160}), json::array({3e9, 160}), json::array({200, 8001}),
+                           json::array({8000, 8000})}) {
+    CAPTURE(grid.dump());
+    json j = good;
+    j["faces"][0]["grid"] = grid;
+    CHECK(error_of(j.dump()).find("r.json: faces[0].grid: " + grid.dump() + " is finer than a partition makes") == 0);
+  }
+  json j = good;
+  j["faces"][0]["grid"] = json::array({8000, 524});  // 4 192 000 cells: within the limits
+  CHECK(error_of(j.dump()).find("faces[0].grid") == std::string::npos);
+}
+
 TEST_CASE("a regions file is checked against the part it is used with") {
   const Part mould = read_part(source_path("examples/parts/mould.json"));
   const RegionMap& map = mould_map();

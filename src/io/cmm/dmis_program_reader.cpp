@@ -49,7 +49,14 @@ Eigen::Vector3d point3(const std::vector<std::string>& f, std::size_t first, con
 class Cursor {
  public:
   Cursor(std::vector<DmisStatement> statements, std::string name)
-      : st_(std::move(statements)), name_(std::move(name)) {}
+      : st_(std::move(statements)), name_(std::move(name)) {
+    // Statements are matched with std::regex, whose libstdc++ matcher
+    // recurses once per character: a statement of some 100 000 characters
+    // overflowed the stack under fuzz_dmis_program (docs/testing.md).
+    for (const DmisStatement& s : st_)
+      if (s.text.size() > kMaxDmisProgramStatement)
+        fail(name_, s.line, "statement longer than " + std::to_string(kMaxDmisProgramStatement) + " characters");
+  }
   bool done() const { return k_ >= st_.size(); }
   const DmisStatement& peek() const { return st_[k_]; }
   const DmisStatement& take(const char* what) {

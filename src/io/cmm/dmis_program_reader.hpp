@@ -14,12 +14,19 @@
 // functions (measurement_file.hpp), so the results file a CMM writes for the
 // program reads back with the same labels and nominals.
 //
+// Statements longer than kMaxDmisProgramStatement characters are refused
+// before any pattern is matched (see the .cpp).
+//
 // Errors: InputError "name:line: what".
 #include <string>
 
 #include "io/cmm/probe_program.hpp"
 
 namespace furrow {
+
+// No statement Furrow writes comes near it (a point feature is ~90
+// characters).
+constexpr std::size_t kMaxDmisProgramStatement = 1000;
 
 // Points come back with id, order (1, 2, ... in program order), xyz and ijk
 // (normalised); the probe with name and diameter; moves as written. Fields

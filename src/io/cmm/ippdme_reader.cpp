@@ -33,6 +33,12 @@ std::vector<Line> crlf_lines(const std::string& file_text, const std::string& na
     const std::size_t lf = text.find('\n', start);
     if (lf == std::string::npos) fail(name, number, "the last line is not ended by CR LF");
     if (lf == start || text[lf - 1] != '\r') fail(name, number, "line not ended by CR LF");
+    // The commands are matched with std::regex, whose libstdc++ matcher
+    // recurses once per character: a line of some 100 000 characters
+    // overflowed the stack under fuzz_ippdme_program (docs/testing.md).
+    // No line the writer emits is longer than a few hundred characters.
+    if (lf - 1 - start > kMaxIppdmeLine)
+      fail(name, number, "line longer than " + std::to_string(kMaxIppdmeLine) + " characters");
     lines.push_back({number, text.substr(start, lf - 1 - start)});
     start = lf + 1;
   }

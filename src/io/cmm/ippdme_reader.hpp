@@ -15,12 +15,19 @@
 // spec it requires exactly the command sequence the writer emits, with tags
 // counting up by one, so anything else is refused.
 //
+// Lines longer than kMaxIppdmeLine characters are refused before any
+// pattern is matched (see the .cpp).
+//
 // Errors: InputError "name:line: what" (line of the command).
 #include <string>
 
 #include "io/cmm/probe_program.hpp"
 
 namespace furrow {
+
+// No command line Furrow writes comes near it (a PtMeas line is ~110
+// characters); see parse_ippdme_program.
+constexpr std::size_t kMaxIppdmeLine = 1000;
 
 // Points come back in PtMeas order with order 1, 2, ..., an empty id, xyz
 // and ijk (normalised); moves as written; the tool name, approach, retract

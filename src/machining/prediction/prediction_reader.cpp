@@ -1,5 +1,7 @@
 // The prediction.json reader (the writer is prediction_file.cpp).
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
@@ -17,6 +19,15 @@ std::size_t count(const json& v, const std::string& where) {
   const int n = jf::integer(v, where);
   if (n < 0) throw InputError(where + ": must not be negative, got " + std::to_string(n));
   return static_cast<std::size_t>(n);
+}
+
+// [a, b], two non-negative whole numbers (z-map node counts, pass indices).
+// Not read as a vector2 and converted: a finite 1e300 made that conversion
+// undefined behaviour (UBSan in fuzz_prediction_json, docs/testing.md).
+std::pair<int, int> count_pair(const json& v, const std::string& where) {
+  const json& a = jf::array(v, where);
+  if (a.size() != 2) throw InputError(where + ": expected two whole numbers, got " + std::to_string(a.size()) + " values");
+  return {static_cast<int>(count(a[0], jf::child(where, 0))), static_cast<int>(count(a[1], jf::child(where, 1)))};
 }
 
 SurfaceLocation read_location(const json& o, const std::string& where) {
@@ -136,9 +147,7 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
   const json& z = jf::object(jf::member(doc, "zmap", root), wz);
   p.zmap.resolution = jf::positive_number(jf::member(z, "resolution", wz), jf::child(wz, "resolution"));
   p.zmap.origin = jf::vector2(jf::member(z, "origin", wz), jf::child(wz, "origin"));
-  const Eigen::Vector2d nodes = jf::vector2(jf::member(z, "nodes", wz), jf::child(wz, "nodes"));
-  p.zmap.nx = static_cast<int>(nodes.x());
-  p.zmap.ny = static_cast<int>(nodes.y());
+  std::tie(p.zmap.nx, p.zmap.ny) = count_pair(jf::member(z, "nodes", wz), jf::child(wz, "nodes"));
   p.zmap.moves = count(jf::member(z, "moves", wz), jf::child(wz, "moves"));
   p.zmap.cut_nodes = count(jf::member(z, "cut_nodes", wz), jf::child(wz, "cut_nodes"));
 
@@ -192,9 +201,7 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
     const std::string w = jf::child(wsc, k);
     ScallopRecord r;
     r.at = read_location(scallops[k], w);
-    const Eigen::Vector2d passes = jf::vector2(jf::member(scallops[k], "passes", w), jf::child(w, "passes"));
-    r.pass_a = static_cast<int>(passes.x());
-    r.pass_b = static_cast<int>(passes.y());
+    std::tie(r.pass_a, r.pass_b) = count_pair(jf::member(scallops[k], "passes", w), jf::child(w, "passes"));
     r.height = jf::number(jf::member(scallops[k], "height", w), jf::child(w, "height"));
     p.scallops.push_back(r);
   }

@@ -5,6 +5,7 @@
 // and the strict readers refusing what we do not write.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -196,4 +197,32 @@ TEST_CASE("programs refuse names, labels and numbers they cannot carry") {
   CHECK_THROWS_AS(dmis_program_text(p), InputError);
   CHECK(fixed_number(-1e-9, 6) == "0.000000");
   CHECK(fixed_number(-2.5, 3) == "-2.500");
+}
+
+TEST_CASE("fuzz: a very long line is refused before any pattern is matched, not a stack overflow") {
+  // fuzz_ippdme_program and fuzz_dmis_program under ASan: std::regex
+  // recursed once per character of a 300 000-character line or statement and
+  // overflowed the stack. Both readers now refuse lines no writer emits.
+  const std::string ipp = "00001 StartSession(" + std::string(300000, 'X') + ")\r\n\\\\\r\n";
+  try {
+    parse_ippdme_program(ipp, "x.prg");
+    FAIL("accepted a 300 000-character command");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "x.prg:1: line longer than 1000 characters");
+  }
+  const std::string dmis = "DMISMN/'" + std::string(300000, 'A') + "',05.2\r\n";
+  try {
+    parse_dmis_program(dmis, "x.dmi");
+    FAIL("accepted a 300 000-character statement");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "x.dmi:1: statement longer than 1000 characters");
+  }
+  // The written programs stay well inside the bound.
+  for (const std::string& text :
+       {ippdme_program_text(test::tiny_program()), dmis_program_text(test::tiny_program())}) {
+    std::size_t longest = 0, start = 0;
+    for (std::size_t lf; (lf = text.find('\n', start)) != std::string::npos; start = lf + 1)
+      longest = std::max(longest, lf - start);
+    CHECK(longest < 200);
+  }
 }

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The sanitizer + fuzz part of CI (docs/testing.md "Sanitizer build"): one
+# clang build with AddressSanitizer and UndefinedBehaviorSanitizer in
+# BUILD (default build-asan) that holds the library, the CLI, a subset of the
+# test executables and the fuzz targets; then the chosen tests under the
+# sanitizers, then every fuzz target for a short fixed budget from its seed
+# corpus. Any test failure, sanitizer report or fuzz crash fails the script.
+#
+# usage: ci-sanitize.sh [BUILD]      (FUZZ_SECONDS=20 per target by default)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build-asan}
+fuzz_seconds=${FUZZ_SECONDS:-20}
+root=$PWD
+
+# The tests built here: the executables of base, io and job (the readers
+# and the text and JSON helpers they share) and test_selection, which holds
+# every module's end-to-end CLI tests and the tests of the readers that live
+# outside io/ (regions, prediction, comparison). docs/testing.md says why.
+modules="base;io;job"
+selection="*/test_cli_*.cpp;partition/test_regions_file.cpp;machining/test_prediction_file.cpp"
+selection+=";inspection/test_comparison_file.cpp"
+# The tests run: all of base, io and job; of the selection, the ones that feed
+# bad input (names with "bad", "exit 2", "reader: errors") and the fuzz
+# regressions ("fuzz: ").
+tests_regex='^(base|io|job):|^selection:.*(bad|exits? 2|reader: errors|fuzz: )'
+
+launcher=()
+if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+# -O1: what the sanitizers' documentation recommends, faster to compile than
+# -O2 with nearly its speed. -gline-tables-only: file:line in every report at
+# a fraction of the compile and link time of full debug info. NDEBUG is not
+# defined, so assertions (Eigen's index checks among them) stay on.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+  -DFURROW_SANITIZE=ON -DFURROW_FUZZ=ON -DFURROW_BUILD_BENCH=OFF \
+  -DFURROW_TEST_MODULES="$modules" -DFURROW_TEST_SELECTION="$selection" "${launcher[@]}"
+cmake --build "$build" -j2
+
+# halt/abort on the first report, with a stack; leaks are checked with the
+# OpenCASCADE suppressions (scripts/lsan.supp).
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
+ctest --test-dir "$build" -j2 --output-on-failure -R "$tests_regex"
+
+# Every fuzz target, from its seed corpus; new inputs go to a scratch corpus
+# (the first folder), crashes to $build/fuzz/crashes/.
+mkdir -p "$build/fuzz/crashes"
+failed=()
+printf '%-22s %10s %8s %8s %6s\n' target runs execs/s cov ft
+for exe in "$build"/fuzz_*; do
+  name=${exe##*/fuzz_}
+  work="$build/fuzz/work/$name"
+  rm -rf "$work" && mkdir -p "$work"
+  log="$build/fuzz/$name.log"
+  dict=()
+  if [[ $name == *_json ]]; then dict=(-dict="$build/fuzz/corpus/json.dict"); fi
+  if ! "$exe" "${dict[@]}" -max_total_time="$fuzz_seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
+      -artifact_prefix="$build/fuzz/crashes/$name-" "$work" "$build/fuzz/corpus/$name" > "$log" 2>&1; then
+    failed+=("$name")
+    echo "== fuzz_$name failed; its log:"
+    tail -n 60 "$log"
+  fi
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
+  last=$(grep -E '^#[0-9]+' "$log" | grep -E ' cov: ' | tail -n 1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<< "$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$last")
+  printf '%-22s %10s %8s %8s %6s\n' "$name" "${runs:--}" "${rate:--}" "${cov:--}" "${ft:--}"
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "ci-sanitize: fuzz targets that crashed: ${failed[*]} (inputs in $build/fuzz/crashes/)"
+  exit 1
+fi
+echo "ci-sanitize: tests and fuzz targets clean"
