@@ -337,11 +337,12 @@ Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
     };
     if (pass_column >= 0) {
       double pv = 0;
-      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv))
-        fail_line(name, number, "pass " + quote_field(fields[pass_column]) + " is not a whole number");
-      // Compared as read: a whole number such as 1e300 is finite, and
-      // converting it to an integer type was undefined behaviour (UBSan in
+      // Whole numbers up to 1e15 (exact in a double); beyond that a "pass
+      // number" is no count of passes. Kept as read, never converted: 1e300
+      // converted to an integer type was undefined behaviour (UBSan in
       // fuzz_toolpath_csv, docs/testing.md). Only the order matters.
+      if (!parse_finite(fields[pass_column], pv) || pv != std::floor(pv) || std::abs(pv) > 1e15)
+        fail_line(name, number, "pass " + quote_field(fields[pass_column]) + " is not a whole number up to 1e15");
       const double pass = pv;
       if (!current.points.empty() && pass != last_pass) {
         if (pass < last_pass) fail_line(name, number, "pass numbers must not decrease");
