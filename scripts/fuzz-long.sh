@@ -47,7 +47,9 @@ run_one() {
     -artifact_prefix="$corpus/crashes/$name-" \
     "$corpus/$name" "$build/fuzz/corpus/$name" > "$corpus/logs/$name.log" 2>&1 || true
   local last
-  last=$(grep -E ' cov: ' "$corpus/logs/$name.log" | tail -n 1 || true)
+  # Fork mode's progress lines ("#N: cov: ...") can share a line with
+  # NEW_FUNC reports; keep only the progress part.
+  last=$(grep -oE '#[0-9]+: cov: .*' "$corpus/logs/$name.log" | tail -n 1 || true)
   echo "fuzz-long: $name: ${last:-no progress line}"
 }
 
