@@ -16,7 +16,7 @@
 //    the 24 axis-aligned quarter-turn rotations of the CMM frame itself, each
 //    with the centroids matched. Every candidate gets a short trimmed ICP
 //    against the sampling (offset by the probe radius for probe centres;
-//    PCL KD-tree, Umeyama in double, pairs beyond 3x the median distance
+//    exact k-d tree, Umeyama in double, pairs beyond 3x the median distance
 //    dropped so blunders do not pull); the best few get a long ICP; the
 //    winner has the smallest median point-to-surface distance (exact
 //    projection).

@@ -4,9 +4,8 @@
 // Used to group predicted local-gouge contact points into sites and measured
 // overcuts into unexplained clusters (gouge_confirmation.hpp).
 //
-// Neighbours come from a PCL k-d tree (float coordinates) and are then
-// confirmed with the exact double distance, so the result depends on the
-// points only. Deterministic: members in increasing index order, clusters
+// Neighbours come from the exact double-precision k-d tree of
+// geometry/point_search.hpp, so the result depends on the points only. Deterministic: members in increasing index order, clusters
 // ordered by their smallest member.
 #include <Eigen/Core>
 #include <vector>

@@ -9,7 +9,7 @@
 // their values within the same limit of each other, or their excesses over
 // the median within a factor kAlikeRatio (a real gouge is graded from its
 // rim to its bottom; neighbours in a deep one differ by far more than the
-// limit). Neighbours: the six nearest within `radius`, PCL KD-tree over the
+// limit). Neighbours: the six nearest within `radius`, exact k-d tree over the
 // given positions (the foot points on the surface, see registration.cpp). A large point with `confirm` or more agreeing
 // neighbours is the core of a real deviation; it and every large point that
 // agrees with a core are large_deviation, the rest blunders. (Random blunders

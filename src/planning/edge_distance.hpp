@@ -11,7 +11,7 @@
 // back within `b` of a point (curvature radius comparable with `b`).
 //
 // Edges are cut into pieces no longer than a given length and the piece
-// midpoints go into a PCL kd-tree; a query looks at the pieces within
+// midpoints go into a k-d tree (geometry/point_search.hpp); a query looks at the pieces within
 // reach + half a piece length and measures the exact point-segment
 // distance, so the answer is exact, not a sampled approximation.
 //
