@@ -34,7 +34,7 @@ h1{font-size:1.6em;margin:0.2em 0}h2{font-size:1.25em;border-bottom:2px solid #c
 h3{font-size:1.05em;margin-bottom:0.3em}.meta{color:#555;margin:0}
 .verdict{display:flex;gap:24px;align-items:center;border-radius:8px;padding:18px 24px;margin:16px 0;color:#fff}
 .verdict.pass{background:#28963c}.verdict.fail{background:#c81e1e}.verdict.inconclusive{background:#b86e00}
-.verdict .result{font-size:3.2em;font-weight:bold;letter-spacing:0.05em;min-width:3.6em;text-align:center}
+.verdict .result{flex:none;font-size:3.2em;font-weight:bold;letter-spacing:0.05em;min-width:3.6em;text-align:center}.verdict.inconclusive .result{font-size:2.2em}
 .verdict .facts p{margin:0.25em 0;font-size:1.05em}.verdict ul{margin:0.4em 0 0 1.2em;padding:0}
 nav{font-size:0.95em;color:#555}nav a{margin-right:1em}
 table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
