@@ -107,7 +107,11 @@ TEST_CASE("bad input: every file of the corpus is refused with exit 2, one line 
   CHECK(runs.size() >= 150 + extra.size());
 
   int index = 0;
-  for (const auto& [relative, command] : runs) {
+  for (const auto& run : runs) {
+    // Named copies, not a structured binding: CAPTURE below is a lambda, and
+    // C++17 lambdas cannot capture structured bindings (clang refuses).
+    const std::string& relative = run.first;
+    const std::vector<std::string>& command = run.second;
     const std::string file = source_path("tests/bad_inputs/" + relative);
     const std::string out = dir + "/out" + std::to_string(index++);
     fs::create_directories(out);
