@@ -82,16 +82,11 @@ int run_partition(Args& args) {
 
   const Part part = read_part(part_path);
   const bool show_progress = ::isatty(2) && part.faces.size() > 1;
-  const PartitionResult result = [&] {
-    try {
-      return partition_part(part, options, [&](std::size_t done, std::size_t total) {
-        if (show_progress) std::cerr << "\rpartition: face " << done << "/" << total << std::flush;
-      });
-    } catch (const InputError& e) {
-      // What is wrong with the part's geometry: the message names the file.
-      throw InputError(part_path + ": " + e.what());
-    }
-  }();
+  const PartitionResult result = naming_inputs(part_path, [&] {
+    return partition_part(part, options, [&](std::size_t done, std::size_t total) {
+      if (show_progress) std::cerr << "\rpartition: face " << done << "/" << total << std::flush;
+    });
+  });
   if (show_progress) std::cerr << "\n";
 
   if (image_path) {

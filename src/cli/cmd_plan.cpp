@@ -110,11 +110,13 @@ int run_plan(Args& args) {
   const bool show = ::isatty(2);
   const char* shown = nullptr;
   const std::string name = program_name(out);
-  const PlanStage stage = plan_stage(part, map, o, risk ? &*risk : nullptr, name, regions_path,
-                                     prediction_path.value_or(""), [&](const char* step, std::size_t done, std::size_t total) {
-    if (!show) return;
-    std::cerr << "\rplan: " << step << " " << done << "/" << total << "        " << std::flush;
-    shown = step;
+  const PlanStage stage = naming_inputs(part_path + " with " + regions_path, [&] {
+    return plan_stage(part, map, o, risk ? &*risk : nullptr, name, regions_path, prediction_path.value_or(""),
+                      [&](const char* step, std::size_t done, std::size_t total) {
+                        if (!show) return;
+                        std::cerr << "\rplan: " << step << " " << done << "/" << total << "        " << std::flush;
+                        shown = step;
+                      });
   });
   if (show && shown) std::cerr << "\n";
 

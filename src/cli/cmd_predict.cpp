@@ -128,20 +128,13 @@ int run_predict(Args& args) {
   const Cutter cutter(read_tool_file(tool_path));
   const Toolpath path = read_toolpath(toolpath_path, read_options);
   TerminalProgress progress;
-  const PredictedPath predicted = [&] {
-    try {
-      return predict_stage(part, cutter, path, options, {part_path, toolpath_path, regions.value_or("")},
-                           region_map ? &*region_map : nullptr,
-                           [&](const std::string& stage, std::size_t done, std::size_t total) {
-                             progress.update(stage, done, total);
-                           });
-    } catch (const InputError& e) {
-      // A limit of the work (z-map, error map) depends on the part and the path: name them.
-      const std::string message = e.what();
-      if (message.find(toolpath_path) != std::string::npos || message.find(part_path) != std::string::npos) throw;
-      throw InputError(part_path + " with " + toolpath_path + ": " + message);
-    }
-  }();
+  const PredictedPath predicted = naming_inputs(part_path + " with " + toolpath_path, [&] {
+    return predict_stage(part, cutter, path, options, {part_path, toolpath_path, regions.value_or("")},
+                         region_map ? &*region_map : nullptr,
+                         [&](const std::string& stage, std::size_t done, std::size_t total) {
+                           progress.update(stage, done, total);
+                         });
+  });
   progress.finish();
   if (map_path) outputs.file(*map_path, prediction_map_png(part, predicted, options, scale_um / 1000));
   outputs.file(out_path, predicted.json);

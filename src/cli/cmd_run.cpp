@@ -17,14 +17,8 @@ int run_run(Args& args) {
   args.finish();
   Job job = read_job(job_path);
   if (out) job.output = *out;
-  try {
-    return run_and_report(job, std::cout);
-  } catch (const InputError& e) {
-    // A stage's option or input came from the job: the message names it.
-    const std::string message = e.what();
-    if (message.find(job_path) != std::string::npos) throw;
-    throw InputError(job_path + ": " + message);
-  }
+  // A stage's option or input came from the job: the message names it.
+  return naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
 }
 
 }  // namespace

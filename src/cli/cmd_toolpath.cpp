@@ -75,16 +75,11 @@ int run_toolpath(Args& args) {
   const Part part = read_part(part_path);
   const Cutter cutter(read_tool_file(tool_path));
   TerminalProgress progress;
-  const GeneratedToolpath path = [&] {
-    try {
-      return generate_toolpath(part, part_path, cutter, {direction, options, write}, [&](std::size_t d, std::size_t t) {
-        progress.update("planning passes", d, t);
-      });
-    } catch (const InputError& e) {
-      // The work depends on the part and the tool: both files are named.
-      throw InputError(part_path + " with " + tool_path + ": " + e.what());
-    }
-  }();
+  const GeneratedToolpath path = naming_inputs(part_path + " with " + tool_path, [&] {
+    return generate_toolpath(part, part_path, cutter, {direction, options, write}, [&](std::size_t d, std::size_t t) {
+      progress.update("planning passes", d, t);
+    });
+  });
   progress.finish();
   outputs.file(contacts_path, path.contacts_csv);
   outputs.file(out_path, path.gcode);

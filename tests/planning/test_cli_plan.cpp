@@ -104,6 +104,12 @@ TEST_CASE("furrow plan: bad input gives one line, exit 2 and no output folder") 
     CHECK(r.err.find(c.message) != std::string::npos);
     CHECK_FALSE(fs::exists(dir + "/out"));
   }
+  // Found in the middle of planning (no region is wide enough for the
+  // border): the message still names the part and the regions it came from.
+  const CliResult wide = run_furrow({"plan", part, "--regions", mould_regions(), "--out", dir + "/out", "--border", "80"});
+  CHECK(wide.status == 2);
+  CHECK(wide.err.find("error: " + part + " with " + mould_regions() + ": no region can hold a probe point") !=
+        std::string::npos);
   const CliResult missing = run_furrow({"plan", part, "--regions", dir + "/none.json", "--out", dir + "/out"});
   CHECK(missing.status == 2);
   CHECK_FALSE(fs::exists(dir + "/out"));
