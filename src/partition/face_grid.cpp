@@ -60,6 +60,18 @@ void check_grid(const GridSize& grid, const std::string& face_name) {
                      " cells per face); use a coarser grid or spacing");
 }
 
+void check_part_grids(const std::vector<GridSize>& grids) {
+  double total = 0;  // in double: many faces at the per-face cap overflow nothing
+  for (const GridSize& g : grids) total += static_cast<double>(g.nu) * g.nv;
+  if (total > static_cast<double>(kMaxCellsPerPart)) {
+    std::ostringstream s;
+    s << "the grids of the " << grids.size() << " faces need " << std::llround(total)
+      << " cells in all, more than the limit of " << kMaxCellsPerPart
+      << " per part (docs/formats.md \"Limits\"); use a coarser grid or spacing";
+    throw InputError(s.str());
+  }
+}
+
 GridSize grid_for_spacing(const FaceExtent& extent, double spacing, const std::string& face_name) {
   if (!(spacing > 0) || !std::isfinite(spacing)) {
     std::ostringstream s;

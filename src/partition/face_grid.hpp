@@ -27,6 +27,11 @@ constexpr int kDefaultCellsAlongLongestSide = 400;
 constexpr int kMinCellsPerDirection = 16;
 constexpr int kMaxCellsPerDirection = 8000;
 constexpr long kMaxCellsPerFace = 4L << 20;  // 4 Mi cells, ~670 MB of field
+// All faces together: the fields are made one face at a time, but every
+// face's cell classes and labels (5 bytes a cell) stay for the regions file,
+// and the time grows with the total (about 5 M cells/s). 64 Mi cells keep a
+// 140-face part under about 350 MB and half a minute.
+constexpr long kMaxCellsPerPart = 64L << 20;
 
 // Length of a face on the surface along u and along v [mm]: the longest of
 // kExtentIsoCurves iso-parameter curves in each direction, each measured as a
@@ -53,5 +58,9 @@ GridSize grid_for_spacing(const FaceExtent& extent, double spacing, const std::s
 
 // Checks explicit counts against the limits (InputError naming `face_name`).
 void check_grid(const GridSize& grid, const std::string& face_name);
+
+// Checks the cells of all faces together against kMaxCellsPerPart
+// (InputError giving the total and the face count).
+void check_part_grids(const std::vector<GridSize>& grids);
 
 }  // namespace furrow

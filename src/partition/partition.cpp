@@ -130,6 +130,7 @@ PartitionResult partition_part(const Part& part, const PartitionOptions& options
                                const std::function<void(std::size_t, std::size_t)>& progress) {
   check_options(options);
   const std::vector<GridSize> grids = choose_grids(part, options);
+  check_part_grids(grids);
   PartitionResult result;
   result.map.source_units = part.source_units;
   result.map.part_fingerprint = part_fingerprint(part);

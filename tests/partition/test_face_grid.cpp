@@ -8,6 +8,7 @@
 #include "partition/curvature_field.hpp"
 #include "partition/curvature_tolerance.hpp"
 #include "partition/face_grid.hpp"
+#include "partition/partition.hpp"
 
 using namespace furrow;
 
@@ -46,6 +47,25 @@ TEST_CASE("grid for a spacing: whole counts, a minimum, and a clear limit") {
   CHECK_NOTHROW(check_grid({kMaxCellsPerDirection, 500}, "f"));
   CHECK(default_spacing({{90, 36}, {120, 5}}) == doctest::Approx(120.0 / kDefaultCellsAlongLongestSide));
   CHECK_THROWS_AS(default_spacing({{0, 0}}), InputError);
+}
+
+TEST_CASE("grids of a whole part: at most kMaxCellsPerPart cells over all faces, checked before any field") {
+  // 16 faces at the per-face cap fill the part's cap exactly; one cell more is refused.
+  const long per_face = kMaxCellsPerFace;  // 4 Mi = 2048 x 2048
+  REQUIRE(per_face == 2048L * 2048);
+  std::vector<GridSize> grids(kMaxCellsPerPart / per_face, GridSize{2048, 2048});
+  CHECK_NOTHROW(check_part_grids(grids));
+  grids.push_back({1, 1});
+  const std::string expected = "the grids of the 17 faces need " + std::to_string(kMaxCellsPerPart + 1) + " cells in all";
+  CHECK_THROWS_WITH_AS(check_part_grids(grids), doctest::Contains(expected.c_str()), InputError);
+  // partition_part refuses such a part before it samples a face: 17 planes at
+  // 2048 x 2048 would take most of a minute and gigabytes if it did not.
+  Part part;
+  for (int f = 0; f < 17; ++f)
+    part.faces.emplace_back("plane " + std::to_string(f), make_plane({0, 0, 10.0 * f}, {50, 0, 0}, {0, 50, 0}));
+  PartitionOptions options;
+  options.grid = GridSize{2048, 2048};
+  CHECK_THROWS_WITH_AS(partition_part(part, options), doctest::Contains("cells in all"), InputError);
 }
 
 TEST_CASE("default eps: the floor on flat faces, 1 % of the typical curvature on curved ones") {
