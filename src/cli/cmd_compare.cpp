@@ -2,9 +2,11 @@
 // deviations against a profile tolerance, comparison.json.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
+#include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "inspection/comparison_file.hpp"
 #include "base/output_set.hpp"
@@ -90,8 +92,10 @@ int run_compare(Args& args) {
   read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
   const MeasurementSet set = read_measurements(measurements, read);
 
-  const Comparison c = compare_stage(part, set, plan ? &*plan : nullptr, regions ? &*regions : nullptr,
-                                     prediction ? &*prediction : nullptr, options);
+  const Comparison c = naming_inputs(part_path + " with " + measurements, [&] {
+    return compare_stage(part, set, plan ? &*plan : nullptr, regions ? &*regions : nullptr,
+                         prediction ? &*prediction : nullptr, options);
+  });
   if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
   ComparisonSources sources;
   sources.part = part_path;
@@ -108,6 +112,12 @@ int run_compare(Args& args) {
   std::printf("registration: %s (%s start), rms %.4f -> %.4f mm, %zu of %zu points in the fit\n",
               r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit,
               s.points);
+  for (const WeakDirection& w : r.observability.weak) {
+    const double sd = w.sigma_mm(r.sigma);
+    std::printf("weakly constrained: %s (%s", w.describe().c_str(), w.held ? "held at the start" : "fitted");
+    if (std::isfinite(sd)) std::printf(", 1 sigma %.4f mm", sd);
+    std::printf(")%s\n", w.from_points ? ": the measured faces would fix it, the points do not" : "");
+  }
   std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n",
               s.deviations.min, s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
   std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers\n",
@@ -126,7 +136,7 @@ int run_compare(Args& args) {
   }
   std::printf("%s\n", to_string(s.verdict));
   for (const InconclusiveReason& r : s.inconclusive) std::printf("  %s\n", r.text.c_str());
-  return exit_status(s.verdict);
+  return exit_status(s.verdict, s.alignment);
 }
 
 }  // namespace

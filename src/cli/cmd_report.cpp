@@ -34,7 +34,7 @@ int run_report(Args& args) {
               v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
   if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
   std::printf(")\nwrote %s/report.html (and report.json, points.csv, %zu figures)\n", out.c_str(), files.size() - 3);
-  return exit_status(v.verdict);
+  return exit_status(v.verdict, v.alignment);
 }
 
 }  // namespace

@@ -15,8 +15,10 @@ constexpr int kExitBadInput = 2;    // a file, option or value the user must fix
 constexpr int kExitInternal = 3;    // the computation did not succeed (or a bug)
 constexpr int kExitInconclusive = 4;  // nothing failed, but not everything was shown to be good
 
-// The exit status of a verdict: PASS 0, FAIL 1, INCONCLUSIVE 4.
-int exit_status(Verdict verdict);
+// The exit status of a comparison: 3 when its alignment did not succeed
+// (`alignment` is not "ok": the computation did not succeed, whatever else
+// was found), else by the verdict: PASS 0, FAIL 1, INCONCLUSIVE 4.
+int exit_status(Verdict verdict, const std::string& alignment);
 
 struct Command {
   const char* name;

@@ -2,7 +2,8 @@
 
 namespace furrow::cli {
 
-int exit_status(Verdict verdict) {
+int exit_status(Verdict verdict, const std::string& alignment) {
+  if (alignment != "ok") return kExitInternal;
   switch (verdict) {
     case Verdict::pass:
       return kExitOk;

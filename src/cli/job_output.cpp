@@ -28,7 +28,7 @@ int run_and_report(const Job& job, std::ostream& out) {
     out << "report: " << job.output << "/report.html\n";
   else
     out << "plan: " << job.output << "/plan/ (no measurements, no report)\n";
-  return result.measured ? exit_status(result.verdict) : kExitOk;
+  return result.measured ? exit_status(result.verdict, result.alignment) : kExitOk;
 }
 
 }  // namespace furrow::cli

@@ -62,6 +62,32 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
   return out;
 }
 
+// The alignment's state (the header's rule).
+std::string alignment_status(const RegistrationResult& r) {
+  if (r.outcome == FitOutcome::too_few_points) return "too_few_points";
+  if (!r.converged) return "not_converged";
+  for (const WeakDirection& d : r.observability.weak)
+    if (d.from_points) return "weakly_constrained";
+  return "ok";
+}
+
+// What went wrong and how to constrain it, for people.
+std::string alignment_advice(const RegistrationResult& r, const std::string& status) {
+  if (status == "weakly_constrained") {
+    std::string s = "the alignment is weakly constrained: the measured points do not fix the ";
+    bool first = true;
+    for (const WeakDirection& d : r.observability.weak)
+      if (d.from_points) {
+        s += (first ? "" : "; nor the ") + d.describe();
+        first = false;
+      }
+    return s + ", which the measured faces would; measure more points spread over them, add a datum, or "
+               "lock it with --dof";
+  }
+  return "the alignment did not succeed (" + r.status +
+         "): check the units and the part, measure more points on it, or lock motions with --dof";
+}
+
 }  // namespace
 
 DeviationStatistics deviation_statistics(const std::vector<double>& values) {
@@ -112,11 +138,17 @@ void summarize(Comparison& c) {
     s.confirmed_gouges = c.gouges->confirmed();
     s.unexplained_overcuts = c.gouges->unexplained.size();
   }
-  // An alignment that did not converge cannot certify anything.
-  const bool failed = !c.registration.converged || s.evaluated == 0 || s.out_of_tolerance > 0 ||
-                      s.confirmed_gouges > 0;
-  if (!failed) s.inconclusive = open_questions(c);
-  s.verdict = failed ? Verdict::fail : s.inconclusive.empty() ? Verdict::pass : Verdict::inconclusive;
+  // An alignment that did not succeed cannot certify anything, good or bad.
+  const RegistrationResult& r = c.registration;
+  s.alignment = alignment_status(r);
+  if (s.alignment != "ok") {
+    s.inconclusive = {{"alignment_failed", "", alignment_advice(r, s.alignment)}};
+    s.verdict = Verdict::inconclusive;
+  } else {
+    const bool failed = s.evaluated == 0 || s.out_of_tolerance > 0 || s.confirmed_gouges > 0;
+    if (!failed) s.inconclusive = open_questions(c);
+    s.verdict = failed ? Verdict::fail : s.inconclusive.empty() ? Verdict::pass : Verdict::inconclusive;
+  }
   s.pass = s.verdict == Verdict::pass;
   for (const auto& [region, values] : by_region)
     s.regions.push_back({region, deviation_statistics(values), region_out[region]});

@@ -12,6 +12,11 @@
 //   being a blunder (re-measure it), a predicted gouge site with no point on
 //   it, or an alignment that the points do not determine (rank-deficient);
 // - PASS: neither. PASS is never given for what was not seen.
+// An alignment that did not succeed (not converged, too few points on the
+// part, or weakly constrained: a motion that the measured faces would fix
+// but the points do not, registration.hpp) certifies nothing either way:
+// the verdict is INCONCLUSIVE with the reason, and `alignment` says which,
+// so that the commands exit with 3 (the computation did not succeed).
 //
 // Which points count: a point is evaluated unless it is a blunder, beyond a
 // face edge or has no foot point (registration.hpp). Large real deviations
@@ -49,7 +54,9 @@ Verdict parse_verdict(const std::string& text, const std::string& where);
 
 // Why a comparison that found nothing bad still cannot pass.
 struct InconclusiveReason {
-  std::string kind;     // "suspected_blunder", "gouge_not_measured" or "alignment_undetermined"
+  // "suspected_blunder", "gouge_not_measured", "alignment_undetermined" or
+  // "alignment_failed"
+  std::string kind;
   std::string subject;  // the point id, the gouge site id, or "" for the alignment
   std::string text;     // for people, saying what to do ("re-measure point P0006: ...")
 };
@@ -68,6 +75,9 @@ struct ComparisonSummary {
   std::size_t confirmed_gouges = 0;       // predicted gouge sites CONFIRMED (with a prediction)
   std::size_t unexplained_overcuts = 0;   // clusters of UNEXPLAINED overcut (with a prediction)
   Verdict verdict = Verdict::fail;
+  // "ok", or why the alignment did not succeed: "not_converged",
+  // "too_few_points", "weakly_constrained".
+  std::string alignment = "ok";
   std::vector<InconclusiveReason> inconclusive;  // set when verdict is inconclusive
   bool pass = false;                             // verdict == pass
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids

@@ -65,6 +65,22 @@ struct ComparisonDocument {
     int outer_iterations = 0, solver_iterations = 0, outlier_passes = 0;
     bool converged = false;
     std::string status;                                     // "converged" or why not
+    std::string outcome = "converged";  // "converged", "not_converged", "too_few_points"
+    int fitted_dof = 6;                 // motions fitted: the free DOF less the held weak ones
+    // Weakly constrained directions (observability.hpp): held at the start
+    // and/or weak at the solution.
+    struct WeakDirection {
+      std::string text;                 // in words
+      bool translation = false;
+      Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // unit; translation direction or axis
+      Eigen::Vector3d axis_point = Eigen::Vector3d::Zero();  // rotation: a point of the axis [mm]
+      double pitch = 0;                 // rotation: [mm per rad]
+      double ratio = 0;                 // lambda / largest lambda
+      std::optional<double> sigma;      // 1-sigma RMS displacement of the points [mm]; none: unconstrained
+      bool held = false;                // weak at the start: not fitted
+      bool from_points = false;         // the measured faces would fix it, the points do not
+    };
+    std::vector<WeakDirection> weak;
     std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
     std::string covariance_status;
     // Outliers by reason: "blunder", "large_deviation", "beyond_edge",

@@ -47,6 +47,27 @@ ComparisonDocument::Registration document_registration(const RegistrationResult&
   d.outlier_passes = r.outlier_passes;
   d.converged = r.converged;
   d.status = r.status;
+  d.outcome = to_string(r.outcome);
+  d.fitted_dof = r.fitted_dof;
+  // Weak at the solution first; a held direction that the solution's
+  // points fix after all is listed too (it was not fitted).
+  auto record = [&](const WeakDirection& w, bool held) {
+    ComparisonDocument::Registration::WeakDirection x;
+    x.text = w.describe();
+    x.translation = w.translation;
+    x.direction = w.direction;
+    x.axis_point = w.axis_point;
+    x.pitch = w.pitch;
+    x.ratio = w.ratio;
+    const double sd = w.sigma_mm(r.sigma);
+    if (std::isfinite(sd) && sd < 1e6) x.sigma = sd;
+    x.held = held;
+    x.from_points = w.from_points;
+    return x;
+  };
+  for (const WeakDirection& w : r.observability.weak) d.weak.push_back(record(w, w.held));
+  if (r.observability.weak.empty())
+    for (const WeakDirection& w : r.held) d.weak.push_back(record(w, true));
   d.covariance = r.covariance;
   d.covariance_status = r.covariance_status;
   return d;
@@ -188,6 +209,7 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                     {"confirmed_gouges", s.confirmed_gouges},
                     {"unexplained_overcuts", s.unexplained_overcuts},
                     {"verdict", to_string(s.verdict)},
+                    {"alignment", s.alignment},
                     {"inconclusive", inconclusive_json(s.inconclusive)},
                     {"pass", s.pass}};
   json regions = json::array();

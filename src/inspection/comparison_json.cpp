@@ -66,6 +66,24 @@ json registration_json(const ComparisonDocument::Registration& r) {
   j["outlier_passes"] = r.outlier_passes;
   j["converged"] = r.converged;
   j["status"] = r.status;
+  j["outcome"] = r.outcome;
+  j["fitted_dof"] = r.fitted_dof;
+  json weak = json::array();
+  for (const auto& w : r.weak) {
+    json d = {{"text", w.text},
+              {"kind", w.translation ? "translation" : "rotation"},
+              {"direction", jf::vector_json(w.direction)},
+              {"ratio", jf::finite(w.ratio, "weak ratio")},
+              {"sigma", w.sigma ? json(jf::finite(*w.sigma, "weak sigma")) : json(nullptr)},
+              {"held", w.held},
+              {"from_points", w.from_points}};
+    if (!w.translation) {
+      d["axis_point"] = jf::vector_json(w.axis_point);
+      d["pitch"] = jf::finite(w.pitch, "pitch");
+    }
+    weak.push_back(std::move(d));
+  }
+  j["weak_directions"] = std::move(weak);
   j["covariance_status"] = r.covariance_status;
   if (r.covariance) {
     j["covariance"] = matrix_json(*r.covariance, "covariance");

@@ -89,6 +89,35 @@ ComparisonDocument::Registration read_registration(const Node& n) {
   r.converged = n.boolean("converged");
   r.status = n.string("status");
   r.covariance_status = n.string("covariance_status");
+  // Written since the weak-direction analysis; older files have neither.
+  if (n.has("outcome")) {
+    r.outcome = n.string("outcome");
+    if (r.outcome != "converged" && r.outcome != "not_converged" && r.outcome != "too_few_points")
+      throw InputError(n.path("outcome") + ": unknown outcome " + quote_field(r.outcome) +
+                       " (valid: converged, not_converged, too_few_points)");
+    r.fitted_dof = n.integer("fitted_dof");
+    if (r.fitted_dof < 0 || r.fitted_dof > 6) throw InputError(n.path("fitted_dof") + ": must lie in 0..6");
+    const json& list = n.array("weak_directions");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const Node w(list[k], jf::child(n.path("weak_directions"), k));
+      ComparisonDocument::Registration::WeakDirection d;
+      d.text = w.string("text");
+      const std::string kind = w.string("kind");
+      if (kind != "translation" && kind != "rotation")
+        throw InputError(w.path("kind") + ": expected \"translation\" or \"rotation\"");
+      d.translation = kind == "translation";
+      d.direction = w.vector3("direction");
+      d.ratio = w.non_negative("ratio");
+      d.sigma = w.optional_number("sigma");
+      d.held = w.boolean("held");
+      d.from_points = w.boolean("from_points");
+      if (!d.translation) {
+        d.axis_point = w.vector3("axis_point");
+        d.pitch = w.number("pitch");
+      }
+      r.weak.push_back(d);
+    }
+  }
   if (!n.is_null("covariance")) r.covariance = matrix<6, 6>(n.raw("covariance"), n.path("covariance"));
   return r;
 }
@@ -141,6 +170,13 @@ ComparisonSummary read_summary(const Node& n) {
                                : s.pass ? Verdict::pass : Verdict::fail;
   if (s.pass != (s.verdict == Verdict::pass))
     throw InputError(n.path("verdict") + ": " + to_string(s.verdict) + " contradicts \"pass\"");
+  if (n.has("alignment")) {
+    s.alignment = n.string("alignment");
+    if (s.alignment != "ok" && s.alignment != "not_converged" && s.alignment != "too_few_points" &&
+        s.alignment != "weakly_constrained")
+      throw InputError(n.path("alignment") + ": unknown alignment state " + quote_field(s.alignment) +
+                       " (valid: ok, not_converged, too_few_points, weakly_constrained)");
+  }
   if (n.has("inconclusive")) {
     const json& list = n.array("inconclusive");
     for (std::size_t k = 0; k < list.size(); ++k) {

@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "inspection/outlier_detection.hpp"
+#include "inspection/surface_sampling.hpp"
 #include "inspection/surface_fit.hpp"
 
 namespace furrow {
@@ -45,12 +46,32 @@ const char* to_string(OutlierReason reason) {
   return "?";
 }
 
+const char* to_string(FitOutcome outcome) {
+  switch (outcome) {
+    case FitOutcome::converged:
+      return "converged";
+    case FitOutcome::not_converged:
+      return "not_converged";
+    case FitOutcome::too_few_points:
+      return "too_few_points";
+  }
+  return "?";
+}
+
 std::size_t RegistrationResult::in_fit_count() const {
   return static_cast<std::size_t>(std::count_if(points.begin(), points.end(),
                                                 [](const RegisteredPoint& p) { return p.in_fit; }));
 }
 
 namespace {
+
+// Below this share (observability.hpp) a motion is not seen at all: an
+// exact symmetry of the measured surface, held for good.
+constexpr double kExactlyFree = 1e-8;
+
+// Cells per direction of the grid over each measured face that tells the
+// surface's own free motions from those the points leave free.
+constexpr int kObservabilityGrid = 24;
 
 std::string number(double v) {
   std::ostringstream s;
@@ -120,6 +141,32 @@ double rms(const std::vector<double>& v) {
   return v.empty() ? 0 : std::sqrt(s / static_cast<double>(v.size()));
 }
 
+// The observability at the solution over the points in the fit, with the
+// directions that only the points leave free told apart: a grid over every
+// face that holds one of their feet is the surface they were measured on.
+Observability observability_at_solution(const Part& part, const std::vector<RegisteredPoint>& points,
+                                        const RegistrationOptions& options) {
+  std::vector<Eigen::Vector3d> x, normal;
+  std::vector<bool> measured_face(part.faces.size(), false);
+  for (const RegisteredPoint& p : points)
+    if (p.in_fit) {
+      x.push_back(p.registered);
+      normal.push_back(p.foot.normal);
+      if (p.foot.face < measured_face.size()) measured_face[p.foot.face] = true;
+    }
+  Observability o = analyse_observability(x, normal, free_parameter_basis(options.dof.free), options.weak_ratio);
+  if (o.weak.empty()) return o;
+  std::vector<Eigen::Vector3d> sx, sn;
+  for (std::size_t f = 0; f < part.faces.size(); ++f)
+    if (measured_face[f])
+      for (const SurfaceSample& s : sample_face_grid(part, f, kObservabilityGrid, kObservabilityGrid)) {
+        sx.push_back(s.point);
+        sn.push_back(s.normal);
+      }
+  mark_weak_by_points(o, x, normal, sx, sn);
+  return o;
+}
+
 }  // namespace
 
 RegistrationResult register_measurements(const ClosestPointFinder& finder,
@@ -127,15 +174,17 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
                                          const RegistrationOptions& options) {
   const std::size_t n = set.points.size();
   const int dof = options.dof.count();
-  if (static_cast<int>(n) < dof)
-    throw InputError(set.source + ": " + std::to_string(n) + " points cannot fix " +
-                     std::to_string(dof) + " degrees of freedom");
+  if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
+    throw InputError("the weak-direction ratio must lie in (0, 1)");
   RegistrationResult result;
+  // Fewer points than free parameters: nothing to fit, and the coarse
+  // search needs three. Evaluated as measured, reported as too few.
+  const bool enough = static_cast<int>(n) > dof;
   auto note = [&](const std::string& what) {
     if (options.progress) options.progress(what);
   };
   note("coarse start");
-  if (options.dof.all_free()) {
+  if (options.dof.all_free() && enough) {
     result.coarse = coarse_alignment(finder, set, plan, options.coarse);
   } else {
     result.coarse.method = CoarseMethod::identity;
@@ -160,6 +209,38 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
                std::vector<bool>(n, false)};
 
   ws.project();
+  // The points on the part at the start decide which motions are weak.
+  MotionBasis release(6, 0);
+  enum class Holding { none, all, exact_only } holding = Holding::none;
+  auto points_in_fit = [&](std::vector<Eigen::Vector3d>& x, std::vector<Eigen::Vector3d>& normal) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (ws.geometric[i] == OutlierReason::none && !ws.excluded[i]) {
+        x.push_back(fit.moved(i));
+        normal.push_back(ws.feet[i].normal);
+      }
+  };
+  {
+    std::vector<Eigen::Vector3d> x, normal;
+    points_in_fit(x, normal);
+    const MotionBasis allowed = free_parameter_basis(options.dof.free);
+    const Observability start = analyse_observability(x, normal, allowed, options.weak_ratio);
+    if (options.hold_weak && !start.weak.empty()) {
+      fit.restrict_motion(start.constrained);
+      result.held = start.weak;
+      holding = Holding::all;
+      // The motions the points see at all (not exact symmetries): released
+      // for a last fit once the others have converged.
+      release = analyse_observability(x, normal, allowed, kExactlyFree).constrained;
+      if (release.cols() == start.constrained.cols()) release.resize(6, 0);
+    }
+  }
+  int fitted = static_cast<int>(fit.motion_basis().cols());
+  result.fitted_dof = fitted;
+  std::string too_few;
+  if (!enough)
+    too_few = std::to_string(n) + " points cannot fix " + std::to_string(dof) + " degrees of freedom";
+  else if (fitted == 0)
+    too_few = "the points on the part fix no motion at all";
   {
     std::vector<double> d;
     for (std::size_t i = 0; i < n; ++i)
@@ -171,29 +252,38 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   const OutlierRule rule{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours,
                          options.neighbour_radius};
   std::string solver_message;
-  for (int pass = 1; pass <= std::max(1, options.max_outlier_passes); ++pass) {
-    result.outlier_passes = pass;
+  auto active_count = [&] {
+    std::size_t active = 0;
+    for (std::size_t i = 0; i < n; ++i) active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
+    return active;
+  };
+  // Outer iterations until the motion stops (result.converged), the solver
+  // fails or too few points are left on the part.
+  auto iterate = [&](const std::string& label) {
     result.converged = false;
     for (int outer = 1; outer <= options.max_outer_iterations; ++outer) {
       ++result.outer_iterations;
-      note("fit " + std::to_string(pass) + "." + std::to_string(outer));
+      note("fit " + label + "." + std::to_string(outer));
       const Eigen::Matrix<double, 6, 1> before = fit.parameters();
-      std::size_t active = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
-      if (static_cast<int>(active) < dof)
-        throw InputError(set.source + ": only " + std::to_string(active) +
-                         " points lie on the part after alignment; " + std::to_string(dof) +
-                         " degrees of freedom cannot be fitted");
+      const std::size_t active = active_count();
+      if (static_cast<int>(active) <= fitted) {
+        too_few = "only " + std::to_string(active) + " points lie on the part after alignment, too few to fit " +
+                  std::to_string(fitted) + " degrees of freedom and check the rest";
+        return;
+      }
       result.solver_iterations += fit.solve(solver_message);
       ws.project();
-      if (!solver_message.empty()) break;
+      if (!solver_message.empty()) return;
       if (motion(before, fit.parameters(), reach) <= options.motion_tolerance) {
         result.converged = true;
-        break;
+        return;
       }
     }
-    if (!options.flag_outliers || !solver_message.empty()) break;
+  };
+  for (int pass = 1; too_few.empty() && pass <= std::max(1, options.max_outlier_passes); ++pass) {
+    result.outlier_passes = pass;
+    iterate(std::to_string(pass));
+    if (!options.flag_outliers || !solver_message.empty() || !too_few.empty()) break;
     std::vector<Eigen::Vector3d> positions(n);
     std::vector<double> deviation(n);
     std::vector<bool> usable(n);
@@ -210,19 +300,47 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     for (std::size_t i = 0; i < n; ++i)
       excluded[i] = usable[i] && verdict[i] != OutlierReason::none;
     if (excluded == ws.excluded) break;
-    if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) < dof) break;
+    if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) <= fitted) break;
     ws.excluded = excluded;
     fit.set_loss(RobustLoss::none, options.loss_scale);
     for (std::size_t i = 0; i < n; ++i)
       fit.set_foot(i, ws.feet[i].point, ws.feet[i].normal, usable[i] && !excluded[i]);
   }
-  result.status = !solver_message.empty() ? "solver failed: " + solver_message
-                  : result.converged      ? "converged"
-                                          : "outer iteration limit reached";
+  // The weak directions the points do see, released: the data decide them
+  // now that every point has settled on the part. Kept only if no point
+  // leaves the part and the fit converges; otherwise the held fit stands
+  // (docs/registration.md "Weakly constrained directions").
+  if (release.cols() > 0 && result.converged && too_few.empty() && solver_message.empty()) {
+    const Eigen::Matrix<double, 6, 1> held_parameters = fit.parameters();
+    const MotionBasis held_basis = fit.motion_basis();
+    const std::size_t held_active = active_count();
+    const int held_fitted = fitted;
+    const int outer_before = result.outer_iterations;
+    fit.restrict_motion(release);
+    fitted = static_cast<int>(release.cols());
+    iterate("released");
+    if (result.converged && active_count() >= held_active) {
+      holding = Holding::exact_only;
+    } else {
+      too_few.clear();
+      solver_message.clear();
+      fit.restrict_motion(held_basis);
+      fit.set_parameters(held_parameters);
+      fitted = held_fitted;
+      ws.project();
+      result.converged = true;
+      result.outer_iterations = outer_before;
+    }
+  }
+  result.fitted_dof = fitted;
+  result.status = !too_few.empty()          ? too_few
+                  : !solver_message.empty() ? "solver failed: " + solver_message
+                  : result.converged        ? "converged"
+                                            : "outer iteration limit reached";
 
   // Results per point at the final transform.
   result.points.resize(n);
-  std::vector<double> fitted;
+  std::vector<double> in_fit;
   for (std::size_t i = 0; i < n; ++i) {
     RegisteredPoint& p = result.points[i];
     p.registered = fit.moved(i);
@@ -243,11 +361,29 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
           "|d - median| = " + number(std::abs(p.deviation - numbers.median)) + " mm > " +
           number(numbers.limit) + " mm (" + number(options.outlier_sigma) + " x robust sigma " +
           number(numbers.robust_sigma) + " mm, floor " + number(options.outlier_floor) + " mm)";
-    if (p.in_fit) fitted.push_back(p.deviation);
+    if (p.in_fit) in_fit.push_back(p.deviation);
   }
-  result.rms_after = rms(fitted);
-  const double redundancy = static_cast<double>(fitted.size()) - dof;
-  result.sigma = redundancy > 0 ? rms(fitted) * std::sqrt(fitted.size() / redundancy) : 0;
+  result.rms_after = rms(in_fit);
+  const double redundancy = static_cast<double>(in_fit.size()) - fitted;
+  result.sigma = redundancy > 0 ? rms(in_fit) * std::sqrt(in_fit.size() / redundancy) : 0;
+  if (too_few.empty() && redundancy <= 0) {
+    too_few = std::to_string(in_fit.size()) + " points in the fit for " + std::to_string(fitted) +
+              " degrees of freedom: they fit exactly and verify nothing";
+    result.status = too_few;
+  }
+  if (!too_few.empty()) {
+    result.converged = false;
+    result.outcome = FitOutcome::too_few_points;
+  } else {
+    result.outcome = result.converged ? FitOutcome::converged : FitOutcome::not_converged;
+  }
+  note("observability");
+  result.observability = observability_at_solution(finder.part(), result.points, options);
+  // Which of them the fit left where the coarse start put them.
+  for (WeakDirection& d : result.observability.weak)
+    d.held = holding == Holding::all || (holding == Holding::exact_only && d.ratio < kExactlyFree);
+  for (WeakDirection& d : result.held)
+    d.held = holding == Holding::all || (holding == Holding::exact_only && d.ratio < kExactlyFree);
 
   result.parameters = fit.parameters();
   result.transform = rigid_motion(fit.parameters()) * result.coarse.transform;

@@ -46,8 +46,20 @@
 // origin). Each point's 1-sigma deviation uncertainty is sqrt(J C J^T) with
 // J = d(d_i)/d(parameters): how much the alignment alone could move it.
 //
-// Non-convergence is reported (converged == false, status text), never
-// thrown. InputError only for unusable input (fewer points than free DOF).
+// Weakly constrained directions (observability.hpp): after the coarse start
+// the motions that the points on the part barely see (lambda below
+// weak_ratio of the largest) are held where the start put them, so the fit
+// moves only along the others - the same fit as with those directions locked
+// by hand, and it cannot slide the part off the measured surface through
+// them. At the solution the analysis is repeated over the points in the fit
+// and reported; a direction weak only because of where the points are (a
+// grid over the measured faces would fix it) is `from_points`, which makes
+// the comparison's alignment weakly constrained (comparison.hpp).
+//
+// Failure is reported, never thrown: converged == false with `outcome` and
+// `status` saying why - the outer loop's cap, the solver, or too few points
+// on the part to fit what is free (no redundancy left: nothing verified).
+// The per-point results are still filled at the last transform.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <functional>
@@ -58,6 +70,7 @@
 #include "geometry/closest_point.hpp"
 #include "inspection/coarse_alignment.hpp"
 #include "inspection/degrees_of_freedom.hpp"
+#include "inspection/observability.hpp"
 #include "io/cmm/measurement_file.hpp"
 #include "io/plan_file.hpp"
 
@@ -70,8 +83,15 @@ RobustLoss parse_robust_loss(const std::string& text, const std::string& where);
 enum class OutlierReason { none, beyond_edge, no_foot_point, blunder, large_deviation };
 const char* to_string(OutlierReason reason);
 
+enum class FitOutcome { converged, not_converged, too_few_points };
+const char* to_string(FitOutcome outcome);  // "converged", "not_converged", "too_few_points"
+
 struct RegistrationOptions {
   DegreesOfFreedom dof;
+  // Directions whose share of displacement along the normals is below this
+  // times the largest are weak (observability.hpp); held when hold_weak.
+  double weak_ratio = 1e-3;
+  bool hold_weak = true;
   RobustLoss loss = RobustLoss::cauchy;
   double loss_scale = 0.025;        // [mm] (the CLI uses half the tolerance)
   int max_outer_iterations = 50;    // re-projections of all points
@@ -113,14 +133,18 @@ struct RegistrationResult {
   int solver_iterations = 0;
   int outlier_passes = 0;
   bool converged = false;
+  FitOutcome outcome = FitOutcome::not_converged;
   std::string status;                                     // "converged" or why not
+  std::vector<WeakDirection> held;  // weak at the start, held there (not fitted)
+  Observability observability;      // at the solution, over the points in the fit
+  int fitted_dof = 0;               // motions fitted (free DOF less the held ones)
   std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
   std::string covariance_status;        // "ok", "not computed", or why it is missing
   std::vector<RegisteredPoint> points;  // same order as the measurement set
   std::size_t in_fit_count() const;
 };
 
-// Throws InputError when fewer points than free DOF remain. `plan` may be null.
+// `plan` may be null. Throws InputError only for invalid options.
 RegistrationResult register_measurements(const ClosestPointFinder& finder,
                                          const MeasurementSet& set, const InspectionPlan* plan,
                                          const RegistrationOptions& options);

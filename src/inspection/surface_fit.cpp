@@ -4,6 +4,7 @@
 #include <ceres/rotation.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <cmath>
 
 #include "inspection/registration.hpp"
@@ -32,6 +33,43 @@ struct PointToPlane {
     residual[0] = d;
     return true;
   }
+};
+
+// x + B delta: the parameters move only within span(B). The locked degrees
+// of freedom (B: unit vectors) and the held weak directions
+// (observability.hpp) are the same mechanism.
+class SubspaceManifold : public ceres::Manifold {
+ public:
+  explicit SubspaceManifold(const MotionBasis& basis)
+      : basis_(basis), left_inverse_(basis.completeOrthogonalDecomposition().pseudoInverse()) {}
+  int AmbientSize() const override { return 6; }
+  int TangentSize() const override { return static_cast<int>(basis_.cols()); }
+  bool Plus(const double* x, const double* delta, double* x_plus_delta) const override {
+    using Vec6 = Eigen::Matrix<double, 6, 1>;
+    Eigen::Map<Vec6> out(x_plus_delta);
+    out = Eigen::Map<const Vec6>(x) + basis_ * Eigen::Map<const Eigen::VectorXd>(delta, basis_.cols());
+    return true;
+  }
+  bool PlusJacobian(const double*, double* jacobian) const override {
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(jacobian, 6, basis_.cols());
+    out = basis_;
+    return true;
+  }
+  bool Minus(const double* y, const double* x, double* y_minus_x) const override {
+    using Vec6 = Eigen::Matrix<double, 6, 1>;
+    Eigen::Map<Eigen::VectorXd> out(y_minus_x, basis_.cols());
+    out = left_inverse_ * (Eigen::Map<const Vec6>(y) - Eigen::Map<const Vec6>(x));
+    return true;
+  }
+  bool MinusJacobian(const double*, double* jacobian) const override {
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(jacobian, basis_.cols(), 6);
+    out = left_inverse_;
+    return true;
+  }
+
+ private:
+  MotionBasis basis_;
+  Eigen::MatrixXd left_inverse_;
 };
 
 ceres::LossFunction* make_loss(RobustLoss loss, double scale) {
@@ -79,11 +117,21 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
     impl_->costs.push_back(cost);
     impl_->problem->AddResidualBlock(cost, impl_->loss.get(), parameters_.data());
   }
-  std::vector<int> locked;
-  for (int k = 0; k < 6; ++k)
-    if (!dof_.free[k]) locked.push_back(k);
-  if (!locked.empty())
-    impl_->problem->SetManifold(parameters_.data(), new ceres::SubsetManifold(6, locked));
+  restrict_motion(free_parameter_basis(dof_.free));
+}
+
+void SurfaceFit::restrict_motion(const MotionBasis& basis) {
+  basis_ = basis;
+  projector_ = basis.cols() > 0 ? Eigen::Matrix<double, 6, 6>(
+                                      basis * basis.completeOrthogonalDecomposition().pseudoInverse())
+                                : Eigen::Matrix<double, 6, 6>::Zero();
+  // All six free: no manifold at all (the plain problem, as fast as can be).
+  // Ceres refuses a block with no tangent space; an empty basis is the
+  // caller's to avoid (registration.cpp reports it instead of fitting).
+  if (basis.cols() == 6)
+    impl_->problem->SetManifold(parameters_.data(), nullptr);
+  else if (basis.cols() > 0)
+    impl_->problem->SetManifold(parameters_.data(), new SubspaceManifold(basis));
 }
 
 SurfaceFit::~SurfaceFit() = default;
@@ -111,9 +159,7 @@ Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
     // At r = 0: d(R(r) y)/dr = -[y]x, so d(n.(R y))/dr = y x n; d/dt = n.
     const Point& p = points_[i];
     j << p.y.cross(p.normal).transpose(), p.normal.transpose();
-    for (int k = 0; k < 6; ++k)
-      if (!dof_.free[k]) j(k) = 0;
-    return j;
+    return j * projector_;
   }
   Point p = points_[i];
   p.active = true;
@@ -122,9 +168,7 @@ Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
   double r = 0;
   double* jac[1] = {j.data()};
   cost.Evaluate(params, &r, jac);
-  for (int k = 0; k < 6; ++k)
-    if (!dof_.free[k]) j(k) = 0;
-  return j;
+  return j * projector_;
 }
 
 void SurfaceFit::set_loss(RobustLoss loss, double loss_scale) {
@@ -157,37 +201,23 @@ void SurfaceFit::rebase() {
 }
 
 std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& status) const {
-  // Rank check first (ceres::Covariance would log to stderr and fail): the
-  // information matrix of the free parameters with rotations expressed as
-  // the motion they cause at the points' RMS distance from the origin, so
-  // that all six are lengths and comparable.
-  Eigen::Matrix<double, 6, 6> info = Eigen::Matrix<double, 6, 6>::Zero();
-  double spread = 0;
-  std::size_t active = 0;
+  // Rank check first (ceres::Covariance would log to stderr and fail): a
+  // motion still allowed whose share of displacement along the normals is
+  // below 1e-10 of the largest (observability.hpp) is not fixed at all.
+  std::vector<Eigen::Vector3d> x, n;
   for (std::size_t i = 0; i < points_.size(); ++i)
     if (points_[i].active) {
-      const Eigen::Matrix<double, 1, 6> j = jacobian(i);
-      info += j.transpose() * j;
-      spread += points_[i].y.squaredNorm();
-      ++active;
+      x.push_back(moved(i));
+      n.push_back(points_[i].normal);
     }
-  const double lever = active > 0 ? std::sqrt(spread / static_cast<double>(active)) : 1.0;
-  std::vector<int> free;
-  for (int k = 0; k < 6; ++k)
-    if (dof_.free[k]) free.push_back(k);
-  Eigen::MatrixXd scaled(free.size(), free.size());
-  for (std::size_t a = 0; a < free.size(); ++a)
-    for (std::size_t b = 0; b < free.size(); ++b)
-      scaled(a, b) =
-          info(free[a], free[b]) / ((free[a] < 3 ? lever : 1.0) * (free[b] < 3 ? lever : 1.0));
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(scaled);
-  if (!(es.eigenvalues()(0) > 1e-10 * es.eigenvalues().maxCoeff())) {
-    const Eigen::VectorXd null = es.eigenvectors().col(0);
-    Eigen::Index worst = 0;
-    null.cwiseAbs().maxCoeff(&worst);
-    status = std::string("rank deficient: the measured surface does not fix ") +
-             dof_name(free[worst]) +
-             " (and what moves with it); lock it or measure more of the part";
+  if (basis_.cols() == 0) {
+    status = "no degree of freedom left to fit";
+    return std::nullopt;
+  }
+  const Observability seen = analyse_observability(x, n, basis_, 1e-10);
+  if (!seen.weak.empty()) {
+    status = "rank deficient: the measured points do not fix the " + seen.weak.front().describe() +
+             "; lock it (--dof) or measure more of the part";
     return std::nullopt;
   }
   ceres::Covariance::Options o;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "inspection/degrees_of_freedom.hpp"
+#include "inspection/observability.hpp"
 
 namespace furrow {
 
@@ -42,15 +43,24 @@ class SurfaceFit {
 
   std::size_t size() const { return points_.size(); }
   const Eigen::Matrix<double, 6, 1>& parameters() const { return parameters_; }
+  // Back to an earlier solution (a trial fit that was not kept).
+  void set_parameters(const Eigen::Matrix<double, 6, 1>& p) { parameters_ = p; }
   // R(r) y_i + t with the current parameters.
   Eigen::Vector3d moved(std::size_t i) const;
   void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
                 bool active);
   // Signed residual n . (moved - foot) - r_probe of point i (active or not).
   double residual(std::size_t i) const;
-  // d(residual_i) / d(rx, ry, rz, tx, ty, tz) at the current parameters
-  // (zero in locked components).
+  // d(residual_i) / d(rx, ry, rz, tx, ty, tz) at the current parameters,
+  // projected onto the allowed motions (zero in locked components).
   Eigen::Matrix<double, 1, 6> jacobian(std::size_t i) const;
+
+  // Restricts the correction to parameters + span(basis) from now on (the
+  // columns: origin parameters rx ry rz tx ty tz; a subset of the free
+  // degrees of freedom's span). The motions left out stay where they are:
+  // the weak directions of registration.hpp.
+  void restrict_motion(const MotionBasis& basis);
+  const MotionBasis& motion_basis() const { return basis_; }
 
   // Replaces the robust loss (the outlier-free final fit is plain least
   // squares, see registration.hpp).
@@ -74,6 +84,8 @@ class SurfaceFit {
   std::vector<Point> points_;
   double probe_radius_;
   DegreesOfFreedom dof_;
+  MotionBasis basis_;  // the allowed motions (columns)
+  Eigen::Matrix<double, 6, 6> projector_ = Eigen::Matrix<double, 6, 6>::Identity();  // onto span(basis_)
   int max_iterations_;
   Eigen::Matrix<double, 6, 1> parameters_ = Eigen::Matrix<double, 6, 1>::Zero();
   std::unique_ptr<Impl> impl_;

@@ -252,6 +252,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     result.measured = true;
     result.pass = doc.summary.pass;
     result.verdict = doc.summary.verdict;
+    result.alignment = doc.summary.alignment;
     result.summary.push_back(line("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance)",
                                   to_string(doc.summary.verdict), doc.summary.profile * 1000,
                                   doc.options.tolerance.width * 1000, doc.summary.out_of_tolerance,

@@ -48,6 +48,7 @@ struct PipelineResult {
   bool measured = false;  // the job had measurements: comparison and report exist
   bool pass = false;      // the verdict is PASS (when measured)
   Verdict verdict = Verdict::fail;  // when measured
+  std::string alignment = "ok";     // when measured: the comparison's alignment state
   std::vector<std::string> summary;  // a few lines for people
 };
 

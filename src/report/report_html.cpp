@@ -128,6 +128,7 @@ std::string alignment_section(const ComparisonDocument& doc) {
                          count(static_cast<std::size_t>(r.solver_iterations)) + " solver, " +
                          count(static_cast<std::size_t>(r.outlier_passes)) + " outlier passes"},
       {"Status", escape(r.status) + (r.converged ? "" : " <b>(not converged)</b>")},
+      {"Degrees of freedom fitted", count(static_cast<std::size_t>(r.fitted_dof))},
       {"Points", count(doc.summary.points) + " measured, " + count(doc.summary.in_fit) + " in the fit, " +
                      count(doc.summary.evaluated) + " evaluated"},
       {"Outliers", outliers.empty() ? "none" : outliers},
@@ -146,6 +147,13 @@ std::string alignment_section(const ComparisonDocument& doc) {
     kv.push_back({"Largest deviation uncertainty from the alignment", fixed(worst * 1000, 2) + " &micro;m (1 sigma)"});
   } else {
     kv.push_back({"Covariance", escape(r.covariance_status)});
+  }
+  for (const auto& w : r.weak) {
+    std::string text = escape(w.text) + (w.held ? ": held at the coarse start, not fitted" : ": fitted");
+    text += w.sigma ? ", 1 sigma " + fixed(*w.sigma * 1000, 2) + " &micro;m of displacement at the points"
+                    : ", not constrained at all by the measured surface";
+    if (w.from_points) text += " <b>(the measured faces would fix it: measure more of them, or add a datum)</b>";
+    kv.push_back({"Weakly constrained", text});
   }
   return out + html::key_value_table(kv) + "</section>\n";
 }

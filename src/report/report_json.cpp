@@ -39,6 +39,7 @@ json verdict_json(const ReportVerdict& v) {
   j["evaluated"] = v.evaluated;
   j["out_of_tolerance"] = v.out_of_tolerance;
   j["registration_converged"] = v.registration_converged;
+  j["alignment"] = v.alignment;
   j["gouge_sites"] = v.has_prediction ? json({{"predicted", v.sites},
                                                {"confirmed", v.confirmed},
                                                {"not_confirmed", v.not_confirmed},

@@ -22,6 +22,7 @@ struct ReportVerdict {
   ToleranceZone zone;
   std::size_t evaluated = 0, out_of_tolerance = 0;
   bool registration_converged = false;
+  std::string alignment = "ok";  // the comparison's alignment state (comparison.hpp)
   // Gouge confirmation (all zero without a prediction).
   bool has_prediction = false;
   std::size_t sites = 0, confirmed = 0, not_confirmed = 0, not_measured = 0, unexplained = 0;

@@ -201,11 +201,19 @@ TEST_CASE("probe compensation: 4 mm ball centres on a sphere of radius 50") {
   for (const RegisteredPoint& p : r.points) CHECK(std::abs(p.deviation) < 1e-9);
   CHECK((r.transform.translation() + sim.misalignment.translation).norm() < 1e-9);
 
-  SUBCASE("all six DOF: rotations about the centre are not observable, and the report says so") {
+  SUBCASE("all six DOF: rotations about the centre are not observable, held, and the report says so") {
     const RegistrationResult full = register_measurements(finder, m.set, &plan, options_for(0.05));
     for (const RegisteredPoint& p : full.points) CHECK(std::abs(p.deviation) < 1e-9);
-    CHECK_FALSE(full.covariance.has_value());
-    CHECK(full.covariance_status.find("rank deficient") == 0);
+    CHECK(full.fitted_dof == 3);
+    REQUIRE(full.observability.weak.size() == 3);
+    for (const WeakDirection& d : full.observability.weak) {
+      CHECK_FALSE(d.translation);
+      CHECK(d.held);
+      CHECK_FALSE(d.from_points);
+      CHECK(d.axis_point.cross(d.direction).norm() < 1e-6);  // the axis passes through the centre
+    }
+    // The three translations that are fitted have a covariance.
+    CHECK(full.covariance.has_value());
   }
 }
 

@@ -82,7 +82,7 @@ TEST_CASE("verdict: a dent seen by one probe point is INCONCLUSIVE and names the
   CHECK(test::slurp(dir + "/report/report.html").find("class=\"verdict inconclusive\"") != std::string::npos);
 }
 
-TEST_CASE("verdict: identical or collinear points never PASS (the alignment is undetermined)") {
+TEST_CASE("verdict: identical or collinear points never PASS (weakly constrained: exit 3)") {
   const std::string dir = test::scratch_dir("verdict-degenerate");
   const std::string plan_path = write_grid_plan(dir, 12, 10);
   const InspectionPlan plan = read_plan(plan_path);
@@ -107,18 +107,23 @@ TEST_CASE("verdict: identical or collinear points never PASS (the alignment is u
     CHECK(r.out.find("PASS") == std::string::npos);
     return std::make_pair(r.status, read_comparison(dir + "/" + name + ".json"));
   };
-  {  // 40 copies of one point: every deviation 0, the fit converges, nothing fixes the pose
+  {  // 40 copies of one point: every deviation 0; only the motion along the
+     // normal is fixed, and the mould's face would fix the other five.
     const auto [status, doc] = compare("identical");
-    CHECK(status == 4);
+    CHECK(status == 3);
     CHECK(doc.summary.verdict == Verdict::inconclusive);
-    bool undetermined = false;
-    for (const InconclusiveReason& reason : doc.summary.inconclusive)
-      undetermined = undetermined || reason.kind == "alignment_undetermined";
-    CHECK(undetermined);
+    CHECK(doc.summary.alignment == "weakly_constrained");
+    REQUIRE(doc.summary.inconclusive.size() == 1);
+    CHECK(doc.summary.inconclusive[0].kind == "alignment_failed");
+    CHECK(doc.registration.fitted_dof == 1);
+    std::size_t from_points = 0;
+    for (const auto& w : doc.registration.weak) from_points += w.from_points;
+    CHECK(from_points == 5);
   }
-  {  // points on one line: either the fit does not settle (FAIL) or it is undetermined
+  {  // points on one line: at least the turn about the line is free
     const auto [status, doc] = compare("collinear");
-    CHECK((status == 1 || status == 4));
-    CHECK(doc.summary.verdict != Verdict::pass);
+    CHECK(status == 3);
+    CHECK(doc.summary.verdict == Verdict::inconclusive);
+    CHECK(doc.summary.alignment != "ok");
   }
 }
