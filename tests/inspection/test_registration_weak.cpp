@@ -176,3 +176,65 @@ TEST_CASE("fits that cannot succeed: too few points, exit 3 with the state writt
                                                 "--points", "contact", "--out", dir + "/bad.json"});
   CHECK(bad.status == 2);
 }
+
+TEST_CASE("a real-world case: 31 contact points in inches on a nearly flat ruled panel, turned 180 degrees, no ids") {
+  // A panel ruled between a straight edge and a shallow, lopsided curve
+  // 120 mm away (at most 1.6 mm high): 120 x 80 mm, slopes below 0.02.
+  // 31 points at random (u, v), the part turned 181 degrees on the table and
+  // moved 30 mm, 2 um noise, written in inches as a CMM writes them,
+  // compared without a plan. (A bilinear, hyperbolic-paraboloid panel would
+  // not do: upside down it is the same surface up to a tilt, so contact
+  // points cannot tell which side was measured.)
+  const std::string dir = test::scratch_dir("registration-ruled-inch");
+  const Part part = one_face(
+      "panel", NurbsSurface(1, 2, {0, 0, 1, 1}, {0, 0, 0, 1, 1, 1},
+                            {{{0, 0, 0}, {0, 40, 0}, {0, 80, 0}}, {{120, 0, 0}, {120, 30, 3}, {120, 80, 0.4}}}));
+  write_part_json(part, dir + "/panel.json");
+  InspectionPlan plan;
+  plan.probe = {"ball", 2};
+  std::uint32_t state = 12345;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return 0.04 + 0.92 * (state >> 8) / 16777216.0;
+  };
+  for (int k = 0; k < 31; ++k) {
+    const double u = next(), v = next();
+    const DifferentialGeometry g = part.faces[0].geometry(u, v);
+    PlannedPoint p;
+    p.id = "P" + std::to_string(k + 1);
+    p.order = k + 1;
+    p.face = "panel";
+    p.uv = {u, v};
+    p.xyz = g.point;
+    p.ijk = g.normal;
+    plan.points.push_back(p);
+  }
+  SimulationOptions sim;
+  sim.misalignment = {{0, 0, 181}, {30, -10, 2}};
+  sim.noise_sigma = 0.002;
+  sim.seed = 3;
+  sim.kind = ProbePointKind::contact;
+  const SimulatedMeasurement m = simulate_measurement(plan, sim);
+  std::string csv = "id,x,y,z\r\n";
+  for (const MeasuredPoint& p : m.set.points) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%s,%.6f,%.6f,%.6f\r\n", p.id.c_str(), p.xyz.x() / 25.4, p.xyz.y() / 25.4,
+                  p.xyz.z() / 25.4);
+    csv += line;
+  }
+  test::write_text(dir + "/m.csv", csv);
+  const test::CliResult r = test::run_furrow({"compare", dir + "/panel.json", "--measurements", dir + "/m.csv",
+                                              "--units", "inch", "--points", "contact", "--out", dir + "/c.json"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 0);
+  const ComparisonDocument doc = read_comparison(dir + "/c.json");
+  CHECK(doc.summary.in_fit == 31);
+  CHECK(doc.summary.evaluated == 31);
+  CHECK(doc.summary.alignment == "ok");
+  // Each deviation is the noise put in (the fit absorbs a little of it;
+  // inches written to 1e-6 add 0.0254 um).
+  for (std::size_t i = 0; i < doc.points.size(); ++i)
+    CHECK(std::abs(doc.points[i].deviation - m.true_deviation[i]) < 2.5e-3);
+  CHECK(doc.registration.weak.size() == 3);  // the two slides and the turn about the normal
+  CHECK(r.out.find("weakly constrained: translation along") != std::string::npos);
+}
