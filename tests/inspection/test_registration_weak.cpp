@@ -18,49 +18,11 @@
 #include "io/cmm/measurement_file.hpp"
 #include "io/part_file.hpp"
 #include "support/run_cli.hpp"
+#include "support/weak_shapes.hpp"
 
 using namespace furrow;
 
 namespace {
-
-struct Shape {
-  const char* name;
-  Part part;
-  int translations, rotations;  // the analytic free motions
-  // Exact symmetries (held for good) rather than motions the surface barely
-  // sees (released for the last fit, docs/registration.md).
-  bool exact = true;
-};
-
-Part one_face(const char* name, NurbsSurface s, bool reversed = false) {
-  Part p;
-  p.faces.emplace_back(name, std::move(s), Trim{}, reversed);
-  return p;
-}
-
-std::vector<Shape> shapes() {
-  std::vector<Shape> out;
-  out.push_back({"plane", one_face("plane", make_plane({-50, -30, 0}, {100, 0, 0}, {0, 60, 0})), 2, 1});
-  // A hyperbolic paraboloid rising 2 mm at one corner of 100 x 60 mm: slopes
-  // below 0.02, so the slides and the turn about z are seen by less than
-  // 1e-3 of their displacement - weak, though not exactly free.
-  out.push_back(
-      {"ruled", one_face("ruled", make_bilinear({-50, -30, 0}, {50, -30, 0}, {-50, 30, 0}, {50, 30, 2})), 2, 1, false});
-  // The outside of a cylinder segment (the builder's face is the inside of a tube).
-  out.push_back({"cylinder", one_face("cylinder", make_cylinder(25, 80, 0, 2.0), true), 1, 1});
-  // A full bore: the material is outside, the normals point to the axis.
-  out.push_back({"bore", one_face("bore", make_cylinder(15, 40, 0, 2 * 3.141592653589793)), 1, 1});
-  out.push_back({"sphere", one_face("sphere", make_sphere(30, 0, 2 * 3.141592653589793, 0.3, 1.3)), 0, 3});
-  // A surface of revolution whose profile is a parabola, no circle about any
-  // point: only the turn about its axis is free.
-  RationalCurve2d profile;
-  profile.knots = {0, 0, 0, 1, 1, 1};
-  profile.points = {{20, 0}, {38, 12}, {30, 40}};
-  profile.weights = {1, 1, 1};
-  out.push_back({"revolution", one_face("revolution", make_revolution(profile, 0, 1.5)), 0, 1});
-  out.push_back({"mould", read_part(test::source_path("examples/parts/mould.json")), 0, 0});
-  return out;
-}
 
 RegistrationOptions options() {
   RegistrationOptions o;
@@ -72,7 +34,7 @@ RegistrationOptions options() {
 }  // namespace
 
 TEST_CASE("weakly constrained shapes: converge, lose no point, name their free motions, recover the rest") {
-  for (const Shape& shape : shapes()) {
+  for (const test::WeakShape& shape : test::weak_shapes(test::source_path("examples/parts/mould.json"))) {
     for (const bool anonymous : {false, true}) {
       const std::string name = shape.name;
       CAPTURE(name);
@@ -124,7 +86,7 @@ TEST_CASE("weakly constrained: held directions give the fit of the same directio
   // A plane tilted and lifted on the CMM, in-plane placement as designed:
   // locking tx, ty, rz by hand (--dof rx,ry,tz) is then the right fit, and
   // holding them automatically must give the same deviations.
-  const Part part = one_face("plane", make_plane({-50, -30, 0}, {100, 0, 0}, {0, 60, 0}));
+  const Part part = test::one_face("plane", make_plane({-50, -30, 0}, {100, 0, 0}, {0, 60, 0}));
   const ClosestPointFinder finder(part);
   const InspectionPlan plan = grid_plan(part, 12, 9, {"ball", 2});
   SimulationOptions sim;
@@ -148,7 +110,7 @@ TEST_CASE("weakly constrained: held directions give the fit of the same directio
 
 TEST_CASE("fits that cannot succeed: too few points, exit 3 with the state written; never exit 2, never PASS") {
   const std::string dir = test::scratch_dir("registration-too-few");
-  const Part plane = one_face("plane", make_plane({0, 0, 0}, {100, 0, 0}, {0, 60, 0}));
+  const Part plane = test::one_face("plane", make_plane({0, 0, 0}, {100, 0, 0}, {0, 60, 0}));
   write_part_json(plane, dir + "/plane.json");
   // Three points on the plane, every motion free: the plane leaves three
   // motions, the points fix the other three exactly - nothing is verified.
@@ -186,7 +148,7 @@ TEST_CASE("a real-world case: 31 contact points in inches on a nearly flat ruled
   // not do: upside down it is the same surface up to a tilt, so contact
   // points cannot tell which side was measured.)
   const std::string dir = test::scratch_dir("registration-ruled-inch");
-  const Part part = one_face(
+  const Part part = test::one_face(
       "panel", NurbsSurface(1, 2, {0, 0, 1, 1}, {0, 0, 0, 1, 1, 1},
                             {{{0, 0, 0}, {0, 40, 0}, {0, 80, 0}}, {{120, 0, 0}, {120, 30, 3}, {120, 80, 0.4}}}));
   write_part_json(part, dir + "/panel.json");
