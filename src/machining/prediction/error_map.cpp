@@ -41,7 +41,7 @@ bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Ei
 NormalError zmap_error(const ZMap& zmap, const Face& face, const Eigen::Vector2d& uv,
                        const NormalErrorOptions& options) {
   Eigen::Vector3d p, n;
-  if (!face_normal(face, uv.x(), uv.y(), p, n) || !(n.z() > 0)) return {};
+  if (!face_normal(face, uv.x(), uv.y(), p, n) || !(n.z() >= 0)) return {};
   return zmap_error(zmap, p, n, options);
 }
 
@@ -184,7 +184,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
           continue;
         }
         Eigen::Vector3d p, n;
-        if (!face_normal(face, u, v, p, n) || !(n.z() > 0)) {
+        if (!face_normal(face, u, v, p, n) || !(n.z() >= 0)) {
           m.status[k] = ErrorCellStatus::not_machinable;
           continue;
         }
