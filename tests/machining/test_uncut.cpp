@@ -240,3 +240,79 @@ TEST_CASE("sparse path through prediction.json: uncut samples counted per face, 
   old["faces"][0].erase("samples");
   CHECK_FALSE(parse_prediction_json(old.dump(), "old.json").faces[0].has_samples);
 }
+
+TEST_CASE("beside a pass of a large ball: errors up to the search range are true crossings, beyond it uncut") {
+  // A plane rising along y (z = 0.3 y), one level pass of a ball of radius
+  // 10 along x at the contact line y = 20. Downhill of the pass the normal
+  // (0, -0.3, 1)/|.| leans away from it and meets the ball's flank far up:
+  // close to the shadow's rim the distance along the normal exceeds the
+  // 10 mm search range (NormalErrorOptions::max_distance). Brute force (a
+  // 5 um scan of the ball envelope along the normal, then bisection): where
+  // it meets the flank within the range, the error map has that number;
+  // where it does not (beyond the range, or the normal leaves the shadow
+  // first), the sample is uncut and has none. Values just under 10 mm are
+  // thus real material left on the flank, not the range written as an
+  // error.
+  Part part;
+  part.faces.emplace_back("slope", make_plane({0, 0, 0}, {40, 0, 0}, {0, 30, 9}));
+  const double R = 10, range = NormalErrorOptions{}.max_distance;
+  const Cutter ball("ball", R, R);
+  const Eigen::Vector3d n = Eigen::Vector3d(0, -0.3, 1).normalized();
+  const Eigen::Vector3d tip = Eigen::Vector3d(0, 20, 6) + R * n - R * Eigen::Vector3d::UnitZ();
+  ZMap zmap(part_xy_extent(part), 0.1);
+  zmap.cut(ball, {{{5, tip.y(), tip.z()}, {35, tip.y(), tip.z()}, 0, 0}});
+  const ErrorMap map = compute_error_map(part, zmap);
+  const FaceErrorMap& m = map.faces[0];
+  auto brute = [&](const Eigen::Vector3d& q, bool& found) {
+    auto g = [&](double t) {
+      const Eigen::Vector3d x = q + t * n;
+      return ball_pass_height(R, tip.z(), 5, 35, tip.y(), x.x(), x.y()) - x.z();
+    };
+    found = false;
+    if (!std::isfinite(g(0))) return 0.0;
+    double a = 0;
+    for (double t = 5e-3; t <= range; t += 5e-3) {
+      const double gt = g(t);
+      if (!std::isfinite(gt)) return 0.0;  // left the shadow first: uncut
+      if (gt <= 0) {
+        double lo = a, hi = t;
+        for (int k = 0; k < 60; ++k) (g(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+        found = true;
+        return hi;
+      }
+      a = t;
+    }
+    return 0.0;
+  };
+  int compared = 0, near_range = 0, beyond = 0, mismatch = 0;
+  double largest = 0;
+  for (int j = 0; j < m.nv; ++j)
+    for (int i = 0; i < m.nu; i += 7) {  // a spread of columns
+      const double x = 40 * m.u(i), y = 30 * m.v(j);
+      if (x < 12 || x > 28 || y > 20) continue;  // downhill of the pass, away from its ends
+      const std::size_t k = m.index(i, j);
+      if (m.boundary[k]) continue;
+      bool found = false;
+      const double e = brute({x, y, 0.3 * y}, found);
+      if (found && std::abs(e - range) < 1e-3) continue;  // at the range itself: either way
+      ++compared;
+      const bool reached = m.status[k] == ErrorCellStatus::reached;
+      if (reached != found) {
+        ++mismatch;
+        continue;
+      }
+      if (!found) {
+        ++beyond;
+        CHECK(m.error[k] == 0.0f);
+        continue;
+      }
+      mismatch += std::abs(m.error[k] - e) > 1e-5;  // float storage
+      near_range += e > 9;
+      largest = std::max(largest, double(m.error[k]));
+    }
+  CHECK(mismatch == 0);
+  CHECK(compared > 500);
+  CHECK(near_range > 5);  // true crossings between 9 and 10 mm exist
+  CHECK(beyond > 5);      // and samples beyond the range are uncut
+  CHECK(largest < range);
+}
