@@ -166,7 +166,8 @@ TEST_CASE("bad input to gouge and select-tool: exit 2, one line, no output") {
   write_text(dir + "/negative.json", "{\"name\":\"X\",\"type\":\"flat\",\"diameter\":-4}\n");
   write_text(dir + "/taper.json", "{\"name\":\"X\",\"type\":\"taper\",\"diameter\":4}\n");
   write_text(dir + "/down.csv", "x,y,z,nx,ny,nz\n0,10,25.4,0,0,-1\n");
-  write_text(dir + "/side.csv", "25.4,10,0\n");
+  // Just below the horizontal: n_z < 0 is out of reach (n_z = 0 is a side contact).
+  write_text(dir + "/side.csv", "x,y,z,nx,ny,nz\n25.4,10,0,1,0,-1e-12\n");
   write_text(dir + "/off.csv", "0,10,25.4\n0,10,30\n");
   const std::string part = source_path("examples/parts/semi_cylinder.json");
   const std::string ball = source_path("examples/tools/ball_d6.json");
@@ -179,8 +180,8 @@ TEST_CASE("bad input to gouge and select-tool: exit 2, one line, no output") {
       {{"gouge", part, "--tool", dir + "/big_corner.json", "--out", out}, "big_corner.json: corner_radius: 4 exceeds the tool radius 3"},
       {{"gouge", part, "--tool", dir + "/negative.json", "--out", out}, "negative.json: diameter: must be positive, got -4"},
       {{"gouge", part, "--tool", dir + "/taper.json", "--out", out}, "taper.json: type: unknown tool type \"taper\""},
-      {{"gouge", part, "--tool", ball, "--points", dir + "/down.csv", "--out", out}, "down.csv:2: the given normal (0, 0, -1) has n_z <= 0"},
-      {{"gouge", part, "--tool", ball, "--points", dir + "/side.csv", "--out", out}, "side.csv:1: the part's normal"},
+      {{"gouge", part, "--tool", ball, "--points", dir + "/down.csv", "--out", out}, "down.csv:2: the given normal (0, 0, -1) has n_z < 0"},
+      {{"gouge", part, "--tool", ball, "--points", dir + "/side.csv", "--out", out}, "side.csv:2: the given normal"},
       {{"gouge", part, "--tool", ball, "--points", dir + "/off.csv", "--out", out}, "off.csv:2: the point is 4.6 mm from the part"},
       {{"gouge", part, "--tool", ball, "--points", dir + "/off.csv", "--grid", "5", "--out", out}, "either --points or --grid"},
       {{"gouge", part, "--out", out}, "--tool is required"},
@@ -200,4 +201,34 @@ TEST_CASE("bad input to gouge and select-tool: exit 2, one line, no output") {
     CHECK(r.err.find(c.expected) != std::string::npos);
   }
   CHECK_FALSE(std::filesystem::exists(out));
+}
+
+TEST_CASE("furrow gouge on a vertical wall: side contacts are checked, not refused") {
+  // A wall facing -y ((10,0,0) x (0,0,10) = (0,-100,0)); a point with the
+  // wall's own normal (n_z = 0), one with n_z = +1e-300. The bull-nose
+  // touches with its torus equator: tip = P + R n - r z (docs/architecture.md
+  // "Side contact"); a plane wall is touched, not gouged.
+  const std::string dir = scratch_dir("gouge-wall");
+  Part part;
+  part.faces.emplace_back("wall", make_plane({0, 0, 0}, {10, 0, 0}, {0, 0, 10}));
+  write_part_json(part, dir + "/wall.json");
+  write_tool(dir + "/bull.json", "BULL-D8-R1", "bull", 8, 1);
+  write_text(dir + "/points.csv", "x,y,z,nx,ny,nz\n5,0,5,0,-1,0\n3,0,7,0,-1,1e-300\n");
+  const CliResult r = run_furrow({"gouge", dir + "/wall.json", "--tool", dir + "/bull.json", "--points",
+                                  dir + "/points.csv", "--out", dir + "/g.json"});
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  const json doc = json::parse(slurp(dir + "/g.json"));
+  REQUIRE(doc["points"].size() == 2);
+  const Eigen::Vector3d expected[] = {{5, -4, 4}, {3, -4, 6}};
+  for (int k = 0; k < 2; ++k) {
+    const json& p = doc["points"][k];
+    CAPTURE(k);
+    CHECK(p["status"] == "clear");
+    CHECK(p["cutter"]["side"] == true);
+    CHECK(p["cutter"]["contact_angle_deg"].get<double>() == doctest::Approx(90));
+    CHECK((vec(p["tip"]) - expected[k]).norm() < 1e-6);
+    CHECK((vec(p["cutter"]["dir_max"]) - Eigen::Vector3d::UnitZ()).norm() < 1e-9);
+  }
+  CHECK(doc["summary"]["unreachable"] == 0);
 }

@@ -92,9 +92,10 @@ TEST_CASE("cutter location: docs/architecture.md formulas for a bull-nose, and t
   CHECK((flat2.tip - (P + Eigen::Vector3d(0, -4, 0))).norm() < 1e-12);
 }
 
-TEST_CASE("cutter location: n_z <= 0 is not reachable and nothing is computed") {
+TEST_CASE("cutter location: n_z < 0 is not reachable and nothing is computed") {
+  // (n_z = 0, a vertical wall, is a side contact: test_side_contact.cpp.)
   const Cutter ball("b", 5, 5);
-  for (const Eigen::Vector3d& n : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0.6, -0.8),
+  for (const Eigen::Vector3d& n : {Eigen::Vector3d(1, 0, -1e-12), Eigen::Vector3d(0, 0.6, -0.8),
                                    Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 0),
                                    Eigen::Vector3d(std::nan(""), 0, 1)}) {
     const CutterLocation loc = cutter_location(ball, Eigen::Vector3d(1, 2, 3), n);

@@ -235,8 +235,10 @@ TEST_CASE("horizontal contacts: a flat-bottomed cutter gouges any concavity, a b
 }
 
 TEST_CASE("unreachable and degenerate points are reported, not computed") {
-  const Face wall("wall", make_plane({0, 0, 0}, {10, 0, 0}, {0, 0, 10}));  // normal -y
-  const LocalGouge r = check_local_gouge(Cutter("b", 3, 3), wall.geometry(0.5, 0.5));
+  // A ceiling: (0,10,0) x (10,0,0) = (0,0,-100), normal -z. (A wall, n_z = 0,
+  // is a side contact: test_side_contact.cpp.)
+  const Face ceiling("ceiling", make_plane({0, 0, 0}, {0, 10, 0}, {10, 0, 0}));
+  const LocalGouge r = check_local_gouge(Cutter("b", 3, 3), ceiling.geometry(0.5, 0.5));
   CHECK(r.status == GougeStatus::unreachable);
   CHECK(r.ranges.empty());
   DifferentialGeometry degenerate;

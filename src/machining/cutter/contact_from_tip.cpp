@@ -107,7 +107,7 @@ TipContactFinder::TipContactFinder(const Part& part, const Cutter& cutter,
         if (j + 1 < n)
           seed_spacing_ = std::max(seed_spacing_, (grid.seeds[i * n + j + 1].point - s.point).norm());
         if (!s.valid) continue;
-        Seed seed{f, s.uv, s.point, s.point.head<2>(), s.normal.z() > 0};
+        Seed seed{f, s.uv, s.point, s.point.head<2>(), s.normal.z() > options.location.vertical_tolerance};
         if (seed.corner)
           seed.offset_xy += tip_offset(cutter, s.normal, options.location).head<2>();
         seeds_.push_back(seed);
@@ -185,7 +185,8 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
   auto keep = [&](std::size_t face, const Eigen::Vector2d& uv, const Evaluation& ev,
                   ContactKind kind, int iterations) {
     const Face& f = part_.faces[face];
-    if (!f.contains(uv.x(), uv.y()) || ev.g.degenerate || !(ev.g.normal.z() > 0)) return;
+    // A wall touched by the side (n_z = 0, the header) does not hold the cutter up.
+    if (!f.contains(uv.x(), uv.y()) || ev.g.degenerate || !(ev.g.normal.z() > loc.vertical_tolerance)) return;
     TipContact c;
     c.face = face;
     c.uv = uv;
@@ -275,21 +276,27 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
   // Edge contacts: along each side, the local maxima (among its samples under
   // the cutter) of how far the side sticks up into the lowered cutter,
   // refined by golden-section search between the neighbouring samples.
+  // Where an edge holds the cutter: under it, except at rho = R within
+  // rounding of the distance, where the vertical side (or, for a flat end
+  // mill, the rim tangent to the edge) only grazes it (the header). An edge
+  // that crosses into the disc holds the cutter just inside, at the same
+  // height to first order.
+  const double hold = R * (1 - 1e-9);
   for (const Edge& edge : edges_) {
     const Face& face = part_.faces[edge.face];
     auto rise = [&](double t) {  // side height minus envelope height: the tip height
       const Eigen::Vector2d uv = side_uv(face.domain(), edge.side, t);
       const Eigen::Vector3d p = face.surface().point(uv.x(), uv.y());
       const double rho = (p.head<2>() - txy).norm();
-      return rho <= R ? p.z() - cutter_.height_at(rho) : -std::numeric_limits<double>::infinity();
+      return rho <= hold ? p.z() - cutter_.height_at(rho) : -std::numeric_limits<double>::infinity();
     };
     const std::vector<EdgeSample>& smp = edge.samples;
     std::vector<double> value(smp.size());
     bool any = false;
     for (std::size_t k = 0; k < smp.size(); ++k) {
       const double rho2 = (smp[k].point.head<2>() - txy).squaredNorm();
-      any |= rho2 <= R * R;
-      value[k] = rho2 <= R * R ? smp[k].point.z() - cutter_.height_at(std::sqrt(rho2))
+      any |= rho2 <= hold * hold;
+      value[k] = rho2 <= hold * hold ? smp[k].point.z() - cutter_.height_at(std::sqrt(rho2))
                                : -std::numeric_limits<double>::infinity();
     }
     if (!any) continue;

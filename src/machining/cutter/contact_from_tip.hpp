@@ -7,7 +7,8 @@
 // tangent to it with that axis, or where it sits on a face's edge. Three
 // kinds of contact exist for the end mill of cutter.hpp:
 //   corner       the corner arc touches: S_xy(u,v) + o_xy(n(u,v)) = T_xy, with
-//                o(n) the tip offset of cutter_location.hpp, n_z > 0;
+//                o(n) the tip offset of cutter_location.hpp, n_z > 0
+//                (not a side contact, below);
 //   flat_bottom  the flat bottom touches a point with a horizontal tangent
 //                plane (n = +z) within R - r of the axis (a dome's top under
 //                a flat or bull-nose cutter);
@@ -38,6 +39,16 @@
 // failed start the status is not_converged.
 // Trim curves are not treated as edges: a cutter resting on a trim curve is
 // not reported.
+// Side contacts (a vertical wall, n_z = 0 within the location options'
+// vertical_tolerance: cutter_location.hpp) are not listed: the cutter's
+// side there is vertical, so lowering the cutter slides it along the wall
+// and the wall implies no tip height. For the same reason an edge point
+// exactly at the shank radius R (within 1e-9 R, rounding) does not hold the
+// cutter: the side grazes it (the wall's own top edge, beside a side
+// contact); an edge that crosses into the disc holds it just inside, at the
+// same height to first order. The cutter located at a side contact by
+// cutter_location() rests on whatever else lies under it, or on nothing
+// (no_contact): it does not cut into the wall it touches.
 #include <Eigen/Core>
 #include <vector>
 
@@ -103,7 +114,7 @@ class TipContactFinder {
     Eigen::Vector2d uv;
     Eigen::Vector3d point;
     Eigen::Vector2d offset_xy;  // S_xy + o_xy(n): where the axis is for this contact
-    bool corner;                // n_z > 0: a corner contact is possible
+    bool corner;                // n_z > vertical tolerance: a corner contact is possible
   };
   const Part& part_;
   const Cutter& cutter_;

@@ -15,7 +15,7 @@ CutterCurvature cutter_curvature(const Cutter& cutter, const Eigen::Vector3d& no
   if (!std::isfinite(len2) || !(len2 > 0)) return c;
   const Eigen::Vector3d n = std::abs(len2 - 1) < 1e-14 ? normal : Eigen::Vector3d(normal / std::sqrt(len2));
   c.normal = n;
-  if (!(n.z() > 0)) return c;
+  if (!(n.z() >= 0)) return c;  // facing down; n_z = 0 is a side contact
   c.reachable = true;
 
   // n = sin(theta0) e + cos(theta0) z; at a horizontal contact sin is 0 and e
@@ -47,6 +47,11 @@ CutterCurvature cutter_curvature(const Cutter& cutter, const Eigen::Vector3d& no
   // sin(theta) / (r sin(theta)) is 1 / r: the ball is umbilic there.
   c.k_min = rho_c > 0 ? sin_t / rho_c : 1.0 / arc.radius;
   c.flat_bottom = horizontal && arc.centre_rho > 0;
+  // At a vertical wall dir_max is +z (to rounding) and the cylinder of
+  // radius R rises from the contact (the header): its meridian is straight,
+  // its parallel the circle of radius R seen face on.
+  c.side = n.z() <= options.vertical_tolerance;
+  c.side_k_min = 1.0 / cutter.radius();
   return c;
 }
 

@@ -23,6 +23,19 @@
 // compared; at the horizontal contact (theta0 = 0) of a cutter with a flat
 // bottom (R > r) the directions toward the axis lie on the flat bottom,
 // whose curvature is 0 (`flat_bottom`).
+// Side contact (theta0 = 90 deg, n_z = 0: a vertical wall, cutter_location.hpp):
+// the contact is the lowest point with a horizontal normal, the end of the
+// corner arc (the torus equator; the rim of a flat end mill), and the
+// cylindrical side of radius R continues straight up from it. So the
+// cutting surface has two halves there (`side`):
+//   up   (t . z > 0, angles in (-90, 90) degrees from dir_max = +z): the
+//        cylinder, curvature 0 along the vertical meridian and 1/R around;
+//   down (angles in (90, 270)): the corner arc, 1/r along the meridian and
+//        sin(90 deg) / rho_c = 1/R around (both halves share the horizontal
+//        directions); for a flat end mill the sharp rim, compared only
+//        along the horizontal circle.
+// A ball (r = R) at its equator has the same two halves: the sphere below,
+// the shank above.
 #include <Eigen/Core>
 #include <cmath>
 
@@ -32,7 +45,7 @@
 namespace furrow {
 
 struct CutterCurvature {
-  bool reachable = false;  // false when n_z <= 0: nothing else is set
+  bool reachable = false;  // false when n_z < 0: nothing else is set
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();       // unit part normal at the contact
   Eigen::Vector3d toward_axis = Eigen::Vector3d::UnitX();  // e: contact -> axis, horizontal
   Eigen::Vector3d dir_max = -Eigen::Vector3d::UnitX();     // meridian direction (unit)
@@ -48,6 +61,12 @@ struct CutterCurvature {
   // t . toward_axis > 0 (angles in (90, 270) degrees from dir_max) touch the
   // flat bottom (curvature 0); k_max, k_min, sharp describe the other half.
   bool flat_bottom = false;
+  // Side contact (0 <= n_z <= vertical_tolerance): the directions t with
+  // t . z > 0 (angles in (-90, 90) degrees from dir_max) touch the
+  // cylindrical side (curvature 0 along dir_max, 1/R along dir_min, in
+  // `side_k_min`); k_max, k_min, sharp describe the lower half.
+  bool side = false;
+  double side_k_min = 0;  // [1/mm] 1/R: the side's curvature around the axis
 };
 
 CutterCurvature cutter_curvature(const Cutter& cutter, const Eigen::Vector3d& normal,

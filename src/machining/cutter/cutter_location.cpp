@@ -36,9 +36,12 @@ CutterLocation cutter_location(const Cutter& cutter, const Eigen::Vector3d& cont
   if (!std::isfinite(len) || !(len > 0) || !contact.allFinite()) return loc;
   const Eigen::Vector3d n = normal / len;
   loc.normal = n;
-  if (!(n.z() > 0)) return loc;  // not reachable from above: nothing computed
+  // Facing down: not reachable from above, nothing computed. n_z = 0 is a
+  // side contact (see the header): the same formulas, theta0 = 90 deg.
+  if (!(n.z() >= 0)) return loc;
   loc.reachable = true;
   loc.toward_axis = axis_side(n, options, &loc.horizontal);
+  loc.vertical = n.z() <= options.vertical_tolerance;
   loc.contact_angle = std::acos(std::min(1.0, n.z()));
   const Eigen::Vector2d profile = cutter.profile_point(loc.contact_angle);
   loc.contact_radius = profile.x();

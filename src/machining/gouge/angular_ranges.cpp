@@ -50,16 +50,20 @@ void AngularRanges::normalize() {
             });
   AngularRange merged[kCapacity];
   std::size_t m = 0;
+  // Arcs that meet at a window edge may miss each other by rounding (an end
+  // computed as 2.5 pi - 2 pi is not 0.5 pi to the last bit): closer than
+  // this they touch [rad] (reports give degrees to 1e-4).
+  constexpr double kTouch = 1e-12;
   for (std::size_t i = 0; i < count_; ++i) {
     const AngularRange& a = arcs_[i];
-    if (m > 0 && a.start <= merged[m - 1].end()) {
+    if (m > 0 && a.start <= merged[m - 1].end() + kTouch) {
       merged[m - 1].width = std::min(kTwoPi, std::max(merged[m - 1].end(), a.end()) - merged[m - 1].start);
     } else {
       merged[m++] = a;
     }
   }
   // The last arc may run past 2 pi into the first ones.
-  while (m > 1 && merged[m - 1].end() >= merged[0].start + kTwoPi) {
+  while (m > 1 && merged[m - 1].end() + kTouch >= merged[0].start + kTwoPi) {
     AngularRange& last = merged[m - 1];
     const double end = std::max(last.end(), merged[0].end() + kTwoPi);
     last.width = std::min(kTwoPi, end - last.start);

@@ -59,7 +59,8 @@ class AngularRanges {
   // A zero-width arc (a single direction) is kept when it lies in the window
   // (ends included); other pieces only when they have positive width.
   void add_clipped(const AngularRange& arc, const AngularRange& window);
-  // Sorts by start and merges overlapping or touching arcs (also across 0).
+  // Sorts by start and merges overlapping or touching arcs (also across 0;
+  // arcs within 1e-12 rad of each other touch: rounding at window edges).
   void normalize();
   bool contains(double angle) const;
 

@@ -62,10 +62,12 @@ std::vector<ContactSite> sites_from_points(const Part& part,
     const Face& face = part.faces[foot.face];
     const DifferentialGeometry g = face.geometry(foot.uv.x(), foot.uv.y());
     const Eigen::Vector3d n = p.has_normal ? p.normal : g.normal;
-    if (!(n.z() > 0))
+    // n_z = 0 is a vertical wall, touched by the cutter's side
+    // (cutter_location.hpp); only a normal facing down is out of reach.
+    if (!(n.z() >= 0))
       throw InputError(where + ": the " + std::string(p.has_normal ? "given" : "part's") +
                        " normal " + vec_text(n) +
-                       " has n_z <= 0: the point is not reachable from above by a 3-axis cutter");
+                       " has n_z < 0: the point is not reachable from above by a 3-axis cutter");
     if (p.has_normal && !g.degenerate && n.dot(g.normal) < cos_limit) {
       char buf[200];
       std::snprintf(buf, sizeof buf,

@@ -34,7 +34,7 @@ struct PointSiteOptions {
 // Sites for contact points read from a file (`source` names it in errors):
 // each point is projected onto the part. Throws InputError naming
 // `source:line` when a point is farther than max_distance from the part,
-// when its normal (given, or the part's when none is given) has n_z <= 0 so
+// when its normal (given, or the part's when none is given) has n_z < 0 so
 // no 3-axis cutter can reach it from above, or when a given normal disagrees
 // with the part's (a point on the wrong side or a reversed face).
 std::vector<ContactSite> sites_from_points(const Part& part,

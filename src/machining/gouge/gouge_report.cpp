@@ -26,6 +26,7 @@ json cutter_json(const LocalGouge& g) {
   j["contact_angle_deg"] = sj::rounded(c.contact_angle() * kRadToDeg, sj::kAngleQuantum, "angle");
   j["sharp"] = c.sharp;
   j["flat_bottom"] = c.flat_bottom;
+  j["side"] = c.side;
   return j;
 }
 

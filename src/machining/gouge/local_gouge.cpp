@@ -20,6 +20,13 @@ struct CutterPiece {
 };
 
 int cutter_pieces(const CutterCurvature& c, std::array<CutterPiece, 2>& pieces) {
+  if (c.side) {
+    // dir_max = +z at a side contact, so t . z > 0 is -90..90 degrees: the
+    // cylindrical side (straight up, 1/R around); below, the corner arc.
+    pieces[0] = {{1.5 * kPi, kPi}, 0.0, c.side_k_min, false};
+    pieces[1] = {{0.5 * kPi, kPi}, c.k_max, c.k_min, c.sharp};
+    return 2;
+  }
   if (!c.flat_bottom) {
     pieces[0] = {{0.0, kTwoPi}, c.k_max, c.k_min, c.sharp};
     return 1;
@@ -153,7 +160,10 @@ LocalGouge check_local_gouge(const Cutter& cutter, const Eigen::Vector3d& contac
   if (options.quick_accept) {
     double k1 = -kInf, k_min = kInf;
     for (std::size_t s = 0; s < side_count; ++s) k1 = std::max(k1, sides[s].geometry->k1);
-    for (int p = 0; p < piece_count; ++p) k_min = std::min(k_min, pieces[p].k_min);
+    // The smallest cutter curvature in any direction: a piece's k_max is its
+    // curvature along dir_max, which is the smaller one on the straight side.
+    for (int p = 0; p < piece_count; ++p)
+      k_min = std::min({k_min, pieces[p].k_min, pieces[p].sharp ? kInf : pieces[p].k_max});
     if (k1 <= k_min + tol) {
       result.status = GougeStatus::clear;
       result.quick = true;
@@ -203,6 +213,9 @@ LocalGouge check_local_gouge(const Cutter& cutter, const Eigen::Vector3d& contac
     // The arcs and the maximum come from the same f; only a maximum within
     // rounding of tol could leave no arc: report its single direction.
     if (ranges.empty()) ranges.add(best_angle, 0.0);
+    // The rim's single directions come after the last merge: a side
+    // contact's lie on the ends of the side's arcs (one range, not three).
+    ranges.normalize();
     result.ranges = ranges;
   } else {
     result.status = GougeStatus::clear;

@@ -41,6 +41,12 @@
 // the directions toward the axis (90..270 degrees) lie on the flat bottom,
 // curvature 0, and are compared with it; the others with the corner.
 //
+// Side contact (theta0 = 90 deg, a vertical wall, cutter_curvature.hpp): the
+// upward directions (-90..90 degrees) are compared with the cylindrical
+// side (0 along the vertical, 1/R around), the downward ones with the corner
+// arc at its equator (1/r along the vertical, 1/R around; for a flat end
+// mill only the horizontal circle, as above).
+//
 // Windows: a surface can be compared over only part of the circle (at a
 // border between faces each face over the directions that point into it,
 // compound_border.hpp); ranges and the largest excess are then taken over the
@@ -70,7 +76,7 @@ struct GougeOptions {
 enum class GougeStatus : unsigned char {
   clear = 0,           // no direction gouges
   gouge = 1,           // some direction gouges (see ranges)
-  unreachable = 2,     // contact normal n_z <= 0: not reachable from above
+  unreachable = 2,     // contact normal n_z < 0: not reachable from above
   degenerate = 3,      // the part's normal is undefined there
   concave_crease = 4,  // a concave edge between faces (compound_border.hpp)
 };

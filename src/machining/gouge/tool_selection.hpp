@@ -19,7 +19,8 @@
 // the cutter rests on an edge rather than on a tangency, is not detected.)
 //
 // Sites that no end mill can machine are excluded from the picks and
-// counted: unreachable from above (n_z <= 0), degenerate normals, concave
+// counted: unreachable from above (n_z < 0; a vertical wall, n_z = 0, is cut with the
+// side), degenerate normals, concave
 // creases. Where even the smallest tool gouges, the result says by how much
 // the design would have to change: in the smallest tool's worst direction the
 // part's normal curvature and the most it may be there (the tool's own

@@ -26,7 +26,15 @@ const char* to_string(ErrorCellStatus status) {
 NormalError zmap_error(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
                        const NormalErrorOptions& options) {
   auto height = [&zmap](double x, double y) { return zmap.height_at(x, y); };
-  return normal_error(height, point, normal, options);
+  // Steps of at most one cell of horizontal travel, so the search cannot
+  // jump over uncut nodes between passes (normal_error.hpp "max_step").
+  NormalErrorOptions o = options;
+  const double nxy = std::hypot(normal.x(), normal.y());
+  if (nxy > 0) {
+    const double cell_step = zmap.cell() / nxy;
+    o.max_step = o.max_step > 0 ? std::min(o.max_step, cell_step) : cell_step;
+  }
+  return normal_error(height, point, normal, o);
 }
 
 bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
@@ -41,7 +49,7 @@ bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Ei
 NormalError zmap_error(const ZMap& zmap, const Face& face, const Eigen::Vector2d& uv,
                        const NormalErrorOptions& options) {
   Eigen::Vector3d p, n;
-  if (!face_normal(face, uv.x(), uv.y(), p, n) || !(n.z() > 0)) return {};
+  if (!face_normal(face, uv.x(), uv.y(), p, n) || !(n.z() >= 0)) return {};
   return zmap_error(zmap, p, n, options);
 }
 
@@ -184,7 +192,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
           continue;
         }
         Eigen::Vector3d p, n;
-        if (!face_normal(face, u, v, p, n) || !(n.z() > 0)) {
+        if (!face_normal(face, u, v, p, n) || !(n.z() >= 0)) {
           m.status[k] = ErrorCellStatus::not_machinable;
           continue;
         }

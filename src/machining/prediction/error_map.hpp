@@ -15,7 +15,8 @@
 //     band than by one sampled phase.
 // A sample has a status: reached, not reached by the tool (nothing above it
 // was cut), outside the face (trimmed away) or not machinable (degenerate
-// normal, or n_z <= 0: not reachable from above). Errors are only defined
+// normal, or n_z < 0: not reachable from above; a vertical wall, n_z = 0,
+// is cut by the cutter's side and evaluated). Errors are only defined
 // where reached; nothing else carries a number.
 //
 // Boundary samples: a sample is flagged `boundary` when its error rests on
@@ -103,7 +104,7 @@ bool is_boundary_sample(const ZMap& zmap, const Eigen::Vector3d& point, const Ei
 // Error at one surface point from the z-map.
 NormalError zmap_error(const ZMap& zmap, const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
                        const NormalErrorOptions& options = {});
-// At (u, v) of a face; not reached when the normal is degenerate or n_z <= 0.
+// At (u, v) of a face; not reached when the normal is degenerate or n_z < 0.
 NormalError zmap_error(const ZMap& zmap, const Face& face, const Eigen::Vector2d& uv,
                        const NormalErrorOptions& options = {});
 

@@ -56,7 +56,7 @@ FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& 
                                    const FurrowStepOptions& options) {
   FurrowStepResult result;
   const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
-  if (!p0.valid || !p1.valid || !(p0.normal.z() > 0) || !(p1.normal.z() > 0)) return result;
+  if (!p0.valid || !p1.valid || !(p0.normal.z() >= 0) || !(p1.normal.z() >= 0)) return result;
   result.valid = true;
   result.tip0 = tip0;
   result.tip1 = tip1;
@@ -67,7 +67,7 @@ FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& 
   auto error_at = [&](double lambda, bool& reached) {
     const SurfacePoint p = curve(lambda);
     reached = false;
-    if (!p.valid || !(p.normal.z() > 0)) return 0.0;
+    if (!p.valid || !(p.normal.z() >= 0)) return 0.0;
     const NormalError e = normal_error(height, p.point, p.normal, options.normal);
     reached = e.reached;
     if (e.reached && !e.converged) all_converged = false;

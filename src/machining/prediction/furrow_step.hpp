@@ -54,7 +54,7 @@ struct ErrorExtreme {
 
 struct FurrowStepResult {
   // False when a contact point is invalid or cannot be reached from above
-  // (n_z <= 0): nothing else is set.
+  // (n_z < 0): nothing else is set.
   bool valid = false;
   ErrorExtreme undercut;  // largest error, >= 0 (0 at a contact point when nothing is left)
   ErrorExtreme overcut;   // smallest error, <= 0 (0 at a contact point when nothing is cut)

@@ -16,7 +16,23 @@
 // refined by find_bracketed_root. Q with H = +infinity above it was not
 // reached by the tool: `reached` is false and the error undefined (0). So is
 // an undercut whose normal leaves the cut area before meeting the machined
-// surface (a steep flank next to the path).
+// surface (a steep flank next to the path), or does not meet it within
+// `max_distance`: above Q there is then stock the tool never came near, not
+// a machined surface, and no number describes it (docs/formats.md
+// "prediction.json": such samples are counted as not reached, never given a
+// value).
+//
+// Why `max_step`: H may be finite, then +infinity (uncut), then finite again
+// along the normal (two passes with uncut stock between them). A step that
+// jumped over the uncut gap would meet the far pass's envelope and report
+// the distance to it as material left, although the normal went through
+// stock first. A step can also jump the other way, past a short stretch
+// where the normal lies above the machined surface (a true crossing) into
+// uncut space beyond, and report nothing where material is left. With steps
+// no longer than max_step (the z-map sets one cell of horizontal travel,
+// the finest feature it resolves) the search sees both; and a crossing
+// found at a jump of H from +infinity (the far side of a gap narrower than
+// a step) is not reached unless a finer scan finds a true crossing first.
 #include <Eigen/Core>
 #include <cmath>
 
@@ -29,6 +45,7 @@ struct NormalErrorOptions {
   int max_iterations = 100;  // root refinement
   double max_distance = 10;  // search range along the normal [mm]
   double growth = 1.6;       // bracket growth per step
+  double max_step = 0;       // [mm] longest step along the normal; 0: no limit (see above)
 };
 
 struct NormalError {
@@ -61,7 +78,9 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
   step = std::max(step, 10 * options.tolerance);
   double ta = 0, ga = g0;
   for (;;) {
-    const double tb = dir * std::min(step, options.max_distance);
+    double reach = std::min(step, options.max_distance);
+    if (options.max_step > 0) reach = std::min(reach, std::fabs(ta) + options.max_step);
+    const double tb = dir * reach;
     const double gb = g(tb);
     const bool crossed = dir > 0 ? gb <= 0 : gb >= 0;  // +inf counts going down: out of the cut
     if (crossed) {
@@ -71,9 +90,41 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
       result.end = r.x;
       result.converged = r.converged;
       result.wall = !(std::fabs(r.value) <= std::max(kWallJump, 1e3 * options.tolerance));
+      // Going up, a wall whose near side is uncut: the normal went through
+      // stock before meeting this envelope (the header). The bracket may
+      // also hold an earlier, true crossing before the stock (the root
+      // finder need not find the first of several): scan [ta, root] finely
+      // for the first sign change or the first uncut point, whichever comes
+      // first.
+      if (dir > 0 && result.wall) {
+        const double before = r.x - std::max(4 * options.tolerance, 1e-12 * std::fabs(r.x));
+        if (before > ta && !std::isfinite(g(before))) {
+          constexpr int kScan = 256;
+          const double dt = (before - ta) / kScan;
+          double sa = ta, sga = ga;
+          for (int k = 1; k <= kScan; ++k) {
+            const double sb = k == kScan ? before : ta + k * dt;
+            const double sgb = g(sb);
+            if (!std::isfinite(sgb)) break;  // stock first: not reached
+            if (sgb <= 0) {
+              const ScalarSearchResult first =
+                  find_bracketed_root(g, sa, sga, sb, sgb, {options.tolerance, options.max_iterations});
+              result.error = first.x;
+              result.end = first.x;
+              result.converged = first.converged;
+              result.wall = !(std::fabs(first.value) <= std::max(kWallJump, 1e3 * options.tolerance));
+              return result;
+            }
+            sa = sb, sga = sgb;
+          }
+          result = NormalError{};
+          result.end = r.x;
+          return result;
+        }
+      }
       return result;
     }
-    if (!std::isfinite(gb) || step >= options.max_distance) {
+    if (!std::isfinite(gb) || reach >= options.max_distance) {
       // Going up: the normal left the cut area without meeting the machined
       // surface. Going down beyond the range: an overcut deeper than it.
       result.reached = dir < 0;
@@ -82,7 +133,7 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
       return result;
     }
     ta = tb, ga = gb;
-    step *= options.growth;
+    if (reach >= step) step *= options.growth;
   }
 }
 

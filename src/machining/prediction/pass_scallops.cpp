@@ -80,7 +80,7 @@ std::vector<PassScallop> pass_pair_scallops(const VerticalProjector& projector, 
                                                     : vertical_section_curve(projector, s, end);
       auto error_at = [&](double lambda) {
         const SurfacePoint p = curve(lambda);
-        if (!p.valid || !(p.normal.z() > 0) || !part.faces[p.face].contains(p.uv.x(), p.uv.y()))
+        if (!p.valid || !(p.normal.z() >= 0) || !part.faces[p.face].contains(p.uv.x(), p.uv.y()))
           return -std::numeric_limits<double>::infinity();
         const NormalError e = zmap_error(zmap, p.point, p.normal, options.normal);
         return e.reached ? e.error : -std::numeric_limits<double>::infinity();

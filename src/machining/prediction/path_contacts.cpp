@@ -30,7 +30,7 @@ PathPoint locate_contact(const Part& part, const Cutter& cutter, const Toolpath&
   result.line = p.line;
   const CutterLocation loc = cutter_location(cutter, p.position, p.normal, options.location);
   if (!loc.reachable)
-    throw InputError(at_line(path, p) + ": the normal points sideways or down (n_z <= 0): a 3-axis cutter "
+    throw InputError(at_line(path, p) + ": the normal points down (n_z < 0): a 3-axis cutter "
                                         "cannot reach this contact point from above");
   result.tip = loc.tip;
   SurfacePoint s;

@@ -11,7 +11,7 @@
 //     given point and normal (what the CAM system meant); the contact on the
 //     part is the point's (u, v) when the file gives it (checked against the
 //     point), else its foot point (closest_point.hpp). A point farther than
-//     `max_contact_distance` from the part, or whose normal has n_z <= 0,
+//     `max_contact_distance` from the part, or whose normal has n_z < 0,
 //     is an InputError naming the file and line: the path does not belong
 //     to this part or cannot be cut from above.
 // Tips more than `air_gap` above the part (approach, retract and link moves

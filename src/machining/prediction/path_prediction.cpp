@@ -175,6 +175,15 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
       f.max_overcut.push_back(c.max_overcut);
       f.boundary.push_back(c.boundary);
     }
+    f.has_samples = true;
+    for (const ErrorCellStatus st : m.status) {
+      switch (st) {
+        case ErrorCellStatus::reached: ++f.samples_reached; break;
+        case ErrorCellStatus::not_reached: ++f.samples_not_reached; break;
+        case ErrorCellStatus::not_machinable: ++f.samples_not_machinable; break;
+        case ErrorCellStatus::outside: ++f.samples_outside; break;
+      }
+    }
     p.faces.push_back(f);
   }
   return p;

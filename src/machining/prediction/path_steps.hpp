@@ -15,7 +15,7 @@ enum class StepStatus : unsigned char {
   evaluated = 0,
   in_air = 1,      // a tip above the part by more than the air gap: an approach, link or retract
   no_contact = 2,  // a tip has no contact point on the part
-  unreachable = 3, // a contact normal has n_z <= 0, or the section leaves the part
+  unreachable = 3, // a contact normal has n_z < 0, or the section leaves the part
 };
 const char* to_string(StepStatus status);
 

@@ -93,6 +93,12 @@ struct FaceGridRecord {
   // boundary, whose errors depend on the grid and the path's chords
   // (error_map.hpp "Boundary samples"); all 0 when the file has none.
   std::vector<int> boundary;
+  // Error-map samples of the face per status (docs/formats.md
+  // "prediction.json"): `not_reached` are the uncut ones, which the tool
+  // never came near and which carry no number. Optional when reading (files
+  // written before they were counted): has_samples is false then.
+  bool has_samples = false;
+  std::size_t samples_reached = 0, samples_not_reached = 0, samples_not_machinable = 0, samples_outside = 0;
 };
 
 struct ZMapRecord {

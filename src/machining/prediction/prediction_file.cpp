@@ -97,6 +97,11 @@ json face_json(const FaceGridRecord& f) {
   json boundary = json::array();
   for (std::size_t k = 0; k < f.status.size(); ++k) boundary.push_back(k < f.boundary.size() ? f.boundary[k] : 0);
   j["boundary"] = boundary;
+  if (f.has_samples)
+    j["samples"] = {{"reached", f.samples_reached},
+                    {"not_reached", f.samples_not_reached},
+                    {"not_machinable", f.samples_not_machinable},
+                    {"outside", f.samples_outside}};
   return j;
 }
 

@@ -115,6 +115,25 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
       if (f.boundary[k] < 0) throw InputError(jf::child(wb, k) + ": expected a count (>= 0)");
     }
   }
+  // Optional (files written before the samples were counted per face). A
+  // cell's status says some of its samples have that status, so a status
+  // letter without a sample of its kind is a contradiction.
+  if (const json* samples = jf::optional_member(o, "samples", where)) {
+    const std::string wsam = jf::child(where, "samples");
+    jf::object(*samples, wsam);
+    f.has_samples = true;
+    f.samples_reached = count(jf::member(*samples, "reached", wsam), jf::child(wsam, "reached"));
+    f.samples_not_reached = count(jf::member(*samples, "not_reached", wsam), jf::child(wsam, "not_reached"));
+    f.samples_not_machinable = count(jf::member(*samples, "not_machinable", wsam), jf::child(wsam, "not_machinable"));
+    f.samples_outside = count(jf::member(*samples, "outside", wsam), jf::child(wsam, "outside"));
+    const std::pair<ErrorCellStatus, std::size_t> kinds[] = {{ErrorCellStatus::reached, f.samples_reached},
+                                                             {ErrorCellStatus::not_reached, f.samples_not_reached}};
+    for (const auto& [kind, number] : kinds)
+      for (std::size_t k = 0; k < n; ++k)
+        if (f.status[k] == kind && number == 0)
+          throw InputError(jf::child(wsam, kind == ErrorCellStatus::reached ? "reached" : "not_reached") +
+                           ": 0, but cell " + std::to_string(k) + " has status '" + status_letter(kind) + "'");
+  }
   for (std::size_t k = 0; k < n; ++k)
     if (f.status[k] == ErrorCellStatus::reached && !(f.max_overcut[k] <= f.mean[k] && f.mean[k] <= f.max_undercut[k]))
       throw InputError(jf::child(where, "mean") + "[" + std::to_string(k) +
