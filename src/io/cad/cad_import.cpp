@@ -27,6 +27,14 @@
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <IGESGeom_BSplineCurve.hxx>
+#include <IGESGeom_CircularArc.hxx>
+#include <IGESGeom_CompositeCurve.hxx>
+#include <IGESGeom_CopiousData.hxx>
+#include <IGESGeom_CurveOnSurface.hxx>
+#include <IGESGeom_Line.hxx>
+#include <IGESGeom_SurfaceOfRevolution.hxx>
+#include <IGESGeom_TrimmedSurface.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_ReportEntity.hxx>
 #include <Interface_UndefinedContent.hxx>
@@ -149,8 +157,16 @@ void check_signature(const std::string& path, Format format) {
 
 // ---------------------------------------------------------------- reading
 
+// What the file itself says about a face's outer boundary in its own
+// parameter plane (IGES trimmed surfaces; see file_boundary()).
+struct FileBoundary {
+  int sense = 0;                // +1 counterclockwise, -1 clockwise, 0 not given
+  double rotation_extent = -1;  // range of the rotation angle v [rad] on a type 120, -1 if not one
+};
+
 struct FaceOrigin {
   std::string name, entity;
+  FileBoundary boundary;
 };
 
 struct LoadedFile {
@@ -271,6 +287,115 @@ void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
   }
 }
 
+// ---------------------------------------------------------------- IGES boundary sense
+
+// Point of an IGES rational B-spline (type 126) at t, x and y only (de Boor
+// on the homogeneous poles; knots are numbered from -degree in OpenCASCADE).
+gp_XY iges_bspline_point(const Handle(IGESGeom_BSplineCurve)& c, double t) {
+  const int p = c->Degree(), n = c->UpperIndex();
+  auto knot = [&](int i) { return c->Knot(i - p); };  // i = 0 .. n + p + 1
+  int k = p;
+  while (k < n && t >= knot(k + 1)) ++k;
+  const bool polynomial = c->IsPolynomial();
+  std::vector<Eigen::Vector3d> d(static_cast<std::size_t>(p + 1));
+  for (int j = 0; j <= p; ++j) {
+    const double w = polynomial ? 1.0 : c->Weight(k - p + j);
+    const gp_Pnt q = c->Pole(k - p + j);
+    d[static_cast<std::size_t>(j)] = {w * q.X(), w * q.Y(), w};
+  }
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      const int i = k - p + j;
+      const double span = knot(i + p - r + 1) - knot(i);
+      const double alpha = span > 0 ? (t - knot(i)) / span : 0.0;
+      d[static_cast<std::size_t>(j)] =
+          (1 - alpha) * d[static_cast<std::size_t>(j - 1)] + alpha * d[static_cast<std::size_t>(j)];
+    }
+  const Eigen::Vector3d& h = d[static_cast<std::size_t>(p)];
+  return {h.x() / h.z(), h.y() / h.z()};
+}
+
+// Points along an IGES parameter-space curve, in the surface's (u,v), for
+// the curve types CAD systems write there (102 of 100/106/110/126). False
+// for anything else, or a curve moved by a transformation matrix.
+bool sample_parameter_curve(const Handle(IGESData_IGESEntity)& curve, std::vector<gp_XY>& points, int depth) {
+  constexpr int kSamples = 32;
+  if (curve.IsNull() || depth > 8 || curve->HasTransf()) return false;
+  if (const auto composite = Handle(IGESGeom_CompositeCurve)::DownCast(curve); !composite.IsNull()) {
+    for (int i = 1; i <= composite->NbCurves(); ++i)
+      if (!sample_parameter_curve(composite->Curve(i), points, depth + 1)) return false;
+    return composite->NbCurves() > 0;
+  }
+  if (const auto line = Handle(IGESGeom_Line)::DownCast(curve); !line.IsNull()) {
+    points.push_back({line->StartPoint().X(), line->StartPoint().Y()});
+    points.push_back({line->EndPoint().X(), line->EndPoint().Y()});
+    return true;
+  }
+  if (const auto arc = Handle(IGESGeom_CircularArc)::DownCast(curve); !arc.IsNull()) {
+    // Counterclockwise from the start to the end point (IGES type 100).
+    const gp_XY c = arc->Center().XY(), a = arc->StartPoint().XY() - c, b = arc->EndPoint().XY() - c;
+    const double a0 = std::atan2(a.Y(), a.X());
+    double a1 = std::atan2(b.Y(), b.X());
+    while (a1 <= a0) a1 += 2 * M_PI;
+    const double radius = a.Modulus();
+    for (int k = 0; k <= kSamples; ++k) {
+      const double angle = a0 + (a1 - a0) * k / kSamples;
+      points.push_back(c + radius * gp_XY(std::cos(angle), std::sin(angle)));
+    }
+    return true;
+  }
+  if (const auto data = Handle(IGESGeom_CopiousData)::DownCast(curve); !data.IsNull()) {
+    for (int i = 1; i <= data->NbPoints(); ++i) points.push_back({data->Point(i).X(), data->Point(i).Y()});
+    return data->NbPoints() > 0;
+  }
+  if (const auto spline = Handle(IGESGeom_BSplineCurve)::DownCast(curve); !spline.IsNull()) {
+    const double t0 = spline->UMin(), t1 = spline->UMax();
+    for (int k = 0; k <= kSamples; ++k) points.push_back(iges_bspline_point(spline, t0 + (t1 - t0) * k / kSamples));
+    return true;
+  }
+  return false;
+}
+
+// Which way the outer boundary of an IGES trimmed surface (type 144) runs in
+// the file's own parameter plane, and, on a surface of revolution (type
+// 120, whose v is the rotation angle: IGES 5.3), over what range of angles.
+// The sense is 0 when the file does not tell (no parameter-space curve,
+// curve types not read by sample_parameter_curve, a degenerate loop).
+//
+// Why it matters: the surface's (u,v) rectangle in the file is not periodic,
+// so a closed boundary curve there encloses one region whichever way it
+// runs, and writers do not all run outer boundaries the same way. After
+// OpenCASCADE's translation the same boundary lies on a periodic surface,
+// where a boundary that runs from pole to pole (a lune of a sphere written
+// as a surface of revolution) encloses the face on one side and the rest of
+// the sphere on the other; only the way the boundary runs tells which.
+// OpenCASCADE keeps the IGES surface normal (for type 120 its angle is the
+// file's terminate angle minus v, its other parameter the file's u), so its
+// parameter map keeps the sense of every loop; but (7.6) it routes the pole
+// edges of a clockwise boundary around the other side of the sphere, and
+// such a face came in as the rest of the sphere: a quarter sphere of
+// 70.88 mm^2 as 212.65 mm^2 (docs/formats.md "CAD import", "Seams and
+// poles"). route_like_file() routes them back.
+FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
+  FileBoundary boundary;
+  if (trimmed.IsNull() || !trimmed->HasOuterContour()) return boundary;
+  const Handle(IGESGeom_CurveOnSurface) contour = trimmed->OuterContour();
+  if (contour.IsNull()) return boundary;
+  std::vector<gp_XY> points;
+  if (!sample_parameter_curve(contour->CurveUV(), points, 0) || points.size() < 3) return boundary;
+  double twice_area = 0, u0 = points[0].X(), u1 = u0, v0 = points[0].Y(), v1 = v0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const gp_XY& a = points[k];
+    const gp_XY& b = points[(k + 1) % points.size()];
+    twice_area += a.X() * b.Y() - b.X() * a.Y();
+    u0 = std::min(u0, a.X()), u1 = std::max(u1, a.X()), v0 = std::min(v0, a.Y()), v1 = std::max(v1, a.Y());
+  }
+  if (!(std::abs(twice_area) > 1e-9 * (u1 - u0) * (v1 - v0))) return boundary;
+  boundary.sense = twice_area > 0 ? 1 : -1;
+  if (trimmed->Surface()->IsKind(STANDARD_TYPE(IGESGeom_SurfaceOfRevolution))) boundary.rotation_extent = v1 - v0;
+  return boundary;
+}
+
 std::string unit_name(const std::string& occt_unit) {
   const std::string u = to_lower(trim(occt_unit));
   if (u == "mm" || u == "millimetre" || u == "millimeter") return "mm";
@@ -337,7 +462,9 @@ LoadedFile read_file(const std::string& path, Format format) {
     if (!meaningful_name(name)) name.clear();
     const TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
     if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
-      file.origins.emplace(result.TShape().get(), FaceOrigin{name, entity_label(model, entity)});
+      file.origins.emplace(result.TShape().get(),
+                           FaceOrigin{name, entity_label(model, entity),
+                                      file_boundary(Handle(IGESGeom_TrimmedSurface)::DownCast(entity))});
     } else if (result.IsNull() && format == Format::step && attempted(model, process, entity)) {
       file.untranslated.push_back({name, entity_label(model, entity),
                                    entity_problems(model, process, entity)});
@@ -469,7 +596,12 @@ struct EdgeUse {
   bool degenerate = false;
   double tolerance = 0;  // the edge's 3-D tolerance [mm]
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // whole periods added to unwrap a seam
+  // A degenerate edge (a pole: one point in 3-D) rerouted along the pole
+  // line between its neighbours' ends (route_like_file) instead of its pcurve.
+  bool bridged = false;
+  Eigen::Vector2d bridge_from = Eigen::Vector2d::Zero(), bridge_to = Eigen::Vector2d::Zero();
   Eigen::Vector2d uv(double t) const {
+    if (bridged) return bridge_from + (to == from ? 0.0 : (t - from) / (to - from)) * (bridge_to - bridge_from);
     const gp_Pnt2d p = pcurve->Value(t);
     return Eigen::Vector2d(p.X(), p.Y()) + shift;
   }
@@ -483,6 +615,11 @@ struct WireUse {
 Bnd_Box2d wire_box(const WireUse& wire) {
   Bnd_Box2d box;
   for (const EdgeUse& e : wire.edges) {
+    if (e.bridged) {
+      box.Update(std::min(e.bridge_from.x(), e.bridge_to.x()), std::min(e.bridge_from.y(), e.bridge_to.y()),
+                 std::max(e.bridge_from.x(), e.bridge_to.x()), std::max(e.bridge_from.y(), e.bridge_to.y()));
+      continue;
+    }
     Bnd_Box2d edge_box;
     BndLib_Add2dCurve::AddOptimal(e.pcurve, std::min(e.from, e.to), std::max(e.from, e.to), 0.0,
                                   edge_box);
@@ -504,9 +641,75 @@ struct Periods {
   double du = 0, dv = 0;
 };
 
+// Twice the signed area of a wire's (u,v) loop (positive: counterclockwise).
+double twice_signed_area(const WireUse& wire) {
+  constexpr int kSamples = 32;
+  std::vector<Eigen::Vector2d> points;
+  for (const EdgeUse& e : wire.edges)
+    for (int k = 0; k < (e.degenerate ? 1 : kSamples); ++k)
+      points.push_back(e.uv(e.from + (e.to - e.from) * k / (e.degenerate ? 1 : kSamples)));
+  double sum = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector2d& a = points[k];
+    const Eigen::Vector2d& b = points[(k + 1) % points.size()];
+    sum += a.x() * b.y() - b.x() * a.y();
+  }
+  return sum;
+}
+
+// Makes a wire that runs from pole to pole enclose the region its file
+// gives it (file_boundary(); `sense` is the sense of the file's loop as this
+// wire is walked). Such a wire has (at least) two degenerate edges, points
+// in 3-D that the parameter plane draws as stretches of the pole lines; the
+// stretch of the loop between two of them may be moved by a period, which
+// keeps every 3-D edge but swaps the region enclosed for the rest of the
+// surface (a lune for the rest of the sphere). OpenCASCADE draws the pole
+// edges of a clockwise IGES boundary so that the loop runs counterclockwise,
+// around the rest of the sphere; the stretch is moved here so that the loop
+// runs the way the file's does, the pole edges then going straight between
+// their neighbours' ends. On a surface of revolution the moved loop must
+// also span the file's range of rotation angles (the periodic parameter is
+// that angle), so a loop OpenCASCADE merely reversed is never swapped for
+// the rest. A wire whose sense agrees, or without two pole edges (which
+// then cannot enclose the rest of the surface), is left as it is.
+void route_like_file(WireUse& wire, const Periods& periods, int sense, double rotation_extent) {
+  if (sense == 0 || periods.u == periods.v) return;  // no file sense; no or two periodic directions
+  const double area = twice_signed_area(wire);
+  if (area == 0 || (area > 0) == (sense > 0)) return;
+  std::vector<std::size_t> poles;
+  for (std::size_t k = 0; k < wire.edges.size(); ++k)
+    if (wire.edges[k].degenerate) poles.push_back(k);
+  const std::size_t n = wire.edges.size();
+  const double period = periods.u ? periods.du : periods.dv;
+  const int axis = periods.u ? 0 : 1;
+  for (std::size_t i = 0; i < poles.size(); ++i)
+    for (std::size_t j = i + 1; j < poles.size(); ++j)
+      for (const double step : {period, -period}) {
+        WireUse moved = wire;
+        for (std::size_t k = poles[i] + 1; k < poles[j]; ++k) moved.edges[k].shift[axis] += step;
+        for (const std::size_t pole : {poles[i], poles[j]}) {
+          EdgeUse& e = moved.edges[pole];
+          const EdgeUse& before = moved.edges[(pole + n - 1) % n];
+          const EdgeUse& after = moved.edges[(pole + 1) % n];
+          e.bridge_from = before.uv(before.to);
+          e.bridge_to = after.uv(after.from);
+          e.bridged = true;
+        }
+        double u0, v0, u1, v1;
+        wire_box(moved).Get(u0, v0, u1, v1);
+        const double extent = axis == 0 ? u1 - u0 : v1 - v0;
+        const bool spans_file = rotation_extent < 0 || std::abs(extent - rotation_extent) <= 1e-3 * period;
+        if ((twice_signed_area(moved) > 0) == (sense > 0) && extent <= period * (1 + 1e-9) && spans_file) {
+          wire = std::move(moved);
+          return;
+        }
+      }
+}
+
 // The face's wires as chains of pcurves, unwrapped so that each chain is
 // continuous in (u,v) even where it crosses a periodic surface's seam.
-std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods) {
+// `file` is what the file says about the outer boundary (FaceOrigin).
+std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods, const FileBoundary& file) {
   std::vector<WireUse> wires;
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
@@ -547,6 +750,13 @@ std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods)
       throw FaceFailure("a boundary wire winds around the periodic surface without a seam edge "
                         "(heal the model, e.g. re-export it as a solid)");
     wires.push_back(std::move(use));
+  }
+  // The outer wire encloses the region the file's boundary does (walked on a
+  // reversed face, the wire runs against the file's loop).
+  if (file.sense != 0) {
+    const int sense = face.Orientation() == TopAbs_REVERSED ? -file.sense : file.sense;
+    for (WireUse& w : wires)
+      if (w.outer || wires.size() == 1) route_like_file(w, periods, sense, file.rotation_extent);
   }
   // Inner wires may come a period away from the outer one (pcurves projected
   // into [0, 2 pi) each on their own): move each next to the outer wire.
@@ -669,7 +879,7 @@ struct ConvertedFace {
   CadFaceReport report;
 };
 
-ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
+ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const FileBoundary& file,
                            const CadImportOptions& options) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (surface.IsNull()) throw FaceFailure("it has no surface");
@@ -683,7 +893,7 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
   periods.v = basis->IsVPeriodic();
   if (periods.u) periods.du = basis->UPeriod();
   if (periods.v) periods.dv = basis->VPeriod();
-  std::vector<WireUse> wires = face_wires(face, periods);
+  std::vector<WireUse> wires = face_wires(face, periods, file);
   const ParameterDomain bounds = face_bounds(face, wires, basis, periods);
   add_seam_copies(wires, bounds, periods);
 
@@ -825,7 +1035,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
     if (used_names.count(name)) name += "_" + std::to_string(index);
     std::string failure;
     try {
-      ConvertedFace converted = convert_face(face, name, options);
+      ConvertedFace converted = convert_face(face, name, origin.boundary, options);
       converted.report.entity = origin.entity;
       if (!solid_faces.Contains(face)) ++result.free_faces;
       used_names.insert(name);
