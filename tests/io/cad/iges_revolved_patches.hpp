@@ -57,6 +57,13 @@ struct SpherePatch {
   // (arc angles 3 pi/2 .. 5 pi/2, axis +y); with one, as the arc 0 .. pi of
   // its definition space turned onto the same place by a type 124.
   bool generatrix_transformed = false;
+  // Without a transformation, the generatrix may also run from the north
+  // pole to the south pole on the -x side (arc angles pi/2 .. 3 pi/2), and
+  // the axis line may point along -y; the file's v then runs otherwise than
+  // theta (v = theta - pi, -theta or pi - theta, moved by a period into
+  // [0, 2 pi)), and so do the surface's normal and the loop's sense.
+  bool north_to_south = false;
+  bool axis_reversed = false;
   ArcParameter parameter = ArcParameter::standard;
   bool reversed_loop = false;  // the loop's direction in (u, v)
   bool line_pcurves = false;   // B pieces as type 110 lines instead of type 126
@@ -79,7 +86,10 @@ struct SpherePatch {
                   generatrix_transformed ? " (arc 0..pi, type 124)" : " (arc 3pi/2..5pi/2)",
                   reversed_loop ? "loop reversed" : "loop as built", line_pcurves ? "type 110" : "type 126", pref,
                   pcurve_along_pole ? "" : ", no pcurve along the pole");
-    if (split_at_equator) std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), ", meridians split at the equator");
+    auto append = [&](const char* text) { std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text); };
+    if (split_at_equator) append(", meridians split at the equator");
+    if (north_to_south) append(", generatrix north to south");
+    if (axis_reversed) append(", axis -y");
     return buf;
   }
 };
@@ -89,8 +99,8 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
   const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d& c = p.centre;
   const double R = p.radius;
-  // Axis +y through the centre: v turns x toward -z.
-  const int axis = b.line(c, c + Y);
+  // Axis +y through the centre (v turns x toward -z), or -y.
+  const int axis = b.line(c, c + (p.axis_reversed ? -Y : Y));
   int generatrix;
   double arc_start;  // the arc's IGES start angle (of the south pole)
   if (p.generatrix_transformed) {
@@ -101,14 +111,22 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
     const int t = b.transformation(rot, c);
     generatrix = b.arc(0, {0, 0}, {R, 0}, {-R, 0}, t);
     arc_start = 0;
+  } else if (p.north_to_south) {
+    generatrix = b.arc(c.z(), {c.x(), c.y()}, {c.x(), c.y() + R}, {c.x(), c.y() - R});
+    arc_start = 0.5 * M_PI;
   } else {
     generatrix = b.arc(c.z(), {c.x(), c.y()}, {c.x(), c.y() - R}, {c.x(), c.y() + R});
     arc_start = 1.5 * M_PI;
   }
   const int surface = b.revolution(axis, generatrix, p.start_angle, p.end_angle);
 
-  // u of latitude phi (the arc's angle is arc_start + phi + pi/2).
+  // u of latitude phi (the arc's angle is arc_start + phi + pi/2, or pi - phi
+  // from the north).
   auto u_of = [&](double phi) {
+    if (p.north_to_south) {
+      const double angle = M_PI - phi;
+      return p.parameter == ArcParameter::normalised ? (angle - arc_start) / M_PI : angle;
+    }
     switch (p.parameter) {
       case ArcParameter::standard: return arc_start + phi + M_PI / 2;
       case ArcParameter::signed_angle: return arc_start == 0 ? phi + M_PI / 2 : phi;
@@ -123,10 +141,23 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
   };
   std::vector<Corner> corners{{p.phi0, p.theta0}, {p.phi0, p.theta1}, {p.phi1, p.theta1}, {p.phi1, p.theta0}};
   if (p.reversed_loop) corners = {corners[0], corners[3], corners[2], corners[1]};
+  // The file's v of theta.
+  double v_shift = 0;
+  auto v_raw = [&](double theta) {
+    const double sign = p.axis_reversed ? -1 : 1;
+    return sign * theta + (p.north_to_south ? -sign * M_PI : 0.0);
+  };
+  if (p.north_to_south || p.axis_reversed) {
+    const double low = std::min(v_raw(p.theta0), v_raw(p.theta1));
+    v_shift = 0;
+    while (low + v_shift < -1e-12) v_shift += 2 * M_PI;
+    while (low + v_shift >= 2 * M_PI - 1e-12) v_shift -= 2 * M_PI;
+  }
+  auto v_of = [&](double theta) { return v_raw(theta) + v_shift; };
   std::vector<int> b_pieces, c_pieces;
   auto piece = [&](const Corner& a, const Corner& e) {
     const bool pole = std::abs(a.phi - e.phi) < 1e-15 && std::abs(std::abs(a.phi) - M_PI / 2) < 1e-15;
-    const Eigen::Vector3d ua(u_of(a.phi), a.theta, 0), ue(u_of(e.phi), e.theta, 0);
+    const Eigen::Vector3d ua(u_of(a.phi), v_of(a.theta), 0), ue(u_of(e.phi), v_of(e.theta), 0);
     if (!pole || p.pcurve_along_pole)
       b_pieces.push_back(p.line_pcurves ? b.line(ua, ue, IgesBuilder::kParametric)
                                         : b.bspline_line(ua, ue, 0, 1, true, IgesBuilder::kParametric));

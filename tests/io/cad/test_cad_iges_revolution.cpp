@@ -132,11 +132,12 @@ TEST_CASE("CAD import: the report's quarter sphere from IGES keeps its area in e
   check_cases(cases, "iges-quarter-sphere");
 }
 
-TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and the poles keep the enclosed region") {
-  const double pi = M_PI;
-  // Rotation angle theta0..theta1 (as the file writes it: across the seam
-  // either below 0 or beyond 2 pi), latitude phi0..phi1.
-  const Range ranges[] = {
+namespace {
+
+// Rotation angle theta0..theta1 (as the file writes it: across the seam
+// either below 0 or beyond 2 pi), latitude phi0..phi1.
+const double pi = M_PI;
+const Range kRanges[] = {
       {0, pi, 0, pi / 2},                // half the equator and two quarter meridians, one pole
       {-pi / 2, pi / 2, 0, pi / 2},      // the same across the seam, written below 0
       {1.5 * pi, 2.5 * pi, 0, pi / 2},   // ... and written beyond 2 pi
@@ -151,10 +152,14 @@ TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and th
       {0.3, 2.0, -pi / 2, 0},            // the south pole
       {0.5, 1.8 * pi, -pi / 2, 0.4},
       {-pi / 2, pi / 2, -pi / 2, pi / 2},
-  };
+};
+
+}  // namespace
+
+TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and the poles keep the enclosed region") {
   std::vector<SpherePatch> cases;
   int variant = 0;
-  for (const Range& r : ranges)
+  for (const Range& r : kRanges)
     for (const bool reversed : {false, true})
       for (const int pref : {0, 1, 2, 3}) {
         SpherePatch p;
@@ -177,7 +182,6 @@ TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and th
 
 TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned only over the face keep their area") {
   // Start and terminate angles of the type 120 equal to the face's own range.
-  const double pi = M_PI;
   const Range ranges[] = {{0, pi, 0, pi / 2}, {0, pi / 2, -pi / 2, pi / 2}, {1.0, 2.5, -pi / 2, pi / 2},
                           {-pi / 2, pi / 2, -pi / 2, pi / 2}, {0.3, 1.8 * pi, -pi / 2, pi / 2}};
   std::vector<SpherePatch> cases;
@@ -196,4 +200,27 @@ TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned onl
         cases.push_back(p);
       }
   check_cases(cases, "iges-sphere-partial-revolution");
+}
+
+TEST_CASE("CAD import: IGES sphere patches keep their region whichever way the generatrix and the axis run") {
+  // The surface's normal and the sense of the file's loops change with the
+  // generatrix's direction (south to north or north to south) and the
+  // axis line's; the face must not.
+  std::vector<SpherePatch> cases;
+  for (const Range& r : kRanges)
+    for (const bool north_to_south : {false, true})
+      for (const bool axis_reversed : {false, true})
+        for (const bool reversed : {false, true}) {
+          if (!north_to_south && !axis_reversed) continue;  // the test above
+          SpherePatch p;
+          p.theta0 = r.theta0;
+          p.theta1 = r.theta1;
+          p.phi0 = r.phi0;
+          p.phi1 = r.phi1;
+          p.north_to_south = north_to_south;
+          p.axis_reversed = axis_reversed;
+          p.reversed_loop = reversed;
+          cases.push_back(p);
+        }
+  check_cases(cases, "iges-sphere-axis-generatrix");
 }
