@@ -189,3 +189,83 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
 }
 
 }  // namespace furrow::test
+
+namespace furrow::test {
+
+// Patches of cylinders and tori as type 120 surfaces of revolution about the
+// axis +y through `centre`: a cylinder's generatrix is a type 110 line
+// parallel to the axis at distance `radius` (u in [0, 1] from its start at
+// the centre's height to `height` above it, the IGES parametrisation of a
+// line), a torus's a full type 100 circle of radius `radius` whose centre is
+// `major` from the axis (u its angle psi, counterclockwise from the
+// outermost point). The face is s0..s1 in u and theta0..theta1 in v.
+struct RevolvedPatch {
+  enum class Kind { cylinder, torus } kind = Kind::cylinder;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 4.75, height = 10, major = 14.25;
+  double theta0 = 0, theta1 = M_PI, s0 = 0, s1 = 1;
+  bool reversed_loop = false;
+  int pref = 0;
+
+  // Generatrix point at u = s, relative to the centre, in the x-y plane.
+  Eigen::Vector2d generatrix(double s) const {
+    if (kind == Kind::cylinder) return {radius, height * s};
+    return {major + radius * std::cos(s), radius * std::sin(s)};
+  }
+  Eigen::Vector3d point(double s, double theta) const {
+    const Eigen::Vector2d g = generatrix(s);
+    return centre + Eigen::Vector3d(g.x() * std::cos(theta), g.y(), -g.x() * std::sin(theta));
+  }
+  double area() const {
+    const double dt = std::abs(theta1 - theta0);
+    if (kind == Kind::cylinder) return radius * dt * height * std::abs(s1 - s0);
+    // Integral of radius (major + radius cos psi) dpsi dtheta.
+    return radius * dt * std::abs(major * (s1 - s0) + radius * (std::sin(s1) - std::sin(s0)));
+  }
+  std::string name() const {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d",
+                  kind == Kind::cylinder ? "cylinder" : "torus", theta0, theta1, s0, s1,
+                  reversed_loop ? "loop reversed" : "loop as built", pref);
+    return buf;
+  }
+};
+
+inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d& c = p.centre;
+  const int axis = b.line(c, c + Y);
+  int generatrix;
+  if (p.kind == RevolvedPatch::Kind::cylinder) {
+    generatrix = b.line(c + p.radius * X, c + p.radius * X + p.height * Y);
+  } else {
+    const Eigen::Vector2d centre(c.x() + p.major, c.y()), start(c.x() + p.major + p.radius, c.y());
+    generatrix = b.arc(c.z(), centre, start, start);
+  }
+  const int surface = b.revolution(axis, generatrix, 0, 2 * M_PI);
+  struct Corner {
+    double s, theta;
+  };
+  std::vector<Corner> corners{{p.s0, p.theta0}, {p.s0, p.theta1}, {p.s1, p.theta1}, {p.s1, p.theta0}};
+  if (p.reversed_loop) corners = {corners[0], corners[3], corners[2], corners[1]};
+  std::vector<int> b_pieces, c_pieces;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Corner& a = corners[k];
+    const Corner& e = corners[(k + 1) % 4];
+    b_pieces.push_back(b.bspline_line({a.s, a.theta, 0}, {e.s, e.theta, 0}, 0, 1, true, IgesBuilder::kParametric));
+    if (a.s == e.s) {  // a circle about the axis
+      const Eigen::Vector2d g = p.generatrix(a.s);
+      c_pieces.push_back(b.bspline_arc(c + g.y() * Y, X, -Z, g.x(), a.theta, e.theta));
+    } else if (p.kind == RevolvedPatch::Kind::cylinder) {  // a ruling
+      c_pieces.push_back(b.bspline_line(p.point(a.s, a.theta), p.point(e.s, e.theta), 0, 1, false));
+    } else {  // a circle of the tube
+      const Eigen::Vector3d d = std::cos(a.theta) * X - std::sin(a.theta) * Z;
+      c_pieces.push_back(b.bspline_arc(c + p.major * d, d, Y, p.radius, a.s, e.s));
+    }
+  }
+  const int bc = b.composite(b_pieces, IgesBuilder::kParametric);
+  const int cc = b.composite(c_pieces);
+  return b.trimmed_surface(surface, b.curve_on_surface(surface, bc, cc, p.pref));
+}
+
+}  // namespace furrow::test

@@ -59,13 +59,37 @@ Eigen::Vector3d patch_centroid(const SpherePatch& p) {
   return p.centre + p.radius * mean / measure;
 }
 
+// Centroid of a cylinder or torus patch by the midpoint rule on the exact
+// parametrisation (area element |dP/ds x dP/dtheta| = generatrix speed times
+// distance from the axis).
+Eigen::Vector3d patch_centroid(const RevolvedPatch& p) {
+  constexpr int n = 400;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double weight = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double s = p.s0 + (p.s1 - p.s0) * (i + 0.5) / n;
+      const double theta = p.theta0 + (p.theta1 - p.theta0) * (j + 0.5) / n;
+      const double speed = p.kind == RevolvedPatch::Kind::cylinder ? p.height : p.radius;
+      const double w = speed * p.generatrix(s).x();
+      sum += w * p.point(s, theta);
+      weight += w;
+    }
+  return sum / weight;
+}
+
+void write_patch(IgesBuilder& b, const SpherePatch& p) { write_sphere_patch(b, p); }
+void write_patch(IgesBuilder& b, const RevolvedPatch& p) { write_revolved_patch(b, p); }
+
 // Writes all cases into one file (each at its own place along x), imports
-// it and checks every face's area against the analytic one.
-void check_cases(std::vector<SpherePatch> cases, const std::string& file_name) {
+// it and checks every face's area against the analytic one, and its
+// centroid against the patch's.
+template <class Patch>
+void check_cases(std::vector<Patch> cases, const std::string& file_name) {
   IgesBuilder builder;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     cases[k].centre = Eigen::Vector3d(kSpacing * static_cast<double>(k), 0, 0);
-    write_sphere_patch(builder, cases[k]);
+    write_patch(builder, cases[k]);
   }
   const std::string dir = scratch_dir(file_name + "-" + std::to_string(getpid()));
   const std::string path = dir + "/" + file_name + ".igs";
@@ -223,4 +247,37 @@ TEST_CASE("CAD import: IGES sphere patches keep their region whichever way the g
           cases.push_back(p);
         }
   check_cases(cases, "iges-sphere-axis-generatrix");
+}
+
+TEST_CASE("CAD import: IGES cylinder and torus patches as surfaces of revolution keep the enclosed region") {
+  using Kind = RevolvedPatch::Kind;
+  struct Case {
+    Kind kind;
+    double theta0, theta1, s0, s1;
+  };
+  const Case shapes[] = {
+      {Kind::cylinder, 0, pi, 0, 1},          {Kind::cylinder, -pi / 2, pi / 2, 0, 1},
+      {Kind::cylinder, 1.5 * pi, 2.5 * pi, 0.2, 0.7}, {Kind::cylinder, pi, 2 * pi, 0, 1},
+      {Kind::cylinder, 0, 1.5 * pi, 0, 1},    {Kind::cylinder, 0.2, 0.2 + 1.6 * pi, 0.1, 0.9},
+      {Kind::cylinder, 0, 2 * pi, 0, 1},      // a full ring, the seam twice in the boundary
+      {Kind::torus, 0, pi / 2, 0, pi / 2},    {Kind::torus, -pi / 2, pi / 2, pi / 2, 1.5 * pi},
+      {Kind::torus, 0, 1.5 * pi, -pi / 2, pi / 2}, {Kind::torus, 0.3, 2.0, 1.5 * pi, 2.5 * pi},
+      {Kind::torus, 0, pi, 0, 2 * pi},        // the whole tube over half a turn
+      {Kind::torus, 0.2, 0.2 + 1.6 * pi, 0.5, 1.5 * pi},
+  };
+  std::vector<RevolvedPatch> cases;
+  for (const Case& c : shapes)
+    for (const bool reversed : {false, true})
+      for (const int pref : {0, 1, 2}) {
+        RevolvedPatch p;
+        p.kind = c.kind;
+        p.theta0 = c.theta0;
+        p.theta1 = c.theta1;
+        p.s0 = c.s0;
+        p.s1 = c.s1;
+        p.reversed_loop = reversed;
+        p.pref = pref;
+        cases.push_back(p);
+      }
+  check_cases(cases, "iges-cylinder-torus-patches");
 }
