@@ -176,6 +176,8 @@ const Range kRanges[] = {
       {0.3, 2.0, -pi / 2, 0},            // the south pole
       {0.5, 1.8 * pi, -pi / 2, 0.4},
       {-pi / 2, pi / 2, -pi / 2, pi / 2},
+      {0, 2 * pi, 0.3, pi / 2},          // a cap around the pole: the seam twice in the boundary,
+      {0, 2 * pi, -0.5, 0.8},            // a band
 };
 
 }  // namespace
@@ -280,4 +282,26 @@ TEST_CASE("CAD import: IGES cylinder and torus patches as surfaces of revolution
         cases.push_back(p);
       }
   check_cases(cases, "iges-cylinder-torus-patches");
+}
+
+TEST_CASE("CAD import: a whole IGES sphere bounded by its seam and poles in parameter space is the whole sphere") {
+  // Not with PREF 2: its model-space boundary, the seam once up and once
+  // down, encloses nothing, and OpenCASCADE, which then builds the face
+  // from the model-space curves, gives a face along the seam only (the
+  // import reports it as a face that cannot be converted).
+  std::vector<SpherePatch> cases;
+  for (const bool reversed : {false, true})
+    for (const bool transformed : {false, true})
+      for (const int pref : {0, 1, 3}) {
+        SpherePatch p;
+        p.theta0 = 0;
+        p.theta1 = 2 * pi;
+        p.phi0 = -pi / 2;
+        p.phi1 = pi / 2;
+        p.reversed_loop = reversed;
+        p.generatrix_transformed = transformed;
+        p.pref = pref;
+        cases.push_back(p);
+      }
+  check_cases(cases, "iges-whole-sphere");
 }
