@@ -392,7 +392,9 @@ FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
   }
   if (!(std::abs(twice_area) > 1e-9 * (u1 - u0) * (v1 - v0))) return boundary;
   boundary.sense = twice_area > 0 ? 1 : -1;
-  if (trimmed->Surface()->IsKind(STANDARD_TYPE(IGESGeom_SurfaceOfRevolution))) boundary.rotation_extent = v1 - v0;
+  const Handle(IGESData_IGESEntity) surface = trimmed->Surface();
+  if (!surface.IsNull() && surface->IsKind(STANDARD_TYPE(IGESGeom_SurfaceOfRevolution)))
+    boundary.rotation_extent = v1 - v0;
   return boundary;
 }
 
