@@ -1,21 +1,23 @@
 #pragma once
-// Patches of spheres written as IGES trimmed surfaces of revolution the way
-// CATIA/NX-class systems write them (tests/io/cad/iges_writer.hpp): a type
-// 144 trimmed surface of a type 120 surface of revolution (type 110 axis,
-// type 100 circular arc generatrix), whose outer boundary is a type 142
-// curve on surface carrying both a parameter-space curve (B: straight
-// pieces in the surface's (u, v), as type 126 B-splines or type 110 lines,
-// in a type 102 composite) and a model-space curve (C: the circles of
-// latitude and longitude as rational type 126 B-splines, in a type 102).
+// Patches of spheres (and, at the end, of cylinders and tori) written as
+// IGES trimmed surfaces of revolution the way CATIA/NX-class systems write
+// them (tests/io/cad/iges_writer.hpp): a type 144 trimmed surface of a type
+// 120 surface of revolution (type 110 axis, type 100 circular arc or type
+// 110 line generatrix), whose outer boundary is a type 142 curve on surface
+// carrying both a parameter-space curve (B: straight pieces in the surface's
+// (u, v), as type 126 B-splines or type 110 lines, in a type 102 composite)
+// and a model-space curve (C: circles of latitude and longitude, rulings,
+// as type 126 B-splines, rational for circles, in a type 102).
 //
-// IGES 5.3 (type 120) parametrises the surface of revolution by u, the
-// generatrix's own parameter, and v, the rotation angle about the axis
-// (right-handed about the axis line's direction) from the start angle SA to
-// the terminate angle TA; a type 100 arc's own parameter is its angle,
-// counterclockwise from the definition space's x axis, starting in [0, 2 pi).
-// Writers differ in what u they put in the parameter-space curves: the
-// arc's angle as the standard defines it, a signed angle (the same arc
-// taken from -90 to 90 degrees), or a parameter normalised to [0, 1].
+// Type 120 is parametrised by u, the generatrix's own parameter, and v, the
+// rotation angle about the axis (right-handed about the axis line's
+// direction) from the start angle SA to the terminate angle TA; a type 100
+// arc's own parameter is its angle, counterclockwise from the definition
+// space's x axis, the start angle taken in [0, 2 pi) (as OpenCASCADE reads
+// it; the tests' centroids confirm the geometry), a type 110 line's runs
+// from 0 to 1. Writers differ in what u they put in the parameter-space
+// curves: the arc's angle so defined, a signed angle (the same arc taken
+// from -90 to 90 degrees), or a parameter normalised to [0, 1].
 #include <Eigen/Core>
 
 #include <cmath>

@@ -1,10 +1,13 @@
-// CAD import of spheres written as IGES trimmed surfaces of revolution the
-// way CATIA/NX-class systems write them (type 144 of a type 120 with a type
-// 100 arc generatrix, boundaries as type 142 with parameter-space and
-// model-space curves; tests/io/cad/iges_revolved_patches.hpp), not through
+// CAD import of spheres, cylinders and tori written as IGES trimmed surfaces
+// of revolution the way CATIA/NX-class systems write them (type 144 of a
+// type 120, boundaries as type 142 with parameter-space and model-space
+// curves; tests/io/cad/iges_revolved_patches.hpp), not through
 // OpenCASCADE's own writer. Every imported face must keep the region its
-// boundary encloses: its area is compared with the analytic area of the
-// sphere lune/zone, R^2 (theta1 - theta0) (sin phi1 - sin phi0).
+// boundary encloses: its area is compared with the analytic area (a sphere
+// lune/zone: R^2 (theta1 - theta0) (sin phi1 - sin phi0)), and its centroid
+// with the patch's (analytic for spheres, by quadrature of the exact
+// parametrisation for cylinders and tori), which also tells a half sphere
+// from the other half.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
