@@ -374,8 +374,8 @@ bool sample_parameter_curve(const Handle(IGESData_IGESEntity)& curve, std::vecto
 // parameter map keeps the sense of every loop; but (7.6) it routes the pole
 // edges of a clockwise boundary around the other side of the sphere, and
 // such a face came in as the rest of the sphere: a quarter sphere of
-// 70.88 mm^2 as 212.65 mm^2 (docs/formats.md "CAD import", "Seams and
-// poles"). route_like_file() routes them back.
+// 70.88 mm^2 as 212.65 mm^2 (docs/formats.md "CAD import", "IGES
+// boundaries"). route_like_file() routes them back.
 FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
   FileBoundary boundary;
   if (trimmed.IsNull() || !trimmed->HasOuterContour()) return boundary;
