@@ -69,6 +69,7 @@ struct SpherePatch {
   ArcParameter parameter = ArcParameter::standard;
   bool reversed_loop = false;  // the loop's direction in (u, v)
   bool line_pcurves = false;   // B pieces as type 110 lines instead of type 126
+  bool polyline_pcurves = false;  // ... or as type 106 form 11 (2-D linear paths)
   int pref = 0;                // type 142 PREF
   // Whether the parameter-space curve runs along a degenerate pole edge
   // (B then has one piece more than C, which has no curve there).
@@ -86,7 +87,7 @@ struct SpherePatch {
                   "sphere theta %.4f..%.4f phi %.4f..%.4f SA/TA %.4f..%.4f %s%s, %s, %s pcurves, PREF %d%s",
                   theta0, theta1, phi0, phi1, start_angle, end_angle, name_of(parameter),
                   generatrix_transformed ? " (arc 0..pi, type 124)" : " (arc 3pi/2..5pi/2)",
-                  reversed_loop ? "loop reversed" : "loop as built", line_pcurves ? "type 110" : "type 126", pref,
+                  reversed_loop ? "loop reversed" : "loop as built", polyline_pcurves ? "type 106" : line_pcurves ? "type 110" : "type 126", pref,
                   pcurve_along_pole ? "" : ", no pcurve along the pole");
     auto append = [&](const char* text) { std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text); };
     if (split_at_equator) append(", meridians split at the equator");
@@ -161,7 +162,8 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
     const bool pole = std::abs(a.phi - e.phi) < 1e-15 && std::abs(std::abs(a.phi) - M_PI / 2) < 1e-15;
     const Eigen::Vector3d ua(u_of(a.phi), v_of(a.theta), 0), ue(u_of(e.phi), v_of(e.theta), 0);
     if (!pole || p.pcurve_along_pole)
-      b_pieces.push_back(p.line_pcurves ? b.line(ua, ue, IgesBuilder::kParametric)
+      b_pieces.push_back(p.polyline_pcurves ? b.polyline_2d({ua.head<2>(), ue.head<2>()}, IgesBuilder::kParametric)
+                         : p.line_pcurves ? b.line(ua, ue, IgesBuilder::kParametric)
                                         : b.bspline_line(ua, ue, 0, 1, true, IgesBuilder::kParametric));
     if (pole) return;  // no model-space curve along a pole
     if (std::abs(a.phi - e.phi) < 1e-15) {

@@ -2,9 +2,9 @@
 // A small IGES 5.3 writer for the tests: fixed-column 80-character records in
 // the Start, Global, Directory Entry, Parameter Data and Terminate sections,
 // with the entities CAD systems use for trimmed surfaces of revolution
-// (100 circular arc, 102 composite curve, 110 line, 120 surface of
-// revolution, 124 transformation, 126 rational B-spline curve, 142 curve on
-// a parametric surface, 144 trimmed surface). It writes files the way
+// (100 circular arc, 102 composite curve, 106 copious data, 110 line, 120
+// surface of revolution, 124 transformation, 126 rational B-spline curve,
+// 142 curve on a parametric surface, 144 trimmed surface). It writes files the way
 // CATIA/NX-class systems do, which OpenCASCADE's own IGES writer does not
 // (docs/formats.md "CAD import"): the reader is then tested on input it did
 // not produce itself.
@@ -217,6 +217,15 @@ class IgesBuilder {
       for (double& k : knots) k = -k;
     }
     return bspline(2, knots, poles, weights, false);
+  }
+  // Type 106 form 11: a 2-D linear path through `points` (z = 0).
+  int polyline_2d(const std::vector<Eigen::Vector2d>& points, const char* status = kDependent) {
+    std::vector<std::string> p{"1", std::to_string(points.size()), r(0)};
+    for (const auto& q : points) {
+      p.push_back(r(q.x()));
+      p.push_back(r(q.y()));
+    }
+    return file.add(106, 11, p, status);
   }
   int composite(const std::vector<int>& curves, const char* status = kDependent) {
     std::vector<std::string> p{std::to_string(curves.size())};

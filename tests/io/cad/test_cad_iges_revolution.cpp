@@ -133,7 +133,7 @@ TEST_CASE("CAD import: the report's quarter sphere from IGES keeps its area in e
   for (const ArcParameter parameter : {ArcParameter::standard, ArcParameter::signed_angle, ArcParameter::normalised})
     for (const bool transformed : {false, true})
       for (const bool reversed : {false, true})
-        for (const bool lines : {false, true})
+        for (const int pcurve_type : {126, 110, 106})
           for (const int pref : {0, 1, 2, 3})
             for (const bool along_pole : {true, false}) {
               // A normalised generatrix parameter is not the surface's
@@ -149,7 +149,8 @@ TEST_CASE("CAD import: the report's quarter sphere from IGES keeps its area in e
               p.parameter = parameter;
               p.generatrix_transformed = transformed;
               p.reversed_loop = reversed;
-              p.line_pcurves = lines;
+              p.line_pcurves = pcurve_type == 110;
+              p.polyline_pcurves = pcurve_type == 106;
               p.pref = pref;
               p.pcurve_along_pole = along_pole;
               p.split_at_equator = true;
