@@ -87,9 +87,12 @@ struct SpherePatch {
                   "sphere theta %.4f..%.4f phi %.4f..%.4f SA/TA %.4f..%.4f %s%s, %s, %s pcurves, PREF %d%s",
                   theta0, theta1, phi0, phi1, start_angle, end_angle, name_of(parameter),
                   generatrix_transformed ? " (arc 0..pi, type 124)" : " (arc 3pi/2..5pi/2)",
-                  reversed_loop ? "loop reversed" : "loop as built", polyline_pcurves ? "type 106" : line_pcurves ? "type 110" : "type 126", pref,
+                  reversed_loop ? "loop reversed" : "loop as built",
+                  polyline_pcurves ? "type 106" : line_pcurves ? "type 110" : "type 126", pref,
                   pcurve_along_pole ? "" : ", no pcurve along the pole");
-    auto append = [&](const char* text) { std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text); };
+    auto append = [&](const char* text) {
+      std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text);
+    };
     if (split_at_equator) append(", meridians split at the equator");
     if (north_to_south) append(", generatrix north to south");
     if (axis_reversed) append(", axis -y");

@@ -239,9 +239,13 @@ class IgesBuilder {
                     kDependent);
   }
   // Type 142: CRTN 0 (unspecified), surface, parameter-space curve B,
-  // model-space curve C, preferred representation PREF.
+  // model-space curve C, preferred representation PREF: 0 unspecified, 1 the
+  // parameter-space curve (S o B), 2 the model-space curve C, 3 both alike.
+  // (OpenCASCADE follows PREF 2 to C: with a B whose u is normalised, only
+  // PREF 2 files import right; see the tests.)
   int curve_on_surface(int surface, int b, int c, int pref) {
-    return file.add(142, 0, {"0", std::to_string(surface), std::to_string(b), std::to_string(c), std::to_string(pref)},
+    return file.add(142, 0,
+                    {"0", std::to_string(surface), std::to_string(b), std::to_string(c), std::to_string(pref)},
                     kDependent);
   }
   int trimmed_surface(int surface, int outer, const std::vector<int>& inner = {}) {
