@@ -76,21 +76,17 @@
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/cad/cad_occt_internal.hpp"
 #include "io/cad/cad_parameter_map.hpp"
+#include "io/cad/cad_surface.hpp"
 #include "io/cad/cad_trim_polygon.hpp"
 
 namespace furrow {
 
 namespace {
 
-// A face-level failure; the caller adds the file and the face's name.
-class FaceFailure : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Grid on which every conversion is compared with the original surface.
-constexpr int kCheckGrid = 13;
+using cad::FaceFailure;
+using cad::number_text;
 
 enum class Format { step, iges };
 
@@ -98,15 +94,6 @@ std::string occt_text(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
   return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
 }
-
-std::string number_text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
-Eigen::Vector3d to_eigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Eigen::Vector3d to_eigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
 // OpenCASCADE prints progress and statistics on standard output; a library
 // must not. The printers are detached for the duration of an import.
@@ -491,104 +478,6 @@ LoadedFile read_file(const std::string& path, Format format) {
   return file;
 }
 
-// ---------------------------------------------------------------- surfaces
-
-std::string source_type(const Handle(Geom_Surface)& s) {
-  if (s->IsKind(STANDARD_TYPE(Geom_Plane))) return "plane";
-  if (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface))) return "cylinder";
-  if (s->IsKind(STANDARD_TYPE(Geom_ConicalSurface))) return "cone";
-  if (s->IsKind(STANDARD_TYPE(Geom_SphericalSurface))) return "sphere";
-  if (s->IsKind(STANDARD_TYPE(Geom_ToroidalSurface))) return "torus";
-  if (s->IsKind(STANDARD_TYPE(Geom_SurfaceOfLinearExtrusion))) return "extrusion";
-  if (s->IsKind(STANDARD_TYPE(Geom_SurfaceOfRevolution))) return "revolution";
-  if (s->IsKind(STANDARD_TYPE(Geom_OffsetSurface))) return "offset";
-  if (s->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) return "b-spline";
-  if (s->IsKind(STANDARD_TYPE(Geom_BezierSurface))) return "bezier";
-  return "other";
-}
-
-Handle(Geom_Surface) strip_trim(Handle(Geom_Surface) s) {
-  for (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s); !t.IsNull();
-       t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s))
-    s = t->BasisSurface();
-  return s;
-}
-
-std::string face_surface_type(const TopoDS_Face& face) {
-  const Handle(Geom_Surface) s = BRep_Tool::Surface(face);
-  return s.IsNull() ? "no surface" : source_type(strip_trim(s));
-}
-
-NurbsSurface to_nurbs(Handle(Geom_BSplineSurface) bs, const std::string& field) {
-  if (bs->IsUPeriodic() || bs->IsVPeriodic()) {
-    bs = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
-    if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
-    if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
-  }
-  const int nu = bs->NbUPoles(), nv = bs->NbVPoles();
-  TColStd_Array1OfReal ku(1, nu + bs->UDegree() + 1), kv(1, nv + bs->VDegree() + 1);
-  bs->UKnotSequence(ku);
-  bs->VKnotSequence(kv);
-  std::vector<double> knots_u(ku.begin(), ku.end()), knots_v(kv.begin(), kv.end());
-  std::vector<std::vector<Eigen::Vector3d>> net(nu, std::vector<Eigen::Vector3d>(nv));
-  std::vector<std::vector<double>> weights;
-  if (bs->IsURational() || bs->IsVRational()) weights.assign(nu, std::vector<double>(nv, 1.0));
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      net[i][j] = to_eigen(bs->Pole(i + 1, j + 1));
-      if (!weights.empty()) weights[i][j] = bs->Weight(i + 1, j + 1);
-    }
-  return NurbsSurface(bs->UDegree(), bs->VDegree(), std::move(knots_u), std::move(knots_v), net,
-                      weights, field);
-}
-
-struct Conversion {
-  Handle(Geom_BSplineSurface) nurbs;
-  bool exact = true;
-  double bound = 0;  // OpenCASCADE's error bound of an approximation
-};
-
-Conversion approximate(const Handle(Geom_Surface)& original, const ParameterDomain& b,
-                       const CadImportOptions& options) {
-  const Handle(Geom_Surface) piece = new Geom_RectangularTrimmedSurface(original, b.u0, b.u1, b.v0, b.v1);
-  GeomConvert_ApproxSurface approx(piece, options.approximation_tolerance, GeomAbs_C2, GeomAbs_C2,
-                                   options.approximation_max_degree, options.approximation_max_degree,
-                                   options.approximation_max_segments, 1);
-  if (!approx.HasResult())
-    throw FaceFailure("its " + source_type(original) +
-                      " surface has no exact NURBS form and could not be approximated");
-  if (!(approx.MaxError() <= options.approximation_tolerance))
-    throw FaceFailure("its " + source_type(original) + " surface could be approximated only within " +
-                      number_text(approx.MaxError()) + " mm (tolerance " +
-                      number_text(options.approximation_tolerance) + " mm)");
-  return {approx.Surface(), false, approx.MaxError()};
-}
-
-// Exact rational B-spline over the rectangle when OpenCASCADE has one (the
-// offset of an elementary surface is converted through its equivalent
-// elementary surface), an approximation otherwise.
-Conversion convert_surface(const Handle(Geom_Surface)& original, const ParameterDomain& b,
-                           const CadImportOptions& options) {
-  Handle(Geom_Surface) exact_form = strip_trim(original);
-  if (const auto offset = Handle(Geom_OffsetSurface)::DownCast(exact_form); !offset.IsNull())
-    exact_form = offset->Surface();  // null when there is no elementary equivalent
-  if (exact_form.IsNull() || exact_form->IsKind(STANDARD_TYPE(Geom_OffsetSurface)) ||
-      source_type(exact_form) == "other")
-    return approximate(original, b, options);
-  try {
-    if (const auto bs = Handle(Geom_BSplineSurface)::DownCast(exact_form); !bs.IsNull()) {
-      auto piece = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
-      piece->CheckAndSegment(b.u0, b.u1, b.v0, b.v1, 1e-9 * b.width_u(), 1e-9 * b.width_v());
-      return {piece, true, 0};
-    }
-    const Handle(Geom_Surface) piece =
-        new Geom_RectangularTrimmedSurface(exact_form, b.u0, b.u1, b.v0, b.v1);
-    return {GeomConvert::SurfaceToBSplineSurface(piece), true, 0};
-  } catch (const Standard_Failure&) {
-    return approximate(original, b, options);
-  }
-}
-
 // ---------------------------------------------------------------- boundaries
 
 // One use of an edge in a wire, in the order the wire runs.
@@ -885,10 +774,10 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
                            const CadImportOptions& options) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (surface.IsNull()) throw FaceFailure("it has no surface");
-  const Handle(Geom_Surface) basis = strip_trim(surface);
+  const Handle(Geom_Surface) basis = cad::strip_trim(surface);
   CadFaceReport report;
   report.name = name;
-  report.source_type = source_type(basis);
+  report.source_type = cad::source_type(basis);
 
   Periods periods;
   periods.u = basis->IsUPeriodic();
@@ -899,28 +788,12 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   const ParameterDomain bounds = face_bounds(face, wires, basis, periods);
   add_seam_copies(wires, bounds, periods);
 
-  const Conversion conversion = convert_surface(basis, bounds, options);
+  const cad::Conversion conversion = cad::convert_surface(basis, bounds, options);
   report.exact = conversion.exact;
   report.approximation_bound = conversion.bound;
-  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face " + quote_field(name));
-
-  // The original's parametrisation is kept unless the conversion changed it.
-  const ParameterMap::Evaluator original = [&basis](double u, double v) {
-    return to_eigen(basis->Value(u, v));
-  };
-  const double allowed = conversion.exact ? options.exact_tolerance : options.approximation_tolerance;
+  NurbsSurface nurbs = cad::to_nurbs(conversion.nurbs, "face " + quote_field(name));
   ParameterMap map;
-  report.deviation = max_deviation(nurbs, map, original, bounds, kCheckGrid);
-  if (report.deviation > allowed && conversion.exact) {
-    ParameterMapOptions map_options;
-    map_options.tolerance = options.exact_tolerance;
-    map = ParameterMap(nurbs, original, bounds, map_options);
-    report.deviation = max_deviation(nurbs, map, original, bounds, kCheckGrid);
-  }
-  if (!(report.deviation <= allowed))
-    throw FaceFailure("its NURBS form deviates from the original " + report.source_type +
-                      " surface by " + number_text(report.deviation) + " mm (allowed " +
-                      number_text(allowed) + " mm)");
+  report.deviation = cad::carry_parameters(nurbs, basis, bounds, conversion.exact, options, map);
 
   TrimPolygonOptions polygon_options;
   polygon_options.chord_tolerance = options.trim_chord_tolerance;
@@ -950,27 +823,10 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   report.trim_deviation = polygons.worst_sag();
   report.trim_tolerance_met = polygons.tolerance_met();
 
-  // Orientation: compare Su x Sv of the NURBS with OpenCASCADE's D1U x D1V at
-  // the check point where the original is least degenerate.
-  double best = -1;
-  double sense = 1;
-  for (int i = 0; i < kCheckGrid; ++i)
-    for (int j = 0; j < kCheckGrid; ++j) {
-      const double u = bounds.u0 + bounds.width_u() * (i + 0.5) / kCheckGrid;
-      const double v = bounds.v0 + bounds.width_v() * (j + 0.5) / kCheckGrid;
-      gp_Pnt p;
-      gp_Vec du, dv;
-      basis->D1(u, v, p, du, dv);
-      const Eigen::Vector3d n_occt = to_eigen(du.Crossed(dv));
-      if (n_occt.norm() <= best) continue;
-      const Eigen::Vector2d st = map(u, v);
-      const SurfaceDerivatives e = nurbs.evaluate(st.x(), st.y(), 1);
-      const Eigen::Vector3d n_ours = e.Su.cross(e.Sv);
-      if (n_ours.norm() == 0) continue;
-      best = n_occt.norm();
-      sense = n_ours.dot(n_occt) >= 0 ? 1 : -1;
-    }
-  const bool reversed = (face.Orientation() == TopAbs_REVERSED) != (sense < 0);
+  // Normals out of the material: OpenCASCADE's face orientation, and the
+  // NURBS's own sense against the original surface's.
+  const bool flipped = !cad::same_sense(nurbs, map, basis, bounds);
+  const bool reversed = (face.Orientation() == TopAbs_REVERSED) != flipped;
 
   Trim trim(std::move(loops), "face " + quote_field(name) + " trim");
   return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
@@ -1053,7 +909,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
     if (!failure.empty()) {
       if (!options.skip_bad_faces)
         throw InputError(path + ": " + face_label(name, origin.entity) + " (" +
-                         face_surface_type(face) + "): " + failure);
+                         cad::face_surface_type(face) + "): " + failure);
       result.skipped.push_back({name, origin.entity, failure});
     }
     if (options.progress) options.progress(index + 1, total);
