@@ -78,6 +78,7 @@
 #include "base/text_fields.hpp"
 #include "io/cad/cad_occt_internal.hpp"
 #include "io/cad/cad_parameter_map.hpp"
+#include "io/cad/cad_reader.hpp"
 #include "io/cad/cad_surface.hpp"
 #include "io/cad/cad_trim_polygon.hpp"
 
@@ -87,8 +88,7 @@ namespace {
 
 using cad::FaceFailure;
 using cad::number_text;
-
-enum class Format { step, iges };
+using cad::FileBoundary;
 
 std::string occt_text(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
@@ -109,374 +109,6 @@ class QuietMessenger {
  private:
   Message_SequenceOfPrinters saved_;
 };
-
-Format format_of(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".step" || ext == ".stp") return Format::step;
-  if (ext == ".iges" || ext == ".igs") return Format::iges;
-  throw InputError(path + ": not a CAD file name (expected .step, .stp, .iges or .igs)");
-}
-
-// Cheap signature check so that a wrong file gets a plain answer instead of
-// whatever OpenCASCADE's parser makes of it.
-void check_signature(const std::string& path, Format format) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
-  std::string head(4096, '\0');
-  in.read(&head[0], static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  if (trim(head).empty()) throw InputError(path + ": the file is empty");
-  if (format == Format::step) {
-    std::size_t start = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // UTF-8 BOM
-    start = head.find_first_not_of(" \t\r\n", start);
-    if (start == std::string::npos || head.compare(start, 12, "ISO-10303-21") != 0)
-      throw InputError(path + ": not a STEP file (a STEP file starts with \"ISO-10303-21;\")");
-  } else {
-    const std::string first_line = head.substr(0, head.find('\n'));
-    if (first_line.size() < 73 || (first_line[72] != 'S' && first_line[72] != 'C'))
-      throw InputError(path + ": not an IGES file (an IGES file starts with 80-column records, "
-                              "the first with 'S' in column 73)");
-  }
-}
-
-// ---------------------------------------------------------------- reading
-
-// What the file itself says about a face's outer boundary in its own
-// parameter plane (IGES trimmed surfaces; see file_boundary()).
-struct FileBoundary {
-  int sense = 0;                // +1 counterclockwise, -1 clockwise, 0 not given
-  double rotation_extent = -1;  // range of the rotation angle v [rad] on a type 120, -1 if not one
-};
-
-struct FaceOrigin {
-  std::string name, entity;
-  FileBoundary boundary;
-};
-
-struct LoadedFile {
-  TopoDS_Shape shape;
-  std::string units = "mm";
-  std::vector<std::string> products;
-  std::unordered_map<const TopoDS_TShape*, FaceOrigin> origins;
-  std::vector<CadSkippedFace> untranslated;  // face entities without a shape
-};
-
-std::string hstring(const Handle(TCollection_HAsciiString)& s) {
-  return s.IsNull() ? std::string() : trim(s->ToCString());
-}
-
-std::string entity_label(const Handle(Interface_InterfaceModel)& model,
-                         const Handle(Standard_Transient)& entity) {
-  const std::string label = hstring(model->StringLabel(entity));
-  return label.empty() ? "#" + std::to_string(model->Number(entity)) : label;
-}
-
-// Why OpenCASCADE could not read or translate an entity, from its checks.
-std::string entity_problems(const Handle(Interface_InterfaceModel)& model,
-                            const Handle(Transfer_TransientProcess)& process,
-                            const Handle(Standard_Transient)& entity) {
-  std::vector<std::string> messages;
-  auto collect = [&](const Handle(Interface_Check)& check) {
-    if (check.IsNull()) return;
-    for (int k = 1; k <= check->NbFails(); ++k) messages.push_back(trim(check->CFail(k)));
-    for (int k = 1; k <= check->NbWarnings(); ++k) messages.push_back(trim(check->CWarning(k)));
-  };
-  const int number = model->Number(entity);
-  if (number > 0) {
-    collect(model->Check(number, true));
-    collect(model->Check(number, false));
-  }
-  collect(process->Check(entity));
-  std::string text;
-  for (const auto& m : messages) text += (text.empty() ? "" : "; ") + m;
-  return text.empty() ? "OpenCASCADE could not translate it" : text;
-}
-
-// Whether OpenCASCADE tried to translate the entity (or could not even read
-// it). A face no transferred shape refers to is neither, and is not an error.
-bool attempted(const Handle(Interface_InterfaceModel)& model,
-               const Handle(Transfer_TransientProcess)& process,
-               const Handle(Standard_Transient)& entity) {
-  const int number = model->Number(entity);
-  const Handle(Interface_Check)& syntax = model->Check(number, true);
-  return process->IsBound(entity) || (!syntax.IsNull() && syntax->HasFailed());
-}
-
-// Unknown entities (a misspelt or unsupported type) that a readable entity
-// refers to, found in the raw parameters OpenCASCADE kept for it.
-void collect_unknown(const Handle(Interface_InterfaceModel)& model, const Handle(StepData_UndefinedEntity)& raw,
-                     std::vector<Handle(Standard_Transient)>& found, int depth) {
-  if (raw.IsNull() || depth > 8) return;
-  const Handle(Interface_UndefinedContent) content = raw->UndefinedContent();
-  for (int k = 1; !content.IsNull() && k <= content->NbParams(); ++k) {
-    if (!content->IsParamEntity(k)) continue;
-    const Handle(Standard_Transient) e = content->ParamEntity(k);
-    const auto sub = Handle(StepData_UndefinedEntity)::DownCast(e);
-    if (sub.IsNull()) continue;
-    if (sub->IsSub() || model->Number(e) == 0)
-      collect_unknown(model, sub, found, depth + 1);  // a list in the parameters
-    else if (std::find(found.begin(), found.end(), e) == found.end())
-      found.push_back(e);
-  }
-}
-
-// Strict import (docs/formats.md "CAD import"): every entity OpenCASCADE
-// could not read is an error, not only faces. An entity with a failed syntax
-// check (not a face: those are reported by the caller with their names) is
-// reported through the unknown entities it refers to, when there are any, so
-// the message names the misspelt one ("#17 (ADVANCED_FACX)"), else itself.
-void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
-                             std::vector<CadSkippedFace>& untranslated) {
-  std::set<std::string> reported;
-  for (const CadSkippedFace& f : untranslated) reported.insert(f.entity);
-  auto failed = [&](int i) {
-    const Handle(Interface_Check)& syntax = model->Check(i, true);
-    return model->IsErrorEntity(i) || (!syntax.IsNull() && syntax->HasFailed());
-  };
-  auto unknown_in = [&](int i) {
-    std::vector<Handle(Standard_Transient)> unknown;
-    if (model->IsRedefinedContent(i) && !model->ReportEntity(i).IsNull())
-      collect_unknown(model, Handle(StepData_UndefinedEntity)::DownCast(model->ReportEntity(i)->Content()),
-                      unknown, 0);
-    return unknown;
-  };
-  // What a failed face refers to is reported with the face (by the caller).
-  for (int i = 1; i <= model->NbEntities(); ++i)
-    if (failed(i) && !Handle(StepShape_FaceSurface)::DownCast(model->Value(i)).IsNull())
-      for (const Handle(Standard_Transient)& e : unknown_in(i)) reported.insert(entity_label(model, e));
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    if (!failed(i)) continue;
-    const Handle(Interface_Check)& syntax = model->Check(i, true);
-    const Handle(Standard_Transient) entity = model->Value(i);
-    if (!Handle(StepShape_FaceSurface)::DownCast(entity).IsNull()) continue;
-    std::string why;
-    for (int k = 1; !syntax.IsNull() && k <= syntax->NbFails(); ++k)
-      why += (why.empty() ? "" : "; ") + trim(syntax->CFail(k));
-    if (why.empty()) why = "OpenCASCADE could not read it";
-    const std::string label = entity_label(model, entity);
-    const std::vector<Handle(Standard_Transient)> unknown = unknown_in(i);
-    if (unknown.empty()) {
-      if (reported.insert(label).second)
-        untranslated.push_back({"", "entity " + label, "could not be read (" + why + ")"});
-      continue;
-    }
-    for (const Handle(Standard_Transient)& e : unknown) {
-      const auto raw = Handle(StepData_UndefinedEntity)::DownCast(e);
-      const std::string unknown_label = entity_label(model, e);
-      if (!reported.insert(unknown_label).second) continue;
-      untranslated.push_back({"", "entity " + unknown_label + " (" + quote_field(raw->StepType()) + ")",
-                              "not an entity type OpenCASCADE knows, referred to by " + label + " (" + why +
-                                  ")"});
-    }
-  }
-}
-
-// ---------------------------------------------------------------- IGES boundary sense
-
-// Point of an IGES rational B-spline (type 126) at t, x and y only (de Boor
-// on the homogeneous poles; knots are numbered from -degree in OpenCASCADE).
-gp_XY iges_bspline_point(const Handle(IGESGeom_BSplineCurve)& c, double t) {
-  const int p = c->Degree(), n = c->UpperIndex();
-  auto knot = [&](int i) { return c->Knot(i - p); };  // i = 0 .. n + p + 1
-  int k = p;
-  while (k < n && t >= knot(k + 1)) ++k;
-  const bool polynomial = c->IsPolynomial();
-  std::vector<Eigen::Vector3d> d(static_cast<std::size_t>(p + 1));
-  for (int j = 0; j <= p; ++j) {
-    const double w = polynomial ? 1.0 : c->Weight(k - p + j);
-    const gp_Pnt q = c->Pole(k - p + j);
-    d[static_cast<std::size_t>(j)] = {w * q.X(), w * q.Y(), w};
-  }
-  for (int r = 1; r <= p; ++r)
-    for (int j = p; j >= r; --j) {
-      const int i = k - p + j;
-      const double span = knot(i + p - r + 1) - knot(i);
-      const double alpha = span > 0 ? (t - knot(i)) / span : 0.0;
-      d[static_cast<std::size_t>(j)] =
-          (1 - alpha) * d[static_cast<std::size_t>(j - 1)] + alpha * d[static_cast<std::size_t>(j)];
-    }
-  const Eigen::Vector3d& h = d[static_cast<std::size_t>(p)];
-  return {h.x() / h.z(), h.y() / h.z()};
-}
-
-// Points along an IGES parameter-space curve, in the surface's (u,v), for
-// the curve types CAD systems write there (102 of 100/106/110/126). False
-// for anything else, or a curve moved by a transformation matrix.
-bool sample_parameter_curve(const Handle(IGESData_IGESEntity)& curve, std::vector<gp_XY>& points, int depth) {
-  constexpr int kSamples = 32;
-  if (curve.IsNull() || depth > 8 || curve->HasTransf()) return false;
-  if (const auto composite = Handle(IGESGeom_CompositeCurve)::DownCast(curve); !composite.IsNull()) {
-    for (int i = 1; i <= composite->NbCurves(); ++i)
-      if (!sample_parameter_curve(composite->Curve(i), points, depth + 1)) return false;
-    return composite->NbCurves() > 0;
-  }
-  if (const auto line = Handle(IGESGeom_Line)::DownCast(curve); !line.IsNull()) {
-    points.push_back({line->StartPoint().X(), line->StartPoint().Y()});
-    points.push_back({line->EndPoint().X(), line->EndPoint().Y()});
-    return true;
-  }
-  if (const auto arc = Handle(IGESGeom_CircularArc)::DownCast(curve); !arc.IsNull()) {
-    // Counterclockwise from the start to the end point (IGES type 100).
-    const gp_XY c = arc->Center().XY(), a = arc->StartPoint().XY() - c, b = arc->EndPoint().XY() - c;
-    const double a0 = std::atan2(a.Y(), a.X());
-    double a1 = std::atan2(b.Y(), b.X());
-    while (a1 <= a0) a1 += 2 * M_PI;
-    const double radius = a.Modulus();
-    for (int k = 0; k <= kSamples; ++k) {
-      const double angle = a0 + (a1 - a0) * k / kSamples;
-      points.push_back(c + radius * gp_XY(std::cos(angle), std::sin(angle)));
-    }
-    return true;
-  }
-  if (const auto data = Handle(IGESGeom_CopiousData)::DownCast(curve); !data.IsNull()) {
-    for (int i = 1; i <= data->NbPoints(); ++i) points.push_back({data->Point(i).X(), data->Point(i).Y()});
-    return data->NbPoints() > 0;
-  }
-  if (const auto spline = Handle(IGESGeom_BSplineCurve)::DownCast(curve); !spline.IsNull()) {
-    const double t0 = spline->UMin(), t1 = spline->UMax();
-    for (int k = 0; k <= kSamples; ++k) points.push_back(iges_bspline_point(spline, t0 + (t1 - t0) * k / kSamples));
-    return true;
-  }
-  return false;
-}
-
-// Which way the outer boundary of an IGES trimmed surface (type 144) runs in
-// the file's own parameter plane, and, on a surface of revolution (type
-// 120, whose v is the rotation angle: IGES 5.3), over what range of angles.
-// The sense is 0 when the file does not tell (no parameter-space curve,
-// curve types not read by sample_parameter_curve, a degenerate loop).
-//
-// Why it matters: the surface's (u,v) rectangle in the file is not periodic,
-// so a closed boundary curve there encloses one region whichever way it
-// runs, and writers do not all run outer boundaries the same way. After
-// OpenCASCADE's translation the same boundary lies on a periodic surface,
-// where a boundary that runs from pole to pole (a lune of a sphere written
-// as a surface of revolution) encloses the face on one side and the rest of
-// the sphere on the other; only the way the boundary runs tells which.
-// OpenCASCADE keeps the IGES surface normal (for type 120 its angle is the
-// file's terminate angle minus v, its other parameter the file's u), so its
-// parameter map keeps the sense of every loop; but (7.6) it routes the pole
-// edges of a clockwise boundary around the other side of the sphere, and
-// such a face came in as the rest of the sphere: a quarter sphere of
-// 70.88 mm^2 as 212.65 mm^2 (docs/formats.md "CAD import", "IGES
-// boundaries"). route_like_file() routes them back.
-FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
-  FileBoundary boundary;
-  if (trimmed.IsNull() || !trimmed->HasOuterContour()) return boundary;
-  const Handle(IGESGeom_CurveOnSurface) contour = trimmed->OuterContour();
-  if (contour.IsNull()) return boundary;
-  std::vector<gp_XY> points;
-  if (!sample_parameter_curve(contour->CurveUV(), points, 0) || points.size() < 3) return boundary;
-  double twice_area = 0, u0 = points[0].X(), u1 = u0, v0 = points[0].Y(), v1 = v0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const gp_XY& a = points[k];
-    const gp_XY& b = points[(k + 1) % points.size()];
-    twice_area += a.X() * b.Y() - b.X() * a.Y();
-    u0 = std::min(u0, a.X()), u1 = std::max(u1, a.X()), v0 = std::min(v0, a.Y()), v1 = std::max(v1, a.Y());
-  }
-  if (!(std::abs(twice_area) > 1e-9 * (u1 - u0) * (v1 - v0))) return boundary;
-  boundary.sense = twice_area > 0 ? 1 : -1;
-  const Handle(IGESData_IGESEntity) surface = trimmed->Surface();
-  if (!surface.IsNull() && surface->IsKind(STANDARD_TYPE(IGESGeom_SurfaceOfRevolution)))
-    boundary.rotation_extent = v1 - v0;
-  return boundary;
-}
-
-std::string unit_name(const std::string& occt_unit) {
-  const std::string u = to_lower(trim(occt_unit));
-  if (u == "mm" || u == "millimetre" || u == "millimeter") return "mm";
-  if (u == "in" || u == "inch") return "inch";
-  return u.empty() ? "mm" : u;
-}
-
-// A face without a name in the file, or a system's placeholder for none.
-bool meaningful_name(const std::string& name) { return !name.empty() && name != "NONE"; }
-
-LoadedFile read_file(const std::string& path, Format format) {
-  std::unique_ptr<XSControl_Reader> reader;
-  if (format == Format::step)
-    reader = std::make_unique<STEPControl_Reader>();
-  else
-    reader = std::make_unique<IGESControl_Reader>();
-  // Furrow works in millimetres: have OpenCASCADE convert every file to mm.
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-
-  const char* kind = format == Format::step ? "STEP" : "IGES";
-  const IFSelect_ReturnStatus status = reader->ReadFile(path.c_str());
-  if (status == IFSelect_RetVoid)
-    throw InputError(path + ": the " + std::string(kind) + " file holds no data");
-  if (status != IFSelect_RetDone)
-    throw InputError(path + ": not a readable " + std::string(kind) +
-                     " file (OpenCASCADE could not parse it)");
-  const Handle(Interface_InterfaceModel) model = reader->WS()->Model();
-  if (model.IsNull() || model->NbEntities() == 0)
-    throw InputError(path + ": the " + std::string(kind) + " file holds no entities");
-  if (reader->NbRootsForTransfer() == 0)
-    throw InputError(path + ": the file holds no shape to import (no solid, shell or surface)");
-  reader->TransferRoots();
-
-  LoadedFile file;
-  file.shape = reader->OneShape();
-  const Handle(Transfer_TransientProcess) process = reader->WS()->TransferReader()->TransientProcess();
-  if (format == Format::step) {
-    TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
-    static_cast<STEPControl_Reader&>(*reader).FileUnits(lengths, angles, solid_angles);
-    if (lengths.Length() >= 1) file.units = unit_name(lengths.Value(1).ToCString());
-  } else {
-    const Handle(IGESData_IGESModel) iges = Handle(IGESData_IGESModel)::DownCast(model);
-    if (!iges.IsNull()) file.units = unit_name(hstring(iges->GlobalSection().UnitName()));
-  }
-
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    const Handle(Standard_Transient) entity = model->Value(i);
-    std::string name;
-    if (format == Format::step) {
-      if (const auto product = Handle(StepBasic_Product)::DownCast(entity); !product.IsNull()) {
-        file.products.push_back(hstring(product->Name()));
-        continue;
-      }
-      // Faces with geometry (ADVANCED_FACE, FACE_SURFACE); an ORIENTED_FACE
-      // only points at one of those.
-      const auto face = Handle(StepShape_FaceSurface)::DownCast(entity);
-      if (face.IsNull()) continue;
-      name = hstring(face->Name());
-    } else {
-      const auto iges = Handle(IGESData_IGESEntity)::DownCast(entity);
-      if (iges.IsNull()) continue;
-      if (iges->HasName()) name = hstring(iges->NameValue());
-    }
-    if (!meaningful_name(name)) name.clear();
-    const TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
-    if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
-      file.origins.emplace(result.TShape().get(),
-                           FaceOrigin{name, entity_label(model, entity),
-                                      file_boundary(Handle(IGESGeom_TrimmedSurface)::DownCast(entity))});
-    } else if (result.IsNull() && format == Format::step && attempted(model, process, entity)) {
-      file.untranslated.push_back({name, entity_label(model, entity),
-                                   entity_problems(model, process, entity)});
-    }
-  }
-  if (format == Format::step) add_unreadable_entities(model, file.untranslated);
-  if (format == Format::iges) {
-    // IGES faces are roots (trimmed/bounded surfaces, MSBO solids): a root
-    // without a result is a face or solid OpenCASCADE could not translate.
-    for (int r = 1; r <= reader->NbRootsForTransfer(); ++r) {
-      const Handle(Standard_Transient) root = reader->RootForTransfer(r);
-      if (!TransferBRep::ShapeResult(process, root).IsNull()) continue;
-      const auto iges = Handle(IGESData_IGESEntity)::DownCast(root);
-      std::string label = entity_label(model, root);
-      if (!iges.IsNull())
-        label += " (IGES type " + std::to_string(iges->TypeNumber()) + " form " +
-                 std::to_string(iges->FormNumber()) + ")";
-      file.untranslated.push_back({iges.IsNull() || !iges->HasName() ? "" : hstring(iges->NameValue()),
-                                   label, entity_problems(model, process, root)});
-    }
-  }
-  return file;
-}
 
 // ---------------------------------------------------------------- boundaries
 
@@ -840,19 +472,19 @@ bool is_cad_file(const std::string& path) {
 }
 
 CadImportResult import_cad(const std::string& path, const CadImportOptions& options) {
-  const Format format = format_of(path);
-  check_signature(path, format);
+  const cad::Format format = cad::format_of(path);
+  cad::check_signature(path, format);
   const QuietMessenger quiet;
 
-  LoadedFile file;
+  cad::LoadedFile file;
   try {
-    file = read_file(path, format);
+    file = cad::read_file(path, format);
   } catch (const Standard_Failure& e) {
     throw InputError(path + ": OpenCASCADE failed while reading the file: " + occt_text(e));
   }
 
   CadImportResult result;
-  result.format = format == Format::step ? "STEP" : "IGES";
+  result.format = format == cad::Format::step ? "STEP" : "IGES";
   result.products = file.products;
   result.part.source_units = file.units;
   auto face_label = [](const std::string& name, const std::string& entity) {
@@ -887,7 +519,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
   for (int i = 1; i <= faces.Extent(); ++i) {
     const TopoDS_Face& face = TopoDS::Face(faces(i));
     const std::size_t index = static_cast<std::size_t>(i - 1);
-    FaceOrigin origin;
+    cad::FaceOrigin origin;
     if (auto it = file.origins.find(face.TShape().get()); it != file.origins.end()) origin = it->second;
     std::string name = origin.name.empty() ? "face_" + std::to_string(index) : origin.name;
     if (used_names.count(name)) name += "_" + std::to_string(index);
