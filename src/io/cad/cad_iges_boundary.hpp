@@ -23,7 +23,7 @@
 // edges of a clockwise boundary around the other side of the sphere, and
 // such a face came in as the rest of the sphere: a quarter sphere of
 // 70.88 mm^2 as 212.65 mm^2 (docs/formats.md "CAD import", "IGES
-// boundaries"). route_like_file() routes them back.
+// boundaries"). cad_face_trims.hpp routes them back (route_like_file()).
 //
 // Values are in the file's parameter plane as the file writes it (rotation
 // angles in radians). Never fails: what cannot be read gives the "not given"
