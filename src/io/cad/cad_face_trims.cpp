@@ -16,7 +16,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/cad/cad_occt_internal.hpp"
 #include "io/cad/cad_trim_polygon.hpp"
@@ -25,6 +28,7 @@ namespace furrow::cad {
 
 namespace {
 
+// Which parameters of the surface are periodic, and their periods.
 struct Periods {
   bool u = false, v = false;
   double du = 0, dv = 0;
@@ -166,7 +170,7 @@ double period_slack(const std::vector<WireUse>& wires, const Handle(Geom_Surface
 
 // The face's wires as chains of pcurves, unwrapped so that each chain is
 // continuous in (u,v) even where it crosses a periodic surface's seam.
-// `file` is what the file says about the outer boundary (FaceOrigin).
+// `file` is what the file says about the outer boundary (cad_iges_boundary.hpp).
 std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Periods& periods, const FileBoundary& file) {
   std::vector<WireUse> wires;
   const TopoDS_Wire outer = BRepTools::OuterWire(face);

@@ -20,8 +20,9 @@
 // clamped onto its edge.
 //
 // Units: parameters as the surface has them (radians for angles); edge
-// tolerances and trim sags in millimetres. Precondition: the face has a
-// surface (BRep_Tool::Surface is not null). Failures: FaceFailure
+// tolerances and trim sags in millimetres. Precondition: `surface` is the
+// face's own surface (BRep_Tool::Surface, not null) without rectangular trims
+// (cad_surface.hpp strip_trim()). Failures: FaceFailure
 // (cad_occt_internal.hpp) for an edge without a pcurve, a wire that is not a
 // connected chain or winds around the surface without a seam edge, a
 // boundary spanning more than one period, an unbounded or empty rectangle,
@@ -78,7 +79,7 @@ struct FaceWires {
 FaceWires face_wires(const TopoDS_Face& face, const Handle(Geom_Surface)& surface, const FileBoundary& file);
 
 struct TrimLoops {
-  std::vector<UvLoop> loops;  // in `nurbs`' (s,t); empty: the whole rectangle (untrimmed)
+  std::vector<UvLoop> loops;  // in `nurbs`' (s,t); empty: untrimmed (the whole rectangle)
   double worst_sag = 0;       // largest chord sag before balancing [mm]
   bool tolerance_met = true;  // false when options.trim_max_subdivisions stopped the refinement
 };

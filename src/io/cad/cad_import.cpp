@@ -36,6 +36,7 @@ namespace furrow {
 
 namespace {
 
+// OpenCASCADE's message, or the exception's type when it gives none.
 std::string occt_text(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
   return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
@@ -56,13 +57,15 @@ class QuietMessenger {
   Message_SequenceOfPrinters saved_;
 };
 
-// ---------------------------------------------------------------- faces
-
 struct ConvertedFace {
   Face face;
   CadFaceReport report;
 };
 
+// One face, in the order the steps need each other: the wires give the
+// parameter rectangle, the surface is converted over that rectangle, the
+// trims are carried into the conversion's parameters, and the normal's sense
+// is compared last.
 ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const cad::FileBoundary& file,
                            const CadImportOptions& options) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
