@@ -124,7 +124,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
   result.products = file.products;
   result.part.source_units = file.units;
   auto face_label = [](const std::string& name, const std::string& entity) {
-    if (entity.rfind("entity ", 0) == 0) return entity;  // not a face (add_unreadable_entities)
+    if (entity.rfind("entity ", 0) == 0) return entity;  // not a face (cad_reader.hpp, strict mode)
     std::string label = "face";
     if (!name.empty()) label += " " + quote_field(name);
     if (!entity.empty()) label += " " + entity;

@@ -5,10 +5,11 @@
 // boundary senses), plus the entities OpenCASCADE could not read or
 // translate.
 //
-// Strict mode: every entity OpenCASCADE could not read is listed in
-// LoadedFile::untranslated, not only faces (a misspelt entity type is named
-// as such), so that the caller can fail the import or, with
-// skip_bad_faces, report it.
+// Strict mode: what OpenCASCADE could not read or translate is listed in
+// LoadedFile::untranslated, so that the caller can fail the import or, with
+// skip_bad_faces, report it: for STEP every such entity, not only faces (a
+// misspelt entity type is named as such), for IGES every root (trimmed or
+// bounded surface, solid) without a shape.
 //
 // Failures: InputError naming the file for a file that is missing, not
 // STEP/IGES by name or signature, unreadable, or without data or shapes.
@@ -52,10 +53,13 @@ struct LoadedFile {
   // Keyed by the face's TShape, so any use of the face (either orientation,
   // any location) finds it.
   std::unordered_map<const TopoDS_TShape*, FaceOrigin> origins;
-  std::vector<CadSkippedFace> untranslated;  // face entities without a shape
+  // Faces without a shape, then (STEP) other unreadable entities, whose
+  // CadSkippedFace::entity starts with "entity ".
+  std::vector<CadSkippedFace> untranslated;
 };
 
-// Reads and transfers the whole file, converting it to millimetres.
+// Reads and transfers the whole file, converting it to millimetres (sets
+// OpenCASCADE's global "xstep.cascade.unit" to MM to do so).
 LoadedFile read_file(const std::string& path, Format format);
 
 }  // namespace furrow::cad
