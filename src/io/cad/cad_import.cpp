@@ -1,104 +1,46 @@
-// CAD import through OpenCASCADE (contract in cad_import.hpp). The only file of
-// furrow_core that includes OpenCASCADE headers; OpenCASCADE exceptions
-// (Standard_Failure, not std::exception) are caught here and become
-// InputError naming the file and the face.
+// CAD import through OpenCASCADE (contract in cad_import.hpp): the walk over
+// the file's faces, one Furrow Face per OpenCASCADE face. The steps live in
+// their own files: reading the file (cad_reader.hpp), the face's wires and
+// parameter rectangle and its trim polygons (cad_face_trims.hpp), its
+// surface as a NURBS (cad_surface.hpp). Their failures end here:
+// FaceFailure and OpenCASCADE's exceptions (Standard_Failure, not
+// std::exception) become InputError naming the file and the face, or a
+// skipped face with options.skip_bad_faces.
 #include "io/cad/cad_import.hpp"
 
-#include <BRepTools.hxx>
-#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
-#include <BndLib_Add2dCurve.hxx>
-#include <Bnd_Box2d.hxx>
-#include <Geom2d_Curve.hxx>
-#include <GeomConvert.hxx>
-#include <GeomConvert_ApproxSurface.hxx>
-#include <Geom_BSplineSurface.hxx>
-#include <Geom_BezierSurface.hxx>
-#include <Geom_ConicalSurface.hxx>
-#include <Geom_CylindricalSurface.hxx>
-#include <Geom_OffsetSurface.hxx>
-#include <Geom_Plane.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
-#include <Geom_SphericalSurface.hxx>
-#include <Geom_SurfaceOfLinearExtrusion.hxx>
-#include <Geom_SurfaceOfRevolution.hxx>
-#include <Geom_ToroidalSurface.hxx>
-#include <IGESControl_Reader.hxx>
-#include <IGESData_GlobalSection.hxx>
-#include <IGESData_IGESEntity.hxx>
-#include <IGESData_IGESModel.hxx>
-#include <Interface_Check.hxx>
-#include <Interface_ReportEntity.hxx>
-#include <Interface_UndefinedContent.hxx>
-#include <StepData_UndefinedEntity.hxx>
-#include <Interface_InterfaceModel.hxx>
-#include <Interface_Static.hxx>
+#include <Geom_Surface.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
-#include <Precision.hxx>
-#include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
-#include <StepBasic_Product.hxx>
-#include <StepShape_FaceSurface.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColStd_SequenceOfAsciiString.hxx>
-#include <TCollection_HAsciiString.hxx>
+#include <TopAbs.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
-#include <TopoDS_Iterator.hxx>
-#include <TopoDS_Wire.hxx>
-#include <TransferBRep.hxx>
-#include <Transfer_TransientProcess.hxx>
-#include <XSControl_TransferReader.hxx>
-#include <XSControl_WorkSession.hxx>
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <memory>
+#include <cstddef>
 #include <set>
-#include <stdexcept>
-#include <unordered_map>
+#include <string>
+#include <utility>
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/cad/cad_face_trims.hpp"
+#include "io/cad/cad_occt_internal.hpp"
 #include "io/cad/cad_parameter_map.hpp"
-#include "io/cad/cad_trim_polygon.hpp"
+#include "io/cad/cad_reader.hpp"
+#include "io/cad/cad_surface.hpp"
 
 namespace furrow {
 
 namespace {
 
-// A face-level failure; the caller adds the file and the face's name.
-class FaceFailure : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Grid on which every conversion is compared with the original surface.
-constexpr int kCheckGrid = 13;
-
-enum class Format { step, iges };
-
+// OpenCASCADE's message, or the exception's type when it gives none.
 std::string occt_text(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
   return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
 }
-
-std::string number_text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
-Eigen::Vector3d to_eigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Eigen::Vector3d to_eigen(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
 // OpenCASCADE prints progress and statistics on standard output; a library
 // must not. The printers are detached for the duration of an import.
@@ -115,652 +57,46 @@ class QuietMessenger {
   Message_SequenceOfPrinters saved_;
 };
 
-Format format_of(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".step" || ext == ".stp") return Format::step;
-  if (ext == ".iges" || ext == ".igs") return Format::iges;
-  throw InputError(path + ": not a CAD file name (expected .step, .stp, .iges or .igs)");
-}
-
-// Cheap signature check so that a wrong file gets a plain answer instead of
-// whatever OpenCASCADE's parser makes of it.
-void check_signature(const std::string& path, Format format) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
-  std::string head(4096, '\0');
-  in.read(&head[0], static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  if (trim(head).empty()) throw InputError(path + ": the file is empty");
-  if (format == Format::step) {
-    std::size_t start = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // UTF-8 BOM
-    start = head.find_first_not_of(" \t\r\n", start);
-    if (start == std::string::npos || head.compare(start, 12, "ISO-10303-21") != 0)
-      throw InputError(path + ": not a STEP file (a STEP file starts with \"ISO-10303-21;\")");
-  } else {
-    const std::string first_line = head.substr(0, head.find('\n'));
-    if (first_line.size() < 73 || (first_line[72] != 'S' && first_line[72] != 'C'))
-      throw InputError(path + ": not an IGES file (an IGES file starts with 80-column records, "
-                              "the first with 'S' in column 73)");
-  }
-}
-
-// ---------------------------------------------------------------- reading
-
-struct FaceOrigin {
-  std::string name, entity;
-};
-
-struct LoadedFile {
-  TopoDS_Shape shape;
-  std::string units = "mm";
-  std::vector<std::string> products;
-  std::unordered_map<const TopoDS_TShape*, FaceOrigin> origins;
-  std::vector<CadSkippedFace> untranslated;  // face entities without a shape
-};
-
-std::string hstring(const Handle(TCollection_HAsciiString)& s) {
-  return s.IsNull() ? std::string() : trim(s->ToCString());
-}
-
-std::string entity_label(const Handle(Interface_InterfaceModel)& model,
-                         const Handle(Standard_Transient)& entity) {
-  const std::string label = hstring(model->StringLabel(entity));
-  return label.empty() ? "#" + std::to_string(model->Number(entity)) : label;
-}
-
-// Why OpenCASCADE could not read or translate an entity, from its checks.
-std::string entity_problems(const Handle(Interface_InterfaceModel)& model,
-                            const Handle(Transfer_TransientProcess)& process,
-                            const Handle(Standard_Transient)& entity) {
-  std::vector<std::string> messages;
-  auto collect = [&](const Handle(Interface_Check)& check) {
-    if (check.IsNull()) return;
-    for (int k = 1; k <= check->NbFails(); ++k) messages.push_back(trim(check->CFail(k)));
-    for (int k = 1; k <= check->NbWarnings(); ++k) messages.push_back(trim(check->CWarning(k)));
-  };
-  const int number = model->Number(entity);
-  if (number > 0) {
-    collect(model->Check(number, true));
-    collect(model->Check(number, false));
-  }
-  collect(process->Check(entity));
-  std::string text;
-  for (const auto& m : messages) text += (text.empty() ? "" : "; ") + m;
-  return text.empty() ? "OpenCASCADE could not translate it" : text;
-}
-
-// Whether OpenCASCADE tried to translate the entity (or could not even read
-// it). A face no transferred shape refers to is neither, and is not an error.
-bool attempted(const Handle(Interface_InterfaceModel)& model,
-               const Handle(Transfer_TransientProcess)& process,
-               const Handle(Standard_Transient)& entity) {
-  const int number = model->Number(entity);
-  const Handle(Interface_Check)& syntax = model->Check(number, true);
-  return process->IsBound(entity) || (!syntax.IsNull() && syntax->HasFailed());
-}
-
-// Unknown entities (a misspelt or unsupported type) that a readable entity
-// refers to, found in the raw parameters OpenCASCADE kept for it.
-void collect_unknown(const Handle(Interface_InterfaceModel)& model, const Handle(StepData_UndefinedEntity)& raw,
-                     std::vector<Handle(Standard_Transient)>& found, int depth) {
-  if (raw.IsNull() || depth > 8) return;
-  const Handle(Interface_UndefinedContent) content = raw->UndefinedContent();
-  for (int k = 1; !content.IsNull() && k <= content->NbParams(); ++k) {
-    if (!content->IsParamEntity(k)) continue;
-    const Handle(Standard_Transient) e = content->ParamEntity(k);
-    const auto sub = Handle(StepData_UndefinedEntity)::DownCast(e);
-    if (sub.IsNull()) continue;
-    if (sub->IsSub() || model->Number(e) == 0)
-      collect_unknown(model, sub, found, depth + 1);  // a list in the parameters
-    else if (std::find(found.begin(), found.end(), e) == found.end())
-      found.push_back(e);
-  }
-}
-
-// Strict import (docs/formats.md "CAD import"): every entity OpenCASCADE
-// could not read is an error, not only faces. An entity with a failed syntax
-// check (not a face: those are reported by the caller with their names) is
-// reported through the unknown entities it refers to, when there are any, so
-// the message names the misspelt one ("#17 (ADVANCED_FACX)"), else itself.
-void add_unreadable_entities(const Handle(Interface_InterfaceModel)& model,
-                             std::vector<CadSkippedFace>& untranslated) {
-  std::set<std::string> reported;
-  for (const CadSkippedFace& f : untranslated) reported.insert(f.entity);
-  auto failed = [&](int i) {
-    const Handle(Interface_Check)& syntax = model->Check(i, true);
-    return model->IsErrorEntity(i) || (!syntax.IsNull() && syntax->HasFailed());
-  };
-  auto unknown_in = [&](int i) {
-    std::vector<Handle(Standard_Transient)> unknown;
-    if (model->IsRedefinedContent(i) && !model->ReportEntity(i).IsNull())
-      collect_unknown(model, Handle(StepData_UndefinedEntity)::DownCast(model->ReportEntity(i)->Content()),
-                      unknown, 0);
-    return unknown;
-  };
-  // What a failed face refers to is reported with the face (by the caller).
-  for (int i = 1; i <= model->NbEntities(); ++i)
-    if (failed(i) && !Handle(StepShape_FaceSurface)::DownCast(model->Value(i)).IsNull())
-      for (const Handle(Standard_Transient)& e : unknown_in(i)) reported.insert(entity_label(model, e));
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    if (!failed(i)) continue;
-    const Handle(Interface_Check)& syntax = model->Check(i, true);
-    const Handle(Standard_Transient) entity = model->Value(i);
-    if (!Handle(StepShape_FaceSurface)::DownCast(entity).IsNull()) continue;
-    std::string why;
-    for (int k = 1; !syntax.IsNull() && k <= syntax->NbFails(); ++k)
-      why += (why.empty() ? "" : "; ") + trim(syntax->CFail(k));
-    if (why.empty()) why = "OpenCASCADE could not read it";
-    const std::string label = entity_label(model, entity);
-    const std::vector<Handle(Standard_Transient)> unknown = unknown_in(i);
-    if (unknown.empty()) {
-      if (reported.insert(label).second)
-        untranslated.push_back({"", "entity " + label, "could not be read (" + why + ")"});
-      continue;
-    }
-    for (const Handle(Standard_Transient)& e : unknown) {
-      const auto raw = Handle(StepData_UndefinedEntity)::DownCast(e);
-      const std::string unknown_label = entity_label(model, e);
-      if (!reported.insert(unknown_label).second) continue;
-      untranslated.push_back({"", "entity " + unknown_label + " (" + quote_field(raw->StepType()) + ")",
-                              "not an entity type OpenCASCADE knows, referred to by " + label + " (" + why +
-                                  ")"});
-    }
-  }
-}
-
-std::string unit_name(const std::string& occt_unit) {
-  const std::string u = to_lower(trim(occt_unit));
-  if (u == "mm" || u == "millimetre" || u == "millimeter") return "mm";
-  if (u == "in" || u == "inch") return "inch";
-  return u.empty() ? "mm" : u;
-}
-
-// A face without a name in the file, or a system's placeholder for none.
-bool meaningful_name(const std::string& name) { return !name.empty() && name != "NONE"; }
-
-LoadedFile read_file(const std::string& path, Format format) {
-  std::unique_ptr<XSControl_Reader> reader;
-  if (format == Format::step)
-    reader = std::make_unique<STEPControl_Reader>();
-  else
-    reader = std::make_unique<IGESControl_Reader>();
-  // Furrow works in millimetres: have OpenCASCADE convert every file to mm.
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-
-  const char* kind = format == Format::step ? "STEP" : "IGES";
-  const IFSelect_ReturnStatus status = reader->ReadFile(path.c_str());
-  if (status == IFSelect_RetVoid)
-    throw InputError(path + ": the " + std::string(kind) + " file holds no data");
-  if (status != IFSelect_RetDone)
-    throw InputError(path + ": not a readable " + std::string(kind) +
-                     " file (OpenCASCADE could not parse it)");
-  const Handle(Interface_InterfaceModel) model = reader->WS()->Model();
-  if (model.IsNull() || model->NbEntities() == 0)
-    throw InputError(path + ": the " + std::string(kind) + " file holds no entities");
-  if (reader->NbRootsForTransfer() == 0)
-    throw InputError(path + ": the file holds no shape to import (no solid, shell or surface)");
-  reader->TransferRoots();
-
-  LoadedFile file;
-  file.shape = reader->OneShape();
-  const Handle(Transfer_TransientProcess) process = reader->WS()->TransferReader()->TransientProcess();
-  if (format == Format::step) {
-    TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
-    static_cast<STEPControl_Reader&>(*reader).FileUnits(lengths, angles, solid_angles);
-    if (lengths.Length() >= 1) file.units = unit_name(lengths.Value(1).ToCString());
-  } else {
-    const Handle(IGESData_IGESModel) iges = Handle(IGESData_IGESModel)::DownCast(model);
-    if (!iges.IsNull()) file.units = unit_name(hstring(iges->GlobalSection().UnitName()));
-  }
-
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    const Handle(Standard_Transient) entity = model->Value(i);
-    std::string name;
-    if (format == Format::step) {
-      if (const auto product = Handle(StepBasic_Product)::DownCast(entity); !product.IsNull()) {
-        file.products.push_back(hstring(product->Name()));
-        continue;
-      }
-      // Faces with geometry (ADVANCED_FACE, FACE_SURFACE); an ORIENTED_FACE
-      // only points at one of those.
-      const auto face = Handle(StepShape_FaceSurface)::DownCast(entity);
-      if (face.IsNull()) continue;
-      name = hstring(face->Name());
-    } else {
-      const auto iges = Handle(IGESData_IGESEntity)::DownCast(entity);
-      if (iges.IsNull()) continue;
-      if (iges->HasName()) name = hstring(iges->NameValue());
-    }
-    if (!meaningful_name(name)) name.clear();
-    const TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
-    if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
-      file.origins.emplace(result.TShape().get(), FaceOrigin{name, entity_label(model, entity)});
-    } else if (result.IsNull() && format == Format::step && attempted(model, process, entity)) {
-      file.untranslated.push_back({name, entity_label(model, entity),
-                                   entity_problems(model, process, entity)});
-    }
-  }
-  if (format == Format::step) add_unreadable_entities(model, file.untranslated);
-  if (format == Format::iges) {
-    // IGES faces are roots (trimmed/bounded surfaces, MSBO solids): a root
-    // without a result is a face or solid OpenCASCADE could not translate.
-    for (int r = 1; r <= reader->NbRootsForTransfer(); ++r) {
-      const Handle(Standard_Transient) root = reader->RootForTransfer(r);
-      if (!TransferBRep::ShapeResult(process, root).IsNull()) continue;
-      const auto iges = Handle(IGESData_IGESEntity)::DownCast(root);
-      std::string label = entity_label(model, root);
-      if (!iges.IsNull())
-        label += " (IGES type " + std::to_string(iges->TypeNumber()) + " form " +
-                 std::to_string(iges->FormNumber()) + ")";
-      file.untranslated.push_back({iges.IsNull() || !iges->HasName() ? "" : hstring(iges->NameValue()),
-                                   label, entity_problems(model, process, root)});
-    }
-  }
-  return file;
-}
-
-// ---------------------------------------------------------------- surfaces
-
-std::string source_type(const Handle(Geom_Surface)& s) {
-  if (s->IsKind(STANDARD_TYPE(Geom_Plane))) return "plane";
-  if (s->IsKind(STANDARD_TYPE(Geom_CylindricalSurface))) return "cylinder";
-  if (s->IsKind(STANDARD_TYPE(Geom_ConicalSurface))) return "cone";
-  if (s->IsKind(STANDARD_TYPE(Geom_SphericalSurface))) return "sphere";
-  if (s->IsKind(STANDARD_TYPE(Geom_ToroidalSurface))) return "torus";
-  if (s->IsKind(STANDARD_TYPE(Geom_SurfaceOfLinearExtrusion))) return "extrusion";
-  if (s->IsKind(STANDARD_TYPE(Geom_SurfaceOfRevolution))) return "revolution";
-  if (s->IsKind(STANDARD_TYPE(Geom_OffsetSurface))) return "offset";
-  if (s->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) return "b-spline";
-  if (s->IsKind(STANDARD_TYPE(Geom_BezierSurface))) return "bezier";
-  return "other";
-}
-
-Handle(Geom_Surface) strip_trim(Handle(Geom_Surface) s) {
-  for (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s); !t.IsNull();
-       t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s))
-    s = t->BasisSurface();
-  return s;
-}
-
-std::string face_surface_type(const TopoDS_Face& face) {
-  const Handle(Geom_Surface) s = BRep_Tool::Surface(face);
-  return s.IsNull() ? "no surface" : source_type(strip_trim(s));
-}
-
-NurbsSurface to_nurbs(Handle(Geom_BSplineSurface) bs, const std::string& field) {
-  if (bs->IsUPeriodic() || bs->IsVPeriodic()) {
-    bs = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
-    if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
-    if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
-  }
-  const int nu = bs->NbUPoles(), nv = bs->NbVPoles();
-  TColStd_Array1OfReal ku(1, nu + bs->UDegree() + 1), kv(1, nv + bs->VDegree() + 1);
-  bs->UKnotSequence(ku);
-  bs->VKnotSequence(kv);
-  std::vector<double> knots_u(ku.begin(), ku.end()), knots_v(kv.begin(), kv.end());
-  std::vector<std::vector<Eigen::Vector3d>> net(nu, std::vector<Eigen::Vector3d>(nv));
-  std::vector<std::vector<double>> weights;
-  if (bs->IsURational() || bs->IsVRational()) weights.assign(nu, std::vector<double>(nv, 1.0));
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      net[i][j] = to_eigen(bs->Pole(i + 1, j + 1));
-      if (!weights.empty()) weights[i][j] = bs->Weight(i + 1, j + 1);
-    }
-  return NurbsSurface(bs->UDegree(), bs->VDegree(), std::move(knots_u), std::move(knots_v), net,
-                      weights, field);
-}
-
-struct Conversion {
-  Handle(Geom_BSplineSurface) nurbs;
-  bool exact = true;
-  double bound = 0;  // OpenCASCADE's error bound of an approximation
-};
-
-Conversion approximate(const Handle(Geom_Surface)& original, const ParameterDomain& b,
-                       const CadImportOptions& options) {
-  const Handle(Geom_Surface) piece = new Geom_RectangularTrimmedSurface(original, b.u0, b.u1, b.v0, b.v1);
-  GeomConvert_ApproxSurface approx(piece, options.approximation_tolerance, GeomAbs_C2, GeomAbs_C2,
-                                   options.approximation_max_degree, options.approximation_max_degree,
-                                   options.approximation_max_segments, 1);
-  if (!approx.HasResult())
-    throw FaceFailure("its " + source_type(original) +
-                      " surface has no exact NURBS form and could not be approximated");
-  if (!(approx.MaxError() <= options.approximation_tolerance))
-    throw FaceFailure("its " + source_type(original) + " surface could be approximated only within " +
-                      number_text(approx.MaxError()) + " mm (tolerance " +
-                      number_text(options.approximation_tolerance) + " mm)");
-  return {approx.Surface(), false, approx.MaxError()};
-}
-
-// Exact rational B-spline over the rectangle when OpenCASCADE has one (the
-// offset of an elementary surface is converted through its equivalent
-// elementary surface), an approximation otherwise.
-Conversion convert_surface(const Handle(Geom_Surface)& original, const ParameterDomain& b,
-                           const CadImportOptions& options) {
-  Handle(Geom_Surface) exact_form = strip_trim(original);
-  if (const auto offset = Handle(Geom_OffsetSurface)::DownCast(exact_form); !offset.IsNull())
-    exact_form = offset->Surface();  // null when there is no elementary equivalent
-  if (exact_form.IsNull() || exact_form->IsKind(STANDARD_TYPE(Geom_OffsetSurface)) ||
-      source_type(exact_form) == "other")
-    return approximate(original, b, options);
-  try {
-    if (const auto bs = Handle(Geom_BSplineSurface)::DownCast(exact_form); !bs.IsNull()) {
-      auto piece = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
-      piece->CheckAndSegment(b.u0, b.u1, b.v0, b.v1, 1e-9 * b.width_u(), 1e-9 * b.width_v());
-      return {piece, true, 0};
-    }
-    const Handle(Geom_Surface) piece =
-        new Geom_RectangularTrimmedSurface(exact_form, b.u0, b.u1, b.v0, b.v1);
-    return {GeomConvert::SurfaceToBSplineSurface(piece), true, 0};
-  } catch (const Standard_Failure&) {
-    return approximate(original, b, options);
-  }
-}
-
-// ---------------------------------------------------------------- boundaries
-
-// One use of an edge in a wire, in the order the wire runs.
-struct EdgeUse {
-  Handle(Geom2d_Curve) pcurve;
-  double from = 0, to = 0;
-  bool degenerate = false;
-  double tolerance = 0;  // the edge's 3-D tolerance [mm]
-  Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // whole periods added to unwrap a seam
-  Eigen::Vector2d uv(double t) const {
-    const gp_Pnt2d p = pcurve->Value(t);
-    return Eigen::Vector2d(p.X(), p.Y()) + shift;
-  }
-};
-struct WireUse {
-  std::vector<EdgeUse> edges;
-  bool outer = false;  // the face's outer boundary (BRepTools::OuterWire)
-};
-
-// Exact (u,v) box of a wire's pcurves, unwrapping shifts included.
-Bnd_Box2d wire_box(const WireUse& wire) {
-  Bnd_Box2d box;
-  for (const EdgeUse& e : wire.edges) {
-    Bnd_Box2d edge_box;
-    BndLib_Add2dCurve::AddOptimal(e.pcurve, std::min(e.from, e.to), std::max(e.from, e.to), 0.0,
-                                  edge_box);
-    double a, b, c, d;
-    edge_box.Get(a, b, c, d);
-    box.Update(a + e.shift.x(), b + e.shift.y(), c + e.shift.x(), d + e.shift.y());
-  }
-  return box;
-}
-
-Eigen::Vector2d box_centre(const Bnd_Box2d& box) {
-  double a, b, c, d;
-  box.Get(a, b, c, d);
-  return {0.5 * (a + c), 0.5 * (b + d)};
-}
-
-struct Periods {
-  bool u = false, v = false;
-  double du = 0, dv = 0;
-};
-
-// The face's wires as chains of pcurves, unwrapped so that each chain is
-// continuous in (u,v) even where it crosses a periodic surface's seam.
-std::vector<WireUse> face_wires(const TopoDS_Face& face, const Periods& periods) {
-  std::vector<WireUse> wires;
-  const TopoDS_Wire outer = BRepTools::OuterWire(face);
-  for (TopoDS_Iterator it(face); it.More(); it.Next()) {
-    // Internal and external wires (imprinted lines, construction curves) do
-    // not bound the face.
-    const TopAbs_Orientation o = it.Value().Orientation();
-    if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL) continue;
-    const TopoDS_Wire& wire = TopoDS::Wire(it.Value());
-    int edges_in_wire = 0;
-    for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edges_in_wire;
-    WireUse use;
-    use.outer = !outer.IsNull() && wire.IsSame(outer);
-    std::vector<EdgeUse>& chain = use.edges;
-    for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) {
-      const TopoDS_Edge& edge = we.Current();
-      double first = 0, last = 0;
-      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-      if (pcurve.IsNull())
-        throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
-      const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-      chain.push_back({pcurve, reversed ? last : first, reversed ? first : last,
-                       BRep_Tool::Degenerated(edge) == Standard_True, BRep_Tool::Tolerance(edge),
-                       Eigen::Vector2d::Zero()});
-    }
-    if (chain.empty()) continue;
-    if (static_cast<int>(chain.size()) < edges_in_wire)
-      throw FaceFailure("a boundary wire is not a connected chain of edges");
-    Eigen::Vector2d end = chain.front().uv(chain.front().to);
-    for (std::size_t k = 1; k < chain.size(); ++k) {
-      const Eigen::Vector2d start = chain[k].uv(chain[k].from);
-      if (periods.u) chain[k].shift.x() = std::round((end.x() - start.x()) / periods.du) * periods.du;
-      if (periods.v) chain[k].shift.y() = std::round((end.y() - start.y()) / periods.dv) * periods.dv;
-      end = chain[k].uv(chain[k].to);
-    }
-    const Eigen::Vector2d gap = end - chain.front().uv(chain.front().from);
-    if ((periods.u && std::abs(gap.x()) > 0.5 * periods.du) ||
-        (periods.v && std::abs(gap.y()) > 0.5 * periods.dv))
-      throw FaceFailure("a boundary wire winds around the periodic surface without a seam edge "
-                        "(heal the model, e.g. re-export it as a solid)");
-    wires.push_back(std::move(use));
-  }
-  // Inner wires may come a period away from the outer one (pcurves projected
-  // into [0, 2 pi) each on their own): move each next to the outer wire.
-  const auto reference = std::find_if(wires.begin(), wires.end(), [](const WireUse& w) { return w.outer; });
-  if (reference != wires.end() && (periods.u || periods.v)) {
-    const Eigen::Vector2d centre = box_centre(wire_box(*reference));
-    for (WireUse& w : wires) {
-      if (w.outer) continue;
-      const Eigen::Vector2d offset = centre - box_centre(wire_box(w));
-      Eigen::Vector2d shift = Eigen::Vector2d::Zero();
-      if (periods.u) shift.x() = std::round(offset.x() / periods.du) * periods.du;
-      if (periods.v) shift.y() = std::round(offset.y() / periods.dv) * periods.dv;
-      for (EdgeUse& e : w.edges) e.shift += shift;
-    }
-  }
-  return wires;
-}
-
-// A hole that crosses the seam of a face closed around a period lies partly
-// beyond the face's rectangle; its copy one period over covers the rest.
-// (The parts of both copies outside the rectangle are clamped onto its edge
-// when sampled, so each copy cuts out exactly its share.)
-void add_seam_copies(std::vector<WireUse>& wires, const ParameterDomain& b, const Periods& periods) {
-  const std::size_t count = wires.size();
-  for (std::size_t k = 0; k < count; ++k) {
-    if (wires[k].outer) continue;
-    double u0, v0, u1, v1;
-    wire_box(wires[k]).Get(u0, v0, u1, v1);
-    Eigen::Vector2d shift = Eigen::Vector2d::Zero();
-    const bool full_u = periods.u && b.width_u() >= periods.du * (1 - 1e-12);
-    const bool full_v = periods.v && b.width_v() >= periods.dv * (1 - 1e-12);
-    if (full_u && u1 > b.u1) shift.x() = -periods.du;
-    if (full_u && u0 < b.u0) shift.x() = periods.du;
-    if (full_v && v1 > b.v1) shift.y() = -periods.dv;
-    if (full_v && v0 < b.v0) shift.y() = periods.dv;
-    if (shift.isZero()) continue;
-    WireUse copy = wires[k];
-    for (EdgeUse& e : copy.edges) e.shift += shift;
-    wires.push_back(std::move(copy));
-  }
-}
-
-// A periodic range from pcurve boxes is off by rounding (e.g. [-4e-13, 2 pi]);
-// OpenCASCADE's conversions of a full turn need it exact: ends within `eps`
-// of a multiple of the period are moved onto it, and a range of a period (or
-// up to `eps` more) is made exactly one period.
-void snap_to_period(double& a, double& b, double period, double eps, const char* direction) {
-  auto snap = [&](double& x) {
-    const double multiple = std::round(x / period) * period;
-    if (std::abs(x - multiple) <= eps) x = multiple;
-  };
-  snap(a);
-  snap(b);
-  if (b - a > period + eps)
-    throw FaceFailure(std::string("its boundary spans more than one period in ") + direction);
-  if (b - a > period - eps) b = a + period;
-}
-
-// How far a wire's pcurves may stray in a periodic parameter without
-// meaning anything: rounding (1e-9 of the period), or the edges' own 3-D
-// tolerance in parameter units. Why the latter: a wire that runs along the
-// seam (a cap around a sphere's pole, an IGES file that gives only 3-D
-// curves, whose pcurves OpenCASCADE projects) has pcurves up to the edge
-// tolerance off the seam line, e.g. 1.3e-8 rad past 2 pi for 1e-7 mm on a
-// 4.75 mm sphere; with rounding alone such a face was refused as spanning
-// more than one period. The 3-D tolerance is turned into a parameter step
-// by the largest speed of the surface along that parameter over the face,
-// so the step is never larger than the tolerance on the surface.
-double period_slack(const std::vector<WireUse>& wires, const Handle(Geom_Surface)& surface, double u0, double u1,
-                    double v0, double v1, bool along_u, double period) {
-  double tolerance = 0;
-  for (const WireUse& w : wires)
-    for (const EdgeUse& e : w.edges) tolerance = std::max(tolerance, e.tolerance);
-  double speed = 0;
-  constexpr int kSamples = 7;
-  for (int i = 0; i < kSamples; ++i)
-    for (int j = 0; j < kSamples; ++j) {
-      gp_Pnt p;
-      gp_Vec du, dv;
-      surface->D1(u0 + (u1 - u0) * i / (kSamples - 1), v0 + (v1 - v0) * j / (kSamples - 1), p, du, dv);
-      speed = std::max(speed, (along_u ? du : dv).Magnitude());
-    }
-  const double rounding = 1e-9 * period;
-  return speed > 0 ? std::max(rounding, std::min(tolerance / speed, 1e-6 * period)) : rounding;
-}
-
-// Parameter rectangle of the face: the exact box of its outer wire's
-// pcurves, at most one period wide, inside the surface's own bounds.
-ParameterDomain face_bounds(const TopoDS_Face& face, const std::vector<WireUse>& wires,
-                            const Handle(Geom_Surface)& surface, const Periods& periods) {
-  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-  if (wires.empty()) {
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
-  } else {
-    // The outer wire bounds the face (holes lie inside it); without one, all do.
-    const bool has_outer = std::any_of(wires.begin(), wires.end(), [](const WireUse& w) { return w.outer; });
-    Bnd_Box2d box;
-    for (const WireUse& wire : wires)
-      if (wire.outer || !has_outer) box.Add(wire_box(wire));
-    box.Get(u0, v0, u1, v1);
-  }
-  double su0, su1, sv0, sv1;
-  surface->Bounds(su0, su1, sv0, sv1);
-  if (!periods.u) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
-  if (!periods.v) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-  if (periods.u)
-    snap_to_period(u0, u1, periods.du, period_slack(wires, surface, u0, u1, v0, v1, true, periods.du), "u");
-  if (periods.v)
-    snap_to_period(v0, v1, periods.dv, period_slack(wires, surface, u0, u1, v0, v1, false, periods.dv), "v");
-  if (!(std::abs(u0) < 1e50 && std::abs(u1) < 1e50 && std::abs(v0) < 1e50 && std::abs(v1) < 1e50))
-    throw FaceFailure("it is unbounded (an infinite surface without a boundary)");
-  if (!(u1 > u0 && v1 > v0)) throw FaceFailure("its parameter rectangle is empty");
-  return {u0, u1, v0, v1};
-}
-
-// ---------------------------------------------------------------- faces
-
 struct ConvertedFace {
   Face face;
   CadFaceReport report;
 };
 
-ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name,
+// One face, in the order the steps need each other: the wires give the
+// parameter rectangle, the surface is converted over that rectangle, the
+// trims are carried into the conversion's parameters, and the normal's sense
+// is compared last.
+ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const cad::FileBoundary& file,
                            const CadImportOptions& options) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
-  if (surface.IsNull()) throw FaceFailure("it has no surface");
-  const Handle(Geom_Surface) basis = strip_trim(surface);
+  if (surface.IsNull()) throw cad::FaceFailure("it has no surface");
+  const Handle(Geom_Surface) basis = cad::strip_trim(surface);
   CadFaceReport report;
   report.name = name;
-  report.source_type = source_type(basis);
+  report.source_type = cad::source_type(basis);
 
-  Periods periods;
-  periods.u = basis->IsUPeriodic();
-  periods.v = basis->IsVPeriodic();
-  if (periods.u) periods.du = basis->UPeriod();
-  if (periods.v) periods.dv = basis->VPeriod();
-  std::vector<WireUse> wires = face_wires(face, periods);
-  const ParameterDomain bounds = face_bounds(face, wires, basis, periods);
-  add_seam_copies(wires, bounds, periods);
+  const cad::FaceWires wires = cad::face_wires(face, basis, file);
+  const ParameterDomain& bounds = wires.bounds;
 
-  const Conversion conversion = convert_surface(basis, bounds, options);
+  const cad::Conversion conversion = cad::convert_surface(basis, bounds, options);
   report.exact = conversion.exact;
   report.approximation_bound = conversion.bound;
-  NurbsSurface nurbs = to_nurbs(conversion.nurbs, "face " + quote_field(name));
-
-  // The original's parametrisation is kept unless the conversion changed it.
-  const ParameterMap::Evaluator original = [&basis](double u, double v) {
-    return to_eigen(basis->Value(u, v));
-  };
-  const double allowed = conversion.exact ? options.exact_tolerance : options.approximation_tolerance;
+  NurbsSurface nurbs = cad::to_nurbs(conversion.nurbs, "face " + quote_field(name));
   ParameterMap map;
-  report.deviation = max_deviation(nurbs, map, original, bounds, kCheckGrid);
-  if (report.deviation > allowed && conversion.exact) {
-    ParameterMapOptions map_options;
-    map_options.tolerance = options.exact_tolerance;
-    map = ParameterMap(nurbs, original, bounds, map_options);
-    report.deviation = max_deviation(nurbs, map, original, bounds, kCheckGrid);
-  }
-  if (!(report.deviation <= allowed))
-    throw FaceFailure("its NURBS form deviates from the original " + report.source_type +
-                      " surface by " + number_text(report.deviation) + " mm (allowed " +
-                      number_text(allowed) + " mm)");
+  report.deviation = cad::carry_parameters(nurbs, basis, bounds, conversion.exact, options, map);
 
-  TrimPolygonOptions polygon_options;
-  polygon_options.chord_tolerance = options.trim_chord_tolerance;
-  polygon_options.uv_tolerance = options.trim_uv_tolerance;
-  polygon_options.max_subdivisions = options.trim_max_subdivisions;
-  TrimPolygonBuilder polygons(nurbs, polygon_options);
-  std::vector<UvLoop> loops;
-  for (const WireUse& wire : wires) {
-    std::vector<BoundaryCurve> curves;
-    for (const EdgeUse& e : wire.edges)
-      curves.push_back({[&e, &map, &bounds](double t) {
-                          const Eigen::Vector2d uv = e.uv(t);
-                          return map(std::clamp(uv.x(), bounds.u0, bounds.u1),
-                                     std::clamp(uv.y(), bounds.v0, bounds.v1));
-                        },
-                        e.from, e.to, e.degenerate});
-    UvLoop loop = polygons.loop(curves);
-    if (loop.size() >= 3) loops.push_back(std::move(loop));
-  }
-  if (map.failures() > 0)
-    throw FaceFailure("its trim could not be carried into the NURBS parameters (" +
-                      std::to_string(map.failures()) + " points did not converge, worst residual " +
-                      number_text(map.worst_residual()) + " mm)");
-  if (is_domain_rectangle(loops, nurbs.domain())) loops.clear();
-  report.loops = static_cast<int>(loops.size());
-  for (const auto& loop : loops) report.trim_vertices += static_cast<int>(loop.size());
-  report.trim_deviation = polygons.worst_sag();
-  report.trim_tolerance_met = polygons.tolerance_met();
+  cad::TrimLoops trims = cad::trim_loops(wires, nurbs, map, options);
+  report.loops = static_cast<int>(trims.loops.size());
+  for (const auto& loop : trims.loops) report.trim_vertices += static_cast<int>(loop.size());
+  report.trim_deviation = trims.worst_sag;
+  report.trim_tolerance_met = trims.tolerance_met;
 
-  // Orientation: compare Su x Sv of the NURBS with OpenCASCADE's D1U x D1V at
-  // the check point where the original is least degenerate.
-  double best = -1;
-  double sense = 1;
-  for (int i = 0; i < kCheckGrid; ++i)
-    for (int j = 0; j < kCheckGrid; ++j) {
-      const double u = bounds.u0 + bounds.width_u() * (i + 0.5) / kCheckGrid;
-      const double v = bounds.v0 + bounds.width_v() * (j + 0.5) / kCheckGrid;
-      gp_Pnt p;
-      gp_Vec du, dv;
-      basis->D1(u, v, p, du, dv);
-      const Eigen::Vector3d n_occt = to_eigen(du.Crossed(dv));
-      if (n_occt.norm() <= best) continue;
-      const Eigen::Vector2d st = map(u, v);
-      const SurfaceDerivatives e = nurbs.evaluate(st.x(), st.y(), 1);
-      const Eigen::Vector3d n_ours = e.Su.cross(e.Sv);
-      if (n_ours.norm() == 0) continue;
-      best = n_occt.norm();
-      sense = n_ours.dot(n_occt) >= 0 ? 1 : -1;
-    }
-  const bool reversed = (face.Orientation() == TopAbs_REVERSED) != (sense < 0);
+  // Normals out of the material: OpenCASCADE's face orientation, and the
+  // NURBS's own sense against the original surface's.
+  const bool flipped = !cad::same_sense(nurbs, map, basis, bounds);
+  const bool reversed = (face.Orientation() == TopAbs_REVERSED) != flipped;
 
-  Trim trim(std::move(loops), "face " + quote_field(name) + " trim");
+  Trim trim(std::move(trims.loops), "face " + quote_field(name) + " trim");
   return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
 }
 
@@ -772,23 +108,23 @@ bool is_cad_file(const std::string& path) {
 }
 
 CadImportResult import_cad(const std::string& path, const CadImportOptions& options) {
-  const Format format = format_of(path);
-  check_signature(path, format);
+  const cad::Format format = cad::format_of(path);
+  cad::check_signature(path, format);
   const QuietMessenger quiet;
 
-  LoadedFile file;
+  cad::LoadedFile file;
   try {
-    file = read_file(path, format);
+    file = cad::read_file(path, format);
   } catch (const Standard_Failure& e) {
     throw InputError(path + ": OpenCASCADE failed while reading the file: " + occt_text(e));
   }
 
   CadImportResult result;
-  result.format = format == Format::step ? "STEP" : "IGES";
+  result.format = format == cad::Format::step ? "STEP" : "IGES";
   result.products = file.products;
   result.part.source_units = file.units;
   auto face_label = [](const std::string& name, const std::string& entity) {
-    if (entity.rfind("entity ", 0) == 0) return entity;  // not a face (add_unreadable_entities)
+    if (entity.rfind("entity ", 0) == 0) return entity;  // not a face (cad_reader.hpp, strict mode)
     std::string label = "face";
     if (!name.empty()) label += " " + quote_field(name);
     if (!entity.empty()) label += " " + entity;
@@ -819,19 +155,19 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
   for (int i = 1; i <= faces.Extent(); ++i) {
     const TopoDS_Face& face = TopoDS::Face(faces(i));
     const std::size_t index = static_cast<std::size_t>(i - 1);
-    FaceOrigin origin;
+    cad::FaceOrigin origin;
     if (auto it = file.origins.find(face.TShape().get()); it != file.origins.end()) origin = it->second;
     std::string name = origin.name.empty() ? "face_" + std::to_string(index) : origin.name;
     if (used_names.count(name)) name += "_" + std::to_string(index);
     std::string failure;
     try {
-      ConvertedFace converted = convert_face(face, name, options);
+      ConvertedFace converted = convert_face(face, name, origin.boundary, options);
       converted.report.entity = origin.entity;
       if (!solid_faces.Contains(face)) ++result.free_faces;
       used_names.insert(name);
       result.part.faces.push_back(std::move(converted.face));
       result.faces.push_back(std::move(converted.report));
-    } catch (const FaceFailure& e) {
+    } catch (const cad::FaceFailure& e) {
       failure = e.what();
     } catch (const InputError& e) {
       failure = e.what();
@@ -841,7 +177,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
     if (!failure.empty()) {
       if (!options.skip_bad_faces)
         throw InputError(path + ": " + face_label(name, origin.entity) + " (" +
-                         face_surface_type(face) + "): " + failure);
+                         cad::face_surface_type(face) + "): " + failure);
       result.skipped.push_back({name, origin.entity, failure});
     }
     if (options.progress) options.progress(index + 1, total);

@@ -36,7 +36,9 @@
 // out and listed in CadImportResult::skipped instead (the import still fails
 // when nothing is left).
 //
-// This header is free of OpenCASCADE; only cad_import.cpp includes it.
+// This header is free of OpenCASCADE; only the files behind it in src/io/cad/
+// (cad_import.cpp and the steps it calls, cad_reader.hpp and the like)
+// include OpenCASCADE headers (scripts/check-layers.py holds them there).
 #include <cstddef>
 #include <functional>
 #include <string>

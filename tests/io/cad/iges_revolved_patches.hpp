@@ -1,0 +1,278 @@
+#pragma once
+// Patches of spheres (and, at the end, of cylinders and tori) written as
+// IGES trimmed surfaces of revolution the way CATIA/NX-class systems write
+// them (tests/io/cad/iges_writer.hpp): a type 144 trimmed surface of a type
+// 120 surface of revolution (type 110 axis, type 100 circular arc or type
+// 110 line generatrix), whose outer boundary is a type 142 curve on surface
+// carrying both a parameter-space curve (B: straight pieces in the surface's
+// (u, v), as type 126 B-splines or type 110 lines, in a type 102 composite)
+// and a model-space curve (C: circles of latitude and longitude, rulings,
+// as type 126 B-splines, rational for circles, in a type 102).
+//
+// Type 120 is parametrised by u, the generatrix's own parameter, and v, the
+// rotation angle about the axis (right-handed about the axis line's
+// direction) from the start angle SA to the terminate angle TA; a type 100
+// arc's own parameter is its angle, counterclockwise from the definition
+// space's x axis, the start angle taken in [0, 2 pi) (as OpenCASCADE reads
+// it; the tests' centroids confirm the geometry), a type 110 line's runs
+// from 0 to 1. Writers differ in what u they put in the parameter-space
+// curves: the arc's angle so defined, a signed angle (the same arc taken
+// from -90 to 90 degrees), or a parameter normalised to [0, 1].
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "iges_writer.hpp"
+
+namespace furrow::test {
+
+// How the parameter-space curves give the generatrix parameter u.
+enum class ArcParameter {
+  standard,    // the arc's angle as IGES defines it (start angle in [0, 2 pi))
+  signed_angle,  // the angle taken in (-pi, pi]: -pi/2 .. pi/2 for the south-to-north arc
+  normalised,  // (angle - start angle) / sweep, in [0, 1]
+};
+
+inline const char* name_of(ArcParameter p) {
+  switch (p) {
+    case ArcParameter::standard: return "arc angle";
+    case ArcParameter::signed_angle: return "signed arc angle";
+    case ArcParameter::normalised: return "normalised arc parameter";
+  }
+  return "?";
+}
+
+struct SpherePatch {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 4.75;
+  // The face: rotation angle theta0..theta1 about the axis (IGES v, as the
+  // file writes it: may lie outside [SA, TA] by a period when the patch
+  // crosses the seam), latitude phi0..phi1 (-pi/2 south pole .. pi/2 north).
+  double theta0 = 0, theta1 = M_PI, phi0 = 0, phi1 = M_PI / 2;
+  // The surface's start and terminate angles.
+  double start_angle = 0, end_angle = 2 * M_PI;
+  // The generatrix is the half circle from the south pole to the north pole.
+  // Without a transformation it is written in the x-y plane of the world
+  // (arc angles 3 pi/2 .. 5 pi/2, axis +y); with one, as the arc 0 .. pi of
+  // its definition space turned onto the same place by a type 124.
+  bool generatrix_transformed = false;
+  // Without a transformation, the generatrix may also run from the north
+  // pole to the south pole on the -x side (arc angles pi/2 .. 3 pi/2), and
+  // the axis line may point along -y; the file's v then runs otherwise than
+  // theta (v = theta - pi, -theta or pi - theta, moved by a period into
+  // [0, 2 pi)), and so do the surface's normal and the loop's sense.
+  bool north_to_south = false;
+  bool axis_reversed = false;
+  ArcParameter parameter = ArcParameter::standard;
+  bool reversed_loop = false;  // the loop's direction in (u, v)
+  bool line_pcurves = false;   // B pieces as type 110 lines instead of type 126
+  bool polyline_pcurves = false;  // ... or as type 106 form 11 (2-D linear paths)
+  int pref = 0;                // type 142 PREF
+  // Whether the parameter-space curve runs along a degenerate pole edge
+  // (B then has one piece more than C, which has no curve there).
+  bool pcurve_along_pole = true;
+  // Meridians that cross the equator written as two pieces meeting there
+  // (the report's quarter: half a great circle and two quarter circles).
+  bool split_at_equator = false;
+
+  double area() const {
+    return radius * radius * std::abs(theta1 - theta0) * (std::sin(phi1) - std::sin(phi0));
+  }
+  std::string name() const {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "sphere theta %.4f..%.4f phi %.4f..%.4f SA/TA %.4f..%.4f %s%s, %s, %s pcurves, PREF %d%s",
+                  theta0, theta1, phi0, phi1, start_angle, end_angle, name_of(parameter),
+                  generatrix_transformed ? " (arc 0..pi, type 124)" : " (arc 3pi/2..5pi/2)",
+                  reversed_loop ? "loop reversed" : "loop as built",
+                  polyline_pcurves ? "type 106" : line_pcurves ? "type 110" : "type 126", pref,
+                  pcurve_along_pole ? "" : ", no pcurve along the pole");
+    auto append = [&](const char* text) {
+      std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text);
+    };
+    if (split_at_equator) append(", meridians split at the equator");
+    if (north_to_south) append(", generatrix north to south");
+    if (axis_reversed) append(", axis -y");
+    return buf;
+  }
+};
+
+// Writes the patch's entities into `b`; returns the type 144's DE pointer.
+inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d& c = p.centre;
+  const double R = p.radius;
+  // Axis +y through the centre (v turns x toward -z), or -y.
+  const int axis = b.line(c, c + (p.axis_reversed ? -Y : Y));
+  int generatrix;
+  double arc_start;  // the arc's IGES start angle (of the south pole)
+  if (p.generatrix_transformed) {
+    // Definition space: centre 0, from (R, 0) to (-R, 0) through (0, R);
+    // x_def -> -y (south pole), y_def -> +x (equator), z_def -> +z.
+    Eigen::Matrix3d rot;
+    rot << 0, 1, 0, -1, 0, 0, 0, 0, 1;
+    const int t = b.transformation(rot, c);
+    generatrix = b.arc(0, {0, 0}, {R, 0}, {-R, 0}, t);
+    arc_start = 0;
+  } else if (p.north_to_south) {
+    generatrix = b.arc(c.z(), {c.x(), c.y()}, {c.x(), c.y() + R}, {c.x(), c.y() - R});
+    arc_start = 0.5 * M_PI;
+  } else {
+    generatrix = b.arc(c.z(), {c.x(), c.y()}, {c.x(), c.y() - R}, {c.x(), c.y() + R});
+    arc_start = 1.5 * M_PI;
+  }
+  const int surface = b.revolution(axis, generatrix, p.start_angle, p.end_angle);
+
+  // u of latitude phi (the arc's angle is arc_start + phi + pi/2, or pi - phi
+  // from the north).
+  auto u_of = [&](double phi) {
+    if (p.north_to_south) {
+      const double angle = M_PI - phi;
+      return p.parameter == ArcParameter::normalised ? (angle - arc_start) / M_PI : angle;
+    }
+    switch (p.parameter) {
+      case ArcParameter::standard: return arc_start + phi + M_PI / 2;
+      case ArcParameter::signed_angle: return arc_start == 0 ? phi + M_PI / 2 : phi;
+      case ArcParameter::normalised: return (phi + M_PI / 2) / M_PI;
+    }
+    return 0.0;
+  };
+  // Corners in running order (phi, theta); the loop as built runs along
+  // phi0 first (the equator of the report's quarter), then up theta1.
+  struct Corner {
+    double phi, theta;
+  };
+  std::vector<Corner> corners{{p.phi0, p.theta0}, {p.phi0, p.theta1}, {p.phi1, p.theta1}, {p.phi1, p.theta0}};
+  if (p.reversed_loop) corners = {corners[0], corners[3], corners[2], corners[1]};
+  // The file's v of theta.
+  double v_shift = 0;
+  auto v_raw = [&](double theta) {
+    const double sign = p.axis_reversed ? -1 : 1;
+    return sign * theta + (p.north_to_south ? -sign * M_PI : 0.0);
+  };
+  if (p.north_to_south || p.axis_reversed) {
+    const double low = std::min(v_raw(p.theta0), v_raw(p.theta1));
+    v_shift = 0;
+    while (low + v_shift < -1e-12) v_shift += 2 * M_PI;
+    while (low + v_shift >= 2 * M_PI - 1e-12) v_shift -= 2 * M_PI;
+  }
+  auto v_of = [&](double theta) { return v_raw(theta) + v_shift; };
+  std::vector<int> b_pieces, c_pieces;
+  auto piece = [&](const Corner& a, const Corner& e) {
+    const bool pole = std::abs(a.phi - e.phi) < 1e-15 && std::abs(std::abs(a.phi) - M_PI / 2) < 1e-15;
+    const Eigen::Vector3d ua(u_of(a.phi), v_of(a.theta), 0), ue(u_of(e.phi), v_of(e.theta), 0);
+    if (!pole || p.pcurve_along_pole)
+      b_pieces.push_back(p.polyline_pcurves ? b.polyline_2d({ua.head<2>(), ue.head<2>()}, IgesBuilder::kParametric)
+                         : p.line_pcurves ? b.line(ua, ue, IgesBuilder::kParametric)
+                                        : b.bspline_line(ua, ue, 0, 1, true, IgesBuilder::kParametric));
+    if (pole) return;  // no model-space curve along a pole
+    if (std::abs(a.phi - e.phi) < 1e-15) {
+      // A circle of latitude: centre on the axis, angle theta.
+      const Eigen::Vector3d centre = c + R * std::sin(a.phi) * Y;
+      c_pieces.push_back(b.bspline_arc(centre, X, -Z, R * std::cos(a.phi), a.theta, e.theta));
+    } else {
+      // A meridian: angle phi in the plane of the axis and the direction theta.
+      const Eigen::Vector3d d = std::cos(a.theta) * X - std::sin(a.theta) * Z;
+      c_pieces.push_back(b.bspline_arc(c, d, Y, R, a.phi, e.phi));
+    }
+  };
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Corner& a = corners[k];
+    const Corner& e = corners[(k + 1) % 4];
+    if (p.split_at_equator && a.theta == e.theta && (a.phi < 0) != (e.phi < 0) && a.phi != 0 && e.phi != 0) {
+      piece(a, {0, a.theta});
+      piece({0, a.theta}, e);
+    } else {
+      piece(a, e);
+    }
+  }
+  const int bc = b.composite(b_pieces, IgesBuilder::kParametric);
+  const int cc = b.composite(c_pieces);
+  const int boundary = b.curve_on_surface(surface, bc, cc, p.pref);
+  return b.trimmed_surface(surface, boundary);
+}
+
+}  // namespace furrow::test
+
+namespace furrow::test {
+
+// Patches of cylinders and tori as type 120 surfaces of revolution about the
+// axis +y through `centre`: a cylinder's generatrix is a type 110 line
+// parallel to the axis at distance `radius` (u in [0, 1] from its start at
+// the centre's height to `height` above it, the IGES parametrisation of a
+// line), a torus's a full type 100 circle of radius `radius` whose centre is
+// `major` from the axis (u its angle psi, counterclockwise from the
+// outermost point). The face is s0..s1 in u and theta0..theta1 in v.
+struct RevolvedPatch {
+  enum class Kind { cylinder, torus } kind = Kind::cylinder;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 4.75, height = 10, major = 14.25;
+  double theta0 = 0, theta1 = M_PI, s0 = 0, s1 = 1;
+  bool reversed_loop = false;
+  int pref = 0;
+
+  // Generatrix point at u = s, relative to the centre, in the x-y plane.
+  Eigen::Vector2d generatrix(double s) const {
+    if (kind == Kind::cylinder) return {radius, height * s};
+    return {major + radius * std::cos(s), radius * std::sin(s)};
+  }
+  Eigen::Vector3d point(double s, double theta) const {
+    const Eigen::Vector2d g = generatrix(s);
+    return centre + Eigen::Vector3d(g.x() * std::cos(theta), g.y(), -g.x() * std::sin(theta));
+  }
+  double area() const {
+    const double dt = std::abs(theta1 - theta0);
+    if (kind == Kind::cylinder) return radius * dt * height * std::abs(s1 - s0);
+    // Integral of radius (major + radius cos psi) dpsi dtheta.
+    return radius * dt * std::abs(major * (s1 - s0) + radius * (std::sin(s1) - std::sin(s0)));
+  }
+  std::string name() const {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d",
+                  kind == Kind::cylinder ? "cylinder" : "torus", theta0, theta1, s0, s1,
+                  reversed_loop ? "loop reversed" : "loop as built", pref);
+    return buf;
+  }
+};
+
+inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d& c = p.centre;
+  const int axis = b.line(c, c + Y);
+  int generatrix;
+  if (p.kind == RevolvedPatch::Kind::cylinder) {
+    generatrix = b.line(c + p.radius * X, c + p.radius * X + p.height * Y);
+  } else {
+    const Eigen::Vector2d centre(c.x() + p.major, c.y()), start(c.x() + p.major + p.radius, c.y());
+    generatrix = b.arc(c.z(), centre, start, start);
+  }
+  const int surface = b.revolution(axis, generatrix, 0, 2 * M_PI);
+  struct Corner {
+    double s, theta;
+  };
+  std::vector<Corner> corners{{p.s0, p.theta0}, {p.s0, p.theta1}, {p.s1, p.theta1}, {p.s1, p.theta0}};
+  if (p.reversed_loop) corners = {corners[0], corners[3], corners[2], corners[1]};
+  std::vector<int> b_pieces, c_pieces;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Corner& a = corners[k];
+    const Corner& e = corners[(k + 1) % 4];
+    b_pieces.push_back(b.bspline_line({a.s, a.theta, 0}, {e.s, e.theta, 0}, 0, 1, true, IgesBuilder::kParametric));
+    if (a.s == e.s) {  // a circle about the axis
+      const Eigen::Vector2d g = p.generatrix(a.s);
+      c_pieces.push_back(b.bspline_arc(c + g.y() * Y, X, -Z, g.x(), a.theta, e.theta));
+    } else if (p.kind == RevolvedPatch::Kind::cylinder) {  // a ruling
+      c_pieces.push_back(b.bspline_line(p.point(a.s, a.theta), p.point(e.s, e.theta), 0, 1, false));
+    } else {  // a circle of the tube
+      const Eigen::Vector3d d = std::cos(a.theta) * X - std::sin(a.theta) * Z;
+      c_pieces.push_back(b.bspline_arc(c + p.major * d, d, Y, p.radius, a.s, e.s));
+    }
+  }
+  const int bc = b.composite(b_pieces, IgesBuilder::kParametric);
+  const int cc = b.composite(c_pieces);
+  return b.trimmed_surface(surface, b.curve_on_surface(surface, bc, cc, p.pref));
+}
+
+}  // namespace furrow::test
