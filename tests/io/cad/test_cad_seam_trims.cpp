@@ -146,7 +146,7 @@ TEST_CASE("CAD import: a cap around a sphere's pole from IGES with only 3-D curv
   // OpenCASCADE project the edges and close the wire along the seam; the
   // projected seam edges stray ~1e-8 rad past the period (within their
   // 1e-7 mm tolerance), which must not make the face span "more than one
-  // period" (cad_import.cpp period_slack).
+  // period" (cad_face_trims.cpp period_slack).
   const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0)), 4.75).Shape();
   const TopoDS_Shape octant = BRepAlgoAPI_Common(ball, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(50, 50, 50)).Shape()).Shape();
   TopoDS_Face cap;
