@@ -122,6 +122,16 @@ struct Range {
   double theta0, theta1, phi0, phi1;
 };
 
+// A sphere patch over `r`, everything else as SpherePatch's defaults.
+SpherePatch patch_over(const Range& r) {
+  SpherePatch p;
+  p.theta0 = r.theta0;
+  p.theta1 = r.theta1;
+  p.phi0 = r.phi0;
+  p.phi1 = r.phi1;
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("CAD import: the report's quarter sphere from IGES keeps its area in every way it can be written") {
@@ -192,11 +202,7 @@ TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and th
   for (const Range& r : kRanges)
     for (const bool reversed : {false, true})
       for (const int pref : {0, 1, 2, 3}) {
-        SpherePatch p;
-        p.theta0 = r.theta0;
-        p.theta1 = r.theta1;
-        p.phi0 = r.phi0;
-        p.phi1 = r.phi1;
+        SpherePatch p = patch_over(r);
         p.reversed_loop = reversed;
         p.pref = pref;
         // The other choices cycle through the cases.
@@ -218,11 +224,7 @@ TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned onl
   for (const Range& r : ranges)
     for (const bool reversed : {false, true})
       for (const bool transformed : {false, true}) {
-        SpherePatch p;
-        p.theta0 = r.theta0;
-        p.theta1 = r.theta1;
-        p.phi0 = r.phi0;
-        p.phi1 = r.phi1;
+        SpherePatch p = patch_over(r);
         p.start_angle = r.theta0;
         p.end_angle = r.theta1;
         p.reversed_loop = reversed;
@@ -242,11 +244,7 @@ TEST_CASE("CAD import: IGES sphere patches keep their region whichever way the g
       for (const bool axis_reversed : {false, true})
         for (const bool reversed : {false, true}) {
           if (!north_to_south && !axis_reversed) continue;  // the test above
-          SpherePatch p;
-          p.theta0 = r.theta0;
-          p.theta1 = r.theta1;
-          p.phi0 = r.phi0;
-          p.phi1 = r.phi1;
+          SpherePatch p = patch_over(r);
           p.north_to_south = north_to_south;
           p.axis_reversed = axis_reversed;
           p.reversed_loop = reversed;
