@@ -89,9 +89,15 @@ DifferentialGeometry part_point(const Eigen::Vector3d& p, const Eigen::Vector3d&
 
 // Where f (the brute-force excess k_part - k_tool - tol) is positive must be
 // exactly where the library reports a gouge, away from the boundaries (a
-// tenth of a degree: the FD curvature is good to ~1e-8 /mm).
-template <class Excess>
-void check_against_brute_force(const LocalGouge& g, Excess excess, double tol) {
+// tenth of a degree: the FD curvature is good to ~1e-8 /mm). The directions
+// are t = cos a z + sin a y in the wall's tangent plane; the cutter's
+// curvature by finite differences on the solid located at `tip`.
+void check_against_brute_force(const LocalGouge& g, const DifferentialGeometry& part, const SolidCutter& solid,
+                               const Eigen::Vector3d& tip, const Eigen::Vector3d& y, double tol) {
+  auto excess = [&](double a) {
+    const Eigen::Vector3d t = std::cos(a) * kZ + std::sin(a) * y;
+    return part.normal_curvature(t) - fd_cutter_curvature(solid, tip, part.point, part.normal, t);
+  };
   int compared = 0;
   double best = -std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3600; ++k) {
@@ -257,13 +263,7 @@ TEST_CASE("side contact: bull-nose R30 r10 in a vertical bore, gouge ranges from
     // Brute force: the cutter's curvature by finite differences on the
     // solid located at the tip the docs give, the part's from Euler.
     const Eigen::Vector3d tip = P + R * n - r * kZ;
-    check_against_brute_force(
-        result,
-        [&](double a) {
-          const Eigen::Vector3d t = std::cos(a) * kZ + std::sin(a) * y;
-          return g.normal_curvature(t) - fd_cutter_curvature(solid, tip, P, n, t);
-        },
-        tol);
+    check_against_brute_force(result, g, solid, tip, y, tol);
   }
   // A bore wider than the cutter only touches: the tie is straight up (the
   // side's generator against the bore's), max excess exactly 0.
@@ -311,13 +311,7 @@ TEST_CASE("side contact: a ball at the equator of a spherical bowl gouges upward
   CHECK(result.max_excess == doctest::Approx(1 / rho).epsilon(1e-9));
   CHECK((result.direction(result.max_excess_angle) - kZ).norm() < 1e-9);
   const Eigen::Vector3d tip = P + R * n - R * kZ;
-  check_against_brute_force(
-      result,
-      [&](double a) {
-        const Eigen::Vector3d t = std::cos(a) * kZ + std::sin(a) * y;
-        return g.normal_curvature(t) - fd_cutter_curvature(solid, tip, P, n, t);
-      },
-      tol);
+  check_against_brute_force(result, g, solid, tip, y, tol);
   // On a plane wall the ball only touches (the tie straight up).
   const LocalGouge plane = check_local_gouge(ball, part_point(P, n, 0, y, 0), options);
   CHECK(plane.status == GougeStatus::clear);
@@ -350,13 +344,7 @@ TEST_CASE("side contact: a flat end mill in a bore cuts with its side above the 
   CHECK(result.ranges[1].end() == doctest::Approx(2 * M_PI - std::asin(s_up)).epsilon(1e-9));
   CHECK(result.max_excess == doctest::Approx(c).epsilon(1e-9));
   const Eigen::Vector3d tip = P + R * n;  // r = 0: the rim at the contact's height
-  check_against_brute_force(
-      result,
-      [&](double a) {
-        const Eigen::Vector3d t = std::cos(a) * kZ + std::sin(a) * y;
-        return g.normal_curvature(t) - fd_cutter_curvature(solid, tip, P, n, t);
-      },
-      tol);
+  check_against_brute_force(result, g, solid, tip, y, tol);
 }
 
 TEST_CASE("side contact: tool selection and the contact under a tip at a vertical wall") {
