@@ -175,6 +175,9 @@ TEST_CASE("bad plans, options and outputs: one error, exit 2, nothing written") 
           "--misalign expects 6 comma-separated numbers");
   refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", out},
           "31 blunders but the plan has 30 points");
+  // CSV in a file named as DMIS results would be read as DMIS next.
+  refused({"simulate-measurement", kMould, "--plan", plan, "--out", dir + "/m.dmo"}, "name it .csv");
+  CHECK_FALSE(fs::exists(dir + "/m.dmo"));
 }
 
 TEST_CASE("compare --regions: each point in the region of its foot point, statistics per region") {
