@@ -54,17 +54,24 @@ void print_text(std::ostream& out, const std::string& path, const PartSummary& s
       out << "  degenerate  " << f.degenerate_samples << " samples with a vanishing normal\n";
     out << "  ";
     print_classes(out, f.class_area, f.area);
+    if (!s.eps) out << "  eps         " << fmt("%.3g 1/mm", f.eps, 0) << "\n";
   }
   out << "\nwhole part: " << fmt("area %.4f mm^2", s.area, 0) << ", ";
   print_classes(out, s.class_area, s.area);
-  out << "(sampled on " << s.grid << "x" << s.grid << " cells per face, eps " << s.eps
-      << " 1/mm; convex means bulging toward the tool)\n";
+  out << "(sampled on " << s.grid << "x" << s.grid << " cells per face, eps ";
+  if (s.eps) {
+    out << *s.eps << " 1/mm";
+  } else {
+    out << "per face as in furrow partition";
+  }
+  out << "; convex means bulging toward the tool)\n";
 }
 
 int run_info(Args& args) {
   const bool as_json = args.flag("json");
   const long grid = args.integer_or("grid", 200, 2);
-  const double eps = args.non_negative_or("eps", kDefaultCurvatureEps);
+  const std::optional<double> eps = args.number("eps");
+  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + std::to_string(*eps));
   const auto out_path = args.option("out");
   const std::string path = args.positional("PART (a part file)");
   args.finish();
@@ -107,7 +114,8 @@ const Command kInfoCommand = {
     "\n"
     "  --json      machine-readable output (docs/formats.md)\n"
     "  --grid N    samples per direction per face (default 200)\n"
-    "  --eps K     curvature tolerance for the classes in 1/mm (default 1e-4)\n"
+    "  --eps K     curvature tolerance for the classes in 1/mm (default: each face's\n"
+    "              own, the rule furrow partition uses; see docs/partition.md)\n"
     "  --out FILE  write to FILE instead of standard output\n",
     run_info};
 

@@ -22,4 +22,12 @@ CurvatureTolerance default_curvature_tolerance(const CurvatureField& field) {
   return t;
 }
 
+CurvatureTolerance face_curvature_tolerance(const Face& face) {
+  const CurvatureField coarse = compute_curvature_field(face, kEpsScaleGrid, kEpsScaleGrid);
+  const auto valid = std::count_if(coarse.samples.begin(), coarse.samples.end(),
+                                   [](const CurvatureSample& s) { return s.valid(); });
+  if (valid >= kEpsScaleMinSamples) return default_curvature_tolerance(coarse);
+  return default_curvature_tolerance(compute_curvature_field(face, kEpsScaleFineGrid, kEpsScaleFineGrid));
+}
+
 }  // namespace furrow

@@ -20,6 +20,12 @@
 //   saddle. One percent of the face's own curvature is far below any
 //   curvature a user cares about on that face and above typical fitting noise.
 // Neither term depends on the grid beyond the quantile's sampling.
+//
+// One rule for every command: `furrow info`, `furrow partition` and the
+// report's regions take a face's eps from face_curvature_tolerance(), which
+// samples the face on its own fixed grid, so the same face gets the same eps
+// whatever grid or spacing the command samples its classes on
+// (docs/partition.md "eps").
 #include "partition/classification.hpp"
 #include "partition/curvature_field.hpp"
 
@@ -36,5 +42,13 @@ struct CurvatureTolerance {
 
 // Deterministic (a selection on a copy of the values, no threads).
 CurvatureTolerance default_curvature_tolerance(const CurvatureField& field);
+
+// The face's own eps: default_curvature_tolerance() of a kEpsScaleGrid^2
+// field, refined to kEpsScaleFineGrid^2 when trims leave fewer than
+// kEpsScaleMinSamples valid cells (a small face cut from a large surface).
+constexpr int kEpsScaleGrid = 64;
+constexpr int kEpsScaleFineGrid = 256;
+constexpr int kEpsScaleMinSamples = 512;
+CurvatureTolerance face_curvature_tolerance(const Face& face);
 
 }  // namespace furrow

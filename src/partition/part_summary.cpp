@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
 #include "partition/curvature_field.hpp"
+#include "partition/curvature_tolerance.hpp"
 
 namespace furrow {
 
@@ -20,7 +21,7 @@ void extend(Range& r, double x, bool first) {
   }
 }
 
-FaceSummary summarize_face(const Face& face, int grid, double eps) {
+FaceSummary summarize_face(const Face& face, int grid, std::optional<double> user_eps) {
   const NurbsSurface& s = face.surface();
   FaceSummary f;
   f.name = face.name();
@@ -33,6 +34,7 @@ FaceSummary summarize_face(const Face& face, int grid, double eps) {
   f.reversed = face.reversed();
   f.trimmed = !face.trim().empty();
   f.domain = s.domain();
+  f.eps = user_eps ? *user_eps : face_curvature_tolerance(face).eps;
 
   // Extent from nodes including the domain edges (cell centres miss them).
   for (int i = 0; i <= grid; ++i) {
@@ -55,7 +57,7 @@ FaceSummary summarize_face(const Face& face, int grid, double eps) {
     extend(f.k2, c.k2, first);
     first = false;
     f.area += c.area;
-    f.class_area[static_cast<int>(classify_curvature(c.k1, c.k2, eps))] += c.area;
+    f.class_area[static_cast<int>(classify_curvature(c.k1, c.k2, f.eps))] += c.area;
   }
   return f;
 }
@@ -76,9 +78,9 @@ json_fields::json class_json(const std::array<double, 4>& area, double total) {
 
 }  // namespace
 
-PartSummary summarize_part(const Part& part, int grid, double eps) {
+PartSummary summarize_part(const Part& part, int grid, std::optional<double> eps) {
   if (grid < 2) throw InputError("info: the sampling grid must be at least 2, got " + std::to_string(grid));
-  if (!(eps >= 0) || !std::isfinite(eps)) throw InputError("info: eps must be a finite number >= 0");
+  if (eps && (!(*eps >= 0) || !std::isfinite(*eps))) throw InputError("info: eps must be a finite number >= 0");
   PartSummary summary;
   summary.source_units = part.source_units;
   summary.grid = grid;
@@ -120,6 +122,7 @@ std::string part_summary_json(const PartSummary& s) {
       jf["k1"] = range_json(f.k1);
       jf["k2"] = range_json(f.k2);
     }
+    jf["eps"] = finite(f.eps, "eps");
     jf["classes"] = class_json(f.class_area, f.area);
     faces.push_back(std::move(jf));
   }
@@ -127,7 +130,11 @@ std::string part_summary_json(const PartSummary& s) {
   doc["units"] = "mm";
   doc["source_units"] = s.source_units;
   doc["grid"] = s.grid;
-  doc["eps"] = finite(s.eps, "eps");
+  if (s.eps) {
+    doc["eps"] = finite(*s.eps, "eps");
+  } else {
+    doc["eps"] = "per face";
+  }
   doc["face_count"] = s.faces.size();
   if (!s.box.isEmpty())
     doc["bounding_box"] = {{"min", vector_json(s.box.min())}, {"max", vector_json(s.box.max())}};

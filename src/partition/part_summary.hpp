@@ -5,6 +5,7 @@
 // numbers are estimates whose resolution is stated in the summary.
 #include <Eigen/Geometry>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,21 +26,24 @@ struct FaceSummary {
   double area = 0;          // mm^2, midpoint rule over untrimmed cells
   Range K, H, k1, k2;       // over valid samples
   std::array<double, 4> class_area{};  // indexed by CurvatureClass
+  double eps = 0;                      // [1/mm] the classes were taken with
   int valid_samples = 0, degenerate_samples = 0;
 };
 
 struct PartSummary {
   std::string source_units;
   int grid = 0;  // samples per direction per face
-  double eps = 0;
+  // The user's eps for every face, or unset: each face's own
+  // (face_curvature_tolerance(), the same rule as `furrow partition`).
+  std::optional<double> eps;
   std::vector<FaceSummary> faces;
   Eigen::AlignedBox3d box;
   double area = 0;
   std::array<double, 4> class_area{};
 };
 
-// Preconditions: grid >= 2, eps >= 0 (InputError otherwise).
-PartSummary summarize_part(const Part& part, int grid, double eps);
+// Preconditions: grid >= 2, eps unset or finite >= 0 (InputError otherwise).
+PartSummary summarize_part(const Part& part, int grid, std::optional<double> eps);
 
 // Machine-readable form (documented in docs/formats.md "furrow info --json").
 std::string part_summary_json(const PartSummary& summary);

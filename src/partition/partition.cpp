@@ -71,15 +71,10 @@ FaceCells regions_of_face(const Face& face, int face_index, const CurvatureField
   info.nu = field.nu;
   info.nv = field.nv;
   info.domain = field.domain;
-  if (options.eps) {
-    info.eps = *options.eps;
-    info.eps_from_user = true;
-    info.curvature_scale = default_curvature_tolerance(field).curvature_scale;
-  } else {
-    const CurvatureTolerance t = default_curvature_tolerance(field);
-    info.eps = t.eps;
-    info.curvature_scale = t.curvature_scale;
-  }
+  const CurvatureTolerance t = face_curvature_tolerance(face);
+  info.curvature_scale = t.curvature_scale;
+  info.eps = options.eps ? *options.eps : t.eps;
+  info.eps_from_user = options.eps.has_value();
 
   FaceCells cells;
   cells.first_id = static_cast<int>(map.regions.size());
