@@ -52,6 +52,8 @@ void print_summary(std::ostream& out, const PlanResult& r, const std::string& fo
       << r.cycle.plane_moves << " over the clearance plane z = " << fixed(r.clearance_z, 3) << "\n";
   out << "cycle time estimate: " << fixed(r.cycle.seconds / 60, 1) << " min (" << fixed(r.cycle.positioning_length, 0)
       << " mm positioning)\n";
+  for (const PlanIssue& i : r.issues)
+    if (i.kind == PlanIssue::Kind::face_facing_down) out << "orientation: " << i.reason << "\n";
   if (issues > 0 || !r.issues.empty())
     out << r.issues.size() << " issues (moved or dropped points, short regions): see " << folder << "/report.json\n";
 }

@@ -69,6 +69,7 @@ std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const
     ji["kind"] = to_string(i.kind);
     if (!i.point.empty()) ji["point"] = i.point;
     if (i.region >= 0) ji["region"] = i.region;
+    if (i.face >= 0) ji["face"] = i.face;
     if (!i.gouge_site.empty()) ji["gouge_site"] = i.gouge_site;
     if (i.problem != AccessProblem::none) {
       ji["problem"] = to_string(i.problem);

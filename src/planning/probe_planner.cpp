@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
+#include "planning/face_orientation_hint.hpp"
 #include "planning/relocation.hpp"
 #include "base/numbers.hpp"
 
@@ -21,6 +22,7 @@ const char* to_string(PlanIssue::Kind kind) {
     case PlanIssue::Kind::region_skipped: return "region_skipped";
     case PlanIssue::Kind::gouge_site: return "gouge_site";
     case PlanIssue::Kind::budget_raised: return "budget_raised";
+    case PlanIssue::Kind::face_facing_down: return "face_facing_down";
   }
   return "?";
 }
@@ -305,9 +307,32 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
     kept.push_back(k);
     centres.push_back(probe_centre(c.xyz, c.normal, result.probe));
   }
+  // Most points dropped: name the faces that face down, the usual cause
+  // being normals into the material rather than the probe.
+  std::string orientation_hint;
+  if (2 * kept.size() < candidates.size()) {
+    std::vector<OrientationSample> samples;
+    samples.reserve(candidates.size());
+    for (const Candidate& c : candidates)
+      samples.push_back({static_cast<std::size_t>(domains[static_cast<std::size_t>(c.region)].face_index()), c.normal, c.kept});
+    std::vector<std::string> names;
+    for (const Face& f : part.faces) names.push_back(f.name());
+    for (const FaceFacingDown& f : faces_facing_down(samples, names)) {
+      PlanIssue issue;
+      issue.kind = PlanIssue::Kind::face_facing_down;
+      issue.face = static_cast<int>(f.face);
+      issue.reason = describe(f) + "; " + kFacingDownHint;
+      result.issues.push_back(issue);
+      orientation_hint += (orientation_hint.empty() ? "; " : ", ") + describe(f);
+    }
+    if (!orientation_hint.empty()) orientation_hint += "; " + std::string(kFacingDownHint);
+  }
   if (kept.empty())
     throw InputError("no planned point is accessible with this probe (" + std::to_string(candidates.size()) +
-                     " candidates dropped; see the reasons with a smaller probe, a longer stylus or a larger --max-tilt)");
+                     " candidates dropped" +
+                     (orientation_hint.empty()
+                          ? std::string("; see the reasons with a smaller probe, a longer stylus or a larger --max-tilt)")
+                          : ")" + orientation_hint));
   result.tour = plan_tour(centres, options.tour);
   result.timing.tour_seconds = seconds_since(t0);
 

@@ -101,10 +101,11 @@ struct RegionPlanSummary {
 };
 
 struct PlanIssue {
-  enum class Kind { moved, dropped, region_short, region_skipped, gouge_site, budget_raised };
+  enum class Kind { moved, dropped, region_short, region_skipped, gouge_site, budget_raised, face_facing_down };
   Kind kind = Kind::moved;
   std::string point;            // point id (moved) or "" when the point is not in the plan
   int region = -1;
+  int face = -1;                // face_facing_down: the part's face index
   std::string gouge_site;       // for points and issues of a gouge site
   AccessProblem problem = AccessProblem::none;
   Eigen::Vector3d where = Eigen::Vector3d::Zero();  // the (original) point [mm]

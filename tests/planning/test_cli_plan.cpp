@@ -145,3 +145,30 @@ TEST_CASE("furrow plan --prediction: points on the gouge sites, risk strategy, a
   CHECK(bad.err.find("another part") != std::string::npos);
   CHECK_FALSE(fs::exists(dir + "/bad"));
 }
+
+TEST_CASE("furrow plan names the faces whose normals point into the material when it drops their points") {
+  // The two-face example with both faces reversed: what an IGES surface
+  // model with normals into the material looks like to the planner.
+  const std::string dir = scratch_dir("cli-plan-orientation");
+  auto doc = nlohmann::json::parse(slurp(source_path("examples/parts/two_face.json")));
+  for (auto& face : doc["faces"]) face["reversed"] = true;
+  write_text(dir + "/flipped.json", doc.dump());
+  REQUIRE(run_furrow({"partition", dir + "/flipped.json", "--out", dir + "/flipped_regions.json"}).status == 0);
+  const CliResult flipped = run_furrow(
+      {"plan", dir + "/flipped.json", "--regions", dir + "/flipped_regions.json", "--out", dir + "/flipped_plan"});
+  CHECK(flipped.status == 2);
+  CHECK(!fs::exists(dir + "/flipped_plan"));
+  CHECK(flipped.err.find("face 0 \"valley_wall\" (100 % of its") != std::string::npos);
+  CHECK(flipped.err.find("face 1 \"crown\" (100 % of its") != std::string::npos);
+  CHECK(flipped.err.find("normals into the material?") != std::string::npos);
+
+  // The same part as it should be: no face is named.
+  REQUIRE(run_furrow({"partition", source_path("examples/parts/two_face.json"), "--out", dir + "/regions.json"}).status ==
+          0);
+  const CliResult ok = run_furrow(
+      {"plan", source_path("examples/parts/two_face.json"), "--regions", dir + "/regions.json", "--out", dir + "/plan"});
+  REQUIRE(ok.status == 0);
+  CHECK(ok.out.find("orientation:") == std::string::npos);
+  const auto report = nlohmann::json::parse(slurp(dir + "/plan/report.json"));
+  for (const auto& issue : report["issues"]) CHECK(issue["kind"] != "face_facing_down");
+}
