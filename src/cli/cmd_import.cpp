@@ -22,6 +22,8 @@ int run_import(Args& args) {
   options.trim_chord_tolerance = args.positive_or("trim-tolerance", options.trim_chord_tolerance);
   options.approximation_tolerance =
       args.positive_or("approximation-tolerance", options.approximation_tolerance);
+  options.sewing_tolerance = args.non_negative_or("sewing-tolerance", options.sewing_tolerance);
+  if (const auto rule = args.option("outward")) options.outward = parse_outward_rule(*rule, "furrow import: --outward");
   const std::string path = args.positional("CAD_FILE (a .step, .stp, .iges or .igs file)");
   args.finish();
   if (!is_cad_file(path)) args.fail(path + " is not a STEP or IGES file name (.step .stp .iges .igs)");
@@ -53,6 +55,7 @@ const Command kImportCommand = {
     "import", "convert a STEP or IGES part to Furrow's part JSON",
     "usage: furrow import CAD_FILE --out PART.json [--json] [--skip-bad-faces]\n"
     "                     [--trim-tolerance MM] [--approximation-tolerance MM]\n"
+    "                     [--sewing-tolerance MM] [--outward +z|-z|point:x,y,z]\n"
     "\n"
     "Reads a STEP (AP203/AP214/AP242) or IGES part through OpenCASCADE and writes\n"
     "every face as a NURBS patch with its trim loops, normals out of the material,\n"
@@ -68,7 +71,14 @@ const Command kImportCommand = {
     "                               instead of failing\n"
     "  --trim-tolerance MM          3-D distance between trim polygon and true\n"
     "                               boundary (default 1e-5)\n"
-    "  --approximation-tolerance MM for surfaces with no exact NURBS form (default 1e-5)\n",
+    "  --approximation-tolerance MM for surfaces with no exact NURBS form (default 1e-5)\n"
+    "  --sewing-tolerance MM        faces that bound no solid are sewn into shells where\n"
+    "                               their edges meet within this distance (default 1e-3;\n"
+    "                               0: no sewing); closed shells are oriented by volume\n"
+    "  --outward RULE               side of the material for open shells: +z (normals\n"
+    "                               up), -z, or point:x,y,z (normals away from a point\n"
+    "                               inside the material); without it such faces keep the\n"
+    "                               file's sense and are reported undecided\n",
     run_import};
 
 }  // namespace furrow::cli

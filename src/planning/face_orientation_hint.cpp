@@ -33,7 +33,7 @@ std::string describe(const FaceFacingDown& f) {
 }
 
 const char* const kFacingDownHint =
-    "normals into the material? normals must point out of it: set \"reversed\" on the face in the part file "
-    "or fix the export";
+    "normals into the material? normals must point out of it: re-import the CAD file with furrow import "
+    "--outward (+z, -z or point:x,y,z), or set \"reversed\" on the face in the part file";
 
 }  // namespace furrow

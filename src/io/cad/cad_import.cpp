@@ -28,6 +28,7 @@
 #include "base/text_fields.hpp"
 #include "io/cad/cad_face_trims.hpp"
 #include "io/cad/cad_occt_internal.hpp"
+#include "io/cad/cad_orientation.hpp"
 #include "io/cad/cad_parameter_map.hpp"
 #include "io/cad/cad_reader.hpp"
 #include "io/cad/cad_surface.hpp"
@@ -67,7 +68,7 @@ struct ConvertedFace {
 // trims are carried into the conversion's parameters, and the normal's sense
 // is compared last.
 ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const cad::FileBoundary& file,
-                           const CadImportOptions& options) {
+                           const cad::FaceSense& sense, const CadImportOptions& options) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (surface.IsNull()) throw cad::FaceFailure("it has no surface");
   const Handle(Geom_Surface) basis = cad::strip_trim(surface);
@@ -94,13 +95,49 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   // Normals out of the material: OpenCASCADE's face orientation, and the
   // NURBS's own sense against the original surface's.
   const bool flipped = !cad::same_sense(nurbs, map, basis, bounds);
-  const bool reversed = (face.Orientation() == TopAbs_REVERSED) != flipped;
+  const bool reversed = ((face.Orientation() == TopAbs_REVERSED) != flipped) != sense.flip;
+  report.orientation = sense.basis;
+  report.flipped = sense.flip;
 
   Trim trim(std::move(trims.loops), "face " + quote_field(name) + " trim");
   return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
 }
 
 }  // namespace
+
+const char* to_string(CadFaceOrientation basis) {
+  switch (basis) {
+    case CadFaceOrientation::solid: return "solid";
+    case CadFaceOrientation::closed_shell: return "closed_shell";
+    case CadFaceOrientation::rule: return "rule";
+    case CadFaceOrientation::file: return "undecided";
+  }
+  return "?";
+}
+
+OutwardRule parse_outward_rule(const std::string& text, const std::string& where) {
+  OutwardRule rule;
+  if (text == "+z" || text == "z") {
+    rule.kind = OutwardRule::Kind::plus_z;
+  } else if (text == "-z") {
+    rule.kind = OutwardRule::Kind::minus_z;
+  } else if (text.rfind("point:", 0) == 0) {
+    rule.kind = OutwardRule::Kind::away_from_point;
+    std::string rest = text.substr(6) + ",";
+    int count = 0;
+    for (std::size_t comma; (comma = rest.find(',')) != std::string::npos; rest.erase(0, comma + 1)) {
+      double value = 0;
+      if (count == 3 || !parse_finite(trim(rest.substr(0, comma)), value))
+        throw InputError(where + ": " + quote_field(text) + " is not point:x,y,z with three finite numbers (mm)");
+      rule.point[count++] = value;
+    }
+    if (count != 3)
+      throw InputError(where + ": " + quote_field(text) + " is not point:x,y,z with three finite numbers (mm)");
+  } else {
+    throw InputError(where + ": " + quote_field(text) + " is not an outward rule (+z, -z or point:x,y,z)");
+  }
+  return rule;
+}
 
 bool is_cad_file(const std::string& path) {
   const std::string ext = lower_extension(path);
@@ -150,6 +187,15 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
                      "): nothing to inspect");
   }
 
+  cad::OrientationOutcome senses;
+  try {
+    senses = cad::orient_faces(faces, solids, options);
+  } catch (const Standard_Failure& e) {
+    throw InputError(path + ": OpenCASCADE failed while sewing and orienting the faces: " + occt_text(e));
+  }
+  result.sewn_shells = senses.sewn_shells;
+  result.closed_shells = senses.closed_shells;
+
   std::set<std::string> used_names;
   const std::size_t total = static_cast<std::size_t>(faces.Extent());
   for (int i = 1; i <= faces.Extent(); ++i) {
@@ -161,7 +207,7 @@ CadImportResult import_cad(const std::string& path, const CadImportOptions& opti
     if (used_names.count(name)) name += "_" + std::to_string(index);
     std::string failure;
     try {
-      ConvertedFace converted = convert_face(face, name, origin.boundary, options);
+      ConvertedFace converted = convert_face(face, name, origin.boundary, senses.faces[index], options);
       converted.report.entity = origin.entity;
       if (!solid_faces.Contains(face)) ++result.free_faces;
       used_names.insert(name);

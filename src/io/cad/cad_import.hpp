@@ -19,8 +19,11 @@
 //   seam lies on the domain edge (a hole across that seam is cut out on both
 //   sides). A loop that is the whole rectangle gives an untrimmed face.
 // - its normal points out of the material: OpenCASCADE's face orientation
-//   (REVERSED flips Su x Sv) is carried into Face::reversed(). Faces outside
-//   any closed solid keep the orientation the file gives them.
+//   (REVERSED flips Su x Sv) is carried into Face::reversed(), after the
+//   faces are oriented (cad_orientation.hpp): by their solid, by the closed
+//   shell loose faces sew into, by options.outward for open shells, or — when
+//   nothing decides it — as the file has most of its shell (reported as
+//   undecided per face).
 // - its name is the face's name in the file (STEP ADVANCED_FACE name, IGES
 //   entity name or label) when it has one, else "face_<index>" (index in
 //   walking order, as `furrow info` numbers faces); duplicates get "_<index>".
@@ -44,11 +47,35 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "geometry/part.hpp"
 
 namespace furrow {
 
+// How the side of the material is decided for faces that close no volume
+// (docs/formats.md "Orientation").
+struct OutwardRule {
+  enum class Kind { none, plus_z, minus_z, away_from_point };
+  Kind kind = Kind::none;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // [mm], away_from_point: inside the material
+};
+// "+z", "-z" or "point:x,y,z" [mm]; throws InputError naming `where`.
+OutwardRule parse_outward_rule(const std::string& text, const std::string& where);
+
+enum class CadFaceOrientation {
+  solid,         // a solid of the file
+  closed_shell,  // loose faces that sew into a closed shell
+  rule,          // an open shell, by options.outward
+  file           // undecided: the file's sense (of most of its sewn shell)
+};
+const char* to_string(CadFaceOrientation basis);
+
 struct CadImportOptions {
+  // Loose faces are sewn into shells when their edges meet within this
+  // distance [mm]; 0 switches sewing off (each loose face its own shell).
+  double sewing_tolerance = 1e-3;
+  OutwardRule outward;
   // Trim polygons (cad_trim_polygon.hpp): largest 3-D chord sag [mm] of a
   // polygon edge, measured at the boundary curve's parameter midpoint; the
   // area-balanced polygon stays within about 2/3 of it on either side ...
@@ -84,6 +111,8 @@ struct CadFaceReport {
   int trim_vertices = 0;
   double trim_deviation = 0;     // largest chord sag of the trim polygon before balancing [mm]
   bool trim_tolerance_met = true;  // false when trim_max_subdivisions stopped the refinement
+  CadFaceOrientation orientation = CadFaceOrientation::file;
+  bool flipped = false;          // turned round against the file's orientation
 };
 
 struct CadSkippedFace {
@@ -95,7 +124,9 @@ struct CadImportResult {
   std::string format;                // "STEP" or "IGES"
   std::vector<std::string> products; // product names (STEP) in file order
   std::size_t solids = 0;            // closed solids in the file
-  std::size_t free_faces = 0;        // faces not bounding a solid (orientation as in the file)
+  std::size_t free_faces = 0;        // faces not bounding a solid
+  int sewn_shells = 0;               // shells the free faces were sewn into
+  int closed_shells = 0;             // of which closed
   std::vector<CadFaceReport> faces;  // parallel to part.faces
   std::vector<CadSkippedFace> skipped;
 };

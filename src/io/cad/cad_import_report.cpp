@@ -25,9 +25,19 @@ std::string cad_import_report_text(const CadImportResult& r, const std::string& 
       << (r.part.faces.size() == 1 ? " face" : " faces") << " imported";
   if (!r.skipped.empty()) out << ", " << r.skipped.size() << " left out";
   out << "\n";
-  if (r.free_faces > 0)
-    out << "  " << r.free_faces << " face(s) bound no solid: their normals follow the file's "
-        << "face orientation\n";
+  if (r.free_faces > 0) {
+    int flipped = 0, undecided = 0;
+    for (const CadFaceReport& f : r.faces) {
+      flipped += f.flipped;
+      undecided += f.orientation == CadFaceOrientation::file;
+    }
+    out << "  " << r.free_faces << " face(s) bound no solid: sewn into " << r.sewn_shells << " shell(s), "
+        << r.closed_shells << " closed; " << flipped << " face(s) turned to point out of the material";
+    if (undecided > 0)
+      out << "; " << undecided << " face(s) undecided (open shell, no --outward rule): oriented like most of "
+          << "their shell in the file";
+    out << "\n";
+  }
   for (std::size_t i = 0; i < r.faces.size(); ++i) {
     const CadFaceReport& f = r.faces[i];
     out << "face " << i << " \"" << f.name << "\"";
@@ -41,6 +51,8 @@ std::string cad_import_report_text(const CadImportResult& r, const std::string& 
       out << f.loops << (f.loops == 1 ? " trim loop, " : " trim loops, ") << f.trim_vertices
           << " vertices" << fmt(" (within %.2g mm)", f.trim_deviation);
     if (!f.trim_tolerance_met) out << " - trim tolerance NOT reached";
+    if (f.orientation != CadFaceOrientation::solid)
+      out << ", orientation " << to_string(f.orientation) << (f.flipped ? " (turned)" : "");
     out << "\n";
   }
   for (const CadSkippedFace& s : r.skipped)
@@ -61,6 +73,8 @@ std::string cad_import_report_json(const CadImportResult& r, const std::string& 
   doc["products"] = r.products;
   doc["solids"] = r.solids;
   doc["free_faces"] = r.free_faces;
+  doc["sewn_shells"] = r.sewn_shells;
+  doc["closed_shells"] = r.closed_shells;
   json faces = json::array();
   for (const CadFaceReport& f : r.faces) {
     json j;
@@ -74,6 +88,8 @@ std::string cad_import_report_json(const CadImportResult& r, const std::string& 
     j["trim_vertices"] = f.trim_vertices;
     j["trim_deviation_mm"] = f.trim_deviation;
     j["trim_tolerance_met"] = f.trim_tolerance_met;
+    j["orientation"] = to_string(f.orientation);
+    j["flipped"] = f.flipped;
     faces.push_back(std::move(j));
   }
   doc["faces"] = std::move(faces);

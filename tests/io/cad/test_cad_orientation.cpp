@@ -1,0 +1,179 @@
+// Outward orientation of faces that bound no solid (docs/formats.md
+// "Orientation"): surface models in IGES and STEP with faces reversed at
+// random are sewn, oriented consistently and, where they close, outward; the
+// oracle is OpenCASCADE's solid classifier on the model the faces came from.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "cad_reference.hpp"
+#include "base/error.hpp"
+#include "io/cad/cad_import.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+using namespace furrow::test;
+
+namespace {
+
+// The faces of `shape` as a compound of loose faces (no shells, no solids),
+// every face reversed with probability 1/2 (seeded): a surface model as a
+// careless export writes it.
+TopoDS_Compound loose_faces(const TopoDS_Shape& shape, unsigned seed, std::vector<bool>* reversed = nullptr) {
+  std::mt19937 random(seed);
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const TopoDS_Face& f : faces_of(shape)) {
+    const bool flip = (random() & 1u) != 0;
+    if (reversed) reversed->push_back(flip);
+    builder.Add(compound, flip ? f.Reversed() : TopoDS_Shape(f));
+  }
+  return compound;
+}
+
+// Interior points of a face away from its trims, with their normals.
+std::vector<DifferentialGeometry> interior_points(const Face& face, int n) {
+  const ParameterDomain& d = face.domain();
+  std::vector<DifferentialGeometry> out;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = d.u0 + d.width_u() * (0.05 + 0.9 * i / (n - 1));
+      const double v = d.v0 + d.width_v() * (0.05 + 0.9 * j / (n - 1));
+      if (!face.contains(u, v) || face.trim().distance_to_boundary({u, v}) < 0.03 * std::min(d.width_u(), d.width_v()))
+        continue;
+      const DifferentialGeometry g = face.geometry(u, v);
+      if (!g.degenerate) out.push_back(g);
+    }
+  return out;
+}
+
+// Share of a face's interior points whose normal points out of the model's
+// solids: a step along the normal leaves the material, a step against it
+// enters it.
+double outward_share(const Face& face, SolidsClassifier& solids) {
+  int out = 0, total = 0;
+  for (const DifferentialGeometry& g : interior_points(face, 6)) {
+    ++total;
+    out += solids.containing(g.point + 0.05 * g.normal) == 0 && solids.containing(g.point - 0.05 * g.normal) == 1;
+  }
+  return total == 0 ? 1.0 : static_cast<double>(out) / total;
+}
+
+}  // namespace
+
+TEST_CASE("orientation: a surface model with random face flips comes in outward, in STEP and in IGES") {
+  const ReferenceModel model = make_reference_model();
+  SolidsClassifier solids(model);
+  const TopoDS_Compound faces = loose_faces(model.shape, 12345);
+  const std::string dir = scratch_dir("cad-orientation-model");
+  write_step(faces, dir + "/surfaces.step");
+  write_iges(faces, dir + "/surfaces.igs");
+  for (const char* name : {"surfaces.step", "surfaces.igs"}) {
+    CAPTURE(name);
+    const CadImportResult r = import_cad(dir + "/" + name);
+    CHECK(r.solids == 0);
+    CHECK(r.free_faces == r.part.faces.size());
+    CHECK(r.closed_shells == static_cast<int>(model.solids.size()));
+    int turned = 0;
+    for (std::size_t f = 0; f < r.part.faces.size(); ++f) {
+      CAPTURE(std::string(r.part.faces[f].name()));
+      CHECK(r.faces[f].orientation == CadFaceOrientation::closed_shell);
+      CHECK(outward_share(r.part.faces[f], solids) == 1.0);
+      turned += r.faces[f].flipped;
+    }
+    // The random flips had to be undone somewhere (about half the faces).
+    CHECK(turned > 0);
+  }
+  // Without sewing only the faces that close on themselves (the ball, the
+  // ring) are decided; every other face is its own open shell, kept as the
+  // file has it and reported undecided.
+  CadImportOptions no_sewing;
+  no_sewing.sewing_tolerance = 0;
+  const CadImportResult raw = import_cad(dir + "/surfaces.step", no_sewing);
+  int inward = 0, closed = 0;
+  for (std::size_t f = 0; f < raw.part.faces.size(); ++f) {
+    const double share = outward_share(raw.part.faces[f], solids);
+    if (raw.faces[f].orientation == CadFaceOrientation::closed_shell) {
+      ++closed;
+      CHECK(share == 1.0);
+      continue;
+    }
+    CHECK(raw.faces[f].orientation == CadFaceOrientation::file);
+    CHECK(!raw.faces[f].flipped);
+    inward += share < 0.5;
+  }
+  CHECK(closed == 2);
+  CHECK(inward > 0);
+}
+
+TEST_CASE("orientation: an open shell is made consistent; +z, -z and a point rule decide its side") {
+  // The free-form block's top and its four sides, no bottom: an open shell.
+  const ReferenceModel model = make_reference_model();
+  SolidsClassifier solids(model);
+  const TopoDS_Shape block = model.solids[3];
+  TopoDS_Compound open;
+  BRep_Builder builder;
+  builder.MakeCompound(open);
+  // The bottom is the copy of the top swept down: the face lowest in z.
+  const std::vector<TopoDS_Face> block_faces = faces_of(block);
+  std::vector<double> top_z;
+  for (const TopoDS_Face& f : block_faces) {
+    Bnd_Box fb;
+    BRepBndLib::Add(f, fb);
+    double a, b, c, d, e, zmax;
+    fb.Get(a, b, c, d, e, zmax);
+    top_z.push_back(zmax);
+  }
+  const std::size_t bottom = static_cast<std::size_t>(std::min_element(top_z.begin(), top_z.end()) - top_z.begin());
+  std::mt19937 random(7);
+  int kept = 0;
+  for (std::size_t k = 0; k < block_faces.size(); ++k) {
+    if (k == bottom) continue;
+    builder.Add(open, (random() & 1u) ? block_faces[k].Reversed() : TopoDS_Shape(block_faces[k]));
+    ++kept;
+  }
+  REQUIRE(kept == 5);
+  const std::string path = scratch_dir("cad-orientation-open") + "/open.igs";
+  write_iges(open, path);
+
+  CadImportOptions up;
+  up.outward.kind = OutwardRule::Kind::plus_z;
+  const CadImportResult r = import_cad(path, up);
+  REQUIRE(r.part.faces.size() == 5);
+  CHECK(r.sewn_shells == 1);
+  CHECK(r.closed_shells == 0);
+  for (std::size_t f = 0; f < 5; ++f) {
+    CAPTURE(std::string(r.part.faces[f].name()));
+    CHECK(r.faces[f].orientation == CadFaceOrientation::rule);
+    CHECK(outward_share(r.part.faces[f], solids) == 1.0);
+  }
+  // A point inside the material gives the same answer; -z the opposite one.
+  CadImportOptions inside;
+  inside.outward = parse_outward_rule("point:270,15,12", "test");
+  CadImportOptions down;
+  down.outward = parse_outward_rule("-z", "test");
+  const CadImportResult by_point = import_cad(path, inside);
+  const CadImportResult by_down = import_cad(path, down);
+  for (std::size_t f = 0; f < 5; ++f) {
+    CHECK(outward_share(by_point.part.faces[f], solids) == 1.0);
+    CHECK(outward_share(by_down.part.faces[f], solids) == 0.0);
+  }
+  // No rule: consistent with its neighbours, side undecided and said so.
+  const CadImportResult undecided = import_cad(path);
+  const double first = outward_share(undecided.part.faces[0], solids);
+  CHECK((first == 0.0 || first == 1.0));
+  for (std::size_t f = 0; f < 5; ++f) {
+    CHECK(undecided.faces[f].orientation == CadFaceOrientation::file);
+    CHECK(outward_share(undecided.part.faces[f], solids) == first);
+  }
+}
+
+TEST_CASE("orientation: bad --outward rules are refused naming the option") {
+  for (const char* bad : {"up", "point:1,2", "point:1,2,3,4", "point:1,x,3", "point:1,2,nan", ""}) {
+    CAPTURE(bad);
+    CHECK_THROWS_WITH_AS(parse_outward_rule(bad, "furrow import: --outward"),
+                         doctest::Contains("furrow import: --outward"), InputError);
+  }
+}
