@@ -52,6 +52,7 @@ void print_text(std::ostream& out, const std::string& path, const PartSummary& s
     }
     if (f.degenerate_samples > 0)
       out << "  degenerate  " << f.degenerate_samples << " samples with a vanishing normal\n";
+    if (f.analytic) out << "  analytic    " << describe(*f.analytic) << "\n";
     out << "  ";
     print_classes(out, f.class_area, f.area);
     if (!s.eps) out << "  eps         " << fmt("%.3g 1/mm", f.eps, 0) << "\n";

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/analytic_surface.hpp"
 #include "geometry/differential_geometry.hpp"
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/trim.hpp"
@@ -29,6 +30,11 @@ class Face {
   // empty for native JSON faces.
   const std::string& source_type() const { return source_type_; }
   const ParameterDomain& domain() const { return surface_.domain(); }
+  // The elementary surface the patch exactly is, when known (recognised at
+  // CAD import or given in the part file): metadata for people and reports;
+  // geometry always comes from the NURBS (analytic_surface.hpp).
+  const std::optional<AnalyticSurface>& analytic() const { return analytic_; }
+  void set_analytic(std::optional<AnalyticSurface> analytic) { analytic_ = std::move(analytic); }
 
   // Inside the parameter rectangle and kept by the trim.
   bool contains(double u, double v) const;
@@ -42,6 +48,7 @@ class Face {
   Trim trim_;
   bool reversed_ = false;
   std::string source_type_;
+  std::optional<AnalyticSurface> analytic_;
   double derivative_scale_ = 1;
 };
 

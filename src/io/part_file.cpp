@@ -5,6 +5,7 @@
 #include "base/atomic_file.hpp"
 #include "io/cad/cad_import.hpp"
 #include "base/json_fields.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -18,6 +19,36 @@ double units_to_mm(const std::string& units, const std::string& where) {
 }
 
 namespace {
+
+// Optional metadata of a face (analytic_surface.hpp); lengths in the file's units.
+AnalyticSurface parse_analytic(const json& ja, const std::string& where, double scale) {
+  jf::object(ja, where);
+  AnalyticSurface a;
+  const std::string type = jf::string(jf::member(ja, "type", where), jf::child(where, "type"));
+  const auto t = analytic_type_from_string(type);
+  if (!t)
+    throw InputError(jf::child(where, "type") + ": " + quote_field(type) +
+                     " is not plane, cylinder, cone, sphere or torus");
+  a.type = *t;
+  a.origin = scale * jf::vector3(jf::member(ja, "origin", where), jf::child(where, "origin"));
+  const Eigen::Vector3d axis = jf::vector3(jf::member(ja, "axis", where), jf::child(where, "axis"));
+  if (!(axis.norm() > 0)) throw InputError(jf::child(where, "axis") + ": the axis must not be zero");
+  a.axis = axis.normalized();
+  const bool round = a.type != AnalyticSurface::Type::plane && a.type != AnalyticSurface::Type::cone;
+  if (round) a.radius = scale * jf::positive_number(jf::member(ja, "radius", where), jf::child(where, "radius"));
+  if (a.type == AnalyticSurface::Type::torus)
+    a.minor_radius =
+        scale * jf::positive_number(jf::member(ja, "minor_radius", where), jf::child(where, "minor_radius"));
+  if (a.type == AnalyticSurface::Type::cone) {
+    const std::string at = jf::child(where, "half_angle_deg");
+    const double deg = jf::positive_number(jf::member(ja, "half_angle_deg", where), at);
+    if (!(deg < 90)) throw InputError(at + ": a cone's half angle must be below 90 degrees");
+    a.half_angle = radians(deg);
+  }
+  if (const json* jd = jf::optional_member(ja, "deviation_mm", where))
+    a.deviation = jf::non_negative_number(*jd, jf::child(where, "deviation_mm"));
+  return a;
+}
 
 Face parse_face(const json& jface, const std::string& where, double scale) {
   jf::object(jface, where);
@@ -75,8 +106,10 @@ Face parse_face(const json& jface, const std::string& where, double scale) {
 
   NurbsSurface surface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), net, weights,
                        where);
-  return Face(std::move(name), std::move(surface), std::move(trim), reversed,
-              std::move(source_type));
+  Face face(std::move(name), std::move(surface), std::move(trim), reversed, std::move(source_type));
+  if (const json* ja = jf::optional_member(jface, "analytic", where))
+    face.set_analytic(parse_analytic(*ja, jf::child(where, "analytic"), scale));
+  return face;
 }
 
 }  // namespace
@@ -110,6 +143,23 @@ Part read_part(const std::string& path) {
   return read_part_json(path);
 }
 
+namespace {
+
+json analytic_json(const AnalyticSurface& a) {
+  json j;
+  j["type"] = to_string(a.type);
+  j["origin"] = jf::vector_json(a.origin);
+  j["axis"] = jf::vector_json(a.axis);
+  if (a.type != AnalyticSurface::Type::plane && a.type != AnalyticSurface::Type::cone)
+    j["radius"] = jf::finite(a.radius, "radius");
+  if (a.type == AnalyticSurface::Type::torus) j["minor_radius"] = jf::finite(a.minor_radius, "minor radius");
+  if (a.type == AnalyticSurface::Type::cone) j["half_angle_deg"] = jf::finite(degrees(a.half_angle), "half angle");
+  j["deviation_mm"] = jf::finite(a.deviation, "deviation");
+  return j;
+}
+
+}  // namespace
+
 std::string part_to_json_text(const Part& part) {
   json jfaces = json::array();
   for (const Face& face : part.faces) {
@@ -117,6 +167,7 @@ std::string part_to_json_text(const Part& part) {
     json jf_face;
     jf_face["name"] = face.name();
     if (!face.source_type().empty()) jf_face["source_type"] = face.source_type();
+    if (const auto& a = face.analytic()) jf_face["analytic"] = analytic_json(*a);
     jf_face["degree_u"] = s.degree_u();
     jf_face["degree_v"] = s.degree_v();
     jf_face["knots_u"] = s.knots_u();

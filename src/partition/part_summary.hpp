@@ -27,6 +27,8 @@ struct FaceSummary {
   Range K, H, k1, k2;       // over valid samples
   std::array<double, 4> class_area{};  // indexed by CurvatureClass
   double eps = 0;                      // [1/mm] the classes were taken with
+  // The face's elementary surface: the part file's, else recognised here.
+  std::optional<AnalyticSurface> analytic;
   int valid_samples = 0, degenerate_samples = 0;
 };
 

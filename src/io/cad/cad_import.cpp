@@ -100,7 +100,13 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   report.flipped = sense.flip;
 
   Trim trim(std::move(trims.loops), "face " + quote_field(name) + " trim");
-  return {Face(name, std::move(nurbs), std::move(trim), reversed, report.source_type), report};
+  // Recognised on the exact NURBS, so what the part file says is what the
+  // computation uses (an approximated face is not claimed to be elementary).
+  std::optional<AnalyticSurface> analytic;
+  if (conversion.exact) analytic = recognise_analytic(nurbs);
+  Face converted(name, std::move(nurbs), std::move(trim), reversed, report.source_type);
+  converted.set_analytic(std::move(analytic));
+  return {std::move(converted), report};
 }
 
 }  // namespace
