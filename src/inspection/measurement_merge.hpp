@@ -34,7 +34,8 @@ struct MergedMeasurements {
   std::vector<std::string> files;     // as given
   std::vector<std::size_t> file_points;  // points read from each file
   // SHA-256 (hex) of each file, filled by the caller that read the bytes
-  // (report/qa_report.hpp digest_file); empty when not known.
+  // (report/qa_report.hpp digest_file); empty when not known. comparison.json
+  // records them when several files were merged.
   std::vector<std::string> sha256;
   std::vector<std::size_t> origin;    // per point of `set`: index into `files`
   std::vector<MeasurementReplacement> replaced;  // in the order they happened

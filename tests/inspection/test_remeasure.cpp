@@ -265,3 +265,30 @@ TEST_CASE("compare with several measurement files: a later point replaces an ear
              dir + "/xyz.json"})
             .status == 0);
 }
+
+TEST_CASE("remeasure bad input: exit 2, one line naming what to fix, nothing written") {
+  const std::string dir = test::scratch_dir("remeasure-bad");
+  write_grid_plan(dir + "/plan.json");
+  REQUIRE(run({"simulate-measurement", kMould, "--plan", dir + "/plan.json", "--outliers", "1", "--out",
+               dir + "/m.csv"})
+              .status == 0);
+  REQUIRE(run({"compare", kMould, "--measurements", dir + "/m.csv", "--plan", dir + "/plan.json", "--out",
+               dir + "/c.json"})
+              .status != 2);
+  auto refused = [&](const std::vector<std::string>& args, const std::string& says) {
+    const test::CliResult r = test::run_furrow(args);
+    INFO(r.out << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(says) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir + "/out"));
+  };
+  refused({"remeasure", dir + "/missing.json", "--out", dir + "/out"}, dir + "/missing.json");
+  // The comparison was made on the mould, not on this part.
+  refused({"remeasure", dir + "/c.json", "--part", test::source_path("examples/parts/two_face.json"),
+           "--out", dir + "/out"},
+          dir + "/c.json: points[0]");
+  refused({"remeasure", dir + "/c.json", "--ring", "30", "--out", dir + "/out"}, "--ring");
+  refused({"remeasure", dir + "/c.json", "--radius", "-1", "--out", dir + "/out"}, "--radius");
+  refused({"remeasure", dir + "/c.json"}, "--out is required");
+}

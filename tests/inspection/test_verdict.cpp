@@ -166,4 +166,14 @@ TEST_CASE("verdict: a plan region with fewer evaluated points than its minimum i
   CHECK(doc.summary.inconclusive[0].kind == "region_below_minimum");
   CHECK(doc.summary.inconclusive[0].subject == "region 2");
   CHECK(doc.summary.evaluated == plan.points.size() - 1);
+
+  // furrow remeasure plans exactly the region's point that was not measured.
+  const test::CliResult rm = test::run_furrow({"remeasure", dir + "/short.csv.json", "--out", dir + "/again"});
+  INFO(rm.out << rm.err);
+  REQUIRE(rm.status == 0);
+  const InspectionPlan again = read_plan(dir + "/again/plan.json");
+  REQUIRE(again.points.size() == 1);
+  CHECK(again.points[0].id == last_id);
+  CHECK(again.points[0].xyz == plan.points.back().xyz);
+  CHECK(again.points[0].region == std::optional<int>(2));
 }
