@@ -97,7 +97,8 @@ int run_compare(Args& args) {
   std::vector<MeasurementSet> sets;
   for (const std::string& m : measurement_files) sets.push_back(read_measurements(m, read));
   MergedMeasurements merged = merge_measurements(sets);
-  for (const std::string& m : measurement_files) merged.sha256.push_back(digest_file("measurements", m).sha256);
+  if (measurement_files.size() > 1)  // recorded with several files only (comparison_file.hpp)
+    for (const std::string& m : measurement_files) merged.sha256.push_back(digest_file("measurements", m).sha256);
   const MeasurementSet& set = merged.set;
   const std::string measurements = set.source;
 
