@@ -9,10 +9,12 @@
 #include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "inspection/comparison_file.hpp"
+#include "inspection/measurement_merge.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
+#include "report/qa_report.hpp"
 #include "stage/compare_stage.hpp"
 
 namespace furrow::cli {
@@ -20,7 +22,9 @@ namespace furrow::cli {
 namespace {
 
 int run_compare(Args& args) {
-  const std::string measurements = args.required_option("measurements");
+  // Several files: merged by id in the order given (measurement_merge.hpp).
+  const std::vector<std::string> measurement_files = args.repeated_option("measurements");
+  if (measurement_files.empty()) args.fail("--measurements is required");
   const auto plan_path = args.option("plan");
   const auto regions_path = args.option("regions");
   const auto prediction_path = args.option("prediction");
@@ -64,7 +68,7 @@ int run_compare(Args& args) {
 
   OutputSet outputs;
   outputs.add_input(part_path, "part");
-  outputs.add_input(measurements, "measurements");
+  for (const std::string& m : measurement_files) outputs.add_input(m, "measurements");
   if (plan_path) outputs.add_input(*plan_path, "plan");
   if (regions_path) outputs.add_input(*regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
@@ -90,7 +94,13 @@ int run_compare(Args& args) {
   read.units = units;
   if (points) read.kind = parse_probe_point_kind(*points, "--points");
   read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
-  const MeasurementSet set = read_measurements(measurements, read);
+  std::vector<MeasurementSet> sets;
+  for (const std::string& m : measurement_files) sets.push_back(read_measurements(m, read));
+  MergedMeasurements merged = merge_measurements(sets);
+  if (measurement_files.size() > 1)  // recorded with several files only (comparison_file.hpp)
+    for (const std::string& m : measurement_files) merged.sha256.push_back(digest_file("measurements", m).sha256);
+  const MeasurementSet& set = merged.set;
+  const std::string measurements = set.source;
 
   const Comparison c = naming_inputs(part_path + " with " + measurements, [&] {
     return compare_stage(part, set, plan ? &*plan : nullptr, regions ? &*regions : nullptr,
@@ -104,6 +114,7 @@ int run_compare(Args& args) {
   sources.regions = regions_path.value_or("");
   sources.prediction = prediction_path.value_or("");
   sources.measurement_units = units;
+  sources.merged = &merged;
   outputs.file(out, comparison_to_json_text(c, set, part, options, sources));
   outputs.publish();
 
@@ -134,6 +145,9 @@ int run_compare(Args& args) {
     std::printf("gouge sites: %zu confirmed, %zu not confirmed, %zu not measured; %zu unexplained overcuts\n",
                 by_status[0], by_status[1], by_status[2], s.unexplained_overcuts);
   }
+  for (const MeasurementReplacement& m : merged.replaced)
+    std::printf("re-measured: %s from %s replaces %s\n", m.id.c_str(), merged.files[m.by_file].c_str(),
+                merged.files[m.file].c_str());
   std::printf("%s\n", to_string(s.verdict));
   for (const InconclusiveReason& r : s.inconclusive) std::printf("  %s\n", r.text.c_str());
   return exit_status(s.verdict, s.alignment);
@@ -152,10 +166,14 @@ const Command kCompareCommand = {
     "status: 0 PASS (every evaluated point in tolerance, no predicted gouge\n"
     "confirmed, nothing left unseen), 1 FAIL, 4 INCONCLUSIVE (nothing failed, but\n"
     "a suspected blunder lies outside the zone, a predicted gouge was not\n"
-    "measured, or the points do not determine the alignment: the reasons say\n"
-    "what to measure again; docs/verification.md \"Verdict\").\n"
+    "measured, a plan region has fewer evaluated points than its minimum, or\n"
+    "the points do not determine the alignment: the reasons say what to\n"
+    "measure again, furrow remeasure plans it; docs/verification.md \"Verdict\").\n"
     "\n"
-    "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res)\n"
+    "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res);\n"
+    "                       repeat it for a re-measure: files are merged by id in\n"
+    "                       the order given, a later point replaces an earlier one\n"
+    "                       with the same id (each file must carry ids)\n"
     "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"
     "  --regions FILE       regions.json of PART (furrow partition): each point's\n"
     "                       region is the one holding its foot point; statistics\n"

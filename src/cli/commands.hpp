@@ -37,6 +37,7 @@ extern const Command kPredictCommand;
 extern const Command kPlanCommand;
 extern const Command kSimulateMeasurementCommand;
 extern const Command kCompareCommand;
+extern const Command kRemeasureCommand;
 extern const Command kReportCommand;
 extern const Command kRunCommand;
 extern const Command kDemoCommand;

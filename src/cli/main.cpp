@@ -26,6 +26,7 @@ const std::vector<const Command*> kCommands = {
     &furrow::cli::kPlanCommand,
     &furrow::cli::kSimulateMeasurementCommand,
     &furrow::cli::kCompareCommand,
+    &furrow::cli::kRemeasureCommand,
     &furrow::cli::kReportCommand,
     &furrow::cli::kRunCommand,
     &furrow::cli::kDemoCommand,

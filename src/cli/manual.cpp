@@ -52,7 +52,7 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
          "tolerance, gouge, uncovered)\n.TP\n2\nbad input: a file, option or value to fix; "
          "nothing is written\n.TP\n3\nthe computation did not succeed\n.TP\n4\ninconclusive: nothing failed, but "
          "something was not shown to be good (a suspected blunder outside the zone, an unmeasured predicted gouge, "
-         "an undetermined alignment)\n";
+         "a region below its minimum, an undetermined alignment)\n";
 }
 
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {

@@ -54,6 +54,20 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
                        "predicted gouge " + site.id +
                            (site.predicted_depth ? " (" + micrometres(*site.predicted_depth) + " deep)" : std::string()) +
                            " on face " + site.face + " was not measured: probe its site"});
+  if (!c.region_minimum.empty()) {
+    std::map<int, std::size_t> evaluated;
+    for (std::size_t i = 0; i < pts.size() && i < c.region.size(); ++i)
+      if (pts[i].evaluated && c.region[i]) ++evaluated[*c.region[i]];
+    for (const auto& [region, minimum] : c.region_minimum) {
+      const std::size_t n = evaluated[region];
+      if (n >= minimum) continue;
+      const std::string name = "region " + std::to_string(region);
+      out.push_back({"region_below_minimum", name,
+                     name + " has " + std::to_string(n) + " evaluated point" + (n == 1 ? "" : "s") +
+                         ", fewer than the plan's minimum of " + std::to_string(minimum) +
+                         ": measure more points there"});
+    }
+  }
   const std::string& covariance = c.registration.covariance_status;
   if (covariance.find("rank deficient") != std::string::npos)
     out.push_back({"alignment_undetermined", "",
@@ -181,6 +195,14 @@ void verify_prediction(Comparison& c, const Part& part, double probe_radius,
   summarize(c);
 }
 
+std::map<int, std::size_t> region_minimums(const InspectionPlan& plan) {
+  std::map<int, std::size_t> planned;
+  for (const PlannedPoint& p : plan.points)
+    if (p.region) ++planned[*p.region];
+  for (auto& [region, n] : planned) n = std::min(n, kRegionMinimumPoints);
+  return planned;
+}
+
 Comparison compare_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
                                 const InspectionPlan* plan, const CompareOptions& options) {
   Comparison c;
@@ -188,7 +210,10 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
   for (const MeasuredPoint& p : set.points) c.point_ids.push_back(p.id);
   c.registration = register_measurements(finder, set, plan, options.registration);
   c.region.assign(set.points.size(), std::nullopt);
+  // The regions of the points are known by id here; with generated ids only
+  // a partition can tell them (compare_stage), else the rule cannot apply.
   if (plan && set.ids_from_file) {
+    c.region_minimum = region_minimums(*plan);
     const auto index = plan->index_by_id();
     for (std::size_t i = 0; i < set.points.size(); ++i)
       if (const auto k = index.find(set.points[i].id); k != index.end())

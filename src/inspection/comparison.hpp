@@ -10,7 +10,8 @@
 // - INCONCLUSIVE: nothing was shown to be bad, but something was not shown
 //   to be good: a point outside the zone that the outlier rule suspects of
 //   being a blunder (re-measure it), a predicted gouge site with no point on
-//   it, or an alignment that the points do not determine (rank-deficient);
+//   it, a plan region with fewer evaluated points than its minimum, or an
+//   alignment that the points do not determine (rank-deficient);
 // - PASS: neither. PASS is never given for what was not seen.
 // An alignment that did not succeed (not converged, too few points on the
 // part, or weakly constrained: a motion that the measured faces would fix
@@ -28,6 +29,7 @@
 // (face, u, v) (assign_regions); without one, the region of the plan point
 // with the same id. Statistics per region are computed from whatever ids are
 // set.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,10 +56,10 @@ Verdict parse_verdict(const std::string& text, const std::string& where);
 
 // Why a comparison that found nothing bad still cannot pass.
 struct InconclusiveReason {
-  // "suspected_blunder", "gouge_not_measured", "alignment_undetermined" or
-  // "alignment_failed"
+  // "suspected_blunder", "gouge_not_measured", "region_below_minimum",
+  // "alignment_undetermined" or "alignment_failed"
   std::string kind;
-  std::string subject;  // the point id, the gouge site id, or "" for the alignment
+  std::string subject;  // the point id, the gouge site id, "region N", or "" for the alignment
   std::string text;     // for people, saying what to do ("re-measure point P0006: ...")
 };
 
@@ -89,6 +91,10 @@ struct Comparison {
   ToleranceZone tolerance;
   std::vector<std::optional<int>> region;  // per point
   std::vector<bool> in_tolerance;          // per point (false for points not evaluated)
+  // Fewest evaluated points each plan region needs (region_minimums); empty
+  // without a plan, when the plan has no regions, or when the points'
+  // regions are unknown (generated ids and no partition).
+  std::map<int, std::size_t> region_minimum;
   ComparisonSummary summary;
   // With a machining prediction (verify_prediction):
   std::optional<PredictionComparison> prediction;
@@ -102,7 +108,20 @@ struct CompareOptions {
   GougeConfirmationOptions gouges;         // likewise
 };
 
-// Registers and evaluates. `plan` may be null (no id coarse start, no regions).
+// The planner's default fewest points per region (PlannerOptions::
+// min_per_region) and the prediction comparison's "too few points" count.
+constexpr std::size_t kRegionMinimumPoints = 5;
+
+// Per plan region: the fewest evaluated points that make it inspected,
+// min(points the plan puts there, kRegionMinimumPoints). plan.json does not
+// record the planner's --min-per-region; what the plan put into a region is
+// what it promised to measure there, and five points are what per-region
+// statistics need (docs/verification.md "Verdict"). Regions of no plan point
+// are not listed.
+std::map<int, std::size_t> region_minimums(const InspectionPlan& plan);
+
+// Registers and evaluates. `plan` may be null (no id coarse start, no regions,
+// no region minimum).
 Comparison compare_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
                                 const InspectionPlan* plan, const CompareOptions& options);
 

@@ -27,6 +27,21 @@ struct ComparisonDocument {
   // Input files as given on the command line; empty when not given.
   struct Sources {
     std::string part, measurements, plan, regions, prediction;
+    // Every measurement file in measuring order with the points read from
+    // it (one entry for one file; empty in files written before merging).
+    struct MeasurementFile {
+      std::string path;
+      std::size_t points = 0;
+      std::string sha256;  // hex; empty when not recorded (furrow run records inputs in report.json)
+    };
+    std::vector<MeasurementFile> measurement_files;
+    // Points a later file measured again (docs/verification.md "Re-measuring").
+    struct Replacement {
+      std::string id;
+      std::size_t file = 0, by_file = 0;  // indices into measurement_files
+      Eigen::Vector3d was = Eigen::Vector3d::Zero();  // replaced coordinates, CMM frame [mm]
+    };
+    std::vector<Replacement> replaced;
   } sources;
 
   // Every option the comparison ran with.
@@ -90,6 +105,7 @@ struct ComparisonDocument {
 
   struct Point {
     std::string id;
+    std::size_t file = 0;  // index into sources.measurement_files it came from
     Eigen::Vector3d measured = Eigen::Vector3d::Zero();    // CMM frame, as read
     Eigen::Vector3d registered = Eigen::Vector3d::Zero();  // part frame (a centre for centre data)
     Eigen::Vector3d contact = Eigen::Vector3d::Zero();     // registered - r_probe normal

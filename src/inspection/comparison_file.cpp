@@ -143,11 +143,13 @@ json outlier_counts_json(const RegistrationResult& r) {
   return counts;
 }
 
-json point_json(const Comparison& c, const MeasurementSet& set, const Part& part, std::size_t i) {
+json point_json(const Comparison& c, const MeasurementSet& set, const Part& part, const MergedMeasurements* merged,
+                std::size_t i) {
   const RegisteredPoint& p = c.registration.points[i];
   const bool have_covariance = c.registration.covariance.has_value();
   json j;
   j["id"] = set.points[i].id;
+  if (merged && merged->files.size() > 1) j["file"] = merged->origin.at(i);
   j["measured"] = jf::vector_json(set.points[i].xyz);
   j["registered"] = jf::vector_json(p.registered);
   j["contact"] = jf::vector_json(Eigen::Vector3d(p.registered - set.probe_radius * p.foot.normal));
@@ -185,6 +187,26 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
   doc["units"] = "mm";
   doc["part"] = sources.part;
   doc["measurements"] = sources.measurements;
+  json files = json::array(), replaced = json::array();
+  if (sources.merged) {
+    if (sources.merged->set.points.size() != set.points.size())
+      throw std::logic_error("comparison_to_json_text: the merged measurements are not the compared set");
+    for (std::size_t f = 0; f < sources.merged->files.size(); ++f)
+    {
+      json file = {{"path", sources.merged->files[f]}, {"points", sources.merged->file_points[f]}};
+      // With several files only: one file's comparison stays the bytes
+      // `furrow run` writes (its report.json records the digests).
+      if (sources.merged->files.size() > 1 && f < sources.merged->sha256.size())
+        file["sha256"] = sources.merged->sha256[f];
+      files.push_back(std::move(file));
+    }
+    for (const MeasurementReplacement& r : sources.merged->replaced)
+      replaced.push_back({{"id", r.id}, {"file", r.file}, {"by_file", r.by_file}, {"was", jf::vector_json(r.was)}});
+  } else {
+    files.push_back({{"path", sources.measurements}, {"points", set.points.size()}});
+  }
+  doc["measurement_files"] = std::move(files);
+  doc["replaced"] = std::move(replaced);
   auto optional_path = [](const std::string& p) { return p.empty() ? json(nullptr) : json(p); };
   doc["plan"] = optional_path(sources.plan);
   doc["regions_file"] = optional_path(sources.regions);
@@ -233,7 +255,7 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
   std::string points = ",\n  \"points\": [";
   for (std::size_t i = 0; i < c.registration.points.size(); ++i) {
     points += i == 0 ? "\n    " : ",\n    ";
-    points += point_json(c, set, part, i).dump();
+    points += point_json(c, set, part, sources.merged, i).dump();
   }
   points += c.registration.points.empty() ? "]\n" : "\n  ]\n";
   std::size_t end_of_last = close;

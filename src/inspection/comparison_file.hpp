@@ -15,6 +15,7 @@
 
 #include "inspection/comparison.hpp"
 #include "inspection/comparison_document.hpp"
+#include "inspection/measurement_merge.hpp"
 
 namespace furrow {
 
@@ -24,6 +25,10 @@ struct ComparisonSources {
   // File names as given; empty when not given (plan, regions, prediction).
   std::string part, measurements, plan, regions, prediction;
   std::string measurement_units = "mm";  // how the measurement file was read (--units)
+  // Several measurement files merged by id (measurement_merge.hpp), or null
+  // for one file: then `measurements` names it. With several, comparison.json
+  // lists every file, the file each point came from and what was replaced.
+  const MergedMeasurements* merged = nullptr;
 };
 
 std::string comparison_to_json_text(const Comparison& comparison, const MeasurementSet& set,

@@ -203,6 +203,30 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   if (root.string("units") != "mm") throw InputError(root.path("units") + ": comparisons are written in mm");
   d.sources.part = root.string("part");
   d.sources.measurements = root.string("measurements");
+  // Written since several measurement files can be merged; absent before.
+  if (root.has("measurement_files")) {
+    const json& files = root.array("measurement_files");
+    for (std::size_t k = 0; k < files.size(); ++k) {
+      const Node f(files[k], jf::child(root.path("measurement_files"), k));
+      d.sources.measurement_files.push_back(
+          {f.string("path"), f.count("points"), f.has("sha256") ? f.string("sha256") : std::string()});
+    }
+  }
+  const std::size_t file_count = d.sources.measurement_files.size();
+  auto file_index = [&](const Node& n, const std::string& key) {
+    const std::size_t f = n.count(key);
+    if (f >= file_count)
+      throw InputError(n.path(key) + ": file " + std::to_string(f) + " but measurement_files lists " +
+                       std::to_string(file_count));
+    return f;
+  };
+  if (root.has("replaced")) {
+    const json& replaced = root.array("replaced");
+    for (std::size_t k = 0; k < replaced.size(); ++k) {
+      const Node r(replaced[k], jf::child(root.path("replaced"), k));
+      d.sources.replaced.push_back({r.string("id"), file_index(r, "file"), file_index(r, "by_file"), r.vector3("was")});
+    }
+  }
   d.sources.plan = root.optional_string("plan");
   d.sources.regions = root.optional_string("regions_file");
   d.sources.prediction = root.optional_string("prediction_file");
@@ -227,7 +251,9 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   d.points.reserve(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::string where = jf::child(root.path("points"), k);
-    d.points.push_back(read_point(Node(points[k], where)));
+    const Node point(points[k], where);
+    d.points.push_back(read_point(point));
+    if (point.has("file")) d.points.back().file = file_index(point, "file");
     if (!d.points_by_id.emplace(d.points.back().id, k).second)
       throw InputError(where + ".id: duplicate id " + quote_field(d.points.back().id));
   }

@@ -15,6 +15,7 @@ Comparison compare_stage(const Part& part, const MeasurementSet& set, const Insp
   Comparison c = compare_measurements(finder, set, plan, options);
   if (regions) {
     assign_regions(c, *regions);
+    if (plan) c.region_minimum = region_minimums(*plan);
     summarize(c);
   }
   if (prediction) verify_prediction(c, part, set.probe_radius, *prediction, options);

@@ -5,7 +5,9 @@
 // run the pipeline again for each).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -241,16 +243,31 @@ TEST_CASE("furrow run: planned without the prediction, the predicted gouge site 
   const json& site = only_zmap_site(report);
   CHECK(site["status"] == "NOT MEASURED");
   CHECK(report["verdict"]["result"] == "INCONCLUSIVE");
-  std::size_t unmeasured = 0;  // the site; the simulation's two blunders are reasons too
+  // The site; the simulation's two blunders are reasons too, and so is every
+  // region they left with fewer evaluated points than min(planned there, 5)
+  // (counted here from plan.json and comparison.json).
+  std::map<int, int> planned, evaluated;
+  const json plan = read_json(dir + "/out/plan/plan.json"), comparison = read_json(dir + "/out/comparison.json");
+  for (const json& p : plan["points"]) ++planned[p["region"].get<int>()];
+  for (const json& p : comparison["points"])
+    if (p["evaluated"].get<bool>() && p.contains("region")) ++evaluated[p["region"].get<int>()];
+  std::set<std::string> short_regions, named_regions;
+  for (const auto& [region, n] : planned)
+    if (evaluated[region] < std::min(n, 5)) short_regions.insert("region " + std::to_string(region));
+  std::size_t unmeasured = 0;
   for (const json& reason : report["verdict"]["inconclusive"]) {
     if (reason["kind"] == "gouge_not_measured") {
       ++unmeasured;
       CHECK(reason["subject"] == site["id"]);
+    } else if (reason["kind"] == "region_below_minimum") {
+      named_regions.insert(reason["subject"].get<std::string>());
     } else {
       CHECK(reason["kind"] == "suspected_blunder");
     }
   }
   CHECK(unmeasured == 1);
+  CHECK_FALSE(short_regions.empty());  // the case this check is about happens here
+  CHECK(named_regions == short_regions);
   CHECK(report["verdict"]["out_of_tolerance"] == 0);
   CHECK(site["points"].empty());
   CHECK(report["verdict"]["gouge_sites"]["not_measured"] == 1);

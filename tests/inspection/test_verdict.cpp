@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <utility>
 
 #include "base/json_fields.hpp"
@@ -126,4 +127,53 @@ TEST_CASE("verdict: identical or collinear points never PASS (weakly constrained
     CHECK(doc.summary.verdict == Verdict::inconclusive);
     CHECK(doc.summary.alignment != "ok");
   }
+}
+
+TEST_CASE("verdict: a plan region with fewer evaluated points than its minimum is INCONCLUSIVE and named") {
+  const std::string dir = test::scratch_dir("verdict-region-minimum");
+  const Part part = read_part(kMould);
+  InspectionPlan plan = grid_plan(part, 12, 10, {"ruby 2 mm", 2});
+  plan.part = kMould;
+  // Region 1: all points but the last three; region 2: those three, so its
+  // minimum is min(3, 5) = 3 (region_minimums).
+  for (std::size_t k = 0; k < plan.points.size(); ++k) plan.points[k].region = k + 3 < plan.points.size() ? 1 : 2;
+  const std::map<int, std::size_t> minimum = region_minimums(plan);
+  CHECK(minimum == std::map<int, std::size_t>{{1, 5}, {2, 3}});
+  write_plan(plan, dir + "/plan.json");
+  REQUIRE(test::run_furrow({"simulate-measurement", kMould, "--plan", dir + "/plan.json", "--noise", "0.002",
+                            "--outliers", "0", "--out", dir + "/all.csv"})
+              .status == 0);
+  auto compare = [&](const std::string& name) {
+    const test::CliResult r = test::run_furrow({"compare", kMould, "--measurements", dir + "/" + name, "--plan",
+                                                dir + "/plan.json", "--out", dir + "/" + name + ".json"});
+    INFO(r.out << r.err);
+    return r;
+  };
+  // Every point measured: PASS (the rule does not fire on a complete plan).
+  CHECK(compare("all.csv").status == 0);
+  // The last planned point (region 2) missing from the file: 2 of 3.
+  const std::string all = test::slurp(dir + "/all.csv");
+  const std::string last_id = plan.points.back().id;
+  const std::size_t at = all.find("\n" + last_id + ",");
+  REQUIRE(at != std::string::npos);
+  const std::size_t end = all.find('\n', at + 1);
+  test::write_text(dir + "/short.csv", all.substr(0, at + 1) + (end == std::string::npos ? "" : all.substr(end + 1)));
+  const test::CliResult r = compare("short.csv");
+  CHECK(r.status == 4);
+  CHECK(r.out.find("region 2 has 2 evaluated points, fewer than the plan's minimum of 3") != std::string::npos);
+  const ComparisonDocument doc = read_comparison(dir + "/short.csv.json");
+  REQUIRE(doc.summary.inconclusive.size() == 1);
+  CHECK(doc.summary.inconclusive[0].kind == "region_below_minimum");
+  CHECK(doc.summary.inconclusive[0].subject == "region 2");
+  CHECK(doc.summary.evaluated == plan.points.size() - 1);
+
+  // furrow remeasure plans exactly the region's point that was not measured.
+  const test::CliResult rm = test::run_furrow({"remeasure", dir + "/short.csv.json", "--out", dir + "/again"});
+  INFO(rm.out << rm.err);
+  REQUIRE(rm.status == 0);
+  const InspectionPlan again = read_plan(dir + "/again/plan.json");
+  REQUIRE(again.points.size() == 1);
+  CHECK(again.points[0].id == last_id);
+  CHECK(again.points[0].xyz == plan.points.back().xyz);
+  CHECK(again.points[0].region == std::optional<int>(2));
 }
