@@ -9,6 +9,7 @@
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "inspection/comparison_file.hpp"
+#include "io/cmm/measurement_csv.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "io/tool_file.hpp"
