@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <numeric>
+#include <cmath>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -114,8 +114,11 @@ struct Numbers {
 // values[first..] as numbers (count of them already checked).
 Numbers numbers(const std::vector<std::string_view>& values, std::size_t first, const std::string& name, int line) {
   Numbers n{};
-  for (std::size_t c = first; c < values.size(); ++c)
-    n.v[c - first] = mf::number(values[c], name, line, "value " + std::to_string(c - first + 1));
+  for (std::size_t c = first; c < values.size(); ++c) {
+    double& v = n.v[c - first];
+    if (!mf::try_number(values[c], v) || !std::isfinite(v))  // the message only when needed
+      v = mf::number(values[c], name, line, "value " + std::to_string(c - first + 1));
+  }
   return n;
 }
 
@@ -211,6 +214,7 @@ void parse_dmis_results(std::string_view text, const std::string& name, Measurem
   std::vector<Nominal> nominals;
   std::vector<std::string_view> values;
   set.points.reserve(lines_starting(text, "FA("));
+  nominals.reserve(lines_starting(text, "F("));
   for_each_statement(text, [&](int line, std::string_view raw) {
     compact(raw, buffer);
     const std::string_view st = buffer;
@@ -248,35 +252,26 @@ void parse_dmis_results(std::string_view text, const std::string& name, Measurem
     p.datum = datum;
     mf::add_point(set, std::move(p), name);
   });
-  // Feature labels unique: the earliest repeat in the file is reported.
-  std::vector<std::size_t> order(set.features.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return set.features[a].label < set.features[b].label; });
-  std::size_t twice = order.size(), once = 0;
-  for (std::size_t k = 1; k < order.size(); ++k)
-    if (set.features[order[k]].label == set.features[order[k - 1]].label && order[k] < twice)
-      twice = order[k], once = order[k - 1];
-  if (twice < order.size())
-    mf::fail(name, set.features[twice].line, "duplicate feature " + quote_field(set.features[twice].label) +
-                                                 " (first on line " + std::to_string(set.features[once].line) + ")");
-  // Nominals by label: sorted, a repeat refused, then looked up per point.
-  std::stable_sort(nominals.begin(), nominals.end(), [](const Nominal& a, const Nominal& b) { return a.label < b.label; });
-  const Nominal* repeat = nullptr;
-  const Nominal* first = nullptr;
-  for (std::size_t k = 1; k < nominals.size(); ++k)
-    if (nominals[k].label == nominals[k - 1].label && (k < 2 || nominals[k - 2].label != nominals[k].label) &&
-        (!repeat || nominals[k].line < repeat->line))
-      repeat = &nominals[k], first = &nominals[k - 1];
-  if (repeat)
-    mf::fail(name, repeat->line,
-             "duplicate nominal F(" + quote_field(repeat->label) + ") (first on line " + std::to_string(first->line) + ")");
+  // Labels unique among the features and among the nominals (the earliest
+  // repeat in the file is reported); nominals attached to points by label.
+  const auto feature_label = [&](std::size_t k) -> const std::string& { return set.features[k].label; };
+  if (const auto r = mf::first_repeat(mf::sorted_label_keys(set.features.size(), feature_label), feature_label))
+    mf::fail(name, set.features[r->first].line, "duplicate feature " + quote_field(set.features[r->first].label) +
+                                                    " (first on line " + std::to_string(set.features[r->second].line) + ")");
+  const auto nominal_label = [&](std::size_t k) -> const std::string& { return nominals[k].label; };
+  const mf::LabelKeys keys = mf::sorted_label_keys(nominals.size(), nominal_label);
+  if (const auto r = mf::first_repeat(keys, nominal_label))
+    mf::fail(name, nominals[r->first].line, "duplicate nominal F(" + quote_field(nominals[r->first].label) +
+                                                ") (first on line " + std::to_string(nominals[r->second].line) + ")");
   for (MeasuredPoint& p : set.points) {
-    const auto it = std::lower_bound(nominals.begin(), nominals.end(), p.id,
-                                     [](const Nominal& n, const std::string& id) { return n.label < id; });
-    if (it == nominals.end() || it->label != p.id) continue;
-    p.nominal = it->xyz;
-    p.nominal_ijk = it->ijk;
+    const std::uint64_t h = mf::label_hash(p.id);
+    auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(h, std::uint32_t{0}));
+    for (; it != keys.end() && it->first == h; ++it)
+      if (nominals[it->second].label == p.id) {
+        p.nominal = nominals[it->second].xyz;
+        p.nominal_ijk = nominals[it->second].ijk;
+        break;
+      }
   }
   set.ids_from_file = true;
 }

@@ -1,6 +1,7 @@
 #include "io/cmm/ippdme_response_log.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <unordered_map>
 #include <vector>
@@ -67,7 +68,7 @@ void read_data(std::string_view data, const std::string& name, int line, Measure
     if (key == "X" || key == "Y" || key == "Z") {
       const int a = key[0] - 'X';
       if (seen[a]) mf::fail(name, line, "data: " + key + "() appears twice");
-      xyz[a] = mf::number(args, name, line, key + "()");
+      if (!mf::try_number(args, xyz[a]) || !std::isfinite(xyz[a])) xyz[a] = mf::number(args, name, line, key + "()");
       seen[a] = true;
     } else if (key == "IJK") {
       double v[3];

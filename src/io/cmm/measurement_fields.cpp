@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 #include "base/error.hpp"
@@ -77,25 +76,20 @@ void add_point(MeasurementSet& set, MeasuredPoint&& p, const std::string& name) 
   set.points.push_back(std::move(p));
 }
 
+std::uint64_t label_hash(std::string_view label) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : label) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
 void check_unique_ids(const MeasurementSet& set, const std::string& name) {
   const std::vector<MeasuredPoint>& pts = set.points;
-  std::vector<std::uint32_t> order(pts.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return pts[a].id < pts[b].id; });
-  // In each run of equal ids the first is the first use; the repeat reported
-  // is the earliest second use in the file.
-  std::size_t best_repeat = pts.size(), best_first = 0;
-  for (std::size_t k = 1; k < order.size(); ++k)
-    if (pts[order[k]].id == pts[order[k - 1]].id && (k < 2 || pts[order[k - 2]].id != pts[order[k]].id) &&
-        order[k] < best_repeat) {
-      best_repeat = order[k];
-      best_first = order[k - 1];
-    }
-  if (best_repeat < pts.size())
-    fail(name, pts[best_repeat].line,
-         "duplicate id " + quote_field(pts[best_repeat].id) + " (first on line " +
-             std::to_string(pts[best_first].line) + ")");
+  const auto id = [&](std::size_t k) -> const std::string& { return pts[k].id; };
+  const LabelKeys keys = sorted_label_keys(pts.size(), id);
+  if (const auto repeat = first_repeat(keys, id))
+    fail(name, pts[repeat->first].line,
+         "duplicate id " + quote_field(pts[repeat->first].id) + " (first on line " +
+             std::to_string(pts[repeat->second].line) + ")");
 }
 
 std::string shortest(double v) {

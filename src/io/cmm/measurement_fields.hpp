@@ -6,8 +6,13 @@
 // directions, and the checks every set gets once it is read (coordinate
 // range of docs/formats.md "Limits", unique ids, the point cap).
 #include <Eigen/Core>
+#include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "io/cmm/measurement_file.hpp"
 
@@ -52,9 +57,41 @@ std::size_t count_lines(std::string_view text);
 // The coordinate range of every point (docs/formats.md "Limits") and the
 // point cap, checked as each point is added.
 void add_point(MeasurementSet& set, MeasuredPoint&& p, const std::string& name);
+// Labels by a 64-bit hash (FNV-1a): sorting (hash, index) pairs keeps the
+// comparisons in one contiguous array instead of chasing a million strings.
+std::uint64_t label_hash(std::string_view label);
+using LabelKeys = std::vector<std::pair<std::uint64_t, std::uint32_t>>;
+// (hash, index) of labels 0..n-1, sorted.
+template <class LabelOf>
+LabelKeys sorted_label_keys(std::size_t n, LabelOf&& label_of) {
+  LabelKeys keys(n);
+  for (std::size_t k = 0; k < n; ++k) keys[k] = {label_hash(label_of(k)), static_cast<std::uint32_t>(k)};
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+// The earliest index whose label repeats an earlier one, with that earlier
+// one (its first use); nullopt when all labels differ.
+template <class LabelOf>
+std::optional<std::pair<std::size_t, std::size_t>> first_repeat(const LabelKeys& keys, LabelOf&& label_of) {
+  std::optional<std::pair<std::size_t, std::size_t>> best;
+  for (std::size_t a = 0; a < keys.size();) {
+    std::size_t b = a + 1;
+    while (b < keys.size() && keys[b].first == keys[a].first) ++b;
+    // One hash, indices ascending: a label equal to an earlier one in the run repeats it.
+    for (std::size_t j = a + 1; j < b; ++j)
+      for (std::size_t i = a; i < j; ++i)
+        if (label_of(keys[i].second) == label_of(keys[j].second)) {
+          if (!best || keys[j].second < best->first) best = std::make_pair<std::size_t, std::size_t>(keys[j].second, keys[i].second);
+          break;
+        }
+    a = b;
+  }
+  return best;
+}
+
 // Ids unique over the set: InputError at the first repeated id in file
 // order, naming the line of its first use. Sorting an index instead of a
-// map of strings keeps a million-point file within its memory budget.
+// map of strings keeps a million-point file within its time and memory budget.
 void check_unique_ids(const MeasurementSet& set, const std::string& name);
 
 // Shortest text that reads back to exactly `v` (std::to_chars); throws
