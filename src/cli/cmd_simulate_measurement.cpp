@@ -48,19 +48,19 @@ int run_simulate(Args& args) {
     o.bumps.push_back({{b[0], b[1], b[2]}, b[3], b[4]});
   }
 
-  // The format its extension names, refused before any work when unknown.
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(plan_path, "plan");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
+  outputs.will_write(out);
+  // The format its extension names, refused before any work when unknown
+  // (after the check that the output is no input, which says more).
   MeasurementFormat format = MeasurementFormat::csv;
   try {
     format = measurement_output_format(out);
   } catch (const InputError& e) {
     args.fail(std::string("--out ") + e.what());
   }
-
-  OutputSet outputs;
-  outputs.add_input(part_path, "part");
-  outputs.add_input(plan_path, "plan");
-  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
-  outputs.will_write(out);
   const Part part = read_part(part_path);
   const InspectionPlan plan = read_plan(plan_path);
   check_plan_against_part(plan, part, plan_path);

@@ -173,8 +173,9 @@ TEST_CASE("bad plans, options and outputs: one error, exit 2, nothing written") 
   refused({"compare", kMould, "--plan", plan, "--out", out}, "--measurements");
   refused({"simulate-measurement", kMould, "--plan", plan, "--misalign", "1,2,3", "--out", out},
           "--misalign expects 6 comma-separated numbers");
-  refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", out},
+  refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", dir + "/refused.csv"},
           "31 blunders but the plan has 30 points");
+  CHECK_FALSE(fs::exists(dir + "/refused.csv"));
   // A name whose format has no writer is refused before anything is written.
   refused({"simulate-measurement", kMould, "--plan", plan, "--out", dir + "/m.xyz"},
           "\".xyz\" is none of them");
