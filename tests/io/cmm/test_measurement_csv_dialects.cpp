@@ -70,7 +70,7 @@ TEST_CASE("CSV dialects: comma, semicolon with decimal comma, tab, blanks give t
                            "P3\t100.75 0.5 -0.375 0 -1 0\n"));
 }
 
-TEST_CASE("CSV dialects: RFC 4180 quotes, Excel's byte-order mark and CR LF") {
+TEST_CASE("CSV dialects: RFC 4180 quotes hold the delimiter and doubled quotes") {
   // Quoted fields may hold the delimiter (here the decimal comma) and doubled quotes.
   check_reference(read_csv("\"Point ID\";\"X\";\"Y\";\"Z\";\"I\";\"J\";\"K\"\n"
                            "\"P1\";\"12,5\";\"-40,25\";\"3,125\";0;0;1\n"
