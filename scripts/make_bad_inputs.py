@@ -297,7 +297,10 @@ def measurement_cases():
         "empty_id.csv": "id,x,y,z\n,1,2,3\n",
         "zero_direction.csv": "id,x,y,z,i,j,k\nP1,1,2,3,0,0,0\n",
         "some_directions.csv": "id,x,y,z,i\nP1,1,2,3,0\n",
-        "decimal_comma_excel.csv": BOM + b"id;x;y;z\r\nP1;1,5;2;3\r\n",
+        "decimal_comma_twice.csv": BOM + b"id;x;y;z\r\nP1;1,5,2;2;3\r\n",
+        "table_without_actual_z.csv": "Name;Nominal X;Nominal Y;Nominal Z;Actual X;Actual Y\nP1;1;2;3;1,1;2,1\n",
+        "unclosed_quote.csv": 'id,x,y,z\n"P1,1,2,3\n',
+        "text_after_quote.csv": 'id;x;y;z\n"P1"x;1;2;3\n',
         "header_only_crlf.csv": "id,x,y,z\r\n",
         "garbage.csv": GARBAGE,
         "utf16.csv": "id,x,y,z\nP1,1,2,3\n".encode("utf-16"),
@@ -336,9 +339,25 @@ def measurement_cases():
         "empty_label_crlf.dmi": BOM + b"FA()=FEAT/POINT,CART,1,2,3,0,0,1\r\n",
         "duplicate_nominal.dmi": "F(P1)=FEAT/POINT,CART,1,2,3,0,0,1\nF(P1)=FEAT/POINT,CART,1,2,3,0,0,1\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\n",
         "garbage.dmi": GARBAGE,
+        "circle_without_inner.dmo": "FA(C1)=FEAT/CIRCLE,CART,0,0,0,0,0,1,10\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\n",
+        "cylinder_too_few.out": "FA(C1)=FEAT/CYLNDR,INNER,CART,0,0,0,0,0,1\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\n",
+        "plane_zero_normal.dms": "FA(S1)=FEAT/PLANE,CART,0,0,0,0,0,0\nFA(P1)=FEAT/POINT,CART,1,2,3,0,0,1\n",
     }
     for name, data in dmis.items():
         put("measurements_dmis", name, data)
+    ippdme = {
+        "empty.log": "",
+        "error_no_point.res": '00010 &\r\n00010 ! Error(2, 0500, "PtMeas", "Probe hit not detected")\r\n00010 %\r\n',
+        "reused_tag.log": "00010 &\n00010 &\n",
+        "missing_z.log": "00010 # X(1), Y(2)\n",
+        "nan.log": "00010 # X(1), Y(nan), Z(3)\n",
+        "not_a_response.ipp": "hello\n",
+        "huge.log": "00010 # X(1e400), Y(2), Z(3)\n",
+        "zero_direction.log": "00010 # X(1), Y(2), Z(3), IJK(0, 0, 0)\n",
+        "garbage.log": GARBAGE,
+    }
+    for name, data in ippdme.items():
+        put("measurements_ippdme", name, data)
 
 
 # ------------------------------------------------------------------ job

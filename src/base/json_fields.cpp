@@ -73,6 +73,15 @@ std::string read_text(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open the file (missing or unreadable)");
+  // A regular file is read into one string of its size: a measurement file
+  // of a million points must not be held twice (docs/formats.md "Measurements").
+  const auto size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  if (!ec && size > 0) {
+    std::string text(size, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    if (in.bad() || static_cast<std::uintmax_t>(in.gcount()) != size) fail(path, "reading the file failed");
+    return text;
+  }
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) fail(path, "reading the file failed");

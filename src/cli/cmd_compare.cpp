@@ -11,6 +11,7 @@
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
 #include "base/output_set.hpp"
+#include "io/cmm/csv_dialect.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
@@ -35,7 +36,12 @@ int run_compare(Args& args) {
   const std::string loss = args.option_or("loss", "cauchy");
   const auto points = args.option("points");
   const auto probe_diameter = args.number("probe-diameter");
-  const std::string units = args.option_or("units", "mm");
+  const auto units_option = args.option("units");
+  const auto dialect_path = args.option("dialect");
+  const auto delimiter = args.option("delimiter");
+  const bool decimal_comma = args.flag("decimal-comma");
+  const auto columns = args.option("columns");
+  const auto ipp_program = args.option("ipp-program");
   const double sigmas = args.positive_or("outlier-sigma", 5);
   const bool keep_all = args.flag("no-outlier-rejection");
   CompareOptions options;
@@ -66,9 +72,25 @@ int run_compare(Args& args) {
       std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
     };
 
+  // The CSV dialect, checked before any file is read: a saved one, with the
+  // options given on top (docs/formats.md "Measurements").
+  MeasurementReadOptions read;
+  CsvDialect dialect = dialect_path ? read_csv_dialect(*dialect_path) : CsvDialect{};
+  if (units_option && dialect.units && *dialect.units != *units_option)
+    args.fail("--units " + *units_option + " contradicts the units \"" + *dialect.units + "\" of " + *dialect_path);
+  read.dialect = merge_csv_dialect(
+      dialect, delimiter ? std::optional<char>(parse_csv_delimiter(*delimiter, "--delimiter")) : std::nullopt,
+      decimal_comma ? std::optional<bool>(true) : std::nullopt,
+      columns ? parse_csv_columns(*columns, "--columns") : std::map<std::string, std::string>{}, "--decimal-comma");
+  read.units = units_option.value_or(dialect.units.value_or("mm"));
+  units_to_mm(read.units, "--units");
+  if (ipp_program) read.ippdme_program = *ipp_program;
+
   OutputSet outputs;
   outputs.add_input(part_path, "part");
   for (const std::string& m : measurement_files) outputs.add_input(m, "measurements");
+  if (dialect_path) outputs.add_input(*dialect_path, "dialect");
+  if (ipp_program) outputs.add_input(*ipp_program, "I++ DME program");
   if (plan_path) outputs.add_input(*plan_path, "plan");
   if (regions_path) outputs.add_input(*regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
@@ -90,8 +112,6 @@ int run_compare(Args& args) {
     prediction = read_prediction(*prediction_path);
     check_prediction_against_part(*prediction, part, *prediction_path, part_path);
   }
-  MeasurementReadOptions read;
-  read.units = units;
   if (points) read.kind = parse_probe_point_kind(*points, "--points");
   read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
   std::vector<MeasurementSet> sets;
@@ -113,7 +133,7 @@ int run_compare(Args& args) {
   sources.plan = plan_path.value_or("");
   sources.regions = regions_path.value_or("");
   sources.prediction = prediction_path.value_or("");
-  sources.measurement_units = units;
+  sources.measurement_units = read.units;
   sources.merged = &merged;
   outputs.file(out, comparison_to_json_text(c, set, part, options, sources));
   outputs.publish();
@@ -159,7 +179,8 @@ const Command kCompareCommand = {
     "compare", "register CMM points to the part, deviations against a profile tolerance",
     "usage: furrow compare PART --measurements FILE --out comparison.json [options]\n"
     "\n"
-    "Registers measured points (CSV, XYZ text or DMIS results; docs/formats.md)\n"
+    "Registers measured points (CSV, XYZ text, DMIS results or an I++ DME\n"
+    "response log; docs/formats.md \"Measurements\")\n"
     "to PART by a robust best fit with probe compensation, computes each point's\n"
     "signed deviation along the nominal normal (+ material left, - removed) and\n"
     "checks it against a surface profile tolerance. Writes comparison.json. Exit\n"
@@ -170,7 +191,9 @@ const Command kCompareCommand = {
     "the points do not determine the alignment: the reasons say what to\n"
     "measure again, furrow remeasure plans it; docs/verification.md \"Verdict\").\n"
     "\n"
-    "  --measurements FILE  measured points (.csv, .xyz/.txt, .dmi/.dmis/.dmo/.res);\n"
+    "  --measurements FILE  measured points: .csv, .xyz/.txt, DMIS output\n"
+    "                       (.dmo/.dms/.out/.dmi/.dmis/.res), I++ DME response log\n"
+    "                       (.log/.ipp, or .res starting with a response line);\n"
     "                       repeat it for a re-measure: files are merged by id in\n"
     "                       the order given, a later point replaces an earlier one\n"
     "                       with the same id (each file must carry ids)\n"
@@ -186,9 +209,21 @@ const Command kCompareCommand = {
     "                       the fit starts from the CMM frame as is\n"
     "  --loss L             cauchy (default), huber or none (first fit; the final\n"
     "                       fit after outlier rejection is least squares)\n"
-    "  --points K           centre (default for CSV/XYZ) or contact (default DMIS)\n"
+    "  --points K           centre (default for CSV/XYZ) or contact (default for\n"
+    "                       DMIS and I++ DME)\n"
     "  --probe-diameter D   ball diameter in mm (default: the plan's probe)\n"
     "  --units U            mm (default) or inch, for CSV and XYZ coordinates\n"
+    "  --delimiter D        CSV field delimiter: , ; tab or whitespace (default:\n"
+    "                       from the header line)\n"
+    "  --decimal-comma      CSV numbers are written 1,5 (default: accepted when\n"
+    "                       the delimiter is not ,)\n"
+    "  --columns MAP        CSV header names of the fields, e.g.\n"
+    "                       \"id=Name,x=X act,y=Y act,z=Z act\" (id x y z i j k and\n"
+    "                       nominal nx ny nz; default: recognised by name)\n"
+    "  --dialect FILE       a saved CSV dialect (JSON: delimiter, decimal_comma,\n"
+    "                       columns, units); the options above override it\n"
+    "  --ipp-program FILE   the .prg an I++ DME response log answers: its PtMeas\n"
+    "                       targets become the points' nominals\n"
     "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
     "  --no-outlier-rejection  keep every point in the fit\n"
     "  --out FILE           comparison.json to write\n"

@@ -6,6 +6,7 @@
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/prediction_comparison.hpp"
 #include "base/output_set.hpp"
+#include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
@@ -52,6 +53,14 @@ int run_simulate(Args& args) {
   outputs.add_input(plan_path, "plan");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out);
+  // The format its extension names, refused before any work when unknown
+  // (after the check that the output is no input, which says more).
+  MeasurementFormat format = MeasurementFormat::csv;
+  try {
+    format = measurement_output_format(out);
+  } catch (const InputError& e) {
+    args.fail(std::string("--out ") + e.what());
+  }
   const Part part = read_part(part_path);
   const InspectionPlan plan = read_plan(plan_path);
   check_plan_against_part(plan, part, plan_path);
@@ -62,11 +71,18 @@ int run_simulate(Args& args) {
     machined = predicted_surface_offsets(plan, prediction);
     o.surface_offset = machined.lookup(plan);
   }
-  const SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
-  // The file is CSV whatever it is called: a .dmo or .txt name would make
-  // the next reader take it for DMIS or XYZ text.
-  if (lower_extension(out) != ".csv") args.fail("--out " + out + ": the measurements are written as CSV, name it .csv");
-  outputs.file(out, measurements_to_csv(sim.set));
+  SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
+  // DMIS results carry the nominal F(label) of each point, as a CMM running
+  // the plan's DMIS program writes them; a scan (--anonymous) has none.
+  if (!anonymous) {
+    const auto index = plan.index_by_id();
+    for (std::size_t k = 0; k < sim.set.points.size(); ++k) {
+      const PlannedPoint& p = plan.points[index.at(sim.plan_ids[k])];
+      sim.set.points[k].nominal = p.xyz;
+      sim.set.points[k].nominal_ijk = p.ijk;
+    }
+  }
+  outputs.file(out, measurements_text(sim.set, format));
   outputs.publish();
   std::printf("%zu points (%s, probe %g mm), %d blunders, noise %g mm, seed %u -> %s\n",
               sim.set.points.size(), to_string(sim.set.kind), plan.probe.diameter, o.blunders,
@@ -87,7 +103,7 @@ int run_simulate(Args& args) {
 
 const Command kSimulateMeasurementCommand = {
     "simulate-measurement", "realistic CMM points from a plan (a test and demo aid)",
-    "usage: furrow simulate-measurement PART --plan plan.json --out FILE.csv [options]\n"
+    "usage: furrow simulate-measurement PART --plan plan.json --out FILE [options]\n"
     "\n"
     "Writes what a CMM would report for the plan's points on PART: probe-ball\n"
     "centres (or contact points) with Gaussian probing noise along the normal,\n"
@@ -110,7 +126,10 @@ const Command kSimulateMeasurementCommand = {
     "  --bump X,Y,Z,R,H     add a smooth bump (H > 0, material left) or dent\n"
     "                       (H < 0) of height H mm, cosine profile within R mm of\n"
     "                       the part point (X,Y,Z); repeatable\n"
-    "  --out FILE.csv       measurements CSV to write (the name must end in .csv)\n",
+    "  --out FILE           measurements to write, in the format the extension names:\n"
+    "                       .csv (CSV), .dmo/.dms/.out (DMIS output: F() nominals\n"
+    "                       and FA() actuals), .res/.log (I++ DME response log);\n"
+    "                       numbers read back exactly (docs/formats.md)\n",
     run_simulate};
 
 }  // namespace furrow::cli

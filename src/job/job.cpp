@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
+#include "io/part_file.hpp"
 #include "stage/compare_stage.hpp"
 
 namespace furrow {
@@ -258,6 +259,42 @@ void read_simulation(Section s, Job& job) {
   job.simulate = sim;
 }
 
+// The CSV dialect and the I++ DME program of a measurement file, as
+// `furrow compare` takes them (docs/formats.md "Measurements"), checked
+// here, before any stage runs.
+void read_measurement_dialect(Section& m, Job& job, const std::string& folder) {
+  MeasurementReadOptions& r = job.measurement_read;
+  CsvDialect base;
+  if (m.find("dialect")) {
+    job.measurement_dialect_file = path_member(m, "dialect", folder);
+    base = read_csv_dialect(job.measurement_dialect_file);
+    if (base.units && m.find("units") && *base.units != r.units)
+      throw InputError(m.at("units") + ": \"" + r.units + "\" contradicts the units \"" + *base.units + "\" of " +
+                       job.measurement_dialect_file);
+    if (base.units) r.units = *base.units;
+  }
+  std::optional<char> delimiter;
+  if (const auto d = m.string("delimiter")) delimiter = parse_csv_delimiter(*d, m.at("delimiter"));
+  std::optional<bool> decimal_comma;
+  if (m.find("decimal_comma")) {
+    bool value = false;
+    m.boolean("decimal_comma", value);
+    decimal_comma = value;
+  }
+  std::map<std::string, std::string> columns;
+  if (auto c = m.section("columns")) {
+    for (const char* field : {"id", "x", "y", "z", "i", "j", "k", "nx", "ny", "nz"})
+      if (const auto header = c->string(field)) {
+        if (trim(*header).empty()) throw InputError(c->at(field) + ": an empty header name");
+        columns[field] = trim(*header);
+      }
+    c->finish();
+  }
+  r.dialect = merge_csv_dialect(base, delimiter, decimal_comma, columns, m.where());
+  units_to_mm(r.units, m.at("units"));
+  if (m.find("ipp_program")) r.ippdme_program = path_member(m, "ipp_program", folder);
+}
+
 void read_measurements(Section& root, Job& job, const std::string& folder) {
   const json* value = root.find("measurements");
   if (!value) return;
@@ -274,6 +311,7 @@ void read_measurements(Section& root, Job& job, const std::string& folder) {
     if (const auto kind = m.string("points")) job.measurement_read.kind = parse_probe_point_kind(*kind, m.at("points"));
     m.positive("probe_diameter", job.measurement_read.probe_diameter);
     if (const auto units = m.string("units")) job.measurement_read.units = *units;
+    read_measurement_dialect(m, job, folder);
   } else {
     throw InputError(where + ": expected a file name, {\"file\": ...} or {\"simulate\": {...}}");
   }

@@ -61,6 +61,7 @@ struct Job {
 
   // Measurements: a file, a simulation, or neither (the job stops after the plan).
   std::optional<std::string> measurements_file;
+  std::string measurement_dialect_file;  // a saved CSV dialect (measurement_read.dialect comes from it); empty: none
   MeasurementReadOptions measurement_read;  // probe diameter 0: the plan's probe
   std::optional<MeasurementSimulationJob> simulate;
 

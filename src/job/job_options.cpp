@@ -93,6 +93,13 @@ std::string job_options_json(const Job& job) {
                          {"points", r.kind ? json(to_string(*r.kind)) : json(nullptr)},
                          {"probe_diameter", r.probe_diameter > 0 ? jf::finite(r.probe_diameter, "probe") : json(nullptr)},
                          {"units", r.units}};
+    // The CSV dialect in force (the saved one merged with the job's members).
+    const CsvDialect& d = r.dialect;
+    j["measurements"]["delimiter"] = d.delimiter ? json(csv_delimiter_name(*d.delimiter)) : json(nullptr);
+    j["measurements"]["decimal_comma"] = d.decimal_comma ? json(*d.decimal_comma) : json(nullptr);
+    j["measurements"]["columns"] = d.columns.empty() ? json(nullptr) : json(d.columns);
+    j["measurements"]["dialect"] = job.measurement_dialect_file.empty() ? json(nullptr) : json(job.measurement_dialect_file);
+    j["measurements"]["ipp_program"] = r.ippdme_program.empty() ? json(nullptr) : json(r.ippdme_program);
   } else {
     j["measurements"] = nullptr;
   }

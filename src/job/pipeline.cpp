@@ -9,6 +9,7 @@
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "inspection/comparison_file.hpp"
+#include "io/cmm/measurement_csv.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "io/tool_file.hpp"
@@ -204,6 +205,10 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   s.inputs.push_back(digest_file("tool", job.tool));
   if (job.toolpath_file) s.inputs.push_back(digest_file("toolpath", *job.toolpath_file));
   if (job.measurements_file) s.inputs.push_back(digest_file("measurements", *job.measurements_file));
+  if (!job.measurement_dialect_file.empty())
+    s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
+  if (!job.measurement_read.ippdme_program.empty())
+    s.inputs.push_back(digest_file("I++ DME program", job.measurement_read.ippdme_program));
   check_inputs_outside(job.output, s.inputs);  // before the work, not after it
   const Part part = read_part(job.part);
   const Cutter cutter(read_tool_file(job.tool));

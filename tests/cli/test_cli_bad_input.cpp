@@ -68,6 +68,7 @@ TEST_CASE("bad input: every file of the corpus is refused with exit 2, one line 
       {"measurements_xyz",
        {"compare", part, "--measurements", "{FILE}", "--probe-diameter", "2", "--out", "{OUT}/comparison.json"}},
       {"measurements_dmis", {"compare", part, "--measurements", "{FILE}", "--out", "{OUT}/comparison.json"}},
+      {"measurements_ippdme", {"compare", part, "--measurements", "{FILE}", "--out", "{OUT}/comparison.json"}},
       {"plan", {"simulate-measurement", part, "--plan", "{FILE}", "--out", "{OUT}/m.csv"}},
       {"regions", {"plan", part, "--regions", "{FILE}", "--points", "12", "--out", "{OUT}/plan"}},
       {"prediction",

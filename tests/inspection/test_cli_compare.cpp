@@ -122,9 +122,9 @@ TEST_CASE("bad measurement files: file:line, exit 2, nothing written") {
   expect_refused(dir, "dup.csv", "id,x,y,z\nA,1,2,3\nA,4,5,6\n",
                  ":3: duplicate id \"A\" (first on line 2)");
   expect_refused(dir, "nan.csv", "id,x,y,z\nA,1,NaN,3\n",
-                 ":2: column y: \"NaN\" is not a finite number");
+                 ":2: column 3 (y): \"NaN\" is not a finite number");
   expect_refused(dir, "cols.csv", "id,x,z\nA,1,3\n", ":1: missing column \"y\" (need x, y, z)");
-  expect_refused(dir, "text.csv", "id,x,y,z\nA,1,two,3\n", ":2: column y: \"two\" is not a number");
+  expect_refused(dir, "text.csv", "id,x,y,z\nA,1,two,3\n", ":2: column 3 (y): \"two\" is not a number");
   expect_refused(dir, "short.csv", "id,x,y,z\nA,1,2\n", ":2: expected 4 fields, got 3");
   expect_refused(dir, "scan.xyz", "1 2 3\n4 5 x\n", ":2: field 3: \"x\" is not a number");
   expect_refused(
@@ -173,11 +173,13 @@ TEST_CASE("bad plans, options and outputs: one error, exit 2, nothing written") 
   refused({"compare", kMould, "--plan", plan, "--out", out}, "--measurements");
   refused({"simulate-measurement", kMould, "--plan", plan, "--misalign", "1,2,3", "--out", out},
           "--misalign expects 6 comma-separated numbers");
-  refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", out},
+  refused({"simulate-measurement", kMould, "--plan", plan, "--outliers", "31", "--out", dir + "/refused.csv"},
           "31 blunders but the plan has 30 points");
-  // CSV in a file named as DMIS results would be read as DMIS next.
-  refused({"simulate-measurement", kMould, "--plan", plan, "--out", dir + "/m.dmo"}, "name it .csv");
-  CHECK_FALSE(fs::exists(dir + "/m.dmo"));
+  CHECK_FALSE(fs::exists(dir + "/refused.csv"));
+  // A name whose format has no writer is refused before anything is written.
+  refused({"simulate-measurement", kMould, "--plan", plan, "--out", dir + "/m.xyz"},
+          "\".xyz\" is none of them");
+  CHECK_FALSE(fs::exists(dir + "/m.xyz"));
 }
 
 TEST_CASE("compare --regions: each point in the region of its foot point, statistics per region") {

@@ -169,8 +169,9 @@ TEST_CASE("verification bad input: exit 2, one line naming the file, nothing wri
            f.clean, "--out", out},
           "none.csv");
   refused({"simulate-measurement", kMould, "--plan", f.plan, "--prediction", f.dir + "/other.json",
-           "--out", out},
+           "--out", f.dir + "/refused.csv"},
           "the prediction was made for another part");
+  CHECK_FALSE(fs::exists(f.dir + "/refused.csv"));
   refused({"simulate-measurement", kMould, "--plan", f.plan, "--bump", "1,2,3,4", "--out", out},
           "--bump expects 5 comma-separated numbers");
   refused({"simulate-measurement", kMould, "--plan", f.plan, "--bump", "1,2,3,0,0.1", "--out", out},

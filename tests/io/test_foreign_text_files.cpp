@@ -52,10 +52,13 @@ TEST_CASE("measurements: Excel's CSV UTF-8 with ';' and CRLF reads like the plai
   // Without the mark the header's first column was "\ufeffid".
   const std::string comma = kBom + crlf("id,x,y,z\nP1,12.5,40.25,-3\n");
   CHECK(parse_measurements(comma, "m.csv", MeasurementFormat::csv, o).points[0].id == "P1");
-  // A decimal comma is refused, naming the file, line and column.
-  const std::string e = error_of(
-      [&] { parse_measurements(kBom + "id;x;y;z\nP1;1,5;2;3\n", "m.csv", MeasurementFormat::csv, o); });
-  CHECK(e.rfind("m.csv:2: column x: \"1,5\"", 0) == 0);
+  // With ';' a decimal comma is read as such; a dialect that says the
+  // numbers use a point refuses it, naming the file, line and column.
+  const std::string semicolon = kBom + "id;x;y;z\nP1;1,5;2;3\n";
+  CHECK(parse_measurements(semicolon, "m.csv", MeasurementFormat::csv, o).points[0].xyz.x() == 1.5);
+  o.dialect.decimal_comma = false;
+  const std::string e = error_of([&] { parse_measurements(semicolon, "m.csv", MeasurementFormat::csv, o); });
+  CHECK(e.rfind("m.csv:2: column 2 (x): \"1,5\"", 0) == 0);
 }
 
 TEST_CASE("measurements: XYZ and DMIS results with a byte-order mark and CRLF") {

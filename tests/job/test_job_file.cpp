@@ -192,3 +192,24 @@ TEST_CASE("the resolved options name every default a stage used") {
   // Deterministic text.
   CHECK(job_options_json(job) == job_options_json(job));
 }
+
+TEST_CASE("measurements: the CSV dialect and the I++ DME program are read and checked up front") {
+  const Job j = parse_job(
+      minimal(R"( "measurements": {"file": "m.csv", "delimiter": "tab", "decimal_comma": true,
+                                    "columns": {"id": "Name", "x": "X act", "y": "Y act", "z": "Z act"},
+                                    "ipp_program": "run.prg"},)"),
+      "job.json", "jobs");
+  const CsvDialect& d = j.measurement_read.dialect;
+  CHECK(d.delimiter == '\t');
+  CHECK(d.decimal_comma == true);
+  CHECK(d.columns.at("x") == "X act");
+  CHECK(d.columns.size() == 4);
+  CHECK(j.measurement_read.ippdme_program == "jobs/run.prg");
+  CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "delimiter": "|"},)")) ==
+        "job.json: measurements.delimiter: \"|\" is not a delimiter (expected \",\", \";\", \"tab\" or \"whitespace\")");
+  CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "delimiter": ",", "decimal_comma": true},)")) ==
+        "job.json: measurements: a decimal comma needs a delimiter other than ','");
+  CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "columns": {"q": "Q"}},)"))
+            .find("job.json: measurements.columns.q: unknown member") == 0);
+  CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "units": "cubit"},)")).find("units") != std::string::npos);
+}

@@ -10,7 +10,7 @@
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
-#include "io/cmm/measurement_file.hpp"
+#include "io/cmm/dmis_results.hpp"
 
 namespace furrow {
 

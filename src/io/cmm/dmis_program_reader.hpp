@@ -11,7 +11,7 @@
 // defined just before it and holds exactly one PTMEAS equal to the nominal;
 // every feature is measured and output exactly once; labels are unique.
 // Point feature statements are parsed by the measurement reader's DMIS
-// functions (measurement_file.hpp), so the results file a CMM writes for the
+// functions (dmis_results.hpp), so the results file a CMM writes for the
 // program reads back with the same labels and nominals.
 //
 // Statements longer than kMaxDmisProgramStatement characters are refused

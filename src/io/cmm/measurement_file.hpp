@@ -1,35 +1,40 @@
 #pragma once
 // Measured points from a CMM (docs/architecture.md "Files", docs/formats.md
-// "Measurements"): CSV with a header, whitespace-separated XYZ text, or the
-// DMIS results a CMM writes for one of our programs.
+// "Measurements"): the types every measurement reader fills, and the choice
+// of reader by format, extension or content. One reader per format:
 //
-//   CSV   header naming the columns id, x, y, z, i, j, k (any order, any case;
-//         id optional; i, j, k together or not at all); one point per line;
-//         '#' starts a comment line.
-//   XYZ   (.xyz, .txt) "x y z" or "x y z i j k" per line, the same count on
-//         every line; ids are the point's 1-based position.
-//   DMIS  (.dmi, .dmis, .dmo, .res) F(label)=FEAT/POINT,CART,x,y,z,i,j,k
-//         nominals and FA(label)=FEAT/POINT,CART,... actuals; UNITS/MM|INCH
-//         is honoured; "$" continues a statement, "$$" starts a comment;
-//         other statements and other feature types are skipped.
+//   CSV   measurement_csv.hpp: a header naming the columns, any delimiter,
+//         decimal mark and header names (csv_dialect.hpp), nominal/actual
+//         point tables.
+//   XYZ   measurement_xyz.hpp: (.xyz, .txt) "x y z [i j k]" per line.
+//   DMIS  dmis_results.hpp: (.dmo, .dms, .out, .dmi, .dmis, .res) FA()
+//         actuals of points, planes, circles and cylinders.
+//   I++   ippdme_response_log.hpp: (.log, .ipp, and .res whose first line
+//         with content is a server response) the server's answers to a
+//         Furrow I++ DME program.
 //
 // Coordinates are converted to millimetres at this boundary (CSV and XYZ by
-// MeasurementReadOptions::units, DMIS by its own UNITS statement). Points are
-// in the CMM's frame; nothing here knows the part.
+// MeasurementReadOptions::units or the dialect's units, DMIS by its own UNITS
+// statement; I++ DME servers report millimetres). Points are in the CMM's
+// frame; nothing here knows the part.
 //
 // Probe: a CMM reports either the probe ball's centre (raw, the usual case
 // for scanning and for our simulated data) or the contact point it
-// compensated itself (the usual case for DMIS results). The kind and the ball
-// diameter travel with the set; registration compensates centres along the
-// nominal normal inside its loop (docs/architecture.md "Inspection").
+// compensated itself (the usual case for DMIS results and I++ DME PtMeas).
+// The kind and the ball diameter travel with the set; registration
+// compensates centres along the nominal normal inside its loop
+// (docs/architecture.md "Inspection").
 //
 // Errors: InputError "FILE:LINE: what", one per file: a missing or unknown
-// column, a wrong field count, a non-numeric or non-finite field, a zero
-// direction vector, a duplicate id (naming the first line too), no points.
+// column, a wrong field count, a non-numeric or non-finite field (naming its
+// column), a zero direction vector, a duplicate id (naming the first line
+// too), no points.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "io/cmm/csv_dialect.hpp"
 
 namespace furrow {
 
@@ -43,25 +48,52 @@ struct MeasuredPoint {
   Eigen::Vector3d xyz = Eigen::Vector3d::Zero();  // [mm], CMM frame
   // Unit vector the CMM reported with the point (i, j, k), if any.
   std::optional<Eigen::Vector3d> ijk;
-  // DMIS only: the nominal F(label) of the same label, part frame [mm].
+  // The nominal the file gives with the point (DMIS F(label), the nominal
+  // columns of a CSV point table, the PtMeas target of an I++ DME program),
+  // part frame [mm].
   std::optional<Eigen::Vector3d> nominal;
   std::optional<Eigen::Vector3d> nominal_ijk;
+  // DMIS: label of the datum set in force (the last D(x)=DATSET/... before
+  // the actual), as written; empty when none. Recorded, not applied.
+  std::string datum;
   int line = 0;  // source line, for messages
+};
+
+// A measured datum feature (DMIS FA() of a plane, circle or cylinder), as
+// the CMM reported it: position and direction in the CMM's frame [mm],
+// diameter (and cylinder length when given) [mm]; 0 where the type has none.
+enum class MeasuredFeatureType { plane, circle, cylinder };
+const char* to_string(MeasuredFeatureType type);
+struct MeasuredFeature {
+  std::string label;
+  MeasuredFeatureType type = MeasuredFeatureType::plane;
+  bool inner = false;  // circle, cylinder: INNER (a hole) or OUTER (a boss)
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // unit
+  double diameter = 0;
+  double length = 0;
+  std::string datum;  // as MeasuredPoint::datum
+  int line = 0;
 };
 
 struct MeasurementSet {
   std::string source;  // file name, for messages and reports
   std::vector<MeasuredPoint> points;
+  std::vector<MeasuredFeature> features;  // DMIS datum features; points stay in `points`
   ProbePointKind kind = ProbePointKind::probe_centre;
   double probe_radius = 0;     // [mm]; 0 for contact points
   bool ids_from_file = false;  // false when ids were generated (XYZ, CSV without id)
 };
 
-enum class MeasurementFormat { automatic, csv, xyz, dmis };
+enum class MeasurementFormat { automatic, csv, xyz, dmis, ippdme_log };
 
 struct MeasurementReadOptions {
   MeasurementFormat format = MeasurementFormat::automatic;  // by extension
   std::string units = "mm";  // of CSV and XYZ coordinates ("mm" or "inch")
+  CsvDialect dialect;        // CSV only; its units, when set, replace `units`
+  // I++ DME response logs: the program (.prg) the server ran, to match the
+  // responses to its PtMeas commands (ippdme_response_log.hpp); empty: none.
+  std::string ippdme_program;
   // Centres or contact points; unset = centres for CSV/XYZ, contact points
   // for DMIS (what CMMs write there).
   std::optional<ProbePointKind> kind;
@@ -73,38 +105,19 @@ MeasurementSet read_measurements(const std::string& path, const MeasurementReadO
 // `name` stands for the source in messages; `format` must not be automatic.
 MeasurementSet parse_measurements(const std::string& text, const std::string& name,
                                   MeasurementFormat format, const MeasurementReadOptions& options);
-MeasurementFormat measurement_format_from_path(const std::string& path);
+// By extension, in any case: .csv, .xyz/.txt, DMIS .dmo/.dms/.out/.dmi/.dmis,
+// I++ DME .log/.ipp; .res is DMIS unless `text` (the file's content, when
+// known) is an I++ DME response log (is_ippdme_response_log). InputError for
+// another extension.
+MeasurementFormat measurement_format_from_path(const std::string& path, const std::string& text = "");
 
-// CSV writer (id,x,y,z[,i,j,k], shortest exact numbers, a comment line with
-// the probe kind and diameter); reading it back reproduces every coordinate.
-std::string measurements_to_csv(const MeasurementSet& set);
-void write_measurements_csv(const MeasurementSet& set, const std::string& path);
-
-// DMIS text as statements, shared with the reader of Furrow's own DMIS
-// programs (dmis_program_reader.hpp): "$$" comments removed, a line ending
-// in "$" joined with the next, blank lines dropped; `line` is where the
-// statement starts (1-based).
-struct DmisStatement {
-  int line = 0;
-  std::string text;
-};
-std::vector<DmisStatement> dmis_statements(const std::string& text);
-
-// UNITS/MM or UNITS/INCH: the factor to millimetres; nullopt for another
-// statement; InputError "name:line: ..." for another unit.
-std::optional<double> dmis_units_scale(const DmisStatement& statement, const std::string& name);
-
-// F(label)=FEAT/POINT,CART,x,y,z,i,j,k (a nominal) or FA(label)=... (an
-// actual), coordinates times `scale`, ijk normalised; nullopt for any other
-// statement (other feature types included); InputError "name:line: ..." for
-// a malformed point (not CART, wrong count, bad number, zero direction).
-struct DmisPointFeature {
-  std::string label;  // as written
-  bool actual = false;
-  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
-  Eigen::Vector3d ijk = Eigen::Vector3d::UnitZ();
-};
-std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& statement, const std::string& name,
-                                                         double scale);
+// The format a measurement file is written in by `furrow simulate-measurement
+// --out` (.csv, DMIS .dmo/.dms/.out, I++ DME .res/.log); InputError naming
+// the path for any other extension, before anything is written.
+MeasurementFormat measurement_output_format(const std::string& path);
+// The text of `set` in `format` (measurement_output_format), numbers in
+// their shortest exact form so that reading the file back gives the same
+// coordinates bit for bit.
+std::string measurements_text(const MeasurementSet& set, MeasurementFormat format);
 
 }  // namespace furrow

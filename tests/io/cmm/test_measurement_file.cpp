@@ -3,6 +3,7 @@
 #include <random>
 
 #include "base/error.hpp"
+#include "io/cmm/measurement_csv.hpp"
 #include "io/cmm/measurement_file.hpp"
 #include "support/run_cli.hpp"
 
@@ -118,14 +119,14 @@ TEST_CASE("bad CSV files: one error naming file and line") {
   CHECK(error_of("id,x,y,z\nA,1,2,3\nB,1,2,3\nA,4,5,6\n", csv) ==
         "m.csv:4: duplicate id \"A\" (first on line 2)");
   CHECK(error_of("id,x,y,z\nA,1,nan,3\n", csv) ==
-        "m.csv:2: column y: \"nan\" is not a finite number");
+        "m.csv:2: column 3 (y): \"nan\" is not a finite number");
   CHECK(error_of("id,x,y,z\nA,1,2,inf\n", csv) ==
-        "m.csv:2: column z: \"inf\" is not a finite number");
-  CHECK(error_of("id,x,y,z\nA,1,2mm,3\n", csv) == "m.csv:2: column y: \"2mm\" is not a number");
-  CHECK(error_of("id,x,y,z\nA,1,,3\n", csv) == "m.csv:2: column y: \"\" is not a number");
+        "m.csv:2: column 4 (z): \"inf\" is not a finite number");
+  CHECK(error_of("id,x,y,z\nA,1,2mm,3\n", csv) == "m.csv:2: column 3 (y): \"2mm\" is not a number");
+  CHECK(error_of("id,x,y,z\nA,1,,3\n", csv) == "m.csv:2: column 3 (y): \"\" is not a number");
   CHECK(error_of("id,x,y\nA,1,2\n", csv) == "m.csv:1: missing column \"z\" (need x, y, z)");
-  CHECK(error_of("id,x,y,z,dev\n", csv) ==
-        "m.csv:1: unknown column \"dev\" (the header names id, x, y, z, i, j, k)");
+  CHECK(error_of("id,x,y,z,temp\n", csv) ==
+        "m.csv:1: unknown column \"temp\" (the header names id, x, y, z, i, j, k)");
   CHECK(error_of("x,y,z,x\n", csv) == "m.csv:1: column \"x\" appears twice");
   CHECK(error_of("x,y,z,i,j\n", csv) == "m.csv:1: columns i, j, k come together or not at all");
   CHECK(error_of("id,x,y,z\nA,1,2,3,4\n", csv) == "m.csv:2: expected 4 fields, got 5");
