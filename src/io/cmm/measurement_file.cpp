@@ -11,6 +11,7 @@
 #include "base/limits.hpp"
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
+#include "io/cmm/measurement_qif.hpp"
 #include "io/part_file.hpp"
 #include "base/text_fields.hpp"
 
@@ -234,12 +235,15 @@ MeasurementFormat measurement_format_from_path(const std::string& path) {
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
   if (ext == ".dmi" || ext == ".dmis" || ext == ".dmo" || ext == ".res")
     return MeasurementFormat::dmis;
+  if (ext == ".qif") return MeasurementFormat::qif;  // QIF 3.0 Results (measurement_qif.hpp)
   throw InputError(path + ": unknown measurement file type " + quote_field(ext) +
-                   " (expected .csv, .xyz/.txt or DMIS .dmi/.dmis/.dmo/.res)");
+                   " (expected .csv, .xyz/.txt, DMIS .dmi/.dmis/.dmo/.res or QIF .qif)");
 }
 
 MeasurementSet parse_measurements(const std::string& file_text, const std::string& name,
                                   MeasurementFormat format, const MeasurementReadOptions& options) {
+  // QIF states its own units and probe (docs/qif.md).
+  if (format == MeasurementFormat::qif) return parse_qif_measurements(file_text, name, options);
   // A byte-order mark (Excel's "CSV UTF-8", some CMM software) is not content.
   const std::string text = strip_bom(file_text);
   MeasurementSet set;
@@ -255,6 +259,7 @@ MeasurementSet parse_measurements(const std::string& file_text, const std::strin
     case MeasurementFormat::dmis:
       parse_dmis_results(text, name, set);
       break;
+    case MeasurementFormat::qif:
     case MeasurementFormat::automatic:
       throw std::logic_error("parse_measurements: resolve the format first");
   }

@@ -57,7 +57,7 @@ struct MeasurementSet {
   bool ids_from_file = false;  // false when ids were generated (XYZ, CSV without id)
 };
 
-enum class MeasurementFormat { automatic, csv, xyz, dmis };
+enum class MeasurementFormat { automatic, csv, xyz, dmis, qif };  // qif: docs/qif.md
 
 struct MeasurementReadOptions {
   MeasurementFormat format = MeasurementFormat::automatic;  // by extension

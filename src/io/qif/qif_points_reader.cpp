@@ -1,0 +1,235 @@
+#include "io/qif/qif_points_reader.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <pugixml.hpp>
+#include <unordered_map>
+
+#include "base/error.hpp"
+#include "base/text_fields.hpp"
+
+namespace furrow {
+
+namespace {
+
+using pugi::xml_node;
+
+// An element's name without its namespace prefix.
+const char* local_name(const char* name) {
+  const char* colon = std::strchr(name, ':');
+  return colon ? colon + 1 : name;
+}
+
+bool named(xml_node n, const char* want) { return std::strcmp(local_name(n.name()), want) == 0; }
+
+xml_node child(xml_node n, const char* want) {
+  for (xml_node c = n.first_child(); c; c = c.next_sibling())
+    if (c.type() == pugi::node_element && named(c, want)) return c;
+  return {};
+}
+
+// Offsets of the newlines of the original text, so that a parser offset
+// (in-place parsing keeps every element where it was) gives a line.
+class Lines {
+ public:
+  explicit Lines(const std::string& text) {
+    for (std::size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 1)) newlines_.push_back(i);
+  }
+  int at(std::ptrdiff_t offset) const {
+    if (offset < 0) return 0;
+    return 1 + static_cast<int>(std::upper_bound(newlines_.begin(), newlines_.end(),
+                                                 static_cast<std::size_t>(offset)) - newlines_.begin());
+  }
+
+ private:
+  std::vector<std::size_t> newlines_;
+};
+
+struct Reader {
+  const std::string& name;
+  const Lines& lines;
+  double scale = 1;  // file length unit -> mm
+
+  int line(xml_node n) const { return lines.at(n.offset_debug()); }
+  [[noreturn]] void fail(xml_node n, const std::string& what) const {
+    throw InputError(name + ":" + std::to_string(line(n)) + ": " + what);
+  }
+  std::string tag(xml_node n) const { return std::string("<") + local_name(n.name()) + ">"; }
+
+  double number(xml_node n, const char* text, std::size_t length) const {
+    const char* first = text;
+    const char* last = text + length;
+    if (first != last && *first == '+') ++first;  // xs:double allows a sign
+    double v = 0;
+    const auto r = std::from_chars(first, last, v);
+    if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v))
+      fail(n, tag(n) + ": " + quote_field(std::string(text, length)) + " is not a finite number");
+    return v;
+  }
+  double scalar(xml_node n) const {
+    const std::string t = trim(n.child_value());
+    return number(n, t.data(), t.size());
+  }
+  Eigen::Vector3d triple(xml_node n) const {
+    const char* s = n.child_value();
+    Eigen::Vector3d v;
+    int count = 0;
+    while (*s) {
+      while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') ++s;
+      if (!*s) break;
+      const char* start = s;
+      while (*s && *s != ' ' && *s != '\t' && *s != '\n' && *s != '\r') ++s;
+      if (count == 3) fail(n, tag(n) + ": expected 3 numbers, found more");
+      v[count++] = number(n, start, static_cast<std::size_t>(s - start));
+    }
+    if (count != 3) fail(n, tag(n) + ": expected 3 numbers, found " + std::to_string(count));
+    return v;
+  }
+  Eigen::Vector3d unit(xml_node n) const {
+    const Eigen::Vector3d v = triple(n);
+    if (!(v.norm() > 0)) fail(n, tag(n) + ": zero direction vector");
+    return v.normalized();
+  }
+  std::size_t id_value(xml_node n) const {
+    const std::string t = trim(n.child_value());
+    std::size_t v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(n, tag(n) + ": " + quote_field(t) + " is not a QIF id");
+    return v;
+  }
+  std::size_t id_attribute(xml_node n) const {
+    const pugi::xml_attribute a = n.attribute("id");
+    const std::string t = a.value();
+    std::size_t v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(n, tag(n) + ": id " + quote_field(t) + " is not a QIF id");
+    return v;
+  }
+  xml_node required(xml_node n, const char* want) const {
+    const xml_node c = child(n, want);
+    if (!c) fail(n, tag(n) + " has no <" + want + ">");
+    return c;
+  }
+};
+
+// Millimetres per file length unit (Units.xsd LinearUnit).
+double linear_scale(const Reader& r, xml_node root) {
+  const xml_node unit = child(child(child(root, "FileUnits"), "PrimaryUnits"), "LinearUnit");
+  if (!unit) return 1;
+  if (const xml_node factor = child(child(unit, "UnitConversion"), "Factor")) {
+    const double f = r.scalar(factor);
+    if (!(f > 0)) r.fail(factor, "<Factor> of the linear unit must be positive");
+    return f * 1000;  // the factor converts to the SI unit, the metre
+  }
+  const std::string u = to_lower(trim(child(unit, "UnitName").child_value()));
+  if (u == "mm" || u == "millimeter" || u == "millimetre") return 1;
+  if (u == "cm" || u == "centimeter" || u == "centimetre") return 10;
+  if (u == "m" || u == "meter" || u == "metre") return 1000;
+  if (u == "in" || u == "inch" || u == "inches") return 25.4;
+  r.fail(unit, "linear unit " + quote_field(u) + " is not mm, cm, m or inch and has no <UnitConversion>");
+}
+
+using Index = std::unordered_map<std::size_t, xml_node>;
+
+void index_children(const Reader& r, xml_node list, Index& index) {
+  for (xml_node c = list.first_child(); c; c = c.next_sibling())
+    if (c.type() == pugi::node_element && c.attribute("id")) index.emplace(r.id_attribute(c), c);
+}
+
+xml_node resolve(const Reader& r, const Index& index, xml_node reference, const char* what) {
+  const auto it = index.find(r.id_value(reference));
+  if (it == index.end())
+    r.fail(reference, r.tag(reference) + " " + trim(reference.child_value()) + " names no " + what);
+  return it->second;
+}
+
+}  // namespace
+
+QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
+  const Lines lines(text);
+  Reader r{name, lines};
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed =
+      doc.load_buffer_inplace(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+  if (!parsed)
+    throw InputError(name + ":" + std::to_string(lines.at(parsed.offset)) + ": malformed XML: " +
+                     parsed.description());
+  const xml_node root = doc.document_element();
+  if (!named(root, "QIFDocument"))
+    r.fail(root, "not a QIF document (the root element is " + r.tag(root) + ", expected <QIFDocument>)");
+  r.scale = linear_scale(r, root);
+
+  Index nominals, items;
+  const xml_node features = child(root, "Features");
+  index_children(r, child(features, "FeatureNominals"), nominals);
+  index_children(r, child(features, "FeatureItems"), items);
+
+  QifMeasuredPoints out;
+  bool centres = false, contacts = false;
+  int first_centre_line = 0, first_contact_line = 0;
+  const xml_node set = child(child(root, "Results"), "MeasurementResultsSet");
+  for (xml_node results = set.first_child(); results; results = results.next_sibling()) {
+    if (results.type() != pugi::node_element || !named(results, "MeasurementResults")) continue;
+    Index point_sets;
+    index_children(r, child(results, "MeasuredPointSets"), point_sets);
+    const xml_node measured = child(results, "MeasuredFeatures");
+    for (xml_node m = measured.first_child(); m; m = m.next_sibling()) {
+      if (m.type() != pugi::node_element ||
+          !(named(m, "PointFeatureMeasurement") || named(m, "PointFeatureActual")))
+        continue;
+      QifMeasuredPoint p;
+      p.line = r.line(m);
+      const xml_node item = resolve(r, items, r.required(m, "FeatureItemId"), "feature item");
+      const std::string feature_name = trim(child(item, "FeatureName").child_value());
+      p.id = feature_name.empty() ? "item " + std::to_string(r.id_attribute(item)) : feature_name;
+      if (const xml_node nominal_id = child(item, "FeatureNominalId")) {
+        const xml_node nominal = resolve(r, nominals, nominal_id, "feature nominal");
+        if (const xml_node l = child(nominal, "Location")) p.nominal = r.triple(l) * r.scale;
+        if (const xml_node n = child(nominal, "Normal")) p.nominal_ijk = r.unit(n);
+      }
+      // An uncompensated probe centre, when the point list names one.
+      std::optional<Eigen::Vector3d> centre;
+      if (const xml_node whole = child(child(m, "PointList"), "WholePointSetId")) {
+        const xml_node ps = resolve(r, point_sets, whole, "measured point set");
+        const std::string compensated = trim(child(ps, "Compensated").child_value());
+        const xml_node radius = child(ps, "ProbeRadius");
+        if (compensated == "false" && radius) {
+          if (ps.attribute("count").as_int(-1) != 1)
+            r.fail(ps, "<MeasuredPointSet> of a point feature must hold count=\"1\" point");
+          const double rr = r.scalar(radius) * r.scale;
+          if (!(rr > 0)) r.fail(radius, "<ProbeRadius> must be positive");
+          if (out.probe_radius && std::abs(*out.probe_radius - rr) > 1e-12 * rr)
+            r.fail(radius, "probe radius differs from the other points' (one probe per file)");
+          out.probe_radius = rr;
+          centre = r.triple(r.required(ps, "Points")) * r.scale;
+        }
+      }
+      if (centre) {
+        p.xyz = *centre;
+        if (!centres) first_centre_line = p.line;
+        centres = true;
+      } else {
+        p.xyz = r.triple(r.required(m, "Location")) * r.scale;
+        if (!contacts) first_contact_line = p.line;
+        contacts = true;
+      }
+      if (centres && contacts)
+        r.fail(m, "uncompensated probe centres (line " + std::to_string(first_centre_line) +
+                      ") mixed with compensated points (line " + std::to_string(first_contact_line) + ")");
+      if (const xml_node n = child(m, "Normal")) p.ijk = r.unit(n);
+      else p.ijk = p.nominal_ijk;
+      out.points.push_back(std::move(p));
+    }
+  }
+  if (out.points.empty())
+    throw InputError(name +
+                     ": no measured points (no PointFeatureMeasurement in Results/MeasurementResultsSet/"
+                     "MeasurementResults/MeasuredFeatures)");
+  return out;
+}
+
+}  // namespace furrow
