@@ -13,6 +13,7 @@
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
+#include "report/report_qif.hpp"
 #include "stage/compare_stage.hpp"
 
 namespace furrow::cli {
@@ -25,6 +26,7 @@ int run_compare(Args& args) {
   const auto regions_path = args.option("regions");
   const auto prediction_path = args.option("prediction");
   const std::string out = args.required_option("out");
+  const auto qif_path = args.option("qif");  // QIF 3.0 Results next to comparison.json (docs/qif.md)
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
   const std::string dof = args.option_or("dof", "all");
@@ -69,6 +71,7 @@ int run_compare(Args& args) {
   if (regions_path) outputs.add_input(*regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out);
+  if (qif_path) outputs.will_write(*qif_path);
 
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
@@ -104,8 +107,16 @@ int run_compare(Args& args) {
   sources.regions = regions_path.value_or("");
   sources.prediction = prediction_path.value_or("");
   sources.measurement_units = units;
-  outputs.file(out, comparison_to_json_text(c, set, part, options, sources));
-  outputs.publish();
+  std::string json = comparison_to_json_text(c, set, part, options, sources);
+  if (qif_path) {  // from comparison.json's own content, so the two files say the same
+    std::vector<InputDigest> inputs = {digest_file("part", part_path), digest_file("measurements", measurements)};
+    if (plan_path) inputs.push_back(digest_file("plan", *plan_path));
+    if (regions_path) inputs.push_back(digest_file("regions", *regions_path));
+    if (prediction_path) inputs.push_back(digest_file("prediction", *prediction_path));
+    outputs.file(*qif_path, comparison_to_qif(parse_comparison(json, out), inputs, std::nullopt));
+  }
+  outputs.file(out, json);
+  outputs.publish(out);
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
@@ -174,6 +185,9 @@ const Command kCompareCommand = {
     "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
     "  --no-outlier-rejection  keep every point in the fit\n"
     "  --out FILE           comparison.json to write\n"
+    "  --qif FILE           also write the results as a QIF 3.0 Results document\n"
+    "                       (ISO 23952): points, surface profile, per-point\n"
+    "                       status, verdict, inputs with SHA-256 (docs/qif.md)\n"
     "\n"
     "Verification against a machining prediction (docs/verification.md):\n"
     "  --prediction FILE    prediction.json of PART (furrow predict): predicted vs\n"

@@ -7,6 +7,7 @@
 #include "inspection/prediction_comparison.hpp"
 #include "base/output_set.hpp"
 #include "base/text_fields.hpp"
+#include "io/cmm/measurement_qif.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
@@ -65,8 +66,9 @@ int run_simulate(Args& args) {
   const SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
   // The file is CSV whatever it is called: a .dmo or .txt name would make
   // the next reader take it for DMIS or XYZ text.
-  if (lower_extension(out) != ".csv") args.fail("--out " + out + ": the measurements are written as CSV, name it .csv");
-  outputs.file(out, measurements_to_csv(sim.set));
+  const bool qif = lower_extension(out) == ".qif";  // QIF 3.0 Results (docs/qif.md)
+  if (!qif && lower_extension(out) != ".csv") args.fail("--out " + out + ": the measurements are written as CSV, name it .csv");
+  outputs.file(out, qif ? measurements_to_qif(sim.set, &plan, part_path) : measurements_to_csv(sim.set));
   outputs.publish();
   std::printf("%zu points (%s, probe %g mm), %d blunders, noise %g mm, seed %u -> %s\n",
               sim.set.points.size(), to_string(sim.set.kind), plan.probe.diameter, o.blunders,
@@ -110,7 +112,8 @@ const Command kSimulateMeasurementCommand = {
     "  --bump X,Y,Z,R,H     add a smooth bump (H > 0, material left) or dent\n"
     "                       (H < 0) of height H mm, cosine profile within R mm of\n"
     "                       the part point (X,Y,Z); repeatable\n"
-    "  --out FILE.csv       measurements CSV to write (the name must end in .csv)\n",
+    "  --out FILE.csv       measurements CSV to write (the name must end in .csv)\n"
+    "                       or FILE.qif: QIF 3.0 Results (docs/qif.md)\n",
     run_simulate};
 
 }  // namespace furrow::cli

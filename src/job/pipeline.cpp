@@ -18,6 +18,8 @@
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "stage/compare_stage.hpp"
+#include "report/report_qif.hpp"
+#include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
 #include "stage/predict_stage.hpp"
 #include "stage/toolpath_stage.hpp"
@@ -132,6 +134,8 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
                                  s.note(std::string("plan: ") + step, d, t);
                                });
   InspectionPlan read_back = parse_plan(stage.plan_json, "plan/plan.json");
+  stage.files.push_back({"plan.qif", plan_to_qif(read_back, s.part_name, job.compare.tolerance.width,
+                                                 job.compare.tolerance.outside)});  // docs/qif.md
   for (FolderFile& f : stage.files) {
     if (f.path == "plan.json")
       s.add_input("plan", "plan/plan.json", std::move(f.bytes));
@@ -247,6 +251,8 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
     context.total_seconds = clock.total();
     std::vector<FolderFile> report = render_report(doc, &map, figures, context);
+    // results.qif: the comparison as QIF 3.0 Results, timed like report.json (docs/qif.md).
+    report.push_back({"results.qif", comparison_to_qif(doc, context.inputs, context.generated)});
     clock.done("report");
     for (FolderFile& f : report) result.files.push_back(std::move(f));
     result.measured = true;
