@@ -10,6 +10,9 @@
 #include <map>
 #include <pugixml.hpp>
 #include <set>
+#include <sstream>
+#include <cstdlib>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -137,21 +140,27 @@ inline bool is_reference(const std::string& name) {
   return name.find("QPId") == std::string::npos && name != "FeatureItemIds";
 }
 
-// Checks the whole document; returns the number of elements checked against
-// a sequence (so that a test can require that the table was used at all).
-inline std::size_t check_qif_structure(const std::string& text) {
+// Every departure from the schema's structure, one line each (empty: none).
+struct QifStructure {
+  std::vector<std::string> problems;
+  std::size_t sequenced = 0;  // elements checked against a sequence of the table
+};
+
+inline QifStructure qif_structure(const std::string& text) {
+  QifStructure out;
+  auto& problems = out.problems;
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed = doc.load_string(text.c_str());
-  REQUIRE_MESSAGE(parsed, parsed.description());
+  if (!parsed) return {{std::string("not XML: ") + parsed.description()}, 0};
   const pugi::xml_node root = doc.document_element();
-  CHECK(std::string(root.name()) == "QIFDocument");
-  CHECK(std::string(root.attribute("xmlns").value()) == "http://qifstandards.org/xsd/qif3");
-  CHECK(std::string(root.attribute("versionQIF").value()) == "3.0.0");
-  const unsigned long id_max = std::stoul(root.attribute("idMax").value());
+  if (std::string(root.name()) != "QIFDocument") problems.push_back("root is not QIFDocument");
+  if (std::string(root.attribute("xmlns").value()) != "http://qifstandards.org/xsd/qif3")
+    problems.push_back("no QIF 3 namespace");
+  if (std::string(root.attribute("versionQIF").value()) != "3.0.0") problems.push_back("versionQIF is not 3.0.0");
+  const unsigned long id_max = std::strtoul(root.attribute("idMax").value(), nullptr, 10);
 
   std::map<unsigned long, std::string> ids;  // id -> element name
   std::vector<pugi::xml_node> references;
-  std::size_t sequenced = 0;
   std::vector<pugi::xml_node> stack = {root};
   while (!stack.empty()) {
     const pugi::xml_node n = stack.back();
@@ -159,20 +168,18 @@ inline std::size_t check_qif_structure(const std::string& text) {
     const std::string name = n.name();
     const std::vector<pugi::xml_node> kids = element_children(n);
     if (const pugi::xml_attribute id = n.attribute("id")) {
-      const unsigned long v = std::stoul(id.value());
-      CAPTURE(name);
-      CHECK(v >= 1);
-      CHECK(v <= id_max);
-      CHECK_MESSAGE(ids.emplace(v, name).second, "duplicate id ", v);
+      const unsigned long v = std::strtoul(id.value(), nullptr, 10);
+      if (v < 1 || v > id_max) problems.push_back(name + ": id " + id.value() + " outside 1..idMax");
+      if (!ids.emplace(v, name).second) problems.push_back(name + ": duplicate id " + id.value());
     }
     if (const pugi::xml_attribute count = n.attribute("n")) {
-      CAPTURE(name);
-      CHECK(std::stoul(count.value()) == kids.size());
-      CHECK(!kids.empty());
+      if (std::strtoul(count.value(), nullptr, 10) != kids.size())
+        problems.push_back(name + ": n=" + count.value() + " but " + std::to_string(kids.size()) + " children");
+      if (kids.empty()) problems.push_back(name + ": an empty list");
     }
     if (is_reference(name) && kids.empty()) references.push_back(n);
     if (const auto it = qif_sequences().find(name); it != qif_sequences().end()) {
-      ++sequenced;
+      ++out.sequenced;
       const Sequence& seq = it->second;
       std::size_t at = 0;
       std::set<std::string> present;
@@ -181,41 +188,51 @@ inline std::size_t check_qif_structure(const std::string& text) {
         present.insert(kn);
         std::size_t pos = at;
         while (pos < seq.order.size() && seq.order[pos] != kn) ++pos;
-        CAPTURE(name);
-        CAPTURE(kn);
-        CHECK_MESSAGE(pos < seq.order.size(), "child out of the sequence order or unknown");
-        if (pos < seq.order.size()) at = pos;
+        if (pos == seq.order.size())
+          problems.push_back(name + ": child " + kn + " out of the sequence order or not in it");
+        else
+          at = pos;
       }
-      for (const std::string& r : seq.required) {
-        CAPTURE(name);
-        CHECK_MESSAGE(present.count(r) == 1, "missing required ", r);
-      }
+      for (const std::string& r : seq.required)
+        if (present.count(r) != 1) problems.push_back(name + ": no " + r);
     }
-    if (name == "InspectionStatusEnum") CHECK(inspection_status_enum().count(n.child_value()) == 1);
-    if (name == "CharacteristicStatusEnum") CHECK(characteristic_status_enum().count(n.child_value()) == 1);
+    if (name == "InspectionStatusEnum" && inspection_status_enum().count(n.child_value()) != 1)
+      problems.push_back(std::string("InspectionStatusEnum ") + n.child_value());
+    if (name == "CharacteristicStatusEnum" && characteristic_status_enum().count(n.child_value()) != 1)
+      problems.push_back(std::string("CharacteristicStatusEnum ") + n.child_value());
     if (name == "MeasuredPointSet") {
       std::istringstream points(n.child("Points").child_value());
       double v;
       int values = 0;
       while (points >> v) ++values;
-      CHECK(values == 3 * n.attribute("count").as_int());
+      if (values != 3 * n.attribute("count").as_int()) problems.push_back("MeasuredPointSet: count differs");
     }
     for (auto k = kids.rbegin(); k != kids.rend(); ++k) stack.push_back(*k);
   }
-  CHECK(!ids.empty());
-  if (!ids.empty()) CHECK(ids.rbegin()->first == id_max);
-  for (const pugi::xml_node r : references) {
-    CAPTURE(r.name());
-    CHECK_MESSAGE(ids.count(std::stoul(r.child_value())) == 1, "dangling reference ", r.child_value());
-  }
-  // QPIds: UUIDs, 8-4-4-4-12 lower-case hex.
-  for (const char* q : {"QPId"}) {
-    const std::string uuid = root.child(q).child_value();
-    CHECK(uuid.size() == 36);
-    for (std::size_t i = 0; i < uuid.size(); ++i)
-      CHECK(((i == 8 || i == 13 || i == 18 || i == 23) ? uuid[i] == '-' : std::isxdigit(uuid[i]) && !std::isupper(uuid[i])));
-  }
-  return sequenced;
+  if (ids.empty() || ids.rbegin()->first != id_max) problems.push_back("idMax is not the largest id");
+  for (const pugi::xml_node r : references)
+    if (ids.count(std::strtoul(r.child_value(), nullptr, 10)) != 1)
+      problems.push_back(std::string(r.name()) + " " + r.child_value() + " names no element");
+  // QPId: a UUID, 8-4-4-4-12 lower-case hex.
+  const std::string uuid = root.child("QPId").child_value();
+  bool uuid_ok = uuid.size() == 36;
+  for (std::size_t i = 0; uuid_ok && i < uuid.size(); ++i)
+    uuid_ok = (i == 8 || i == 13 || i == 18 || i == 23) ? uuid[i] == '-'
+                                                         : std::isxdigit(static_cast<unsigned char>(uuid[i])) &&
+                                                               !std::isupper(static_cast<unsigned char>(uuid[i]));
+  if (!uuid_ok) problems.push_back("QPId " + uuid + " is not a UUID");
+  return out;
+}
+
+// For tests: CHECKs that there is no problem (printing them) and returns the
+// number of elements checked against a sequence, so that a test can require
+// that the table was used at all.
+inline std::size_t check_qif_structure(const std::string& text) {
+  const QifStructure s = qif_structure(text);
+  std::string all;
+  for (const std::string& p : s.problems) all += p + "\n";
+  CHECK_MESSAGE(s.problems.empty(), all);
+  return s.sequenced;
 }
 
 }  // namespace furrow::test
