@@ -280,6 +280,7 @@ MeasurementSet read_measurements(const std::string& path, const MeasurementReadO
   const MeasurementFormat format = options.format == MeasurementFormat::automatic
                                        ? measurement_format_from_path(path)
                                        : options.format;
+  if (format == MeasurementFormat::qif) return read_qif_measurements(path, options);  // parsed in place
   return parse_measurements(json_fields::read_text(path), path, format, options);
 }
 

@@ -1,7 +1,7 @@
 #include "io/cmm/measurement_qif.hpp"
 
 #include <cmath>
-#include <map>
+#include <unordered_map>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
@@ -11,9 +11,10 @@
 
 namespace furrow {
 
-MeasurementSet parse_qif_measurements(std::string text, const std::string& name,
-                                      const MeasurementReadOptions& options) {
-  QifMeasuredPoints qif = parse_qif_points(std::move(text), name);
+namespace {
+
+MeasurementSet to_measurement_set(QifMeasuredPoints qif, const std::string& name,
+                                  const MeasurementReadOptions& options) {
   MeasurementSet set;
   set.source = name;
   set.ids_from_file = true;
@@ -31,7 +32,8 @@ MeasurementSet parse_qif_measurements(std::string text, const std::string& name,
   if (static_cast<long>(qif.points.size()) > limits::kMaxFilePoints)
     throw InputError(name + ": more than " + std::to_string(limits::kMaxFilePoints) +
                      " measured points (docs/formats.md \"Limits\")");
-  std::map<std::string, int> seen;
+  std::unordered_map<std::string, int> seen;
+  seen.reserve(qif.points.size());
   set.points.reserve(qif.points.size());
   for (QifMeasuredPoint& q : qif.points) {
     const std::string where = name + ":" + std::to_string(q.line);
@@ -50,6 +52,17 @@ MeasurementSet parse_qif_measurements(std::string text, const std::string& name,
     set.points.push_back(std::move(p));
   }
   return set;
+}
+
+}  // namespace
+
+MeasurementSet parse_qif_measurements(std::string text, const std::string& name,
+                                      const MeasurementReadOptions& options) {
+  return to_measurement_set(parse_qif_points(std::move(text), name), name, options);
+}
+
+MeasurementSet read_qif_measurements(const std::string& path, const MeasurementReadOptions& options) {
+  return to_measurement_set(read_qif_points(path), path, options);
 }
 
 std::string measurements_to_qif(const MeasurementSet& set, const InspectionPlan* plan,

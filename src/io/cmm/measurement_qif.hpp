@@ -27,6 +27,8 @@ namespace furrow {
 
 MeasurementSet parse_qif_measurements(std::string text, const std::string& name,
                                       const MeasurementReadOptions& options);
+// The file at `path` (read_qif_points: one buffer, parsed in place).
+MeasurementSet read_qif_measurements(const std::string& path, const MeasurementReadOptions& options);
 
 // `plan` may be null; `part_name` names the part in the document.
 std::string measurements_to_qif(const MeasurementSet& set, const InspectionPlan* plan,

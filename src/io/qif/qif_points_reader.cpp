@@ -1,9 +1,12 @@
 #include "io/qif/qif_points_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <pugixml.hpp>
 #include <unordered_map>
 
@@ -93,11 +96,14 @@ struct Reader {
     return v.normalized();
   }
   std::size_t id_value(xml_node n) const {
-    const std::string t = trim(n.child_value());
+    const char* first = n.child_value();
+    const char* last = first + std::strlen(first);
+    while (first != last && std::isspace(static_cast<unsigned char>(*first))) ++first;
+    while (last != first && std::isspace(static_cast<unsigned char>(last[-1]))) --last;
     std::size_t v = 0;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail(n, tag(n) + ": " + quote_field(t) + " is not a QIF id");
+    const auto r = std::from_chars(first, last, v);
+    if (first == last || r.ec != std::errc() || r.ptr != last)
+      fail(n, tag(n) + ": " + quote_field(std::string(first, last)) + " is not a QIF id");
     return v;
   }
   std::size_t id_attribute(xml_node n) const {
@@ -150,11 +156,14 @@ xml_node resolve(const Reader& r, const Index& index, xml_node reference, const 
 }  // namespace
 
 QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
+  // The DOM holds every element of the file; a leaf's text is kept in its
+  // element (parse_embed_pcdata), which halves the nodes of a large file.
   const Lines lines(text);
   Reader r{name, lines};
   pugi::xml_document doc;
   const pugi::xml_parse_result parsed =
-      doc.load_buffer_inplace(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+      doc.load_buffer_inplace(text.data(), text.size(), pugi::parse_default | pugi::parse_embed_pcdata,
+                              pugi::encoding_auto);
   if (!parsed)
     throw InputError(name + ":" + std::to_string(lines.at(parsed.offset)) + ": malformed XML: " +
                      parsed.description());
@@ -230,6 +239,19 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
                      ": no measured points (no PointFeatureMeasurement in Results/MeasurementResultsSet/"
                      "MeasurementResults/MeasuredFeatures)");
   return out;
+}
+
+QifMeasuredPoints read_qif_points(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a file");
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path + ": cannot open the file (missing or unreadable)");
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(path + ": reading the file failed");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), size)) throw InputError(path + ": reading the file failed");
+  return parse_qif_points(std::move(text), path);
 }
 
 }  // namespace furrow

@@ -52,4 +52,9 @@ struct QifMeasuredPoints {
 // of a large file). `name` stands for the source in messages.
 QifMeasuredPoints parse_qif_points(std::string text, const std::string& name);
 
+// The file at `path`, read into one buffer of its size (a large document is
+// held once, not grown and copied) and parsed in place; InputError naming the
+// path when it cannot be read.
+QifMeasuredPoints read_qif_points(const std::string& path);
+
 }  // namespace furrow
