@@ -17,6 +17,9 @@ namespace {
 // Placeholder of a UUID's length, replaced once the content is known.
 const std::string kDocumentQpid = "00000000-0000-0000-0000-00000000000d";
 const std::string kResultsQpid = "00000000-0000-0000-0000-00000000000r";
+// Stands for the time until the QPIds are derived: they identify the
+// content, which is the same for the same inputs whenever it was made.
+const std::string kTime = "0000-00-00T00:00:00 (time)";
 
 class Writer {
  public:
@@ -190,7 +193,7 @@ void write_head(Writer& w, const QifDocumentData& d, const Ids& ids, const char*
   w.leaf(1, "QPId", kDocumentQpid);
   if (d.time) {
     w.open(1, "Version");  // VersionBaseType
-    w.leaf(2, "TimeCreated", *d.time);
+    w.leaf(2, "TimeCreated", kTime);
     w.close(1, "Version");
   }
   w.open(1, "Header");  // QIFDocumentHeaderType: Application, Description, Scope
@@ -338,7 +341,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   // MeasuredCharacteristics?, InspectionStatus.
   if (d.time) {
     w.open(4, "InspectionTraceability");  // InspectionTraceabilityType
-    w.leaf(5, "ReportPreparationDate", *d.time);
+    w.leaf(5, "ReportPreparationDate", kTime);
     w.close(4, "InspectionTraceability");
   }
   w.leaf(4, "ThisResultsInstanceQPId", kResultsQpid);
@@ -439,8 +442,9 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   w.close(1, "Results");
 }
 
-// The placeholders replaced by UUIDs derived from the text around them.
-void set_qpids(std::string& text) {
+// The placeholders replaced by UUIDs derived from the text around them,
+// then the time's by the time.
+void set_qpids(std::string& text, const std::optional<std::string>& time) {
   const std::string digest = qif_sha256_hex(text);
   const std::string document = uuid_from_content(digest + " QPId");
   const std::string results = uuid_from_content(digest + " ThisResultsInstanceQPId");
@@ -448,6 +452,11 @@ void set_qpids(std::string& text) {
     const std::size_t at = text.find(placeholder);
     if (at != std::string::npos) text.replace(at, placeholder.size(), uuid);
   }
+  if (!time) return;
+  std::string escaped;
+  for (char c : *time) escaped += (c == '<' || c == '>' || c == '&' || static_cast<unsigned char>(c) < 0x20) ? '?' : c;
+  for (std::size_t at = text.find(kTime); at != std::string::npos; at = text.find(kTime, at + escaped.size()))
+    text.replace(at, kTime.size(), escaped);
 }
 
 }  // namespace
@@ -461,7 +470,7 @@ std::string qif_results_text(const QifDocumentData& d) {
   if (d.profile) write_characteristics(w, d, ids, true);
   write_results(w, d, ids);
   w.text += "</QIFDocument>\n";
-  set_qpids(w.text);
+  set_qpids(w.text, d.time);
   return std::move(w.text);
 }
 
@@ -473,7 +482,7 @@ std::string qif_plan_text(const QifDocumentData& d) {
   write_features(w, d, ids);
   if (d.profile) write_characteristics(w, d, ids, false);
   w.text += "</QIFDocument>\n";
-  set_qpids(w.text);
+  set_qpids(w.text, d.time);
   return std::move(w.text);
 }
 

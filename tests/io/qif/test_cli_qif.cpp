@@ -146,6 +146,10 @@ TEST_CASE("QIF end to end: simulated QIF compares like CSV; results.qif matches 
   CHECK(other.find("<CharacteristicStatusEnum>INDETERMINATE</CharacteristicStatusEnum>") != std::string::npos);
   CHECK(other.find("<TimeCreated>2026-01-02T03:04:05Z</TimeCreated>") != std::string::npos);
   CHECK(other.find("<ReportPreparationDate>2026-01-02T03:04:05Z</ReportPreparationDate>") != std::string::npos);
+  // The QPIds identify the content, not the moment it was written.
+  const std::string later = comparison_to_qif(inconclusive, {}, std::string("2027-05-06T07:08:09Z"));
+  CHECK(later.substr(later.find("<QPId>"), 48) == other.substr(other.find("<QPId>"), 48));
+  CHECK(later != other);
 
   // Same inputs, same bytes.
   const auto again = test::run_furrow({"compare", kMould, "--measurements", dir + "/m.qif", "--plan", plan, "--out",
