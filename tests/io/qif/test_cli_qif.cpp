@@ -208,3 +208,32 @@ TEST_CASE("bad QIF measurements: exit 2 naming the file and line, nothing writte
   CHECK(empty.err.find(path + ": no measured points") != std::string::npos);
   CHECK(test::line_count(empty.err) == 1);
 }
+
+TEST_CASE("furrow run (the demo) writes results.qif timed like report.json and plan/plan.qif") {
+  const std::string dir = test::scratch_dir("cli-qif-demo");
+  const auto r = test::run_furrow({"demo", "--out", dir + "/out"});
+  REQUIRE((r.status == 0 || r.status == 1 || r.status == 4));
+  const std::string text = test::slurp(dir + "/out/results.qif");
+  CHECK(test::check_qif_structure(text) > 100);
+  CHECK(test::check_qif_structure(test::slurp(dir + "/out/plan/plan.qif")) > 10);
+  const json_fields::json report = json_fields::load_file(dir + "/out/report.json");
+  const ComparisonDocument c = read_comparison(dir + "/out/comparison.json");
+  pugi::xml_document doc;
+  REQUIRE(doc.load_string(text.c_str()));
+  const pugi::xml_node root = doc.document_element();
+  const std::string generated = report["generated"].get<std::string>();
+  CHECK(std::string(root.child("Version").child_value("TimeCreated")) == generated);
+  const pugi::xml_node results = root.child("Results").child("MeasurementResultsSet").child("MeasurementResults");
+  CHECK(std::string(results.child("InspectionTraceability").child_value("ReportPreparationDate")) == generated);
+  const pugi::xml_node status = results.child("InspectionStatus");
+  if (c.summary.verdict == Verdict::inconclusive)
+    CHECK(std::string(status.child_value("OtherInspectionStatus")) == "INCONCLUSIVE");
+  else
+    CHECK(std::string(status.child_value("InspectionStatusEnum")) == to_string(c.summary.verdict));
+  std::size_t measured = 0;
+  for (pugi::xml_node m : results.child("MeasuredFeatures").children("PointFeatureMeasurement")) {
+    (void)m;
+    ++measured;
+  }
+  CHECK(measured == c.points.size());
+}
