@@ -139,18 +139,45 @@ double linear_scale(const Reader& r, xml_node root) {
   r.fail(unit, "linear unit " + quote_field(u) + " is not mm, cm, m or inch and has no <UnitConversion>");
 }
 
-using Index = std::unordered_map<std::size_t, xml_node>;
+// Elements by QIF id. Ids are dense in practice (1..idMax), so a table
+// indexed by id is both faster and smaller than a hash map for a large
+// document; an id beyond the table (idMax wrong or absent) goes to the map.
+class Index {
+ public:
+  Index(std::size_t id_max, std::size_t text_size)
+      : dense_(std::min(id_max, text_size / 8) + 1) {}  // an id takes more than 8 bytes of text
+  void put(std::size_t id, xml_node n) {
+    if (id < dense_.size()) dense_[id] = n;
+    else sparse_.emplace(id, n);
+  }
+  xml_node find(std::size_t id) const {
+    if (id < dense_.size()) return dense_[id];
+    const auto it = sparse_.find(id);
+    return it == sparse_.end() ? xml_node() : it->second;
+  }
+
+ private:
+  std::vector<xml_node> dense_;
+  std::unordered_map<std::size_t, xml_node> sparse_;
+};
 
 void index_children(const Reader& r, xml_node list, Index& index) {
   for (xml_node c = list.first_child(); c; c = c.next_sibling())
-    if (c.type() == pugi::node_element && c.attribute("id")) index.emplace(r.id_attribute(c), c);
+    if (c.type() == pugi::node_element && c.attribute("id")) index.put(r.id_attribute(c), c);
 }
 
-xml_node resolve(const Reader& r, const Index& index, xml_node reference, const char* what) {
-  const auto it = index.find(r.id_value(reference));
-  if (it == index.end())
+bool ends_with(const char* text, const char* suffix) {
+  const std::size_t a = std::strlen(text), b = std::strlen(suffix);
+  return a >= b && std::strcmp(text + a - b, suffix) == 0;
+}
+
+// The element `reference` names, which must be of the kind whose name ends
+// in `kind` ("FeatureItem", "FeatureNominal", "MeasuredPointSet").
+xml_node resolve(const Reader& r, const Index& index, xml_node reference, const char* kind, const char* what) {
+  const xml_node n = index.find(r.id_value(reference));
+  if (!n || !ends_with(local_name(n.name()), kind))
     r.fail(reference, r.tag(reference) + " " + trim(reference.child_value()) + " names no " + what);
-  return it->second;
+  return n;
 }
 
 }  // namespace
@@ -172,10 +199,11 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
     r.fail(root, "not a QIF document (the root element is " + r.tag(root) + ", expected <QIFDocument>)");
   r.scale = linear_scale(r, root);
 
-  Index nominals, items;
+  // One index for the whole document: QIF ids are unique in it.
+  Index index(root.attribute("idMax").as_ullong(0), text.size());
   const xml_node features = child(root, "Features");
-  index_children(r, child(features, "FeatureNominals"), nominals);
-  index_children(r, child(features, "FeatureItems"), items);
+  index_children(r, child(features, "FeatureNominals"), index);
+  index_children(r, child(features, "FeatureItems"), index);
 
   QifMeasuredPoints out;
   bool centres = false, contacts = false;
@@ -183,8 +211,7 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
   const xml_node set = child(child(root, "Results"), "MeasurementResultsSet");
   for (xml_node results = set.first_child(); results; results = results.next_sibling()) {
     if (results.type() != pugi::node_element || !named(results, "MeasurementResults")) continue;
-    Index point_sets;
-    index_children(r, child(results, "MeasuredPointSets"), point_sets);
+    index_children(r, child(results, "MeasuredPointSets"), index);
     const xml_node measured = child(results, "MeasuredFeatures");
     for (xml_node m = measured.first_child(); m; m = m.next_sibling()) {
       if (m.type() != pugi::node_element ||
@@ -192,18 +219,18 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
         continue;
       QifMeasuredPoint p;
       p.line = r.line(m);
-      const xml_node item = resolve(r, items, r.required(m, "FeatureItemId"), "feature item");
+      const xml_node item = resolve(r, index, r.required(m, "FeatureItemId"), "FeatureItem", "feature item");
       const std::string feature_name = trim(child(item, "FeatureName").child_value());
       p.id = feature_name.empty() ? "item " + std::to_string(r.id_attribute(item)) : feature_name;
       if (const xml_node nominal_id = child(item, "FeatureNominalId")) {
-        const xml_node nominal = resolve(r, nominals, nominal_id, "feature nominal");
+        const xml_node nominal = resolve(r, index, nominal_id, "FeatureNominal", "feature nominal");
         if (const xml_node l = child(nominal, "Location")) p.nominal = r.triple(l) * r.scale;
         if (const xml_node n = child(nominal, "Normal")) p.nominal_ijk = r.unit(n);
       }
       // An uncompensated probe centre, when the point list names one.
       std::optional<Eigen::Vector3d> centre;
       if (const xml_node whole = child(child(m, "PointList"), "WholePointSetId")) {
-        const xml_node ps = resolve(r, point_sets, whole, "measured point set");
+        const xml_node ps = resolve(r, index, whole, "MeasuredPointSet", "measured point set");
         const std::string compensated = trim(child(ps, "Compensated").child_value());
         const xml_node radius = child(ps, "ProbeRadius");
         if (compensated == "false" && radius) {
