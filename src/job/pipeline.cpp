@@ -18,7 +18,6 @@
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "stage/compare_stage.hpp"
-#include "report/report_qif.hpp"
 #include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
 #include "stage/predict_stage.hpp"
@@ -251,8 +250,6 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
     context.total_seconds = clock.total();
     std::vector<FolderFile> report = render_report(doc, &map, figures, context);
-    // results.qif: the comparison as QIF 3.0 Results, timed like report.json (docs/qif.md).
-    report.push_back({"results.qif", comparison_to_qif(doc, context.inputs, context.generated)});
     clock.done("report");
     for (FolderFile& f : report) result.files.push_back(std::move(f));
     result.measured = true;

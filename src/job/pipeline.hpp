@@ -21,8 +21,7 @@
 //                       plan.qif (docs/qif.md)
 //   measurements.csv    (simulated measurements only)
 //   comparison.json
-//   report.html, report.json, points.csv, figures/*.png   (qa_report.hpp)
-//   results.qif         the comparison as QIF 3.0 Results (report/report_qif.hpp)
+//   report.html, report.json, points.csv, results.qif, figures/*.png   (qa_report.hpp)
 // The paths inside comparison.json are relative to the output folder (the
 // part's and a measurement file's too), so `furrow report OUT/comparison.json`
 // finds them from any directory.

@@ -1,7 +1,8 @@
 #pragma once
 // results.qif: a comparison as a QIF 3.0 Results document (docs/qif.md),
 // written by `furrow compare --qif` and into the report folder of
-// `furrow run`. It carries what comparison.json says, in QIF's terms:
+// `furrow report` and `furrow run` (qa_report.hpp). It carries what
+// comparison.json says, in QIF's terms:
 //
 //   the part            Product/PartSet/Part, ModelNumber = the part file
 //   each point          PointFeatureNominal (the foot point and the normal),
@@ -23,8 +24,8 @@
 //                       ExternalFileReferences with their SHA-256, and the
 //                       time - only when one is given: comparison.json has
 //                       none, so `furrow compare` writes none and stays
-//                       byte-for-byte reproducible; `furrow run` gives the
-//                       report's generation time.
+//                       byte-for-byte reproducible; the QA report gives
+//                       its generation time.
 #include <optional>
 #include <string>
 #include <vector>
