@@ -206,8 +206,12 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
   index_children(r, child(features, "FeatureItems"), index);
 
   QifMeasuredPoints out;
-  bool centres = false, contacts = false;
-  int first_centre_line = 0, first_contact_line = 0;
+  // Uncompensated probe centres are used only when every point has one
+  // (a one-point MeasuredPointSet, Compensated false, one ProbeRadius for
+  // all); otherwise every point is its Location, the compensated point.
+  std::vector<Eigen::Vector3d> centres;
+  bool all_centres = true;
+  std::vector<char> has_location;
   const xml_node set = child(child(root, "Results"), "MeasurementResultsSet");
   for (xml_node results = set.first_child(); results; results = results.next_sibling()) {
     if (results.type() != pugi::node_element || !named(results, "MeasurementResults")) continue;
@@ -227,39 +231,45 @@ QifMeasuredPoints parse_qif_points(std::string text, const std::string& name) {
         if (const xml_node l = child(nominal, "Location")) p.nominal = r.triple(l) * r.scale;
         if (const xml_node n = child(nominal, "Normal")) p.nominal_ijk = r.unit(n);
       }
-      // An uncompensated probe centre, when the point list names one.
-      std::optional<Eigen::Vector3d> centre;
-      if (const xml_node whole = child(child(m, "PointList"), "WholePointSetId")) {
-        const xml_node ps = resolve(r, index, whole, "MeasuredPointSet", "measured point set");
-        const std::string compensated = trim(child(ps, "Compensated").child_value());
+      const xml_node location = child(m, "Location");
+      if (location) p.xyz = r.triple(location) * r.scale;
+      has_location.push_back(location ? 1 : 0);
+      if (all_centres) {
+        // A point list that names anything but such a set is not used: the
+        // Location is the measurement's result, the point list its detail.
+        const xml_node whole = child(child(m, "PointList"), "WholePointSetId");
+        const xml_node ps = whole ? index.find(r.id_value(whole)) : xml_node();
         const xml_node radius = child(ps, "ProbeRadius");
-        if (compensated == "false" && radius) {
-          if (ps.attribute("count").as_int(-1) != 1)
-            r.fail(ps, "<MeasuredPointSet> of a point feature must hold count=\"1\" point");
+        const xml_node points = child(ps, "Points");
+        all_centres = ps && named(ps, "MeasuredPointSet") && trim(child(ps, "Compensated").child_value()) == "false" &&
+                      radius && points && ps.attribute("count").as_int(-1) == 1;
+        if (all_centres) {
           const double rr = r.scalar(radius) * r.scale;
-          if (!(rr > 0)) r.fail(radius, "<ProbeRadius> must be positive");
-          if (out.probe_radius && std::abs(*out.probe_radius - rr) > 1e-12 * rr)
-            r.fail(radius, "probe radius differs from the other points' (one probe per file)");
-          out.probe_radius = rr;
-          centre = r.triple(r.required(ps, "Points")) * r.scale;
+          all_centres = rr > 0 && (!out.probe_radius || std::abs(*out.probe_radius - rr) <= 1e-12 * rr);
+          if (all_centres) {
+            out.probe_radius = rr;
+            centres.push_back(r.triple(points) * r.scale);
+          }
+        }
+        if (!all_centres) {
+          out.probe_radius.reset();
+          std::vector<Eigen::Vector3d>().swap(centres);
         }
       }
-      if (centre) {
-        p.xyz = *centre;
-        if (!centres) first_centre_line = p.line;
-        centres = true;
-      } else {
-        p.xyz = r.triple(r.required(m, "Location")) * r.scale;
-        if (!contacts) first_contact_line = p.line;
-        contacts = true;
-      }
-      if (centres && contacts)
-        r.fail(m, "uncompensated probe centres (line " + std::to_string(first_centre_line) +
-                      ") mixed with compensated points (line " + std::to_string(first_contact_line) + ")");
       if (const xml_node n = child(m, "Normal")) p.ijk = r.unit(n);
       else p.ijk = p.nominal_ijk;
       out.points.push_back(std::move(p));
     }
+  }
+  if (all_centres && !out.points.empty()) {
+    for (std::size_t i = 0; i < out.points.size(); ++i) out.points[i].xyz = centres[i];
+  } else {
+    out.probe_radius.reset();
+    for (std::size_t i = 0; i < out.points.size(); ++i)
+      if (!has_location[i])
+        throw InputError(name + ":" + std::to_string(out.points[i].line) + ": point " +
+                         quote_field(out.points[i].id) + " has no <Location> (and not every point has an "
+                         "uncompensated probe centre)");
   }
   if (out.points.empty())
     throw InputError(name +

@@ -6,9 +6,11 @@
 //
 //   id       the FeatureName of the feature item it measures (FeatureItemId);
 //            "item N" when the item has no name
-//   xyz      the measurement's Location, or - when its PointList names a
-//            MeasuredPointSet of one uncompensated point (Compensated false,
-//            ProbeRadius > 0) - that probe centre
+//   xyz      the measurement's Location (a compensated contact point), or -
+//            when every point's PointList names a MeasuredPointSet of one
+//            uncompensated point (Compensated false, the same ProbeRadius
+//            > 0 for all) - that probe centre. A point list naming anything
+//            else is not used: the Location is the result, the list detail.
 //   ijk      the measurement's Normal if it has one, else the nominal's
 //   nominal  the FeatureNominal's Location and Normal
 //
@@ -22,9 +24,10 @@
 //
 // Errors: InputError "NAME:LINE: what" for malformed XML (the line of the
 // parser's offset), a root that is not QIFDocument, a reference to a
-// missing id, a Location that is not three finite numbers, units that are
-// not lengths, point sets that mix centres and contact points; "NAME: no
-// measured points ..." when the document has none.
+// missing feature item or nominal, a Location that is not three finite
+// numbers, units that are not lengths, a point without Location when the
+// points are not all probe centres; "NAME: no measured points ..." when the
+// document has none.
 #include <Eigen/Core>
 #include <optional>
 #include <string>

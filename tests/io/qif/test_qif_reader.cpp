@@ -253,3 +253,37 @@ TEST_CASE("the QIF structure checks catch order, counts, ids, references and enu
   CHECK(problems(">PASS<", ">INCONCLUSIVE<").back() == "InspectionStatusEnum INCONCLUSIVE");
   CHECK(problems("<Location>0 0 0</Location>", "").back() == "PointFeatureNominal: no Location");
 }
+
+TEST_CASE("QIF point lists used only when every point has an uncompensated centre, else the Locations") {
+  // As in a CMM's results: most points list their raw probe centre, one has
+  // no list, one names itself; the Locations are the compensated points.
+  const std::string text = R"(<QIFDocument xmlns="http://qifstandards.org/xsd/qif3" versionQIF="3.0.0" idMax="30">
+<Features><FeatureNominals n="3">
+<PointFeatureNominal id="2"><FeatureDefinitionId>1</FeatureDefinitionId><Location>0 0 0</Location><Normal>0 0 1</Normal></PointFeatureNominal>
+<PointFeatureNominal id="3"><FeatureDefinitionId>1</FeatureDefinitionId><Location>1 0 0</Location><Normal>0 0 1</Normal></PointFeatureNominal>
+<PointFeatureNominal id="4"><FeatureDefinitionId>1</FeatureDefinitionId><Location>2 0 0</Location><Normal>0 0 1</Normal></PointFeatureNominal>
+</FeatureNominals><FeatureItems n="3">
+<PointFeatureItem id="5"><FeatureNominalId>2</FeatureNominalId><FeatureName>A</FeatureName></PointFeatureItem>
+<PointFeatureItem id="6"><FeatureNominalId>3</FeatureNominalId><FeatureName>B</FeatureName></PointFeatureItem>
+<PointFeatureItem id="7"><FeatureNominalId>4</FeatureNominalId><FeatureName>C</FeatureName></PointFeatureItem>
+</FeatureItems></Features>
+<Results><MeasurementResultsSet n="1"><MeasurementResults id="10"><MeasuredFeatures n="3">
+<PointFeatureMeasurement id="11"><FeatureItemId>5</FeatureItemId><PointList n="1"><WholePointSetId>21</WholePointSetId></PointList><Location>0 0 0.01</Location></PointFeatureMeasurement>
+<PointFeatureMeasurement id="12"><FeatureItemId>6</FeatureItemId><Location>1 0 0.02</Location></PointFeatureMeasurement>
+<PointFeatureMeasurement id="13"><FeatureItemId>7</FeatureItemId><PointList n="1"><WholePointSetId>13</WholePointSetId></PointList><Location>2 0 0.03</Location></PointFeatureMeasurement>
+</MeasuredFeatures><MeasuredPointSets n="1">
+<MeasuredPointSet count="1" id="21"><Points>0 0 2.51</Points><Compensated>false</Compensated><ProbeRadius>2.5</ProbeRadius></MeasuredPointSet>
+</MeasuredPointSets></MeasurementResults></MeasurementResultsSet></Results></QIFDocument>
+)";
+  const QifMeasuredPoints q = parse_qif_points(text, "cmm.qif");
+  CHECK_FALSE(q.probe_radius);
+  REQUIRE(q.points.size() == 3);
+  CHECK(q.points[0].xyz == Eigen::Vector3d(0, 0, 0.01));
+  CHECK(q.points[1].xyz == Eigen::Vector3d(1, 0, 0.02));
+  CHECK(q.points[2].xyz == Eigen::Vector3d(2, 0, 0.03));
+  // Without the Location of a point that has no centre: nothing to read for it.
+  std::string missing = text;
+  missing.replace(missing.find("<Location>1 0 0.02</Location>"), 29, "");
+  CHECK(error_of(missing) ==
+        "m.qif:13: point \"B\" has no <Location> (and not every point has an uncompensated probe centre)");
+}
