@@ -7,6 +7,7 @@ packages=(
   build-essential cmake
   libeigen3-dev libceres-dev libnanoflann-dev libopencv-dev libpng-dev nlohmann-json3-dev doctest-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libssl-dev
+  libpugixml-dev
   # tests only: the QA report is rendered in a real browser, and report.json
   # is checked against its schema by an independent validator
   chromium python3-jsonschema

@@ -16,6 +16,7 @@
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 #include "report/qa_report.hpp"
+#include "report/report_qif.hpp"
 #include "stage/compare_stage.hpp"
 
 namespace furrow::cli {
@@ -30,6 +31,7 @@ int run_compare(Args& args) {
   const auto regions_path = args.option("regions");
   const auto prediction_path = args.option("prediction");
   const std::string out = args.required_option("out");
+  const auto qif_path = args.option("qif");  // QIF 3.0 Results next to comparison.json (docs/qif.md)
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
   const std::string dof = args.option_or("dof", "all");
@@ -95,6 +97,7 @@ int run_compare(Args& args) {
   if (regions_path) outputs.add_input(*regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out);
+  if (qif_path) outputs.will_write(*qif_path);
 
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
@@ -135,8 +138,17 @@ int run_compare(Args& args) {
   sources.prediction = prediction_path.value_or("");
   sources.measurement_units = read.units;
   sources.merged = &merged;
-  outputs.file(out, comparison_to_json_text(c, set, part, options, sources));
-  outputs.publish();
+  std::string json = comparison_to_json_text(c, set, part, options, sources);
+  if (qif_path) {  // from comparison.json's own content, so the two files say the same
+    std::vector<InputDigest> inputs = {digest_file("part", part_path)};
+    for (const std::string& m : measurement_files) inputs.push_back(digest_file("measurements", m));
+    if (plan_path) inputs.push_back(digest_file("plan", *plan_path));
+    if (regions_path) inputs.push_back(digest_file("regions", *regions_path));
+    if (prediction_path) inputs.push_back(digest_file("prediction", *prediction_path));
+    outputs.file(*qif_path, comparison_to_qif(parse_comparison(json, out), inputs, std::nullopt));
+  }
+  outputs.file(out, json);
+  outputs.publish(out);
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
@@ -193,7 +205,8 @@ const Command kCompareCommand = {
     "\n"
     "  --measurements FILE  measured points: .csv, .xyz/.txt, DMIS output\n"
     "                       (.dmo/.dms/.out/.dmi/.dmis/.res), I++ DME response log\n"
-    "                       (.log/.ipp, or .res starting with a response line);\n"
+    "                       (.log/.ipp, or .res starting with a response line),\n"
+    "                       QIF 3.0 Results (.qif);\n"
     "                       repeat it for a re-measure: files are merged by id in\n"
     "                       the order given, a later point replaces an earlier one\n"
     "                       with the same id (each file must carry ids)\n"
@@ -227,6 +240,9 @@ const Command kCompareCommand = {
     "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
     "  --no-outlier-rejection  keep every point in the fit\n"
     "  --out FILE           comparison.json to write\n"
+    "  --qif FILE           also write the results as a QIF 3.0 Results document\n"
+    "                       (ISO 23952): points, surface profile, per-point\n"
+    "                       status, verdict, inputs with SHA-256 (docs/qif.md)\n"
     "\n"
     "Verification against a machining prediction (docs/verification.md):\n"
     "  --prediction FILE    prediction.json of PART (furrow predict): predicted vs\n"

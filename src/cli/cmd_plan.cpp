@@ -15,6 +15,9 @@
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "stage/plan_stage.hpp"
+#include "inspection/tolerance_zone.hpp"
+#include "io/plan_file.hpp"
+#include "io/qif/plan_qif.hpp"
 
 namespace furrow::cli {
 
@@ -83,6 +86,9 @@ int run_plan(Args& args) {
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
   o.motion.dwell = args.number_or("dwell", o.motion.dwell);
   o.gouge_points = static_cast<int>(args.integer_or("gouge-points", o.gouge_points, 1));
+  // The profile zone plan.qif states (docs/qif.md), as `furrow compare` takes it.
+  const double qif_tolerance = args.positive_or("tolerance", 0.05);
+  const auto qif_outside = args.number("outside");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
   try {
@@ -124,10 +130,14 @@ int run_plan(Args& args) {
 
   const std::string staging = outputs.folder(out);
   for (const FolderFile& f : stage.files) write_file_atomically(staging + "/" + f.path, f.bytes);
+  const ToleranceZone zone = ToleranceZone::make(qif_tolerance, qif_outside.value_or(qif_tolerance / 2),
+                                                 "--tolerance/--outside");
+  write_file_atomically(staging + "/plan.qif", plan_to_qif(parse_plan(stage.plan_json, out + "/plan.json"),
+                                                           part_path, zone.width, zone.outside));
   outputs.publish();
   const PlanResult& result = stage.result;
   print_summary(std::cout, result, out);
-  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json}\n";
+  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json, plan.qif}\n";
   return kExitOk;
 }
 
@@ -142,14 +152,15 @@ const Command kPlanCommand = {
     "                   [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
     "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
-    "                   [--dwell S] [--gouge-points N]\n"
+    "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
     "one (ball touches only there, shaft clear, tilt), moves or drops those it cannot\n"
     "(with the reason in report.json), orders them into a short tour and writes FOLDER\n"
-    "with plan.json, plan.csv, NAME.dmi (DMIS), NAME.prg (I++ DME), plan.png and\n"
-    "report.json, NAME being the folder's name (docs/cmm.md, docs/formats.md).\n"
+    "with plan.json, plan.csv, NAME.dmi (DMIS), NAME.prg (I++ DME), plan.png,\n"
+    "report.json and plan.qif (QIF 3.0, docs/qif.md), NAME being the folder's\n"
+    "name (docs/cmm.md, docs/formats.md).\n"
     "The same inputs and seed give the same files.\n"
     "\n"
     "  --regions FILE       regions of PART (required)\n"
@@ -177,7 +188,9 @@ const Command kPlanCommand = {
     "  --max-tilt DEG       largest angle between normal and vertical (default 75)\n"
     "  --move-speed, --touch-speed, --acceleration, --dwell   for the cycle time\n"
     "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n"
-    "  --gouge-points N     points on each predicted gouge site (default 1)\n",
+    "  --gouge-points N     points on each predicted gouge site (default 1)\n"
+    "  --tolerance T        profile zone width in mm stated in plan.qif (default 0.05)\n"
+    "  --outside A          part of the zone on the + side in mm (default T/2)\n",
     run_plan};
 
 }  // namespace furrow::cli

@@ -33,7 +33,8 @@ int run_report(Args& args) {
   std::printf("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance", v.result(),
               v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
   if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
-  std::printf(")\nwrote %s/report.html (and report.json, points.csv, %zu figures)\n", out.c_str(), files.size() - 3);
+  std::printf(")\nwrote %s/report.html (and report.json, points.csv, results.qif, %zu figures)\n", out.c_str(),
+              files.size() - 4);
   return exit_status(v.verdict, v.alignment);
 }
 
@@ -45,10 +46,11 @@ const Command kReportCommand = {
     "\n"
     "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
     "as a whole: report.html (self-contained, opens offline), report.json (every\n"
-    "number; docs/report.schema.json), points.csv (one row per measured point)\n"
-    "and the figures as PNG files (region map, deviation maps, histogram,\n"
-    "predicted vs measured, gouge sites). The report opens with the verdict and\n"
-    "names every input file with its SHA-256 (docs/report.md).\n"
+    "number; docs/report.schema.json), points.csv (one row per measured point),\n"
+    "results.qif (QIF 3.0 Results, docs/qif.md) and the figures as PNG files\n"
+    "(region map, deviation maps, histogram, predicted vs measured, gouge\n"
+    "sites). The report opens with the verdict and names every input file with\n"
+    "its SHA-256 (docs/report.md).\n"
     "The part, plan, regions and prediction the comparison names are looked up\n"
     "relative to the current directory, then next to COMPARISON.\n"
     "Exit status 0 when the comparison passed, 1 when it failed, 4 when it was\n"

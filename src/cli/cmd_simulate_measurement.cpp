@@ -8,6 +8,7 @@
 #include "base/output_set.hpp"
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/cmm/measurement_qif.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
@@ -82,7 +83,8 @@ int run_simulate(Args& args) {
       sim.set.points[k].nominal_ijk = p.ijk;
     }
   }
-  outputs.file(out, measurements_text(sim.set, format));
+  outputs.file(out, format == MeasurementFormat::qif ? measurements_to_qif(sim.set, &plan, part_path)
+                                                    : measurements_text(sim.set, format));
   outputs.publish();
   std::printf("%zu points (%s, probe %g mm), %d blunders, noise %g mm, seed %u -> %s\n",
               sim.set.points.size(), to_string(sim.set.kind), plan.probe.diameter, o.blunders,
@@ -128,8 +130,9 @@ const Command kSimulateMeasurementCommand = {
     "                       the part point (X,Y,Z); repeatable\n"
     "  --out FILE           measurements to write, in the format the extension names:\n"
     "                       .csv (CSV), .dmo/.dms/.out (DMIS output: F() nominals\n"
-    "                       and FA() actuals), .res/.log (I++ DME response log);\n"
-    "                       numbers read back exactly (docs/formats.md)\n",
+    "                       and FA() actuals), .res/.log (I++ DME response log),\n"
+    "                       .qif (QIF 3.0 Results, docs/qif.md); numbers read back\n"
+    "                       exactly (docs/formats.md)\n",
     run_simulate};
 
 }  // namespace furrow::cli

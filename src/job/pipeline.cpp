@@ -19,6 +19,7 @@
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "stage/compare_stage.hpp"
+#include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
 #include "stage/predict_stage.hpp"
 #include "stage/toolpath_stage.hpp"
@@ -133,6 +134,8 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
                                  s.note(std::string("plan: ") + step, d, t);
                                });
   InspectionPlan read_back = parse_plan(stage.plan_json, "plan/plan.json");
+  stage.files.push_back({"plan.qif", plan_to_qif(read_back, s.part_name, job.compare.tolerance.width,
+                                                 job.compare.tolerance.outside)});  // docs/qif.md
   for (FolderFile& f : stage.files) {
     if (f.path == "plan.json")
       s.add_input("plan", "plan/plan.json", std::move(f.bytes));

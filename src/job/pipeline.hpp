@@ -17,10 +17,11 @@
 //   regions.json, regions.png
 //   toolpath.nc, toolpath.csv     (generated paths only)
 //   prediction.json, prediction.png
-//   plan/               plan.json, plan.csv, NAME.dmi, NAME.prg, plan.png, report.json
+//   plan/               plan.json, plan.csv, NAME.dmi, NAME.prg, plan.png, report.json,
+//                       plan.qif (docs/qif.md)
 //   measurements.csv    (simulated measurements only)
 //   comparison.json
-//   report.html, report.json, points.csv, figures/*.png   (qa_report.hpp)
+//   report.html, report.json, points.csv, results.qif, figures/*.png   (qa_report.hpp)
 // The paths inside comparison.json are relative to the output folder (the
 // part's and a measurement file's too), so `furrow report OUT/comparison.json`
 // finds them from any directory.

@@ -9,6 +9,7 @@
 #include "base/json_fields.hpp"
 #include "report/file_digest.hpp"
 #include "report/points_csv.hpp"
+#include "report/report_qif.hpp"
 #include "report/report_figures.hpp"
 #include "report/report_html.hpp"
 #include "report/report_json.hpp"
@@ -72,6 +73,7 @@ std::vector<FolderFile> render_report(const ComparisonDocument& doc, const Regio
   files.push_back({"report.html", report_html(doc, verdict, regions, context, figures)});
   files.push_back({"report.json", report_json_text(doc, verdict, regions, context, figures)});
   files.push_back({"points.csv", points_csv_text(doc)});
+  files.push_back({"results.qif", comparison_to_qif(doc, context.inputs, context.generated)});  // docs/qif.md
   for (const ReportFigure& f : figures) files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
   return files;
 }

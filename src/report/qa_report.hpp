@@ -4,6 +4,7 @@
 //                 offline, in a mail client, from an archive
 //   report.json   every number (docs/report.schema.json)
 //   points.csv    one row per measured point
+//   results.qif   the same as QIF 3.0 Results, timed like report.json (report_qif.hpp)
 //   figures/*.png the figures of the HTML as files
 // built from a comparison document (read_comparison) and the part it was
 // made on, plus what the document cannot know: where it came from (input

@@ -12,6 +12,7 @@
 #include "io/cmm/ippdme_response_log.hpp"
 #include "io/cmm/measurement_csv.hpp"
 #include "io/cmm/measurement_fields.hpp"
+#include "io/cmm/measurement_qif.hpp"
 #include "io/cmm/measurement_xyz.hpp"
 #include "io/part_file.hpp"
 
@@ -55,8 +56,10 @@ MeasurementFormat measurement_format_from_path(const std::string& path, const st
   if (ext == ".res" && is_ippdme_response_log(std::string_view(text).substr(has_bom(text) ? 3 : 0)))
     return MeasurementFormat::ippdme_log;
   if (is_dmis_extension(ext)) return MeasurementFormat::dmis;
+  if (ext == ".qif") return MeasurementFormat::qif;  // QIF 3.0 Results (measurement_qif.hpp)
   throw InputError(path + ": unknown measurement file type " + quote_field(ext) +
-                   " (expected .csv, .xyz/.txt, DMIS .dmo/.dms/.out/.dmi/.dmis/.res or I++ DME .log/.ipp/.res)");
+                   " (expected .csv, .xyz/.txt, DMIS .dmo/.dms/.out/.dmi/.dmis/.res, I++ DME .log/.ipp/.res or "
+                   "QIF .qif)");
 }
 
 MeasurementFormat measurement_output_format(const std::string& path) {
@@ -64,8 +67,9 @@ MeasurementFormat measurement_output_format(const std::string& path) {
   if (ext == ".csv") return MeasurementFormat::csv;
   if (ext == ".dmo" || ext == ".dms" || ext == ".out") return MeasurementFormat::dmis;
   if (ext == ".res" || ext == ".log") return MeasurementFormat::ippdme_log;
-  throw InputError(path + ": measurements are written as CSV (.csv), DMIS output (.dmo, .dms, .out) or an "
-                          "I++ DME response log (.res, .log); " +
+  if (ext == ".qif") return MeasurementFormat::qif;
+  throw InputError(path + ": measurements are written as CSV (.csv), DMIS output (.dmo, .dms, .out), an "
+                          "I++ DME response log (.res, .log) or QIF 3.0 Results (.qif); " +
                    quote_field(ext) + " is none of them");
 }
 
@@ -75,6 +79,7 @@ std::string measurements_text(const MeasurementSet& set, MeasurementFormat forma
     case MeasurementFormat::csv: return measurements_to_csv(set);
     case MeasurementFormat::dmis: return dmis_results_text(set);
     case MeasurementFormat::ippdme_log: return ippdme_response_log_text(set);
+    case MeasurementFormat::qif:  // needs the plan: measurements_to_qif (measurement_qif.hpp)
     case MeasurementFormat::xyz:
     case MeasurementFormat::automatic: break;
   }
@@ -84,6 +89,8 @@ std::string measurements_text(const MeasurementSet& set, MeasurementFormat forma
 MeasurementSet parse_measurements(const std::string& file_text, const std::string& name,
                                   MeasurementFormat format, const MeasurementReadOptions& options) {
   // A byte-order mark (Excel's "CSV UTF-8", some CMM software) is not content.
+  // QIF states its own units and probe (docs/qif.md).
+  if (format == MeasurementFormat::qif) return parse_qif_measurements(file_text, name, options);
   std::string_view text = file_text;
   if (has_bom(file_text)) text.remove_prefix(3);
   MeasurementSet set;
@@ -107,6 +114,7 @@ MeasurementSet parse_measurements(const std::string& file_text, const std::strin
       parse_ippdme_response_log(text, name, program ? &*program : nullptr, options.ippdme_program, set);
       break;
     }
+    case MeasurementFormat::qif:
     case MeasurementFormat::automatic:
       throw std::logic_error("parse_measurements: resolve the format first");
   }
@@ -128,6 +136,7 @@ MeasurementSet read_measurements(const std::string& path, const MeasurementReadO
   // The extension is checked before the file is read; only .res needs its content.
   MeasurementFormat format = options.format;
   if (format == MeasurementFormat::automatic) format = measurement_format_from_path(path);
+  if (format == MeasurementFormat::qif) return read_qif_measurements(path, options);  // parsed in place
   const std::string text = json_fields::read_text(path);
   if (options.format == MeasurementFormat::automatic && lower_extension(path) == ".res")
     format = measurement_format_from_path(path, text);

@@ -85,7 +85,7 @@ struct MeasurementSet {
   bool ids_from_file = false;  // false when ids were generated (XYZ, CSV without id)
 };
 
-enum class MeasurementFormat { automatic, csv, xyz, dmis, ippdme_log };
+enum class MeasurementFormat { automatic, csv, xyz, dmis, ippdme_log, qif };  // qif: docs/qif.md
 
 struct MeasurementReadOptions {
   MeasurementFormat format = MeasurementFormat::automatic;  // by extension

@@ -1,0 +1,28 @@
+#include "io/qif/plan_qif.hpp"
+
+#include "io/qif/qif_document.hpp"
+
+namespace furrow {
+
+std::string plan_to_qif(const InspectionPlan& plan, const std::string& part_name, double tolerance,
+                        double outside) {
+  QifDocumentData d;
+  d.part_name = part_name;
+  d.description = std::string("Furrow ") + FURROW_VERSION + ": inspection plan, " +
+                  std::to_string(plan.points.size()) + " points, probe " + plan.probe.name;
+  d.points.reserve(plan.points.size());
+  for (const PlannedPoint& p : plan.points) {
+    QifPoint q;
+    q.id = p.id;
+    q.nominal = p.xyz;
+    q.normal = p.ijk;
+    d.points.push_back(std::move(q));
+  }
+  QifProfile profile;
+  profile.tolerance = tolerance;
+  if (outside != tolerance / 2) profile.outer_disposition = outside;
+  d.profile = profile;
+  return qif_plan_text(d);
+}
+
+}  // namespace furrow

@@ -1,0 +1,489 @@
+#include "io/qif/qif_document.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "io/qif/qif_uuid.hpp"
+
+// Element order: the xs:sequence of each type in the QIF 3.0 schema
+// (docs/qif.md lists them); tests/io/qif/test_qif_structure.cpp checks the
+// written documents against the same sequences.
+
+namespace furrow {
+
+namespace {
+
+// Placeholder of a UUID's length, replaced once the content is known.
+const std::string kDocumentQpid = "00000000-0000-0000-0000-00000000000d";
+const std::string kResultsQpid = "00000000-0000-0000-0000-00000000000r";
+// Stands for the time until the QPIds are derived: they identify the
+// content, which is the same for the same inputs whenever it was made.
+const std::string kTime = "0000-00-00T00:00:00 (time)";
+
+class Writer {
+ public:
+  std::string text;
+
+  void number(double v) {
+    if (!std::isfinite(v)) throw std::invalid_argument("QIF: a non-finite number");
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    text.append(buf, r.ptr);
+  }
+  void integer(std::size_t v) {
+    char buf[24];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    text.append(buf, r.ptr);
+  }
+  void triple(const Eigen::Vector3d& v) {
+    number(v.x());
+    text += ' ';
+    number(v.y());
+    text += ' ';
+    number(v.z());
+  }
+  // Character data and attribute values: markup characters escaped,
+  // characters XML 1.0 forbids (C0 controls but tab, LF, CR) replaced by '?'.
+  void escaped(const std::string& s) {
+    for (char c : s) {
+      switch (c) {
+        case '&': text += "&amp;"; break;
+        case '<': text += "&lt;"; break;
+        case '>': text += "&gt;"; break;
+        case '"': text += "&quot;"; break;
+        default:
+          if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r')
+            text += '?';
+          else
+            text += c;
+      }
+    }
+  }
+  void indent(int depth) { text.append(2 * depth, ' '); }
+  // <name>text</name> on its own line.
+  void leaf(int depth, const char* name, const std::string& value) {
+    indent(depth);
+    text += '<';
+    text += name;
+    text += '>';
+    escaped(value);
+    text += "</";
+    text += name;
+    text += ">\n";
+  }
+  void open(int depth, const char* name) {
+    indent(depth);
+    text += '<';
+    text += name;
+    text += ">\n";
+  }
+  void open_n(int depth, const char* name, std::size_t n) {
+    indent(depth);
+    text += '<';
+    text += name;
+    text += " n=\"";
+    integer(n);
+    text += "\">\n";
+  }
+  void open_id(int depth, const char* name, std::size_t id) {
+    indent(depth);
+    text += '<';
+    text += name;
+    text += " id=\"";
+    integer(id);
+    text += "\">";
+  }
+  void close(int depth, const char* name) {
+    indent(depth);
+    close_inline(name);
+  }
+  void close_inline(const char* name) {
+    text += "</";
+    text += name;
+    text += ">\n";
+  }
+  // <name>id</name> inline.
+  void ref(const char* name, std::size_t id) {
+    text += '<';
+    text += name;
+    text += '>';
+    integer(id);
+    text += "</";
+    text += name;
+    text += '>';
+  }
+  void vec(const char* name, const Eigen::Vector3d& v) {
+    text += '<';
+    text += name;
+    text += '>';
+    triple(v);
+    text += "</";
+    text += name;
+    text += '>';
+  }
+  void value(const char* name, double v) {
+    text += '<';
+    text += name;
+    text += '>';
+    number(v);
+    text += "</";
+    text += name;
+    text += '>';
+  }
+};
+
+// Ids in document order; every block is numbered before the text is
+// written, so a reference ahead (a feature measurement to its point set)
+// is known when written.
+struct Ids {
+  std::size_t n = 0;
+  std::size_t part = 1, feature_definition = 2;
+  std::size_t nominal0 = 0, item0 = 0;
+  std::size_t surface_definition = 0, point_definition = 0, surface_nominal = 0, point_nominal = 0;
+  std::size_t surface_item = 0, point_item0 = 0;
+  std::size_t results = 0, measurement0 = 0, point_set0 = 0, surface_measurement = 0, point_measurement0 = 0;
+  std::size_t max = 0;
+};
+
+Ids number_ids(const QifDocumentData& d, bool results) {
+  Ids ids;
+  ids.n = d.points.size();
+  std::size_t next = 3;
+  auto block = [&](std::size_t count) {
+    const std::size_t first = next;
+    next += count;
+    return first;
+  };
+  ids.nominal0 = block(ids.n);
+  ids.item0 = block(ids.n);
+  const bool per_point = results && d.profile;
+  if (d.profile) {
+    ids.surface_definition = block(1);
+    if (per_point) ids.point_definition = block(1);
+    ids.surface_nominal = block(1);
+    if (per_point) ids.point_nominal = block(1);
+    ids.surface_item = block(1);
+    if (per_point) ids.point_item0 = block(ids.n);
+  }
+  if (results) {
+    ids.results = block(1);
+    ids.measurement0 = block(ids.n);
+    std::size_t centres = 0;
+    for (const QifPoint& p : d.points) centres += p.probe_centre.has_value();
+    ids.point_set0 = block(centres);
+    if (d.profile) {
+      ids.surface_measurement = block(1);
+      ids.point_measurement0 = block(ids.n);
+    }
+  }
+  ids.max = next - 1;
+  return ids;
+}
+
+void write_head(Writer& w, const QifDocumentData& d, const Ids& ids, const char* scope) {
+  w.text += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  // QIFDocumentType: QPId, Version?, Header?, FileUnits?, Product?,
+  // Features?, Characteristics?, Results? (QIFDocument.xsd).
+  w.text += "<QIFDocument xmlns=\"";
+  w.text += kQifNamespace;
+  w.text += "\" versionQIF=\"3.0.0\" idMax=\"";
+  w.integer(ids.max);
+  w.text += "\">\n";
+  w.leaf(1, "QPId", kDocumentQpid);
+  if (d.time) {
+    w.open(1, "Version");  // VersionBaseType
+    w.leaf(2, "TimeCreated", kTime);
+    w.close(1, "Version");
+  }
+  w.open(1, "Header");  // QIFDocumentHeaderType: Application, Description, Scope
+  w.open(2, "Application");
+  w.leaf(3, "Name", "Furrow");
+  w.close(2, "Application");
+  w.leaf(2, "Description", d.description);
+  w.leaf(2, "Scope", scope);
+  w.close(1, "Header");
+  // FileUnits: PrimaryUnits with the angular and the linear unit (Units.xsd).
+  w.open(1, "FileUnits");
+  w.open(2, "PrimaryUnits");
+  w.open(3, "AngularUnit");
+  w.leaf(4, "SIUnitName", "radian");
+  w.leaf(4, "UnitName", "degree");
+  w.open(4, "UnitConversion");
+  w.leaf(5, "Factor", "0.017453292519943295");
+  w.close(4, "UnitConversion");
+  w.close(3, "AngularUnit");
+  w.open(3, "LinearUnit");
+  w.leaf(4, "SIUnitName", "meter");
+  w.leaf(4, "UnitName", "mm");
+  w.open(4, "UnitConversion");
+  w.leaf(5, "Factor", "0.001");
+  w.close(4, "UnitConversion");
+  w.close(3, "LinearUnit");
+  w.close(2, "PrimaryUnits");
+  w.close(1, "FileUnits");
+  // Product: PartSet with the one part (QIFProduct.xsd).
+  w.open(1, "Product");
+  w.open_n(2, "PartSet", 1);
+  w.open_id(3, "Part", ids.part);
+  w.text += '\n';
+  w.leaf(4, "ModelNumber", d.part_name);
+  w.close(3, "Part");
+  w.close(2, "PartSet");
+  w.close(1, "Product");
+}
+
+void write_features(Writer& w, const QifDocumentData& d, const Ids& ids) {
+  // FeaturesType: FeatureDefinitions, FeatureNominals, FeatureItems
+  // (Features.xsd). One PointFeatureDefinition serves every nominal.
+  w.open(1, "Features");
+  w.open_n(2, "FeatureDefinitions", 1);
+  w.open_id(3, "PointFeatureDefinition", ids.feature_definition);
+  w.close_inline("PointFeatureDefinition");
+  w.close(2, "FeatureDefinitions");
+  w.open_n(2, "FeatureNominals", ids.n);
+  for (std::size_t i = 0; i < ids.n; ++i) {
+    const QifPoint& p = d.points[i];
+    w.open_id(3, "PointFeatureNominal", ids.nominal0 + i);
+    w.ref("FeatureDefinitionId", ids.feature_definition);
+    w.vec("Location", p.nominal);
+    w.vec("Normal", p.normal);
+    w.close_inline("PointFeatureNominal");
+  }
+  w.close(2, "FeatureNominals");
+  w.open_n(2, "FeatureItems", ids.n);
+  for (std::size_t i = 0; i < ids.n; ++i) {
+    w.open_id(3, "PointFeatureItem", ids.item0 + i);
+    w.ref("FeatureNominalId", ids.nominal0 + i);
+    w.text += "<FeatureName>";
+    w.escaped(d.points[i].id);
+    w.text += "</FeatureName><DeterminationMode><Checked><CheckDetails><Measured/></CheckDetails></Checked>"
+              "</DeterminationMode>";
+    w.close_inline("PointFeatureItem");
+  }
+  w.close(2, "FeatureItems");
+  w.close(1, "Features");
+}
+
+void write_profile_definition(Writer& w, const char* name, std::size_t id, const QifProfile& profile) {
+  // ProfileCharacteristicDefinitionBaseType: ToleranceValue, OuterDisposition?
+  w.open_id(3, name, id);
+  w.value("ToleranceValue", profile.tolerance);
+  if (profile.outer_disposition) w.value("OuterDisposition", *profile.outer_disposition);
+  w.close_inline(name);
+}
+
+void write_characteristics(Writer& w, const QifDocumentData& d, const Ids& ids, bool per_point) {
+  const QifProfile& profile = *d.profile;
+  // CharacteristicsType: CharacteristicDefinitions, CharacteristicNominals,
+  // CharacteristicItems (Characteristics.xsd).
+  w.open(1, "Characteristics");
+  w.open_n(2, "CharacteristicDefinitions", per_point ? 2 : 1);
+  write_profile_definition(w, "SurfaceProfileCharacteristicDefinition", ids.surface_definition, profile);
+  if (per_point) write_profile_definition(w, "PointProfileCharacteristicDefinition", ids.point_definition, profile);
+  w.close(2, "CharacteristicDefinitions");
+  w.open_n(2, "CharacteristicNominals", per_point ? 2 : 1);
+  w.open_id(3, "SurfaceProfileCharacteristicNominal", ids.surface_nominal);
+  w.ref("CharacteristicDefinitionId", ids.surface_definition);
+  w.close_inline("SurfaceProfileCharacteristicNominal");
+  if (per_point) {
+    w.open_id(3, "PointProfileCharacteristicNominal", ids.point_nominal);
+    w.ref("CharacteristicDefinitionId", ids.point_definition);
+    w.close_inline("PointProfileCharacteristicNominal");
+  }
+  w.close(2, "CharacteristicNominals");
+  // CharacteristicItemBaseType: Name, FeatureItemIds, CharacteristicNominalId.
+  w.open_n(2, "CharacteristicItems", 1 + (per_point ? ids.n : 0));
+  w.open_id(3, "SurfaceProfileCharacteristicItem", ids.surface_item);
+  w.text += "\n";
+  w.leaf(4, "Name", "surface profile");
+  w.open_n(4, "FeatureItemIds", ids.n);
+  for (std::size_t i = 0; i < ids.n; ++i) {
+    w.indent(5);
+    w.ref("Id", ids.item0 + i);
+    w.text += '\n';
+  }
+  w.close(4, "FeatureItemIds");
+  w.indent(4);
+  w.ref("CharacteristicNominalId", ids.surface_nominal);
+  w.text += '\n';
+  w.close(3, "SurfaceProfileCharacteristicItem");
+  if (per_point)
+    for (std::size_t i = 0; i < ids.n; ++i) {
+      w.open_id(3, "PointProfileCharacteristicItem", ids.point_item0 + i);
+      w.text += "<Name>";
+      w.escaped(d.points[i].id);
+      w.text += "</Name><FeatureItemIds n=\"1\">";
+      w.ref("Id", ids.item0 + i);
+      w.text += "</FeatureItemIds>";
+      w.ref("CharacteristicNominalId", ids.point_nominal);
+      w.close_inline("PointProfileCharacteristicItem");
+    }
+  w.close(2, "CharacteristicItems");
+  w.close(1, "Characteristics");
+}
+
+void status(Writer& w, const std::string& value) {
+  // CharacteristicStatusType: the CharacteristicStatusEnum choice.
+  w.text += "<Status><CharacteristicStatusEnum>";
+  w.escaped(value);
+  w.text += "</CharacteristicStatusEnum></Status>";
+}
+
+void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
+  // ResultsType: MeasurementResultsSet (QIFResults.xsd).
+  w.open(1, "Results");
+  w.open_n(2, "MeasurementResultsSet", 1);
+  w.open_id(3, "MeasurementResults", ids.results);
+  w.text += '\n';
+  // MeasurementResultsType: InspectionTraceability?, ThisResultsInstanceQPId?,
+  // ExternalFileReferences?, MeasuredFeatures?, MeasuredPointSets?,
+  // MeasuredCharacteristics?, InspectionStatus.
+  if (d.time) {
+    w.open(4, "InspectionTraceability");  // InspectionTraceabilityType
+    w.leaf(5, "ReportPreparationDate", kTime);
+    w.close(4, "InspectionTraceability");
+  }
+  w.leaf(4, "ThisResultsInstanceQPId", kResultsQpid);
+  if (!d.inputs.empty()) {
+    w.open_n(4, "ExternalFileReferences", d.inputs.size());
+    for (const QifFile& f : d.inputs) {
+      // ExternalFileReferenceType: URI, FileSpec, Description.
+      w.open(5, "ExternalFileReference");
+      w.leaf(6, "URI", f.path);
+      w.open(6, "FileSpec");
+      w.leaf(7, "OtherFileSpec", f.role);
+      w.close(6, "FileSpec");
+      w.leaf(6, "Description", "SHA-256 " + f.sha256);
+      w.close(5, "ExternalFileReference");
+    }
+    w.close(4, "ExternalFileReferences");
+  }
+  w.open_n(4, "MeasuredFeatures", ids.n);
+  std::size_t set_id = ids.point_set0;
+  for (std::size_t i = 0; i < ids.n; ++i) {
+    const QifPoint& p = d.points[i];
+    if (!p.actual) throw std::invalid_argument("QIF results: point " + p.id + " has no measured location");
+    // PointFeatureMeasurementType: FeatureItemId, PointList?, Location.
+    w.open_id(5, "PointFeatureMeasurement", ids.measurement0 + i);
+    w.ref("FeatureItemId", ids.item0 + i);
+    if (p.probe_centre) {
+      w.text += "<PointList n=\"1\">";
+      w.ref("WholePointSetId", set_id++);
+      w.text += "</PointList>";
+    }
+    w.vec("Location", *p.actual);
+    w.close_inline("PointFeatureMeasurement");
+  }
+  w.close(4, "MeasuredFeatures");
+  if (set_id != ids.point_set0) {
+    w.open_n(4, "MeasuredPointSets", set_id - ids.point_set0);
+    std::size_t id = ids.point_set0;
+    for (const QifPoint& p : d.points) {
+      if (!p.probe_centre) continue;
+      // MeasuredPointSetType: Points, Compensated, ProbeRadius; count attribute.
+      w.indent(5);
+      w.text += "<MeasuredPointSet count=\"1\" id=\"";
+      w.integer(id++);
+      w.text += "\">";
+      w.vec("Points", *p.probe_centre);
+      w.text += "<Compensated>false</Compensated>";
+      w.value("ProbeRadius", d.probe_radius);
+      w.close_inline("MeasuredPointSet");
+    }
+    w.close(4, "MeasuredPointSets");
+  }
+  if (d.profile) {
+    w.open(4, "MeasuredCharacteristics");
+    w.open_n(5, "CharacteristicMeasurements", 1 + ids.n);
+    // CharacteristicMeasurementBaseType: Status, CharacteristicItemId,
+    // FeatureMeasurementIds, Value.
+    w.open_id(6, "SurfaceProfileCharacteristicMeasurement", ids.surface_measurement);
+    w.text += '\n';
+    w.indent(7);
+    status(w, d.profile->status);
+    w.text += '\n';
+    w.indent(7);
+    w.ref("CharacteristicItemId", ids.surface_item);
+    w.text += '\n';
+    w.open_n(7, "FeatureMeasurementIds", ids.n);
+    for (std::size_t i = 0; i < ids.n; ++i) {
+      w.indent(8);
+      w.ref("Id", ids.measurement0 + i);
+      w.text += '\n';
+    }
+    w.close(7, "FeatureMeasurementIds");
+    if (!d.profile->value) throw std::invalid_argument("QIF results: the profile has no measured value");
+    w.indent(7);
+    w.value("Value", *d.profile->value);
+    w.text += '\n';
+    w.close(6, "SurfaceProfileCharacteristicMeasurement");
+    for (std::size_t i = 0; i < ids.n; ++i) {
+      const QifPoint& p = d.points[i];
+      if (!p.deviation) throw std::invalid_argument("QIF results: point " + p.id + " has no deviation");
+      w.open_id(6, "PointProfileCharacteristicMeasurement", ids.point_measurement0 + i);
+      status(w, p.status);
+      w.ref("CharacteristicItemId", ids.point_item0 + i);
+      w.text += "<FeatureMeasurementIds n=\"1\">";
+      w.ref("Id", ids.measurement0 + i);
+      w.text += "</FeatureMeasurementIds>";
+      w.value("Value", *p.deviation);
+      w.close_inline("PointProfileCharacteristicMeasurement");
+    }
+    w.close(5, "CharacteristicMeasurements");
+    w.close(4, "MeasuredCharacteristics");
+  }
+  // InspectionStatusType: InspectionStatusEnum or OtherInspectionStatus.
+  w.open(4, "InspectionStatus");
+  w.leaf(5, d.inspection_status_other ? "OtherInspectionStatus" : "InspectionStatusEnum", d.inspection_status);
+  w.close(4, "InspectionStatus");
+  w.close(3, "MeasurementResults");
+  w.close(2, "MeasurementResultsSet");
+  w.close(1, "Results");
+}
+
+// The placeholders replaced by UUIDs derived from the text around them,
+// then the time's by the time.
+void set_qpids(std::string& text, const std::optional<std::string>& time) {
+  const std::string digest = qif_sha256_hex(text);
+  const std::string document = uuid_from_content(digest + " QPId");
+  const std::string results = uuid_from_content(digest + " ThisResultsInstanceQPId");
+  for (const auto& [placeholder, uuid] : {std::pair{kDocumentQpid, document}, std::pair{kResultsQpid, results}}) {
+    const std::size_t at = text.find(placeholder);
+    if (at != std::string::npos) text.replace(at, placeholder.size(), uuid);
+  }
+  if (!time) return;
+  std::string escaped;
+  for (char c : *time) escaped += (c == '<' || c == '>' || c == '&' || static_cast<unsigned char>(c) < 0x20) ? '?' : c;
+  for (std::size_t at = text.find(kTime); at != std::string::npos; at = text.find(kTime, at + escaped.size()))
+    text.replace(at, kTime.size(), escaped);
+}
+
+}  // namespace
+
+std::string qif_results_text(const QifDocumentData& d) {
+  const Ids ids = number_ids(d, true);
+  Writer w;
+  w.text.reserve(600 * (d.points.size() + 4));
+  write_head(w, d, ids, "Results");
+  write_features(w, d, ids);
+  if (d.profile) write_characteristics(w, d, ids, true);
+  write_results(w, d, ids);
+  w.text += "</QIFDocument>\n";
+  set_qpids(w.text, d.time);
+  return std::move(w.text);
+}
+
+std::string qif_plan_text(const QifDocumentData& d) {
+  const Ids ids = number_ids(d, false);
+  Writer w;
+  w.text.reserve(400 * (d.points.size() + 4));
+  write_head(w, d, ids, "Plan");
+  write_features(w, d, ids);
+  if (d.profile) write_characteristics(w, d, ids, false);
+  w.text += "</QIFDocument>\n";
+  set_qpids(w.text, d.time);
+  return std::move(w.text);
+}
+
+}  // namespace furrow

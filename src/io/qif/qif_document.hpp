@@ -1,0 +1,89 @@
+#pragma once
+// QIF 3.0 (ISO 23952) documents that Furrow writes (docs/qif.md): a Results
+// document (measured points, the surface profile characteristic, per-point
+// status, the verdict, traceability) and a Plan document (the planned points
+// and the profile characteristic to evaluate). The data is plain: the
+// comparison, the plan and the measurement set are converted into it by
+// their own layers (report/report_qif, io/qif/plan_qif,
+// io/cmm/measurement_qif), so this module needs nothing above io/.
+//
+// The text follows the QIF 3.0 schema (QIFDocument.xsd, QIFResults.xsd,
+// Features.xsd, Characteristics.xsd, Traceability.xsd): elements in the
+// order of each xs:sequence, every list with its `n` count, ids numbered
+// from 1 in document order with idMax the largest, every *Id reference to
+// an element of the document. Lengths are millimetres (FileUnits says so),
+// numbers in their shortest round-trip text.
+//
+// Deterministic: the same data gives the same bytes. The document's QPId and
+// the results' ThisResultsInstanceQPId are UUIDs derived from the SHA-256 of
+// the document's own content (qif_uuid.hpp), not random; a time appears only
+// when the caller gives one (the report's generation time).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace furrow {
+
+// An input file named in the results' ExternalFileReferences.
+struct QifFile {
+  std::string role;    // "part", "measurements", "plan", ...
+  std::string path;    // as the command line or job gave it
+  std::string sha256;  // lower-case hex
+};
+
+struct QifPoint {
+  std::string id;                                      // FeatureName
+  Eigen::Vector3d nominal = Eigen::Vector3d::Zero();   // nominal point [mm], part frame
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // unit, out of the material
+  // Results only: the measured point [mm] (PointFeatureMeasurement/Location).
+  std::optional<Eigen::Vector3d> actual;
+  // Results only: the uncompensated probe centre [mm] the actual came from;
+  // written as a MeasuredPointSet with Compensated false and the ProbeRadius.
+  std::optional<Eigen::Vector3d> probe_centre;
+  // Results with a profile: the signed deviation [mm] and the point's
+  // CharacteristicStatusEnum ("PASS", "FAIL", "NOT_ANALYZED").
+  std::optional<double> deviation;
+  std::string status;
+};
+
+// The surface profile characteristic over all points.
+struct QifProfile {
+  double tolerance = 0;                    // zone width [mm], ToleranceValue
+  // Upper limit of an unequally disposed zone [mm] (OuterDisposition);
+  // unset for a bilateral zone.
+  std::optional<double> outer_disposition;
+  // Results only: the measured profile [mm] and its CharacteristicStatusEnum.
+  std::optional<double> value;
+  std::string status;
+};
+
+struct QifDocumentData {
+  std::string part_name;       // Part/ModelNumber
+  std::string description;     // Header/Description (what made the document)
+  std::vector<QifFile> inputs;
+  std::optional<std::string> time;  // ISO 8601 UTC; none: no time in the document
+  double probe_radius = 0;          // [mm] of every probe_centre
+  std::vector<QifPoint> points;
+  std::optional<QifProfile> profile;
+  // Results only: InspectionStatusEnum ("PASS", "FAIL", "NOT_CALCULATED"...)
+  // or, when `inspection_status_other`, the text of OtherInspectionStatus.
+  std::string inspection_status = "NOT_CALCULATED";
+  bool inspection_status_other = false;
+};
+
+// The QIF Results document: Features (nominals and items), the profile
+// characteristic (surface profile over all points and a point profile per
+// point) when `profile` is set, Results with one MeasurementResults. Every
+// point must have `actual`. Throws std::invalid_argument for data that is
+// not a document (a point without actual, a non-finite number).
+std::string qif_results_text(const QifDocumentData& data);
+
+// The QIF Plan document: Features and the surface profile characteristic
+// (Definition, Nominal, Item over every point), no Results.
+std::string qif_plan_text(const QifDocumentData& data);
+
+// The namespace every QIF 3 document declares.
+inline constexpr const char* kQifNamespace = "http://qifstandards.org/xsd/qif3";
+
+}  // namespace furrow
