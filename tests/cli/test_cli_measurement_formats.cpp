@@ -48,7 +48,7 @@ TEST_CASE("simulate-measurement to .csv, .dmo and .res: same coordinates back, s
   CHECK(test::slurp(dir + "/m.res").rfind("00001 &\r\n00001 # X(", 0) == 0);
   const MeasurementSet csv = read_centres(dir + "/m.csv");
   REQUIRE(csv.points.size() == 120);
-  for (const std::string& name : {"m.dmo", "m.res"}) {
+  for (const char* name : {"m.dmo", "m.res"}) {
     CAPTURE(name);
     const MeasurementSet other = read_centres(dir + "/" + name);
     REQUIRE(other.points.size() == csv.points.size());

@@ -104,7 +104,7 @@ void check_against_brute_force(const LocalGouge& g, const DifferentialGeometry& 
     const double a = (k + 0.5) * 0.1 * kDeg;
     const double f = excess(a);
     best = std::max(best, f);
-    if (excess(a - 0.1 * kDeg) > tol != f > tol || excess(a + 0.1 * kDeg) > tol != f > tol) continue;
+    if ((excess(a - 0.1 * kDeg) > tol) != (f > tol) || (excess(a + 0.1 * kDeg) > tol) != (f > tol)) continue;
     CAPTURE(a / kDeg);
     CAPTURE(f);
     CHECK(g.ranges.contains(a) == (f > tol));
