@@ -295,25 +295,43 @@ void read_measurement_dialect(Section& m, Job& job, const std::string& folder) {
   if (m.find("ipp_program")) r.ippdme_program = path_member(m, "ipp_program", folder);
 }
 
+// A file name or a list of them (a re-measure: merged by id in list order).
+std::vector<std::string> measurement_paths(const json& value, const std::string& where, const std::string& folder) {
+  std::vector<std::string> paths;
+  if (value.is_array()) {
+    if (value.empty()) throw InputError(where + ": an empty list of measurement files");
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::string at = jf::child(where, k);
+      const std::string text = jf::string(value[k], at);
+      if (text.empty()) throw InputError(at + ": empty path");
+      paths.push_back(resolve(folder, text));
+    }
+    return paths;
+  }
+  const std::string text = jf::string(value, where);
+  if (text.empty()) throw InputError(where + ": empty path");
+  return {resolve(folder, text)};
+}
+
 void read_measurements(Section& root, Job& job, const std::string& folder) {
   const json* value = root.find("measurements");
   if (!value) return;
   const std::string where = root.at("measurements");
-  if (value->is_string()) {
-    job.measurements_file = path_member(root, "measurements", folder);
+  if (value->is_string() || value->is_array()) {
+    job.measurement_files = measurement_paths(*value, where, folder);
     return;
   }
   Section m(*value, where);
   if (auto sim = m.section("simulate")) {
     read_simulation(*sim, job);
-  } else if (m.find("file")) {
-    job.measurements_file = path_member(m, "file", folder);
+  } else if (const json* files = m.find("file")) {
+    job.measurement_files = measurement_paths(*files, m.at("file"), folder);
     if (const auto kind = m.string("points")) job.measurement_read.kind = parse_probe_point_kind(*kind, m.at("points"));
     m.positive("probe_diameter", job.measurement_read.probe_diameter);
     if (const auto units = m.string("units")) job.measurement_read.units = *units;
     read_measurement_dialect(m, job, folder);
   } else {
-    throw InputError(where + ": expected a file name, {\"file\": ...} or {\"simulate\": {...}}");
+    throw InputError(where + ": expected a file name, a list of them, {\"file\": ...} or {\"simulate\": {...}}");
   }
   m.finish();
 }

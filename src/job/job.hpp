@@ -59,8 +59,9 @@ struct Job {
   PlannerOptions plan;
   bool plan_with_prediction = true;  // risk-weighted plan, points on every gouge site
 
-  // Measurements: a file, a simulation, or neither (the job stops after the plan).
-  std::optional<std::string> measurements_file;
+  // Measurements: files (several: a re-measure, merged by id in this order,
+  // measurement_merge.hpp), a simulation, or neither (the job stops after the plan).
+  std::vector<std::string> measurement_files;
   std::string measurement_dialect_file;  // a saved CSV dialect (measurement_read.dialect comes from it); empty: none
   MeasurementReadOptions measurement_read;  // probe diameter 0: the plan's probe
   std::optional<MeasurementSimulationJob> simulate;
@@ -70,7 +71,7 @@ struct Job {
 
   std::string output;  // resolved output folder
 
-  bool has_measurements() const { return measurements_file.has_value() || simulate.has_value(); }
+  bool has_measurements() const { return !measurement_files.empty() || simulate.has_value(); }
 };
 
 // Reads and checks a job file; relative paths become relative to its folder

@@ -87,9 +87,10 @@ std::string job_options_json(const Job& job) {
                            {"seed", s.seed},
                            {"points", to_string(s.kind)},
                            {"bumps", std::move(bumps)}}}};
-  } else if (job.measurements_file) {
+  } else if (!job.measurement_files.empty()) {
     const MeasurementReadOptions& r = job.measurement_read;
-    j["measurements"] = {{"file", *job.measurements_file},
+    const json files = job.measurement_files.size() == 1 ? json(job.measurement_files[0]) : json(job.measurement_files);
+    j["measurements"] = {{"file", files},
                          {"points", r.kind ? json(to_string(*r.kind)) : json(nullptr)},
                          {"probe_diameter", r.probe_diameter > 0 ? jf::finite(r.probe_diameter, "probe") : json(nullptr)},
                          {"units", r.units}};

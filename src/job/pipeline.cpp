@@ -9,6 +9,7 @@
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
 #include "inspection/comparison_file.hpp"
+#include "inspection/measurement_merge.hpp"
 #include "io/cmm/measurement_csv.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
@@ -76,6 +77,8 @@ struct Staged {
   // How the generated files name the part: relative to the output folder,
   // as the commands run inside that folder would.
   std::string part_name;
+  // Several measurement files merged by id (names relative to the output folder).
+  std::optional<MergedMeasurements> merged;
 
   void add(const std::string& path, std::string bytes) { result.files.push_back({path, std::move(bytes)}); }
   // A generated file that a later stage reads: recorded with its digest.
@@ -153,7 +156,19 @@ MeasurementSet measurement_stage(Staged& s, const InspectionPlan& plan, const Pr
   const Job& job = s.job;
   MeasurementReadOptions read = job.measurement_read;
   if (read.probe_diameter == 0) read.probe_diameter = plan.probe.diameter;
-  if (!job.simulate) return read_measurements(*job.measurements_file, read);
+  if (!job.simulate) {
+    std::vector<MeasurementSet> sets;
+    for (const std::string& f : job.measurement_files) sets.push_back(read_measurements(f, read));
+    s.merged = merge_measurements(sets);
+    for (std::size_t k = 0; k < job.measurement_files.size(); ++k) {
+      s.merged->files[k] = relative_to_folder(job.output, job.measurement_files[k]);
+      s.merged->sha256.push_back(digest_file("measurements", job.measurement_files[k]).sha256);
+    }
+    for (const MeasurementReplacement& m : s.merged->replaced)
+      s.result.summary.push_back(line("re-measured: %s from %s replaces %s", m.id.c_str(),
+                                      s.merged->files[m.by_file].c_str(), s.merged->files[m.file].c_str()));
+    return s.merged->set;
+  }
   SimulationOptions o = job.simulate->options;
   PredictedSurfaceOffsets machined;
   if (job.simulate->from_prediction) {
@@ -181,7 +196,12 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
       compare_stage(part, set, &plan, &map, job.compare_with_prediction ? &prediction : nullptr, options);
   ComparisonSources sources;
   sources.part = s.part_name;
-  sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, *job.measurements_file);
+  sources.measurements = job.simulate ? "measurements.csv" : relative_to_folder(job.output, job.measurement_files[0]);
+  if (s.merged && job.measurement_files.size() > 1) {
+    sources.merged = &*s.merged;
+    sources.measurements.clear();  // as furrow compare names a merged set (measurement_merge.hpp)
+    for (const std::string& f : s.merged->files) sources.measurements += (sources.measurements.empty() ? "" : " + ") + f;
+  }
   sources.plan = "plan/plan.json";
   sources.regions = "regions.json";
   sources.prediction = job.compare_with_prediction ? "prediction.json" : "";
@@ -197,7 +217,7 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
 PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   PipelineResult result;
   StageClock clock(result.stages);
-  Staged s{job, progress, result, {}, relative_to_folder(job.output, job.part)};
+  Staged s{job, progress, result, {}, relative_to_folder(job.output, job.part), {}};
 
   s.note("reading inputs");
   if (!job.file.empty()) {
@@ -207,7 +227,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   s.inputs.push_back(digest_file("part", job.part));
   s.inputs.push_back(digest_file("tool", job.tool));
   if (job.toolpath_file) s.inputs.push_back(digest_file("toolpath", *job.toolpath_file));
-  if (job.measurements_file) s.inputs.push_back(digest_file("measurements", *job.measurements_file));
+  for (const std::string& f : job.measurement_files) s.inputs.push_back(digest_file("measurements", f));
   if (!job.measurement_dialect_file.empty())
     s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
   if (!job.measurement_read.ippdme_program.empty())

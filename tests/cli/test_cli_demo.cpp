@@ -409,3 +409,58 @@ TEST_CASE("furrow run gives byte for byte what the chain of single commands give
   for (const char* member : {"verdict", "alignment", "deviations", "regions", "prediction", "gouges", "points"})
     CHECK(a[member] == b[member]);
 }
+
+TEST_CASE("furrow run with a list of measurement files merges them by id as furrow compare does") {
+  // A first run simulates the demo's measurements; the CMM then re-measured
+  // one point. The job lists both files; its comparison must be the bytes
+  // `furrow compare` writes for the same files run inside the output folder.
+  const std::string dir = scratch_dir("cli-run-remeasure");
+  fs::create_directories(dir + "/first");
+  const CliResult first = run_furrow({"run", demo_variant(dir + "/first", [](json&) {})});
+  REQUIRE((first.status == 1 || first.status == 4));
+  fs::create_directories(dir + "/job/cmm");
+  fs::copy_file(dir + "/first/out/measurements.csv", dir + "/job/cmm/run1.csv");
+  // The re-measure: the first data row's point again, 3 um further along x.
+  std::istringstream in(slurp(dir + "/job/cmm/run1.csv"));
+  std::string remeasure, line, id;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("id,", 0) == 0) {
+      remeasure += line + "\n";
+      continue;
+    }
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    id = f[0];
+    f[1] = std::to_string(std::stod(f[1]) + 0.003);
+    for (std::size_t k = 0; k < f.size(); ++k) remeasure += (k ? "," : "") + f[k];
+    remeasure += "\n";
+    break;
+  }
+  write_text(dir + "/job/cmm/remeasure.csv", remeasure);
+  const std::string job = demo_variant(dir + "/job", [](json& j) {
+    j["measurements"] = {{"file", {"cmm/run1.csv", "cmm/remeasure.csv"}}, {"points", "centre"}};
+  });
+  const CliResult run = run_furrow({"run", job});
+  INFO(run.out << run.err);
+  REQUIRE((run.status == 1 || run.status == 4));
+  CHECK(run.out.find("re-measured: " + id) != std::string::npos);
+  const auto doc = read_json(dir + "/job/out/comparison.json");
+  REQUIRE(doc["replaced"].size() == 1);
+  CHECK(doc["replaced"][0]["id"] == id);
+
+  const std::string out = dir + "/job/out";
+  const std::string part = fs::path(source_path("examples/parts/mould.json")).lexically_relative(out).string();
+  std::string command = "cd " + shell_quote(out) + " && " + shell_quote(FURROW_CLI);
+  for (const std::string& word :
+       {std::string("compare"), part, std::string("--measurements"), std::string("../cmm/run1.csv"),
+        std::string("--measurements"), std::string("../cmm/remeasure.csv"), std::string("--points"),
+        std::string("centre"), std::string("--plan"), std::string("plan/plan.json"), std::string("--regions"),
+        std::string("regions.json"), std::string("--prediction"), std::string("prediction.json"),
+        std::string("--tolerance"), std::string("0.05"), std::string("--out"), std::string("../compare.json")})
+    command += " " + shell_quote(word);
+  const ShellResult r = run_shell(command, dir + "/compare.log");
+  INFO(r.out);
+  CHECK((r.status == 1 || r.status == 4));
+  CHECK(slurp(dir + "/job/compare.json") == slurp(out + "/comparison.json"));
+}

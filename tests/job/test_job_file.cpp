@@ -131,8 +131,8 @@ TEST_CASE("every stage's options are read into the library's option structs") {
 
 TEST_CASE("measurements and tool paths come as a file name or as an object") {
   const Job a = parse_job(minimal(R"( "measurements": "cmm/run1.csv",)"), "job.json", "jobs");
-  REQUIRE(a.measurements_file);
-  CHECK(*a.measurements_file == "jobs/cmm/run1.csv");
+  REQUIRE(a.measurement_files.size() == 1);
+  CHECK(a.measurement_files[0] == "jobs/cmm/run1.csv");
   CHECK(a.has_measurements());
   const Job b = parse_job(
       R"({"part": "p", "tool": "t", "toolpath": {"file": "x.csv", "units": "inch"}, "tolerance": {"zone": 0.02},
@@ -140,10 +140,19 @@ TEST_CASE("measurements and tool paths come as a file name or as an object") {
       "job.json", "");
   CHECK(*b.toolpath_file == "x.csv");
   CHECK(b.toolpath_read.units == "inch");
-  CHECK(*b.measurements_file == "m.dmi");
+  CHECK(b.measurement_files == std::vector<std::string>{"m.dmi"});
   CHECK(*b.measurement_read.kind == ProbePointKind::contact);
   CHECK(b.measurement_read.probe_diameter == 4);
   CHECK(b.measurement_read.units == "inch");
+}
+
+TEST_CASE("measurements: a list of files is a re-measure, merged in list order") {
+  const Job a = parse_job(minimal(R"( "measurements": ["cmm/run1.csv", "cmm/remeasure.csv"],)"), "job.json", "jobs");
+  CHECK(a.measurement_files == std::vector<std::string>{"jobs/cmm/run1.csv", "jobs/cmm/remeasure.csv"});
+  const Job b = parse_job(minimal(R"( "measurements": {"file": ["a.csv", "b.dmo"], "units": "mm"},)"), "job.json", "");
+  CHECK(b.measurement_files == std::vector<std::string>{"a.csv", "b.dmo"});
+  CHECK(error_of(minimal(R"( "measurements": [],)")).find("measurements: an empty list") != std::string::npos);
+  CHECK(error_of(minimal(R"( "measurements": ["a.csv", 3],)")).find("measurements[1]") != std::string::npos);
 }
 
 TEST_CASE("job errors name the file and the member") {
