@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/probe_options.hpp"
 #include "base/error.hpp"
 #include "base/atomic_file.hpp"
 #include "base/output_set.hpp"
@@ -74,13 +75,7 @@ int run_plan(Args& args) {
   o.border = args.number("border");
   o.probe_name = args.option_or("probe-name", o.probe_name);
   o.probe_diameter = args.number_or("probe-diameter", o.probe_diameter);
-  o.stylus_length = args.number_or("stylus-length", o.stylus_length);
-  o.stylus_diameter = args.number_or("stylus-diameter", o.stylus_diameter);
-  o.approach = args.number_or("approach", o.approach);
-  o.retract = args.number_or("retract", o.retract);
-  o.search = args.number("search");
-  o.clearance = args.number_or("clearance", o.clearance);
-  o.max_tilt_degrees = args.number_or("max-tilt", o.max_tilt_degrees);
+  read_probe_motion_options(args, o);
   o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
   o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);

@@ -10,6 +10,7 @@
 #include "base/error.hpp"
 #include "base/output_set.hpp"
 #include "cli/commands.hpp"
+#include "cli/probe_options.hpp"
 #include "inspection/comparison_file.hpp"
 #include "io/cmm/dmis_writer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
@@ -33,13 +34,7 @@ int run_remeasure(Args& args) {
   PlannerOptions& p = o.planner;
   const auto probe_name = args.option("probe-name");
   if (probe_name) p.probe_name = *probe_name;
-  p.stylus_length = args.number_or("stylus-length", p.stylus_length);
-  p.stylus_diameter = args.number_or("stylus-diameter", p.stylus_diameter);
-  p.approach = args.number_or("approach", p.approach);
-  p.retract = args.number_or("retract", p.retract);
-  p.search = args.number("search");
-  p.clearance = args.number_or("clearance", p.clearance);
-  p.max_tilt_degrees = args.number_or("max-tilt", p.max_tilt_degrees);
+  read_probe_motion_options(args, p);
   const std::string comparison_path = args.positional("COMPARISON (comparison.json of furrow compare)");
   args.finish();
 

@@ -10,6 +10,8 @@
 #include "cad_reference.hpp"
 #include "base/error.hpp"
 #include "io/cad/cad_import.hpp"
+#include "partition/classification.hpp"
+#include "partition/part_summary.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -70,9 +72,11 @@ TEST_CASE("orientation: a surface model with random face flips comes in outward,
   const std::string dir = scratch_dir("cad-orientation-model");
   write_step(faces, dir + "/surfaces.step");
   write_iges(faces, dir + "/surfaces.igs");
+  std::vector<PartSummary> summaries;
   for (const char* name : {"surfaces.step", "surfaces.igs"}) {
     CAPTURE(name);
     const CadImportResult r = import_cad(dir + "/" + name);
+    summaries.push_back(summarize_part(r.part, 100, std::nullopt));
     CHECK(r.solids == 0);
     CHECK(r.free_faces == r.part.faces.size());
     CHECK(r.closed_shells == static_cast<int>(model.solids.size()));
@@ -86,6 +90,11 @@ TEST_CASE("orientation: a surface model with random face flips comes in outward,
     // The random flips had to be undone somewhere (about half the faces).
     CHECK(turned > 0);
   }
+  // Both files give the same part: area and, with the same orientation, the
+  // same convex/concave/saddle split (up to the grids' sampling).
+  CHECK(std::abs(summaries[0].area - summaries[1].area) < 2e-4 * summaries[0].area);
+  for (int c = 0; c < kCurvatureClassCount; ++c)
+    CHECK(std::abs(summaries[0].class_area[c] - summaries[1].class_area[c]) < 5e-3 * summaries[0].area);
   // Without sewing only the faces that close on themselves (the ball, the
   // ring) are decided; every other face is its own open shell, kept as the
   // file has it and reported undecided.

@@ -1,0 +1,15 @@
+#include "cli/probe_options.hpp"
+
+namespace furrow::cli {
+
+void read_probe_motion_options(Args& args, PlannerOptions& o) {
+  o.stylus_length = args.number_or("stylus-length", o.stylus_length);
+  o.stylus_diameter = args.number_or("stylus-diameter", o.stylus_diameter);
+  o.approach = args.number_or("approach", o.approach);
+  o.retract = args.number_or("retract", o.retract);
+  o.search = args.number("search");
+  o.clearance = args.number_or("clearance", o.clearance);
+  o.max_tilt_degrees = args.number_or("max-tilt", o.max_tilt_degrees);
+}
+
+}  // namespace furrow::cli
