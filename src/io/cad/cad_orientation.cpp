@@ -13,6 +13,7 @@
 #include <Geom_Surface.hxx>
 #include <ShapeFix_Shell.hxx>
 #include <TopExp.hxx>
+#include <TopLoc_Location.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -61,6 +62,11 @@ std::optional<FacePoint> sample_point(const TopoDS_Face& face) {
 // Whether `other` (the same surface, possibly another orientation or a
 // rebuilt face) points the same way as `original` does at its sample point.
 bool same_sense(const TopoDS_Face& original, const TopoDS_Face& other) {
+  // Sewing usually keeps the face's surface: then the orientations decide.
+  TopLoc_Location lo, lt;
+  const Handle(Geom_Surface)& so = BRep_Tool::Surface(original, lo);
+  const Handle(Geom_Surface)& st = BRep_Tool::Surface(other, lt);
+  if (!so.IsNull() && so == st && lo.IsEqual(lt)) return original.Orientation() == other.Orientation();
   const std::optional<FacePoint> p = sample_point(original);
   if (!p) return true;
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(other);
