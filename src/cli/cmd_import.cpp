@@ -23,6 +23,8 @@ int run_import(Args& args) {
   options.approximation_tolerance =
       args.positive_or("approximation-tolerance", options.approximation_tolerance);
   options.sewing_tolerance = args.non_negative_or("sewing-tolerance", options.sewing_tolerance);
+  if (options.sewing_tolerance > kMaxSewingTolerance)
+    args.fail("--sewing-tolerance must be at most 1 mm (sewing would join neighbouring features)");
   if (const auto rule = args.option("outward")) options.outward = parse_outward_rule(*rule, "furrow import: --outward");
   const std::string path = args.positional("CAD_FILE (a .step, .stp, .iges or .igs file)");
   args.finish();

@@ -151,6 +151,11 @@ bool is_cad_file(const std::string& path) {
 }
 
 CadImportResult import_cad(const std::string& path, const CadImportOptions& options) {
+  // Above a millimetre sewing would join the edges of neighbouring features
+  // (a boss to its hole) and call faces closed that are not.
+  if (!(options.sewing_tolerance >= 0 && options.sewing_tolerance <= kMaxSewingTolerance))
+    throw InputError(path + ": the sewing tolerance must lie between 0 and 1 mm, got " +
+                     cad::number_text(options.sewing_tolerance) + " mm");
   const cad::Format format = cad::format_of(path);
   cad::check_signature(path, format);
   const QuietMessenger quiet;

@@ -71,9 +71,12 @@ enum class CadFaceOrientation {
 };
 const char* to_string(CadFaceOrientation basis);
 
+constexpr double kMaxSewingTolerance = 1.0;  // mm
+
 struct CadImportOptions {
   // Loose faces are sewn into shells when their edges meet within this
-  // distance [mm]; 0 switches sewing off (each loose face its own shell).
+  // distance [mm], at most kMaxSewingTolerance (InputError beyond); 0
+  // switches sewing off (each loose face its own shell).
   double sewing_tolerance = 1e-3;
   OutwardRule outward;
   // Trim polygons (cad_trim_polygon.hpp): largest 3-D chord sag [mm] of a

@@ -179,6 +179,17 @@ TEST_CASE("orientation: an open shell is made consistent; +z, -z and a point rul
   }
 }
 
+TEST_CASE("orientation: a sewing tolerance beyond 1 mm is refused") {
+  const std::string path = scratch_dir("cad-orientation-tolerance") + "/ball.step";
+  write_step(BRepPrimAPI_MakeSphere(10).Shape(), path);
+  for (const double bad : {1.5, 1e308, -1.0, std::nan("")}) {
+    CadImportOptions o;
+    o.sewing_tolerance = bad;
+    CHECK_THROWS_WITH_AS(import_cad(path, o), doctest::Contains("sewing tolerance must lie between 0 and 1 mm"),
+                         InputError);
+  }
+}
+
 TEST_CASE("orientation: bad --outward rules are refused naming the option") {
   for (const char* bad : {"up", "point:1,2", "point:1,2,3,4", "point:1,x,3", "point:1,2,nan", ""}) {
     CAPTURE(bad);
