@@ -33,7 +33,7 @@ if command -v ccache > /dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=c
 # defined, so assertions (Eigen's index checks among them) stay on.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-  -DFURROW_SANITIZE=ON -DFURROW_FUZZ=ON -DFURROW_BUILD_BENCH=OFF \
+  -DFURROW_SANITIZE=ON -DFURROW_FUZZ=ON -DFURROW_BUILD_BENCH=OFF -DFURROW_BUILD_TESTS=ON \
   -DFURROW_TEST_MODULES="$modules" -DFURROW_TEST_SELECTION="$selection" "${launcher[@]}"
 cmake --build "$build" -j2
 
@@ -42,7 +42,8 @@ cmake --build "$build" -j2
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
-ctest --test-dir "$build" -j2 --output-on-failure -R "$tests_regex"
+# --no-tests=error: a build without its tests (a stale cache) must not pass.
+ctest --test-dir "$build" -j2 --output-on-failure --no-tests=error -R "$tests_regex"
 
 # Every fuzz target, from its seed corpus; new inputs go to a scratch corpus
 # (the first folder), crashes to $build/fuzz/crashes/.
