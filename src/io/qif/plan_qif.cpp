@@ -2,6 +2,9 @@
 
 #include "io/qif/qif_document.hpp"
 
+#include <algorithm>
+#include <vector>
+
 namespace furrow {
 
 std::string plan_to_qif(const InspectionPlan& plan, const std::string& part_name, double tolerance,
@@ -10,8 +13,14 @@ std::string plan_to_qif(const InspectionPlan& plan, const std::string& part_name
   d.part_name = part_name;
   d.description = std::string("Furrow ") + FURROW_VERSION + ": inspection plan, " +
                   std::to_string(plan.points.size()) + " points, probe " + plan.probe.name;
+  // In execution order: the document's plan measures them in this order.
+  std::vector<const PlannedPoint*> ordered;
+  for (const PlannedPoint& p : plan.points) ordered.push_back(&p);
+  std::stable_sort(ordered.begin(), ordered.end(),
+                   [](const PlannedPoint* a, const PlannedPoint* b) { return a->order < b->order; });
   d.points.reserve(plan.points.size());
-  for (const PlannedPoint& p : plan.points) {
+  for (const PlannedPoint* pp : ordered) {
+    const PlannedPoint& p = *pp;
     QifPoint q;
     q.id = p.id;
     q.nominal = p.xyz;

@@ -474,6 +474,38 @@ std::string qif_results_text(const QifDocumentData& d) {
   return std::move(w.text);
 }
 
+// PlanType (QIFPlan.xsd): its one required member, PlanRoot, here an
+// OrderedPlanRoot (OrderedActionGroupType: Steps, a NumberedPlanElementsType)
+// whose steps measure each point feature in the order given — the plan's
+// execution order — and then evaluate the surface profile.
+void write_plan(Writer& w, const QifDocumentData& d, const Ids& ids) {
+  w.open(1, "Plan");
+  w.open(2, "OrderedPlanRoot");
+  w.open_n(3, "Steps", ids.n + (d.profile ? 1 : 0));
+  std::size_t step = 0;
+  auto begin_step = [&] {
+    w.indent(4);
+    w.text += "<NumberedPlanElement><SequenceNumber>";
+    w.integer(++step);
+    w.text += "</SequenceNumber>";
+  };
+  for (std::size_t i = 0; i < ids.n; ++i) {
+    begin_step();
+    w.text += "<MeasureSpecifiedFeatures><FeatureItemIds n=\"1\">";
+    w.ref("Id", ids.item0 + i);
+    w.text += "</FeatureItemIds></MeasureSpecifiedFeatures></NumberedPlanElement>\n";
+  }
+  if (d.profile) {
+    begin_step();
+    w.text += "<EvaluateSpecifiedCharacteristics><CharacteristicItemIds n=\"1\">";
+    w.ref("Id", ids.surface_item);
+    w.text += "</CharacteristicItemIds></EvaluateSpecifiedCharacteristics></NumberedPlanElement>\n";
+  }
+  w.close(3, "Steps");
+  w.close(2, "OrderedPlanRoot");
+  w.close(1, "Plan");
+}
+
 std::string qif_plan_text(const QifDocumentData& d) {
   const Ids ids = number_ids(d, false);
   Writer w;
@@ -481,6 +513,7 @@ std::string qif_plan_text(const QifDocumentData& d) {
   write_head(w, d, ids, "Plan");
   write_features(w, d, ids);
   if (d.profile) write_characteristics(w, d, ids, false);
+  write_plan(w, d, ids);
   w.text += "</QIFDocument>\n";
   set_qpids(w.text, d.time);
   return std::move(w.text);

@@ -107,6 +107,25 @@ inline const std::map<std::string, Sequence>& qif_sequences() {
                                                    {"Status", "CharacteristicItemId"}}},
       {"PointProfileCharacteristicMeasurement", {{"Status", "CharacteristicItemId", "FeatureMeasurementIds", "Value"},
                                                  {"Status", "CharacteristicItemId"}}},
+      // QIFPlan.xsd, PlanType: PlanRoot is abstract; OrderedPlanRoot substitutes it
+      {"Plan", {{"Version", "RulesUsedQPId", "RulesToUseQPId", "WorkInstructions", "ActionMethods", "Measurands",
+                 "LocalVariables", "OrderedPlanRoot"},
+                {"OrderedPlanRoot"}}},
+      // QIFPlan.xsd, OrderedActionGroupType (PlanElementBaseType, ActionGroupBaseType, then Steps)
+      {"OrderedPlanRoot", {{"WorkInstructionIds", "Attributes", "MeasureActionGroupFunction", "Steps"}, {"Steps"}}},
+      // QIFPlan.xsd, NumberedPlanElementType: SequenceNumber, then one PlanElement
+      {"NumberedPlanElement",
+       {{"SequenceNumber", "MeasureSpecifiedFeatures", "EvaluateSpecifiedCharacteristics"}, {"SequenceNumber"}}},
+      // QIFPlan.xsd, MeasureSpecifiedFeaturesActionType (ActionBaseType members first)
+      {"MeasureSpecifiedFeatures",
+       {{"WorkInstructionIds", "Attributes", "PreferredActionMethodId", "AlternativeActionMethodIds",
+         "PreferredResourceIds", "FeatureItemIds"},
+        {"FeatureItemIds"}}},
+      // QIFPlan.xsd, EvaluateSpecifiedCharacteristicsActionType
+      {"EvaluateSpecifiedCharacteristics",
+       {{"WorkInstructionIds", "Attributes", "PreferredActionMethodId", "AlternativeActionMethodIds",
+         "PreferredResourceIds", "CharacteristicItemIds"},
+        {"CharacteristicItemIds"}}},
       // QIFResults.xsd / Primitives: ExternalFileReferenceType (order as in QIF_PTS_SAMPLE.QIF)
       {"ExternalFileReference", {{"URI", "FileSpec", "Description"}, {"URI"}}},
   };

@@ -190,6 +190,25 @@ TEST_CASE("furrow plan writes plan.qif: the plan's points as nominals and the pr
   CHECK(std::string(root.child("Characteristics").child("CharacteristicItems").child(
                         "SurfaceProfileCharacteristicItem").child("FeatureItemIds").attribute("n").value()) ==
         std::to_string(plan.points.size()));
+  // The Plan measures every point in the plan's execution order, then
+  // evaluates the profile: step k names the item of the point with order k.
+  std::map<std::string, std::string> item_name;
+  for (const pugi::xml_node& item : items) item_name[item.attribute("id").value()] = item.child_value("FeatureName");
+  std::map<int, std::string> id_by_order;
+  for (const PlannedPoint& p : plan.points) id_by_order[p.order] = p.id;
+  const pugi::xml_node steps = root.child("Plan").child("OrderedPlanRoot").child("Steps");
+  REQUIRE(steps);
+  std::vector<pugi::xml_node> numbered;
+  for (pugi::xml_node n : steps.children("NumberedPlanElement")) numbered.push_back(n);
+  REQUIRE(numbered.size() == plan.points.size() + 1);
+  for (std::size_t k = 0; k < plan.points.size(); ++k) {
+    CHECK(std::stoi(numbered[k].child_value("SequenceNumber")) == static_cast<int>(k) + 1);
+    const std::string ref = numbered[k].child("MeasureSpecifiedFeatures").child("FeatureItemIds").child_value("Id");
+    CHECK(item_name[ref] == id_by_order[static_cast<int>(k) + 1]);
+  }
+  CHECK(std::string(numbered.back().child("EvaluateSpecifiedCharacteristics").child("CharacteristicItemIds").child_value(
+            "Id")) == root.child("Characteristics").child("CharacteristicItems").child(
+                          "SurfaceProfileCharacteristicItem").attribute("id").value());
 }
 
 TEST_CASE("bad QIF measurements: exit 2 naming the file and line, nothing written") {
