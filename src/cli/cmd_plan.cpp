@@ -38,6 +38,25 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
+// The summary to stdout; uncovered regions to stderr as an error, or to
+// stdout when accepted.
+void print_coverage(const PlanCoverage& c, bool allowed) {
+  std::cout << "coverage: " << c.regions_covered << " of " << c.regions.size()
+            << " regions hold their minimum of points; " << c.planned << " of " << c.allocated
+            << " allocated points planned, " << c.dropped << " dropped\n";
+  if (c.complete()) return;
+  if (allowed) {
+    std::cout << "uncovered regions (accepted with --allow-uncovered):\n" << c.describe_uncovered();
+    return;
+  }
+  const std::size_t short_count = c.regions.size() - static_cast<std::size_t>(c.regions_covered);
+  std::cerr << "furrow plan: " << short_count << (short_count == 1 ? " region holds" : " regions hold")
+            << " fewer points than the minimum:\n"
+            << c.describe_uncovered()
+            << "the plan is written, but it does not inspect these regions; lower --border or --min-per-region, "
+               "use a smaller probe, or accept it with --allow-uncovered\n";
+}
+
 void print_summary(std::ostream& out, const PlanResult& r, const std::string& folder) {
   out << "plan: " << r.plan.points.size() << " points in " << r.regions.size() << " regions, border "
       << fixed(r.border, 2) << " mm, probe " << r.plan.probe.name << " diameter " << fixed(r.plan.probe.diameter, 3)
@@ -84,6 +103,7 @@ int run_plan(Args& args) {
   // The profile zone plan.qif states (docs/qif.md), as `furrow compare` takes it.
   const double qif_tolerance = args.positive_or("tolerance", 0.05);
   const auto qif_outside = args.number("outside");
+  const bool allow_uncovered = args.flag("allow-uncovered");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
   try {
@@ -132,8 +152,9 @@ int run_plan(Args& args) {
   outputs.publish();
   const PlanResult& result = stage.result;
   print_summary(std::cout, result, out);
+  print_coverage(stage.coverage, allow_uncovered);
   std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json, plan.qif}\n";
-  return kExitOk;
+  return stage.coverage.complete() || allow_uncovered ? kExitOk : kExitFail;
 }
 
 }  // namespace
@@ -148,6 +169,7 @@ const Command kPlanCommand = {
     "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
     "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
+    "                   [--allow-uncovered]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -185,7 +207,13 @@ const Command kPlanCommand = {
     "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n"
     "  --gouge-points N     points on each predicted gouge site (default 1)\n"
     "  --tolerance T        profile zone width in mm stated in plan.qif (default 0.05)\n"
-    "  --outside A          part of the zone on the + side in mm (default T/2)\n",
+    "  --outside A          part of the zone on the + side in mm (default T/2)\n"
+    "  --allow-uncovered    exit 0 although some region holds fewer than\n"
+    "                       --min-per-region points (they are still reported, and\n"
+    "                       plan.json lists them so no verdict passes them unseen)\n"
+    "\n"
+    "Exit status: 0 every region holds its minimum (or --allow-uncovered), 1 some\n"
+    "region does not (named with the reason; the files are written), 2 bad input.\n",
     run_plan};
 
 }  // namespace furrow::cli

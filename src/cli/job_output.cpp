@@ -28,7 +28,11 @@ int run_and_report(const Job& job, std::ostream& out) {
     out << "report: " << job.output << "/report.html\n";
   else
     out << "plan: " << job.output << "/plan/ (no measurements, no report)\n";
-  return result.measured ? exit_status(result.verdict, result.alignment) : kExitOk;
+  // Without measurements the job's outcome is the plan's: a region left
+  // uncovered fails it like `furrow plan` (docs/cmm.md "Coverage"); with
+  // them the verdict already counts such regions as not inspected.
+  if (result.measured) return exit_status(result.verdict, result.alignment);
+  return result.plan_complete || job.plan_allow_uncovered ? kExitOk : kExitFail;
 }
 
 }  // namespace furrow::cli

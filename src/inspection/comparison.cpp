@@ -200,6 +200,10 @@ std::map<int, std::size_t> region_minimums(const InspectionPlan& plan) {
   for (const PlannedPoint& p : plan.points)
     if (p.region) ++planned[*p.region];
   for (auto& [region, n] : planned) n = std::min(n, kRegionMinimumPoints);
+  // A region the plan could not cover needs the minimum the planner asked
+  // for, even with no point in the plan: it was never shown to be good.
+  for (const UncoveredRegion& u : plan.uncovered_regions)
+    planned[u.region] = static_cast<std::size_t>(u.required);
   return planned;
 }
 

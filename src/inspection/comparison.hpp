@@ -116,8 +116,9 @@ constexpr std::size_t kRegionMinimumPoints = 5;
 // min(points the plan puts there, kRegionMinimumPoints). plan.json does not
 // record the planner's --min-per-region; what the plan put into a region is
 // what it promised to measure there, and five points are what per-region
-// statistics need (docs/verification.md "Verdict"). Regions of no plan point
-// are not listed.
+// statistics need (docs/verification.md "Verdict"). A region the plan
+// records as uncovered (plan.json `uncovered_regions`) needs the minimum the
+// planner asked for, with or without points in the plan.
 std::map<int, std::size_t> region_minimums(const InspectionPlan& plan);
 
 // Registers and evaluates. `plan` may be null (no id coarse start, no regions,

@@ -76,6 +76,25 @@ PlannedPoint parse_point(const json& jp, const std::string& where, double scale)
   return p;
 }
 
+UncoveredRegion parse_uncovered(const json& ju, const std::string& where) {
+  jf::object(ju, where);
+  auto count = [&](const char* key) {
+    const int n = jf::integer(jf::member(ju, key, where), jf::child(where, key));
+    if (n < 0) throw InputError(jf::child(where, key) + ": must not be negative");
+    return n;
+  };
+  UncoveredRegion u;
+  u.region = count("region");
+  u.face_index = static_cast<std::size_t>(count("face_index"));
+  u.planned = count("planned");
+  u.required = count("required");
+  if (u.required <= u.planned)
+    throw InputError(jf::child(where, "required") + ": " + std::to_string(u.required) +
+                     " is not above planned (" + std::to_string(u.planned) + "): the region is covered");
+  if (const json* jr = jf::optional_member(ju, "reason", where)) u.reason = jf::string(*jr, jf::child(where, "reason"));
+  return u;
+}
+
 }  // namespace
 
 InspectionPlan parse_plan(const std::string& text, const std::string& name) {
@@ -124,6 +143,12 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
                        " (also points[" + std::to_string(it->second) + "])");
     plan.points.push_back(std::move(p));
   }
+  if (const json* ju = jf::optional_member(doc, "uncovered_regions", root)) {
+    const std::string where = jf::child(root, "uncovered_regions");
+    const json& list = jf::array(*ju, where);
+    for (std::size_t k = 0; k < list.size(); ++k)
+      plan.uncovered_regions.push_back(parse_uncovered(list[k], jf::child(where, k)));
+  }
   return plan;
 }
 
@@ -153,6 +178,16 @@ std::string plan_to_json_text(const InspectionPlan& plan) {
     points.push_back(std::move(jp));
   }
   doc["points"] = std::move(points);
+  if (!plan.uncovered_regions.empty()) {
+    json list = json::array();
+    for (const UncoveredRegion& u : plan.uncovered_regions)
+      list.push_back({{"region", u.region},
+                      {"face_index", u.face_index},
+                      {"planned", u.planned},
+                      {"required", u.required},
+                      {"reason", u.reason}});
+    doc["uncovered_regions"] = std::move(list);
+  }
   return jf::to_text(doc);
 }
 

@@ -49,10 +49,22 @@ struct PlannedPoint {
   Eigen::Vector3d centre(double probe_radius) const { return xyz + probe_radius * ijk; }
 };
 
+// A region of the partition the planner could not give its minimum number
+// of points (docs/cmm.md "Coverage"). Kept in the plan so that a comparison
+// made with it cannot call the part good over a region nobody measured.
+struct UncoveredRegion {
+  int region = 0;
+  std::size_t face_index = 0;
+  int planned = 0;   // points the plan holds in the region
+  int required = 0;  // the plan's minimum per region, > planned
+  std::string reason;
+};
+
 struct InspectionPlan {
   std::string part;  // part file the plan was made for (informative, may be empty)
   ProbeDefinition probe;
   std::vector<PlannedPoint> points;
+  std::vector<UncoveredRegion> uncovered_regions;  // optional in plan.json
 
   // Index of the point with that id, or nullopt (linear search).
   std::optional<std::size_t> find(const std::string& id) const;

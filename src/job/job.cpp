@@ -190,6 +190,7 @@ void read_prediction(Section p, Job& job) {
 void read_plan(Section p, Job& job) {
   PlannerOptions& o = job.plan;
   p.boolean("prediction", job.plan_with_prediction);
+  p.boolean("allow_uncovered", job.plan_allow_uncovered);
   if (const json* v = p.find("points")) {
     const int n = jf::integer(*v, p.at("points"));
     if (n < 1) throw InputError(p.at("points") + ": a plan needs at least 1 point");

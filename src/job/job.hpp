@@ -58,6 +58,7 @@ struct Job {
 
   PlannerOptions plan;
   bool plan_with_prediction = true;  // risk-weighted plan, points on every gouge site
+  bool plan_allow_uncovered = false;  // a plan with regions below their minimum is not an error (docs/cmm.md "Coverage")
 
   // Measurements: files (several: a re-measure, merged by id in this order,
   // measurement_merge.hpp), a simulation, or neither (the job stops after the plan).

@@ -49,6 +49,7 @@ std::string job_options_json(const Job& job) {
                      {"cell", jf::finite(pr.map.cell_size, "cell")}};
   const PlannerOptions& o = job.plan;
   j["plan"] = {{"prediction", job.plan_with_prediction},
+               {"allow_uncovered", job.plan_allow_uncovered},
                {"points", o.points ? json(*o.points) : json(nullptr)},
                {"density", jf::finite(o.density.value_or(o.points ? 0.0 : kDefaultDensity), "density")},
                {"min_per_region", o.min_per_region},

@@ -149,6 +149,17 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   s.result.summary.push_back(line("plan: %zu points in %zu regions%s, cycle about %.1f min", r.plan.points.size(),
                                   r.regions.size(), job.plan_with_prediction ? " (risk-weighted)" : "",
                                   r.cycle.seconds / 60));
+  const PlanCoverage& c = stage.coverage;
+  s.result.plan_complete = c.complete();
+  if (!c.complete()) {
+    std::string detail = c.describe_uncovered();
+    if (!detail.empty() && detail.back() == '\n') detail.pop_back();
+    s.result.summary.push_back(line("plan coverage: %zu of %zu regions hold fewer than %d points%s:",
+                                    c.regions.size() - static_cast<std::size_t>(c.regions_covered), c.regions.size(),
+                                    o.min_per_region,
+                                    job.plan_allow_uncovered ? " (accepted: allow_uncovered)" : "") +
+                               "\n" + detail);
+  }
   return read_back;
 }
 

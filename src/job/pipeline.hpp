@@ -50,6 +50,7 @@ struct PipelineResult {
   bool pass = false;      // the verdict is PASS (when measured)
   Verdict verdict = Verdict::fail;  // when measured
   std::string alignment = "ok";     // when measured: the comparison's alignment state
+  bool plan_complete = true;        // every region holds its minimum of plan points
   std::vector<std::string> summary;  // a few lines for people
 };
 

@@ -7,7 +7,7 @@ namespace furrow {
 namespace jf = json_fields;
 using jf::json;
 
-std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const std::string& part_path,
+std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, const PlannerOptions& o, const std::string& part_path,
                              const std::string& regions_path, const std::string& prediction_path) {
   json doc;
   doc["format"] = "furrow-plan-report";
@@ -63,6 +63,33 @@ std::string plan_report_json(const PlanResult& r, const PlannerOptions& o, const
                        {"planned", s.planned}});
   }
   doc["regions"] = std::move(regions);
+  json cov;
+  cov["complete"] = coverage.complete();
+  cov["regions"] = coverage.regions.size();
+  cov["regions_covered"] = coverage.regions_covered;
+  cov["allocated"] = coverage.allocated;
+  cov["planned"] = coverage.planned;
+  cov["dropped"] = coverage.dropped;
+  json faces = json::array();
+  for (const FaceCoverage& f : coverage.faces)
+    faces.push_back({{"face", f.face},
+                     {"regions", f.regions},
+                     {"regions_covered", f.regions_covered},
+                     {"allocated", f.allocated},
+                     {"planned", f.planned},
+                     {"dropped", f.dropped}});
+  cov["faces"] = std::move(faces);
+  json short_regions = json::array();
+  for (const RegionCoverage& c : coverage.uncovered())
+    short_regions.push_back({{"region", c.region},
+                             {"face", c.face},
+                             {"required", c.required},
+                             {"allocated", c.allocated},
+                             {"planned", c.planned},
+                             {"dropped", c.dropped},
+                             {"reason", c.reason}});
+  cov["uncovered_regions"] = std::move(short_regions);
+  doc["coverage"] = std::move(cov);
   json issues = json::array();
   for (const PlanIssue& i : r.issues) {
     json ji;

@@ -23,6 +23,10 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
                      const std::string& prediction_name, const PlanProgress& progress) {
   PlanStage out;
   out.result = plan_probe_points(part, map, options, risk, progress);
+  out.coverage = plan_coverage(out.result, options.min_per_region);
+  for (const RegionCoverage& r : out.coverage.uncovered())
+    out.result.plan.uncovered_regions.push_back(
+        {r.region, static_cast<std::size_t>(r.face), r.planned, r.required, r.reason});
   out.program = program;
   const ProbeProgram cmm = make_probe_program(out.result, program, options.stylus_length);
   out.plan_json = plan_to_json_text(out.result.plan);
@@ -32,7 +36,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
       {"plan.csv", plan_to_csv_text(out.result.plan)},
       {program + ".dmi", dmis_program_text(cmm)},
       {program + ".prg", ippdme_program_text(cmm)},
-      {"report.json", plan_report_json(out.result, options, options.part_name, regions_name, prediction_name)},
+      {"report.json", plan_report_json(out.result, out.coverage, options, options.part_name, regions_name, prediction_name)},
       {"plan.png", std::string(png.begin(), png.end())},
   };
   return out;

@@ -1,0 +1,90 @@
+#include "planning/plan_coverage.hpp"
+
+#include <map>
+
+namespace furrow {
+
+namespace {
+
+std::string plural(int n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+
+// Why region `s` holds fewer than `required` points, from the plan's issues.
+std::string shortfall_reason(const RegionPlanSummary& s, const std::vector<PlanIssue>& issues) {
+  std::vector<std::string> parts;
+  std::map<AccessProblem, int> drops;
+  for (const PlanIssue& i : issues) {
+    if (i.region != s.region) continue;
+    if (i.kind == PlanIssue::Kind::region_skipped) parts.push_back(i.reason);
+    if (i.kind == PlanIssue::Kind::dropped) ++drops[i.problem];
+  }
+  if (s.samplable && s.sampled < s.allocated)
+    parts.push_back("only " + std::to_string(s.sampled) + " of " + std::to_string(s.allocated) +
+                    " allocated points fit inside the region at the border clearance");
+  if (!drops.empty()) {
+    std::string d = plural(s.dropped, "point") + " dropped, the probe cannot reach them (";
+    bool first = true;
+    for (const auto& [problem, count] : drops) {
+      d += (first ? "" : "; ") + std::to_string(count) + ": " + to_string(problem);
+      first = false;
+    }
+    parts.push_back(d + ")");
+  }
+  if (parts.empty() && s.allocated < 1) parts.push_back("the allocation gave it no point");
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
+
+}  // namespace
+
+PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
+  PlanCoverage c;
+  std::map<int, FaceCoverage> faces;
+  for (const RegionPlanSummary& s : result.regions) {
+    RegionCoverage r;
+    r.region = s.region;
+    r.face = s.face;
+    r.required = min_per_region;
+    r.allocated = s.allocated;
+    r.planned = s.planned;
+    r.dropped = s.dropped;
+    r.covered = s.planned >= r.required;
+    if (!r.covered) r.reason = shortfall_reason(s, result.issues);
+    FaceCoverage& f = faces[s.face];
+    f.face = s.face;
+    ++f.regions;
+    f.regions_covered += r.covered;
+    f.allocated += s.allocated;
+    f.planned += s.planned;
+    f.dropped += s.dropped;
+    c.regions_covered += r.covered;
+    c.allocated += s.allocated;
+    c.planned += s.planned;
+    c.dropped += s.dropped;
+    c.regions.push_back(std::move(r));
+  }
+  for (auto& [face, f] : faces) c.faces.push_back(f);
+  return c;
+}
+
+std::vector<RegionCoverage> PlanCoverage::uncovered() const {
+  std::vector<RegionCoverage> out;
+  for (const RegionCoverage& r : regions)
+    if (!r.covered) out.push_back(r);
+  return out;
+}
+
+std::string PlanCoverage::describe_uncovered(std::size_t max_lines) const {
+  const std::vector<RegionCoverage> short_regions = uncovered();
+  std::string out;
+  for (std::size_t k = 0; k < short_regions.size() && k < max_lines; ++k) {
+    const RegionCoverage& r = short_regions[k];
+    out += "  region " + std::to_string(r.region) + " (face " + std::to_string(r.face) + "): " +
+           std::to_string(r.planned) + " of " + std::to_string(r.required) + " points: " + r.reason + "\n";
+  }
+  if (short_regions.size() > max_lines)
+    out += "  ... and " + std::to_string(short_regions.size() - max_lines) + " more (report.json \"coverage\")\n";
+  return out;
+}
+
+}  // namespace furrow

@@ -1,0 +1,151 @@
+// Coverage of a plan: the per-region counts against a recount of the plan's
+// own points, the reasons, and `furrow plan`'s exit status for a region no
+// probe reaches.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "io/part_file.hpp"
+#include "io/plan_file.hpp"
+#include "plan_fixtures.hpp"
+#include "planning/plan_coverage.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+using namespace furrow::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A groove of radius 1 mm: a 4 mm ball cannot reach its bottom, a 1 mm ball can.
+PlannerOptions groove_options(double ball) {
+  PlannerOptions o;
+  o.probe_diameter = ball;
+  o.stylus_diameter = ball / 2;
+  o.border = 0.2;
+  o.min_per_region = 5;
+  o.points = 60;
+  return o;
+}
+
+// Plan points per region, counted from the plan itself.
+std::map<int, int> recount(const PlanResult& r) {
+  std::map<int, int> n;
+  for (const PlannedPoint& p : r.plan.points) ++n[*p.region];
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("coverage counts every region's plan points and names why the groove is short") {
+  const Part part = groove_part(1.0);
+  const RegionMap map = partition_of(part, 60, 60);
+  const PlanResult r = plan_probe_points(part, map, groove_options(4));
+  const PlanCoverage c = plan_coverage(r, 5);
+  const std::map<int, int> counted = recount(r);
+  REQUIRE(c.regions.size() == map.regions.size());
+  int covered = 0, groove_short = 0;
+  long planned = 0;
+  for (const RegionCoverage& rc : c.regions) {
+    const int n = counted.count(rc.region) ? counted.at(rc.region) : 0;
+    CHECK(rc.planned == n);
+    CHECK(rc.required == 5);
+    CHECK(rc.covered == (n >= 5));
+    CHECK(rc.face == map.regions[static_cast<std::size_t>(rc.region)].face);
+    covered += rc.covered;
+    planned += n;
+    if (!rc.covered) {
+      CHECK(!rc.reason.empty());
+      if (rc.face == 1) {
+        ++groove_short;
+        CHECK(rc.reason.find("cannot reach") != std::string::npos);
+        CHECK((rc.reason.find("ball") != std::string::npos || rc.reason.find("tilt") != std::string::npos));
+      }
+    } else {
+      CHECK(rc.reason.empty());
+    }
+  }
+  CHECK(groove_short >= 1);  // the groove's bottom is out of reach
+  CHECK(c.regions_covered == covered);
+  CHECK(c.planned == planned);
+  CHECK(c.planned == static_cast<long>(r.plan.points.size()));
+  CHECK(!c.complete());
+  // Per face: the sums of its regions.
+  for (const FaceCoverage& f : c.faces) {
+    int regions = 0, planned_on_face = 0;
+    for (const PlannedPoint& p : r.plan.points) planned_on_face += static_cast<int>(p.face_index) == f.face;
+    for (const Region& region : map.regions) regions += region.face == f.face;
+    CHECK(f.regions == regions);
+    CHECK(f.planned == planned_on_face);
+  }
+  const std::string text = c.describe_uncovered(1);
+  CHECK(text.find("region ") == 2);
+  if (c.uncovered().size() > 1) CHECK(text.find("more (report.json") != std::string::npos);
+
+  // A ball that fits covers every region; no minimum covers any plan.
+  const PlanResult fits = plan_probe_points(part, map, groove_options(1));
+  CHECK(plan_coverage(fits, 5).complete());
+  CHECK(plan_coverage(r, 0).complete());
+  CHECK(plan_coverage(r, 0).describe_uncovered().empty());
+}
+
+TEST_CASE("furrow plan exits 1 naming an uncovered region, 0 with --allow-uncovered, and compare cannot pass it") {
+  const std::string dir = scratch_dir("cli-plan-coverage");
+  write_part_json(groove_part(1.0), dir + "/groove.json");
+  REQUIRE(run_furrow({"partition", dir + "/groove.json", "--out", dir + "/regions.json", "--grid", "60x60"}).status == 0);
+  const std::vector<std::string> plan{"plan", dir + "/groove.json", "--regions", dir + "/regions.json", "--points", "60",
+                                      "--border", "0.2", "--probe-diameter", "4", "--stylus-diameter", "2"};
+  auto with = [&](std::vector<std::string> args, std::initializer_list<const char*> more) {
+    for (const char* m : more) args.push_back(m);
+    return args;
+  };
+  const CliResult strict = run_furrow(with(plan, {"--out", (dir + "/strict").c_str()}));
+  CHECK(strict.status == 1);
+  CHECK(strict.err.find("fewer points than the minimum:") != std::string::npos);
+  CHECK(strict.err.find("(face 1): 0 of 5 points") != std::string::npos);
+  CHECK(strict.err.find("--allow-uncovered") != std::string::npos);
+  CHECK(fs::exists(dir + "/strict/plan.json"));  // the plan is still written
+
+  const CliResult allowed = run_furrow(with(plan, {"--out", (dir + "/allowed").c_str(), "--allow-uncovered"}));
+  REQUIRE(allowed.status == 0);
+  CHECK(allowed.out.find("accepted with --allow-uncovered") != std::string::npos);
+  CHECK(slurp(dir + "/strict/plan.json") == slurp(dir + "/allowed/plan.json"));
+
+  // report.json and plan.json agree with a recount of the plan's points.
+  const auto report = nlohmann::json::parse(slurp(dir + "/allowed/report.json"));
+  const InspectionPlan p = read_plan(dir + "/allowed/plan.json");
+  std::map<int, int> counted;
+  for (const PlannedPoint& q : p.points) ++counted[*q.region];
+  const auto& cov = report["coverage"];
+  CHECK(cov["complete"] == false);
+  CHECK(cov["planned"] == p.points.size());
+  REQUIRE(cov["uncovered_regions"].size() == p.uncovered_regions.size());
+  REQUIRE(!p.uncovered_regions.empty());
+  int regions_short = 0;
+  for (const auto& rs : report["regions"]) regions_short += rs["planned"].get<int>() < 5;
+  CHECK(static_cast<int>(p.uncovered_regions.size()) == regions_short);
+  for (std::size_t k = 0; k < p.uncovered_regions.size(); ++k) {
+    const UncoveredRegion& u = p.uncovered_regions[k];
+    CHECK(u.planned == counted[u.region]);
+    CHECK(u.required == 5);
+    CHECK(cov["uncovered_regions"][k]["region"] == u.region);
+    CHECK(cov["uncovered_regions"][k]["reason"] == u.reason);
+  }
+  CHECK(parse_plan(plan_to_json_text(p), "again").uncovered_regions.size() == p.uncovered_regions.size());
+
+  // Measured exactly as planned: every measured region is in tolerance, but
+  // the uncovered ones were never seen, so the verdict is INCONCLUSIVE.
+  REQUIRE(run_furrow({"simulate-measurement", dir + "/groove.json", "--plan", dir + "/allowed/plan.json", "--out",
+                      dir + "/measured.csv", "--noise", "0", "--seed", "3"})
+              .status == 0);
+  const CliResult compared = run_furrow({"compare", dir + "/groove.json", "--plan", dir + "/allowed/plan.json",
+                                         "--measurements", dir + "/measured.csv", "--out", dir + "/comparison.json"});
+  CHECK(compared.status == 4);
+  const auto comparison = nlohmann::json::parse(slurp(dir + "/comparison.json"));
+  const std::string text = comparison.dump();
+  CHECK(text.find("region_below_minimum") != std::string::npos);
+  CHECK(text.find("region " + std::to_string(p.uncovered_regions.front().region) + " has 0 evaluated points") !=
+        std::string::npos);
+}
