@@ -67,13 +67,13 @@ class LocalSearch {
     long long examinations = 0;
     bool capped = false;
     while (!capped) {
-      // A sweep puts every point in the queue; a point whose edges change is
-      // queued again (its don't-look bit is cleared). The queue empties when
-      // every point was last examined after its last change... except that a
-      // move can also appear at a point whose edges did not change (its
-      // candidate's did), so the search ends only with a sweep in which no
-      // point finds an improving move: then the tour is a local optimum of
-      // every move the candidate lists allow.
+      // A sweep queues every point; a point whose edges change is queued
+      // again (its don't-look bit is cleared), the rest are not looked at
+      // until the next sweep. That is not enough on its own: a move can
+      // appear at a point whose own edges did not change (a candidate's
+      // did). So the search ends only with a sweep in which no point finds
+      // an improving move, and the tour is then a local optimum of every
+      // move the candidate lists allow.
       for (int a = 0; a < m_; ++a) push(a);
       bool improved = false;
       while (!queue_.empty()) {
