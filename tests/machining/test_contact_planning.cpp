@@ -62,10 +62,43 @@ TEST_CASE("exact forward steps: no step over the tolerance, none shorter than ne
         const double e = step_error(cutter, pass.between(a, b), StepRule::exact);
         CHECK(e <= options.tolerance);
         if (k + 1 == steps.params.size()) continue;  // the last step may be shorter
+        // As long as the tolerance allows: its error within 1e-4 relative
+        // below the tolerance, unless the error jumps there.
+        if (steps.jumps == 0)
+          CHECK(options.tolerance - e <= 1e-4 * options.tolerance);
         // 1 % longer would exceed the tolerance: the step is as long as it can be.
         const double longer = step_error(cutter, pass.between(a, a + 1.01 * (b - a)), StepRule::exact);
         CHECK(longer > options.tolerance);
       }
+    }
+  }
+}
+
+TEST_CASE("exact steps around a circular arc: the analytic step of a ball on a convex circle, to 1e-4 of the tolerance") {
+  // A ball of radius r around a convex circle of radius R: the centres lie on
+  // the circle R + r and the deepest point between two contacts an angle a
+  // apart is under the chord of the centres, (R + r)(1 - cos(a / 2)) deep.
+  const double R = 25.4, r = 6.35;
+  const Part part = read_part(example("semi_cylinder.json"));
+  const Cutter ball("ball", r, r);
+  for (double tolerance : {0.01, 0.001, 0.05}) {
+    CAPTURE(tolerance);
+    ForwardStepOptions options;
+    options.tolerance = tolerance;
+    const PassCurve pass = iso_parametric_pass(part, 0, true, 0.5, 0.3, 0.7);  // around the section
+    const ForwardSteps steps = place_contact_points(part, pass, ball, options);
+    REQUIRE(steps.params.size() >= 3);
+    CHECK(steps.capped == 0);
+    CHECK(steps.jumps == 0);
+    const double analytic_angle = 2 * std::acos(1 - tolerance / (R + r));
+    for (std::size_t k = 1; k + 1 < steps.params.size(); ++k) {
+      const Eigen::Vector3d a = pass.at(steps.params[k - 1]).point, b = pass.at(steps.params[k]).point;
+      // The contact points' angle about the cylinder axis (y).
+      const double angle = std::abs(std::atan2(a.z(), a.x()) - std::atan2(b.z(), b.x()));
+      const double true_error = (R + r) * (1 - std::cos(angle / 2));
+      CHECK(true_error <= tolerance * (1 + 1e-9));
+      CHECK(true_error >= tolerance * (1 - 1e-4));
+      CHECK(angle == doctest::Approx(analytic_angle).epsilon(1e-4));
     }
   }
 }

@@ -99,31 +99,68 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
       continue;
     }
     const double e = options.tolerance;
-    if (error(t, end) <= e) {
+    const double e_end = error(t, end);
+    if (e_end <= e) {
       t = end;
       result.params.push_back(t);
       continue;
     }
     // Bracket [lo, hi]: error(lo) <= e < error(hi).
-    double lo = t, hi = end;
+    double lo = t, hi = end, e_lo = 0, e_hi = e_end;  // errors at the ends
     double trial = std::clamp(estimate, t + 1e-9 * span, end);
     int it = 0;
     for (; it < options.max_iterations; ++it) {
       if (trial >= hi || trial <= lo) break;
-      if (error(t, trial) <= e) {
+      const double et = error(t, trial);
+      if (et <= e) {
         lo = trial;
+        e_lo = et;
         trial = t + 2 * (trial - t);
       } else {
         hi = trial;
+        e_hi = et;
         if (lo > t) break;
         trial = t + 0.5 * (trial - t);
       }
       if (lo > t && hi < end) break;
     }
-    for (; it < options.max_iterations && hi - lo > options.precision * std::max(lo - t, 1e-12 * span); ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (error(t, mid) <= e ? lo : hi) = mid;
+    // Refine to the error, not to the parameter: false position on
+    // error - e (Illinois: the end that stays is halved in weight so the
+    // bracket shrinks from both sides); bisection when an end is unknown.
+    // Stops when the accepted step's error is within the precision below
+    // the tolerance, or the bracket cannot shrink (the error jumps over the
+    // tolerance there: a new face or a change of contact).
+    const double close_enough = std::max(options.relative_precision * e, options.absolute_precision);
+    double g_lo = e - e_lo, g_hi = e_hi - e;  // distances of the ends' errors from the tolerance
+    int replaced = 0;                         // end replaced last: -1 lo, +1 hi
+    bool resolved = false;
+    for (; it < options.max_iterations; ++it) {
+      if (lo > t && e - e_lo <= close_enough) {
+        resolved = true;
+        break;
+      }
+      if (hi - lo <= 1e-12 * span) break;
+      double mid = 0.5 * (lo + hi);
+      if (lo > t && std::isfinite(g_hi)) {
+        // Inside the bracket, away from its ends.
+        const double f = lo + (hi - lo) * g_lo / (g_lo + g_hi);
+        mid = std::clamp(f, lo + 1e-3 * (hi - lo), hi - 1e-3 * (hi - lo));
+      }
+      const double em = error(t, mid);
+      if (em <= e) {
+        lo = mid;
+        e_lo = em;
+        g_lo = e - em;
+        if (replaced == -1) g_hi *= 0.5;
+        replaced = -1;
+      } else {
+        hi = mid;
+        g_hi = em - e;
+        if (replaced == +1) g_lo *= 0.5;
+        replaced = +1;
+      }
     }
+    if (!resolved && it < options.max_iterations && lo > t) ++result.jumps;
     if (it >= options.max_iterations) ++result.capped;
     if (!(lo > t)) lo = std::min(hi, t + 1e-9 * span);  // cannot stall: a minimal step
     t = lo;

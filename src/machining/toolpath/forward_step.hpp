@@ -18,11 +18,19 @@
 //                 stretches and in concave ones tighter than r. An estimate:
 //                 no search, no check.
 // Line search (exact, chord): from the circular-arc estimate the step is
-// doubled or halved until it brackets the tolerance, then bisected until the
-// bracket is below `precision` times the step. The accepted step always has
-// error <= tolerance as computed (a zero-length step has none), and the next
-// longer one tried exceeded it; the last step of a pass ends at the pass end
-// and may be shorter. `max_step` [mm, chord] caps every rule (0: no cap).
+// doubled or halved until it brackets the tolerance, then refined by false
+// position on (error - tolerance) (Illinois variant, bisection while an end's
+// error is unknown) until the accepted step's error is within
+// max(relative_precision * tolerance, absolute_precision) below the
+// tolerance: the step is as long as the tolerance allows, not merely close
+// to it in length (the error grows with the square of the step, so a
+// parameter bracket of 1e-3 leaves 0.2 % of the tolerance unused). The
+// accepted step always has error <= tolerance as computed (a zero-length
+// step has none), and a longer one tried exceeded it. Where the error jumps
+// over the tolerance (a step reaching another face, a change of contact) the
+// bracket collapses first; the step is kept and counted in `jumps`. The last
+// step of a pass ends at the pass end and may be shorter. `max_step` [mm,
+// chord] caps every rule (0: no cap).
 #include <vector>
 
 #include "machining/cutter/cutter.hpp"
@@ -37,8 +45,9 @@ const char* to_string(StepRule rule);
 struct ForwardStepOptions {
   double tolerance = 0.01;  // [mm]
   StepRule rule = StepRule::exact;
-  double precision = 1e-3;  // relative bracket width at which the search stops
-  int max_iterations = 60;  // per step (bracketing + bisection)
+  double relative_precision = 1e-4;  // the accepted error is >= tolerance (1 - this) ...
+  double absolute_precision = 1e-7;  // [mm] ... or >= tolerance - this, whichever is lower
+  int max_iterations = 60;  // per step (bracketing + refinement)
   double max_step = 0;      // [mm] chord; 0: none
   long max_points = 1'000'000;  // per pass: beyond, the search stops (ForwardSteps::truncated)
   FurrowStepOptions predictor;
@@ -47,6 +56,7 @@ struct ForwardStepOptions {
 struct ForwardSteps {
   std::vector<double> params;  // t of every contact point, t0 first, t1 last
   int capped = 0;              // steps whose search hit max_iterations
+  int jumps = 0;               // steps ended where the error jumps over the tolerance
   int evaluations = 0;         // error evaluations (exact or chord)
   int invalid = 0;             // evaluations on curves that could not be evaluated (treated as too long)
   bool truncated = false;      // stopped at max_points (docs/formats.md "Limits")
