@@ -1,0 +1,73 @@
+// `furrow report --record`: the record in the report folder, its file
+// digested with the inputs; a bad record refused before anything is written.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_cli.hpp"
+#include "report_fixture.hpp"
+
+using namespace furrow;
+using namespace furrow::test;
+using nlohmann::json;
+
+namespace {
+
+// The fixture's comparison on disk, naming the bundled part by an absolute
+// path, with the measurement file it names next to it.
+std::string comparison_on_disk(const std::string& dir) {
+  static const ReportFixture f = make_report_fixture();
+  json c = json::parse(f.comparison_json);
+  c["part"] = source_path("examples/parts/mould.json");
+  write_text(dir + "/comparison.json", c.dump(1));
+  write_text(dir + "/grid.csv", "the measurements the comparison names\n");
+  return dir + "/comparison.json";
+}
+
+// SHA-256 by coreutils, independent of Furrow's own digest.
+std::string sha256sum(const std::string& path) {
+  const std::string out = path + ".sha";
+  REQUIRE(std::system(("sha256sum " + shell_quote(path) + " > " + shell_quote(out)).c_str()) == 0);
+  return slurp(out).substr(0, 64);
+}
+
+}  // namespace
+
+TEST_CASE("furrow report --record puts the record in the header, report.json, results.qif and the inputs") {
+  const std::string dir = scratch_dir("report-record");
+  const std::string comparison = comparison_on_disk(dir);
+  const std::string record = source_path("examples/records/mould_first_article.json");
+  const CliResult r = run_furrow({"report", comparison, "--out", dir + "/out", "--record", record});
+  CHECK_MESSAGE(r.status == 1, r.err);  // the fixture's dent fails the part
+  const json report = json::parse(slurp(dir + "/out/report.json"));
+  CHECK(report["record"]["part_number"] == "MOULD-100-A");
+  CHECK(report["record"]["temperature"] == json({{"value", 20.4}, {"unit", "C"}}));
+  CHECK(report["record"]["sign_off"] == json({{"prepared", {{"name", "J. Doe"}, {"date", "2026-11-25"}}}}));
+  bool digested = false;
+  for (const json& in : report["inputs"])
+    if (in["role"] == "record") {
+      digested = true;
+      CHECK(in["path"] == record);
+      CHECK(in["sha256"] == sha256sum(record));
+    }
+  CHECK(digested);
+  const std::string html = slurp(dir + "/out/report.html");
+  CHECK(html.find("<div data-field=\"serial\"><span class=\"label\">Serial number</span>SN-0042</div>") <
+        html.find("</header>"));
+  const std::string qif = slurp(dir + "/out/results.qif");
+  CHECK(qif.find("<AttributeStr name=\"part_number\" value=\"MOULD-100-A\"/>") != std::string::npos);
+  CHECK(qif.find("<Name>J. Doe</Name>") != std::string::npos);
+}
+
+TEST_CASE("furrow report --record with a bad record exits 2 naming the member and writes nothing") {
+  const std::string dir = scratch_dir("report-record-bad");
+  const std::string comparison = comparison_on_disk(dir);
+  write_text(dir + "/record.json", R"({"part_number": "A", "serail": "SN 1"})");
+  const CliResult r = run_furrow({"report", comparison, "--out", dir + "/out", "--record", dir + "/record.json"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("record.json: serail: unknown member") != std::string::npos);
+  CHECK(line_count(r.err) == 1);
+  CHECK_FALSE(std::filesystem::exists(dir + "/out"));
+}
