@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "inspection/comparison_file.hpp"
 #include "report/point_table.hpp"
 #include "report/point_table_html.hpp"
 #include "report/points_csv.hpp"
@@ -79,98 +80,133 @@ std::vector<HtmlRow> html_rows(const std::string& html) {
   return rows;
 }
 
+// The fixture's comparison, and a copy with three points set aside (not
+// evaluated, as the comparison writes blunders) read back through the same
+// reader, so the NOT EVALUATED rows are checked too.
+struct Variant {
+  json comparison;
+  ComparisonDocument doc;
+};
+std::vector<Variant> variants() {
+  std::vector<Variant> v;
+  v.push_back({json::parse(fixture().comparison_json), fixture().doc});
+  json blunders = json::parse(fixture().comparison_json);
+  for (std::size_t i : {3u, 50u, 100u}) {
+    json& p = blunders["points"][i];
+    p["evaluated"] = false;
+    p["in_tolerance"] = nullptr;
+    p["in_fit"] = false;
+    p["outlier"] = {{"reason", "blunder"}, {"detail", "test"}};
+  }
+  v.push_back({blunders, parse_comparison(blunders.dump(), "blunders.json")});
+  return v;
+}
+
 }  // namespace
 
 TEST_CASE("points.csv carries the metrologist's columns, every row as comparison.json says") {
-  const json comparison = json::parse(fixture().comparison_json);
-  const double lower = comparison["tolerance"]["lower"], upper = comparison["tolerance"]["upper"];
-  std::istringstream in(points_csv_text(fixture().doc));
-  std::string header;
-  std::getline(in, header);
-  const std::vector<std::string> columns = split(header);
-  auto column = [&](const std::string& name) {
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return i;
-    FAIL("no column " << name);
-    return std::size_t(0);
-  };
-  const json& points = comparison["points"];
-  std::size_t row = 0, out = 0, not_evaluated = 0;
-  for (std::string line; std::getline(in, line); ++row) {
-    REQUIRE(row < points.size());
-    const json& p = points[row];
-    const std::vector<std::string> cells = split(line);
-    REQUIRE(cells.size() == columns.size());
-    CHECK(cells[column("id")] == p["id"].get<std::string>());
-    const char* axes[] = {"x", "y", "z"};
-    const char* ijk[] = {"i", "j", "k"};
-    for (int k = 0; k < 3; ++k) {
-      CHECK(parse_double(cells[column(std::string("foot_") + axes[k])]) == p["foot"][k].get<double>());
-      CHECK(parse_double(cells[column(std::string("normal_") + ijk[k])]) == p["normal"][k].get<double>());
-      CHECK(parse_double(cells[column(std::string("actual_") + axes[k])]) == p["contact"][k].get<double>());
+  for (const Variant& variant : variants()) {
+    const json& comparison = variant.comparison;
+    const double lower = comparison["tolerance"]["lower"], upper = comparison["tolerance"]["upper"];
+    std::istringstream in(points_csv_text(variant.doc));
+    std::string header;
+    std::getline(in, header);
+    const std::vector<std::string> columns = split(header);
+    auto column = [&](const std::string& name) {
+      for (std::size_t i = 0; i < columns.size(); ++i)
+        if (columns[i] == name) return i;
+      FAIL("no column " << name);
+      return std::size_t(0);
+    };
+    const json& points = comparison["points"];
+    std::size_t row = 0, out = 0, not_evaluated = 0;
+    for (std::string line; std::getline(in, line); ++row) {
+      REQUIRE(row < points.size());
+      const json& p = points[row];
+      const std::vector<std::string> cells = split(line);
+      REQUIRE(cells.size() == columns.size());
+      CHECK(cells[column("id")] == p["id"].get<std::string>());
+      const char* axes[] = {"x", "y", "z"};
+      const char* ijk[] = {"i", "j", "k"};
+      for (int k = 0; k < 3; ++k) {
+        CHECK(parse_double(cells[column(std::string("foot_") + axes[k])]) == p["foot"][k].get<double>());
+        CHECK(parse_double(cells[column(std::string("normal_") + ijk[k])]) == p["normal"][k].get<double>());
+        CHECK(parse_double(cells[column(std::string("actual_") + axes[k])]) == p["contact"][k].get<double>());
+      }
+      const double d = p["deviation"];
+      CHECK(parse_double(cells[column("deviation")]) == d);
+      CHECK(parse_double(cells[column("lower_tolerance")]) == lower);
+      CHECK(parse_double(cells[column("upper_tolerance")]) == upper);
+      // The actual is the part-frame point the deviation is measured at.
+      double along = 0;
+      for (int k = 0; k < 3; ++k)
+        along += p["normal"][k].get<double>() * (p["contact"][k].get<double>() - p["foot"][k].get<double>());
+      CHECK(std::abs(along - d) < 1e-9);  // mm; coordinates of ~100 mm round at ~1e-14
+      const std::string status = cells[column("status")];
+      if (!p["evaluated"].get<bool>()) {
+        CHECK(status == "NOT EVALUATED");
+        CHECK(cells[column("out_of_tolerance")].empty());
+        ++not_evaluated;
+        continue;
+      }
+      const double excess = parse_double(cells[column("out_of_tolerance")]);
+      CHECK(excess == doctest::Approx(expected_excess(d, lower, upper)).epsilon(1e-12));
+      CHECK(status == (p["in_tolerance"].get<bool>() ? "IN" : "OUT"));
+      CHECK((status == "OUT") == (excess > 0));
+      out += status == "OUT";
     }
-    const double d = p["deviation"];
-    CHECK(parse_double(cells[column("deviation")]) == d);
-    CHECK(parse_double(cells[column("lower_tolerance")]) == lower);
-    CHECK(parse_double(cells[column("upper_tolerance")]) == upper);
-    // The actual is the part-frame point the deviation is measured at.
-    double along = 0;
-    for (int k = 0; k < 3; ++k)
-      along += p["normal"][k].get<double>() * (p["contact"][k].get<double>() - p["foot"][k].get<double>());
-    CHECK(std::abs(along - d) < 1e-9);  // mm; coordinates of ~100 mm round at ~1e-14
-    const std::string status = cells[column("status")];
-    if (!p["evaluated"].get<bool>()) {
-      CHECK(status == "NOT EVALUATED");
-      CHECK(cells[column("out_of_tolerance")].empty());
-      ++not_evaluated;
-      continue;
-    }
-    const double excess = parse_double(cells[column("out_of_tolerance")]);
-    CHECK(excess == doctest::Approx(expected_excess(d, lower, upper)).epsilon(1e-12));
-    CHECK(status == (p["in_tolerance"].get<bool>() ? "IN" : "OUT"));
-    CHECK((status == "OUT") == (excess > 0));
-    out += status == "OUT";
+    CHECK(row == points.size());
+    std::size_t expected_out = 0;
+    for (const json& p : points)
+      expected_out += p["evaluated"].get<bool>() && (p["deviation"] < lower || p["deviation"] > upper);
+    CHECK(out == expected_out);
+    CHECK(out >= 1);  // the fixture's 60 um dent breaks the 50 um zone
+    std::size_t evaluated = 0;
+    for (const json& p : points) evaluated += p["evaluated"].get<bool>();
+    CHECK(not_evaluated == points.size() - evaluated);
   }
-  CHECK(row == points.size());
-  CHECK(out == comparison["summary"]["out_of_tolerance"].get<std::size_t>());
-  CHECK(out >= 1);  // the fixture's 60 um dent breaks the 50 um zone
-  CHECK(not_evaluated == points.size() - comparison["summary"]["evaluated"].get<std::size_t>());
 }
 
 TEST_CASE("the HTML point table shows every point with the same numbers as comparison.json") {
-  const json comparison = json::parse(fixture().comparison_json);
-  const double lower = comparison["tolerance"]["lower"], upper = comparison["tolerance"]["upper"];
-  const std::vector<HtmlRow> rows = html_rows(point_table_html(fixture().doc));
-  const json& points = comparison["points"];
-  REQUIRE(rows.size() == points.size());  // 192 < the cap: all of them
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const HtmlRow& r = rows[i];
-    const json& p = points[i];
-    REQUIRE(r.values.size() == 17);
-    CHECK(parse_double(r.values[0]) == static_cast<double>(i + 1));
-    CHECK(r.texts[1] == p["id"].get<std::string>());
-    for (int k = 0; k < 3; ++k) {
-      CHECK(parse_double(r.values[3 + k]) == p["foot"][k].get<double>());
-      CHECK(parse_double(r.values[6 + k]) == p["normal"][k].get<double>());
-      CHECK(parse_double(r.values[9 + k]) == p["contact"][k].get<double>());
-      // The text is the value rounded to 4 decimals.
-      CHECK(std::abs(parse_double(r.texts[3 + k]) - p["foot"][k].get<double>()) <= 0.5e-4 + 1e-12);
-      CHECK(std::abs(parse_double(r.texts[9 + k]) - p["contact"][k].get<double>()) <= 0.5e-4 + 1e-12);
-    }
-    const double d = p["deviation"];
-    CHECK(parse_double(r.values[12]) == d);
-    CHECK(std::abs(parse_double(r.texts[12]) - d) <= 0.5e-4 + 1e-12);
-    CHECK(parse_double(r.values[13]) == lower);
-    CHECK(parse_double(r.values[14]) == upper);
-    if (p["evaluated"].get<bool>()) {
-      CHECK(parse_double(r.values[15]) == doctest::Approx(expected_excess(d, lower, upper)).epsilon(1e-12));
-      CHECK(r.status == (p["in_tolerance"].get<bool>() ? "IN" : "OUT"));
-      CHECK(r.texts[16].rfind(r.status, 0) == 0);
-    } else {
-      CHECK(r.status == "NOT EVALUATED");
-      CHECK(r.texts[15] == "&ndash;");
+  std::size_t not_evaluated = 0;
+  for (const Variant& variant : variants()) {
+    const json& comparison = variant.comparison;
+    const double lower = comparison["tolerance"]["lower"], upper = comparison["tolerance"]["upper"];
+    const std::vector<HtmlRow> rows = html_rows(point_table_html(variant.doc));
+    const json& points = comparison["points"];
+    REQUIRE(rows.size() == points.size());  // 192 < the cap: all of them
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const HtmlRow& r = rows[i];
+      const json& p = points[i];
+      REQUIRE(r.values.size() == 17);
+      CHECK(parse_double(r.values[0]) == static_cast<double>(i + 1));
+      CHECK(r.texts[1] == p["id"].get<std::string>());
+      for (int k = 0; k < 3; ++k) {
+        CHECK(parse_double(r.values[3 + k]) == p["foot"][k].get<double>());
+        CHECK(parse_double(r.values[6 + k]) == p["normal"][k].get<double>());
+        CHECK(parse_double(r.values[9 + k]) == p["contact"][k].get<double>());
+        // The text is the value rounded to 4 decimals.
+        CHECK(std::abs(parse_double(r.texts[3 + k]) - p["foot"][k].get<double>()) <= 0.5e-4 + 1e-12);
+        CHECK(std::abs(parse_double(r.texts[9 + k]) - p["contact"][k].get<double>()) <= 0.5e-4 + 1e-12);
+      }
+      const double d = p["deviation"];
+      CHECK(parse_double(r.values[12]) == d);
+      CHECK(std::abs(parse_double(r.texts[12]) - d) <= 0.5e-4 + 1e-12);
+      CHECK(parse_double(r.values[13]) == lower);
+      CHECK(parse_double(r.values[14]) == upper);
+      if (p["evaluated"].get<bool>()) {
+        CHECK(parse_double(r.values[15]) == doctest::Approx(expected_excess(d, lower, upper)).epsilon(1e-12));
+        CHECK(r.status == (p["in_tolerance"].get<bool>() ? "IN" : "OUT"));
+        CHECK(r.texts[16].rfind(r.status, 0) == 0);
+      } else {
+        CHECK(r.status == "NOT EVALUATED");
+        CHECK(r.texts[15] == "&ndash;");
+        CHECK(r.texts[16] == "NOT EVALUATED (blunder)");
+        ++not_evaluated;
+      }
     }
   }
+  CHECK(not_evaluated == 3);  // the second variant's
 }
 
 TEST_CASE("a large point table keeps every out-of-tolerance point and says that points.csv has the rest") {
