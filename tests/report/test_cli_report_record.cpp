@@ -53,6 +53,12 @@ TEST_CASE("furrow report --record puts the record in the header, report.json, re
       CHECK(in["sha256"] == sha256sum(record, dir));
     }
   CHECK(digested);
+  // The schema knows the record and its input role (python3-jsonschema, as the demo test).
+  const std::string validate = "python3 -c 'import json,sys,jsonschema; jsonschema.validate(json.load(open(sys.argv[2])), "
+                               "json.load(open(sys.argv[1])))' " +
+                               shell_quote(source_path("docs/report.schema.json")) + " " +
+                               shell_quote(dir + "/out/report.json") + " > " + shell_quote(dir + "/schema.log") + " 2>&1";
+  CHECK_MESSAGE(std::system(validate.c_str()) == 0, slurp(dir + "/schema.log"));
   const std::string html = slurp(dir + "/out/report.html");
   CHECK(html.find("<div data-field=\"serial\"><span class=\"label\">Serial number</span>SN-0042</div>") <
         html.find("</header>"));
