@@ -328,7 +328,8 @@ std::string traceability_section(const ComparisonDocument& doc, const ReportCont
   }
   out += "<h3>Comparison options</h3>\n" + options_rows(doc.options);
   if (!context.job_options_json.empty())
-    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre class=\"options\">" + escape(context.job_options_json) + "</pre>\n";
+    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre class=\"options\">" +
+           escape(context.job_options_json) + "</pre>\n";
   return out + "</section>\n";
 }
 
@@ -351,12 +352,13 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
          escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
          escape(named("measurements", doc.sources.measurements)) +
          "</code> &middot; Furrow " + escape(FURROW_VERSION) + " &middot; " + escape(context.generated) +
-         "</p>\n" + record_header_html(context.record) + (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
+         "</p>\n" + record_header_html(context.record) +
+         (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
          "</header>\n";
   out += verdict_section(verdict);
   out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
-         "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a href=\"#faces\">Faces</a><a "
-         "href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
+         "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a "
+         "href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
   out += deviations_section(doc, figures);

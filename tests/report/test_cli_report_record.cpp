@@ -77,3 +77,40 @@ TEST_CASE("furrow report --record with a bad record exits 2 naming the member an
   CHECK(line_count(r.err) == 1);
   CHECK_FALSE(std::filesystem::exists(dir + "/out"));
 }
+
+TEST_CASE("furrow run: the job's inline record reaches the report; --record replaces it; a bad one stops the job") {
+  const std::string dir = scratch_dir("run-record");
+  json job = json::parse(slurp(source_path("examples/jobs/demo.json")));
+  job["part"] = source_path("examples/parts/mould.json");
+  job["tool"] = source_path("examples/tools/ball_d24.json");
+  job["output"] = "out";
+  job["record"] = {{"serial", "INLINE-1"}, {"operator", "<b>op</b>"}};
+  write_text(dir + "/job.json", job.dump(1));
+
+  const CliResult r = run_furrow({"run", dir + "/job.json"});
+  CHECK_MESSAGE(r.status == 1, r.err);  // the demo's gouge fails the part
+  json report = json::parse(slurp(dir + "/out/report.json"));
+  CHECK(report["record"] == json({{"serial", "INLINE-1"}, {"operator", "<b>op</b>"}}));
+  const std::string html = slurp(dir + "/out/report.html");
+  CHECK(html.find("&lt;b&gt;op&lt;/b&gt;") != std::string::npos);
+  CHECK(html.find("<b>op</b>") == std::string::npos);
+
+  // --record: the file's record instead, digested as an input.
+  const std::string record = source_path("examples/records/mould_first_article.json");
+  const CliResult again = run_furrow({"run", dir + "/job.json", "--out", dir + "/out2", "--record", record});
+  CHECK_MESSAGE(again.status == 1, again.err);
+  report = json::parse(slurp(dir + "/out2/report.json"));
+  CHECK(report["record"]["serial"] == "SN-0042");
+  std::size_t records = 0;
+  for (const json& in : report["inputs"]) records += in["role"] == "record" && in["path"] == record;
+  CHECK(records == 1);
+
+  // A bad record is refused before any stage runs: exit 2, nothing written.
+  job["record"] = {{"serial", "S"}, {"sign_off", {{"checked", {{"date", "2026-02-30"}}}}}};
+  write_text(dir + "/bad.json", job.dump(1));
+  const CliResult bad = run_furrow({"run", dir + "/bad.json", "--out", dir + "/out3"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("record.sign_off.checked.date") != std::string::npos);
+  CHECK(line_count(bad.err) == 1);
+  CHECK_FALSE(std::filesystem::exists(dir + "/out3"));
+}

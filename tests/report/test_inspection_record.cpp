@@ -97,6 +97,7 @@ TEST_CASE("a bad record is refused naming the member") {
   CHECK(error_of(R"({"temperature": {"value": 293.15, "unit": "C"}})").find("outside -50..100 degC") !=
         std::string::npos);
   CHECK(error_of(R"({"temperature": {"value": 293.15, "unit": "K"}})") == "(accepted)");
+  CHECK(error_of(R"({"temperature": {"value": 1e400, "unit": "C"}})").find("record.json: temperature.value") == 0);
   CHECK(error_of(R"({"temperature": {"value": 68, "unit": "F", "at": 1}})").find("temperature.at: unknown") !=
         std::string::npos);
   CHECK(error_of("[]").find("record.json:") == 0);
