@@ -148,7 +148,9 @@ bool InspectionRecord::has_sign_off() const {
 }
 
 InspectionRecord parse_inspection_record(const std::string& text, const std::string& where) {
-  const json doc = jf::parse_text(text, where);
+  // The document's name without the root's colon ("record.json"), as
+  // parse_text puts its own after it.
+  const json doc = jf::parse_text(text, !where.empty() && where.back() == ':' ? where.substr(0, where.size() - 1) : where);
   const json& o = jf::object(doc, where);
   InspectionRecord r;
   const std::pair<const char*, std::string*> lines[] = {

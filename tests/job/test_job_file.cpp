@@ -223,7 +223,7 @@ TEST_CASE("measurements: the CSV dialect and the I++ DME program are read and ch
   CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "units": "cubit"},)")).find("units") != std::string::npos);
 }
 
-TEST_CASE("the job's record: inline, or a file relative to the job; errors name the member") {
+TEST_CASE("the job's record: inline or a file relative to the job with errors naming the member") {
   // Inline: read with the record's own rules.
   const Job inline_job =
       parse_job(minimal(R"( "record": {"serial": "SN 7", "temperature": {"value": 68, "unit": "F"}},)"), "job.json",

@@ -35,7 +35,7 @@ std::string sha256sum(const std::string& path, const std::string& scratch) {
 
 }  // namespace
 
-TEST_CASE("furrow report --record puts the record in the header, report.json, results.qif and the inputs") {
+TEST_CASE("furrow report --record puts the record in the header and report.json and results.qif and the inputs") {
   const std::string dir = scratch_dir("report-record");
   const std::string comparison = comparison_on_disk(dir);
   const std::string record = source_path("examples/records/mould_first_article.json");
@@ -78,7 +78,7 @@ TEST_CASE("furrow report --record with a bad record exits 2 naming the member an
   CHECK_FALSE(std::filesystem::exists(dir + "/out"));
 }
 
-TEST_CASE("furrow run: the job's inline record reaches the report; --record replaces it; a bad one stops the job") {
+TEST_CASE("furrow run: the job's inline record reaches the report and --record replaces it and a bad one stops the job") {
   const std::string dir = scratch_dir("run-record");
   json job = json::parse(slurp(source_path("examples/jobs/demo.json")));
   job["part"] = source_path("examples/parts/mould.json");

@@ -87,7 +87,7 @@ TEST_CASE("faces are summarised worst first with the points' numbers") {
   CHECK(faces.front().worst_excess == doctest::Approx(worst_excess).epsilon(1e-12));
 }
 
-TEST_CASE("the faces section lists each face once, out-of-tolerance faces marked") {
+TEST_CASE("the faces section lists each face once with out-of-tolerance faces marked") {
   const ComparisonDocument doc = many_faces();
   const std::string html = face_summary_html(doc);
   std::size_t rows = 0, out_rows = 0;

@@ -97,14 +97,16 @@ TEST_CASE("a bad record is refused naming the member") {
   CHECK(error_of(R"({"temperature": {"value": 293.15, "unit": "C"}})").find("outside -50..100 degC") !=
         std::string::npos);
   CHECK(error_of(R"({"temperature": {"value": 293.15, "unit": "K"}})") == "(accepted)");
-  CHECK(error_of(R"({"temperature": {"value": 1e400, "unit": "C"}})").find("record.json: temperature.value") == 0);
+  // Beyond a double: refused as JSON, naming the file once.
+  CHECK(error_of(R"({"temperature": {"value": 1e400, "unit": "C"}})").find("record.json: not valid JSON") == 0);
+  CHECK(error_of(R"({"serial": "S")").find("record.json: line 1, column") == 0);
   CHECK(error_of(R"({"temperature": {"value": 68, "unit": "F", "at": 1}})").find("temperature.at: unknown") !=
         std::string::npos);
   CHECK(error_of("[]").find("record.json:") == 0);
   CHECK(error_of("{\"serial\": \"\xff\"}").find("record.json") == 0);  // not UTF-8
 }
 
-TEST_CASE("ISO 8601 dates: calendar checked, time and offset optional") {
+TEST_CASE("ISO 8601 dates: calendar checked with time and offset optional") {
   for (const char* good : {"2026-11-25", "2000-02-29", "2026-11-25T14:30", "2026-11-25T14:30:59Z",
                            "2026-11-25T14:30+01:00", "2026-11-25T00:00:00-05:30"})
     CHECK_MESSAGE(is_iso8601_date(good), good);
@@ -114,7 +116,7 @@ TEST_CASE("ISO 8601 dates: calendar checked, time and offset optional") {
     CHECK_MESSAGE(!is_iso8601_date(bad), bad);
 }
 
-TEST_CASE("the record is in the report header escaped, in report.json, in results.qif and the sign-off block") {
+TEST_CASE("the record is in the report header escaped and in report.json and results.qif and the sign-off block") {
   const test::ReportFixture& f = fixture();
   const InspectionRecord record = parse_inspection_record(kFull, "record.json:");
   const std::vector<FolderFile> files = make_report(f.doc, f.part, nullptr, context_with(record));
@@ -169,7 +171,7 @@ TEST_CASE("the record is in the report header escaped, in report.json, in result
   CHECK(back.points.size() == f.doc.points.size());
 }
 
-TEST_CASE("without a record the header says so, report.json has null and the QIF no record") {
+TEST_CASE("without a record the header says so while report.json has null and the QIF no record") {
   const test::ReportFixture& f = fixture();
   const std::vector<FolderFile> files = make_report(f.doc, f.part, nullptr, context_with(std::nullopt));
   const std::string& html = file(files, "report.html");

@@ -104,7 +104,7 @@ std::vector<Variant> variants() {
 
 }  // namespace
 
-TEST_CASE("points.csv carries the metrologist's columns, every row as comparison.json says") {
+TEST_CASE("points.csv carries the metrologist's columns with every row as comparison.json says") {
   for (const Variant& variant : variants()) {
     const json& comparison = variant.comparison;
     const double lower = comparison["tolerance"]["lower"], upper = comparison["tolerance"]["upper"];

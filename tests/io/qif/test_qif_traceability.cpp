@@ -71,7 +71,7 @@ TEST_CASE("the record goes into InspectionTraceability in schema order and reads
                                                                  {"notes", "line 1\nline 2\ttab \"q\""}});
 }
 
-TEST_CASE("without a record nor a time there is no InspectionTraceability; a record alone gives one") {
+TEST_CASE("without a record nor a time there is no InspectionTraceability but a record alone gives one") {
   QifDocumentData d = one_point();
   CHECK(qif_results_text(d).find("InspectionTraceability") == std::string::npos);
   QifTraceability t;
