@@ -15,12 +15,17 @@ namespace {
 int run_report(Args& args) {
   const std::string out = args.required_option("out");
   const auto title = args.option("title");
+  const auto record = args.option("record");
   const std::string comparison_path = args.positional("COMPARISON (a comparison.json of furrow compare)");
   args.finish();
 
-  const ReportSources sources = read_report_sources(comparison_path);
-  check_inputs_outside(out, sources.inputs);
+  ReportSources sources = read_report_sources(comparison_path);
   ReportContext context;
+  if (record) {  // checked before any work; its digest goes with the other inputs
+    context.record = read_inspection_record(*record);
+    sources.inputs.push_back(digest_file("record", *record));
+  }
+  check_inputs_outside(out, sources.inputs);
   context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
   if (context.title.empty() || context.title == ".") context.title = "comparison";
   context.generated = utc_timestamp();
@@ -42,7 +47,7 @@ int run_report(Args& args) {
 
 const Command kReportCommand = {
     "report", "QA report of a comparison: self-contained HTML, JSON, CSV, figures",
-    "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT]\n"
+    "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT] [--record RECORD.json]\n"
     "\n"
     "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
     "as a whole: report.html (self-contained, opens offline), report.json (every\n"
@@ -57,7 +62,12 @@ const Command kReportCommand = {
     "inconclusive.\n"
     "\n"
     "  --out FOLDER   report folder to write (required)\n"
-    "  --title TEXT   heading (default: the folder's name)\n",
+    "  --title TEXT   heading (default: the folder's name)\n"
+    "  --record FILE  inspection record: part number, revision, serial, lot,\n"
+    "                 customer, operator, CMM, probe, qualification date,\n"
+    "                 temperature, program, notes, sign-off (docs/formats.md\n"
+    "                 \"Inspection record\"); shown in the header, written to\n"
+    "                 report.json and results.qif\n",
     run_report};
 
 }  // namespace furrow::cli

@@ -13,10 +13,15 @@ namespace {
 
 int run_run(Args& args) {
   const auto out = args.option("out");
+  const auto record = args.option("record");
   const std::string job_path = args.positional("JOB (a job.json file)");
   args.finish();
   Job job = read_job(job_path);
   if (out) job.output = *out;
+  if (record) {  // replaces the job's own record (relative to the current directory)
+    job.record_file = *record;
+    job.record = read_inspection_record(*record);
+  }
   // A stage's option or input came from the job: the message names it.
   return naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
 }
@@ -25,7 +30,7 @@ int run_run(Args& args) {
 
 const Command kRunCommand = {
     "run", "a whole inspection job from a job file: partition to QA report",
-    "usage: furrow run JOB.json [--out FOLDER]\n"
+    "usage: furrow run JOB.json [--out FOLDER] [--record RECORD.json]\n"
     "\n"
     "Runs the job file's stages with the options it gives (docs/formats.md\n"
     "\"Job file\"; paths in it are relative to the job file): partition, tool\n"
@@ -37,6 +42,9 @@ const Command kRunCommand = {
     "\n"
     "  --out FOLDER   output folder instead of the job's (relative to the\n"
     "                 current directory)\n"
+    "  --record FILE  inspection record (part number, serial, operator, CMM,\n"
+    "                 sign-off; docs/formats.md \"Inspection record\") instead\n"
+    "                 of the job's \"record\"\n"
     "\n"
     "Exit status: 0 pass (or plan only), 1 fail (out of tolerance or a\n"
     "confirmed gouge), 2 bad input, 3 the computation did not succeed,\n"

@@ -386,10 +386,20 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   if (auto s = root.section("plan")) read_plan(*s, job);
   read_measurements(root, job, folder);
   if (auto s = root.section("comparison")) read_comparison(*s, job);
+  if (const json* v = root.find("record")) {
+    if (v->is_string()) {
+      job.record_file = path_member(root, "record", folder);
+      job.record = read_inspection_record(job.record_file);
+    } else if (v->is_object()) {
+      job.record = parse_inspection_record(v->dump(), root.at("record"));
+    } else {
+      throw InputError(root.at("record") + ": expected a record file name or the record as an object");
+    }
+  }
   job.output = path_member(root, "output", folder);
   root.finish();
   scale_registration_to_tolerance(job.compare);
-  for (const std::string* input : {&job.part, &job.tool})
+  for (const std::string* input : {&job.part, &job.tool, &job.record_file})
     if (*input == job.output) throw InputError(root.at("output") + ": the output folder is an input file");
   return job;
 }

@@ -26,6 +26,7 @@
 #include "machining/prediction/path_prediction.hpp"
 #include "partition/partition.hpp"
 #include "planning/probe_planner.hpp"
+#include "report/inspection_record.hpp"
 #include "stage/toolpath_stage.hpp"
 
 namespace furrow {
@@ -71,6 +72,13 @@ struct Job {
   bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
 
   std::string output;  // resolved output folder
+
+  // The inspection record for the report header, QIF and sign-off
+  // (report/inspection_record.hpp): "record" is a file name (record_file,
+  // resolved; digested as an input) or the record inline; none: the report
+  // says no record was given.
+  std::optional<InspectionRecord> record;
+  std::string record_file;
 
   bool has_measurements() const { return !measurement_files.empty() || simulate.has_value(); }
 };

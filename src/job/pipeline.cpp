@@ -243,6 +243,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
   if (!job.measurement_read.ippdme_program.empty())
     s.inputs.push_back(digest_file("I++ DME program", job.measurement_read.ippdme_program));
+  if (!job.record_file.empty()) s.inputs.push_back(digest_file("record", job.record_file));
   check_inputs_outside(job.output, s.inputs);  // before the work, not after it
   const Part part = read_part(job.part);
   const Cutter cutter(read_tool_file(job.tool));
@@ -277,6 +278,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     context.generated = utc_timestamp();
     context.inputs = s.inputs;
     context.job_options_json = job_options_json(job);
+    context.record = job.record;
     // The report's stage time is that of its figures (the costly part): it
     // is printed in the report rendered right after.
     const Clock::time_point report_start = Clock::now();

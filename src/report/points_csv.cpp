@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "report/point_table.hpp"
+
 namespace furrow {
 
 namespace {
@@ -30,8 +32,10 @@ std::string points_csv_text(const ComparisonDocument& doc) {
   std::ostringstream out;
   out << "id,face,u,v,foot_x,foot_y,foot_z,normal_i,normal_j,normal_k,measured_x,measured_y,measured_z,"
          "deviation,uncertainty,evaluated,in_tolerance,in_fit,outlier,region,predicted,measured_aligned,"
-         "residual,sigma_total\n";
-  for (const auto& p : doc.points) {
+         "residual,sigma_total,actual_x,actual_y,actual_z,lower_tolerance,upper_tolerance,out_of_tolerance,status\n";
+  const std::vector<PointTableRow> table = point_table(doc);
+  for (const PointTableRow& row : table) {
+    const auto& p = doc.points[row.index];
     out << text(p.id) << ',' << text(p.face) << ',' << number(p.uv.x()) << ',' << number(p.uv.y());
     for (const Eigen::Vector3d* v : {&p.foot, &p.normal, &p.measured})
       out << ',' << number(v->x()) << ',' << number(v->y()) << ',' << number(v->z());
@@ -43,6 +47,11 @@ std::string points_csv_text(const ComparisonDocument& doc) {
           << number(p.prediction->residual) << ',' << number(p.prediction->sigma);
     else
       out << ",,,,";
+    // The metrologist's columns (point_table.hpp): nominal and normal are
+    // foot_* and normal_* above.
+    out << ',' << number(row.actual.x()) << ',' << number(row.actual.y()) << ',' << number(row.actual.z()) << ','
+        << number(row.lower) << ',' << number(row.upper) << ','
+        << (row.out_of_tolerance ? number(*row.out_of_tolerance) : "") << ',' << text(row.status);
     out << '\n';
   }
   return out.str();

@@ -73,7 +73,8 @@ std::vector<FolderFile> render_report(const ComparisonDocument& doc, const Regio
   files.push_back({"report.html", report_html(doc, verdict, regions, context, figures)});
   files.push_back({"report.json", report_json_text(doc, verdict, regions, context, figures)});
   files.push_back({"points.csv", points_csv_text(doc)});
-  files.push_back({"results.qif", comparison_to_qif(doc, context.inputs, context.generated)});  // docs/qif.md
+  files.push_back({"results.qif",  // docs/qif.md
+                   comparison_to_qif(doc, context.inputs, context.generated, context.record)});
   for (const ReportFigure& f : figures) files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
   return files;
 }

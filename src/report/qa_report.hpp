@@ -16,12 +16,14 @@
 // "generated" (the timestamp) and "timing" (stage times), which is why the
 // context carries them explicitly.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "partition/region_map.hpp"
+#include "report/inspection_record.hpp"
 #include "report/report_figures.hpp"
 
 namespace furrow {
@@ -51,6 +53,10 @@ struct ReportContext {
   std::string job_options_json;       // resolved stage options as a JSON object, "" without a job
   std::vector<StageTime> stages;      // empty unless the report ends a job run
   double total_seconds = 0;           // wall time of the run up to the report
+  // Part number, serial, operator, sign-off... (inspection_record.hpp);
+  // none: the report says that no record was given. Its file, when it came
+  // from one, belongs in `inputs` (role "record").
+  std::optional<InspectionRecord> record;
 };
 
 // "2024-05-01T12:34:56Z", now.

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "report/face_summary.hpp"
 #include "report/html.hpp"
+#include "report/inspection_record_html.hpp"
+#include "report/point_table_html.hpp"
 #include "base/numbers.hpp"
 
 namespace furrow {
@@ -273,34 +276,6 @@ std::string gouges_section(const ComparisonDocument& doc, const std::vector<Repo
   return out + figures_of(figures, "gouges") + "</section>\n";
 }
 
-std::string points_section(const ComparisonDocument& doc) {
-  std::vector<TableRow> rows;
-  for (std::size_t i = 0; i < doc.points.size(); ++i) {
-    const auto& p = doc.points[i];
-    std::string status = !p.evaluated ? "not evaluated" : p.in_tolerance.value_or(false) ? "in" : "OUT";
-    if (!p.outlier.empty()) status += " (" + p.outlier + ")";
-    const bool reached = p.prediction && p.prediction->reached();
-    TableRow row{{count(i + 1), escape(p.id), escape(p.face), fixed(p.uv.x(), 4), fixed(p.uv.y(), 4),
-                  fixed(p.foot.x(), 3), fixed(p.foot.y(), 3), fixed(p.foot.z(), 3), um(p.deviation),
-                  p.uncertainty ? fixed(*p.uncertainty * 1000, 2) : "&ndash;", escape(status),
-                  p.region ? "R" + std::to_string(*p.region) : "&ndash;",
-                  reached ? um(p.prediction->predicted) : "&ndash;", reached ? um(p.prediction->residual) : "&ndash;"},
-                 ""};
-    if (!p.evaluated)
-      row.css_class = "outlier";
-    else if (!p.in_tolerance.value_or(true))
-      row.css_class = "out";
-    rows.push_back(std::move(row));
-  }
-  return "<section id=\"points\"><h2>Points</h2>\n<p>Every measured point in measurement order (also in "
-         "<code>points.csv</code>). Foot point on the nominal surface; deviation + material left, &minus; "
-         "overcut.</p>\n" +
-         html::table({"#", "Id", "Face", "u", "v", "x [mm]", "y [mm]", "z [mm]", "Deviation [um]",
-                      "1-sigma [um]", "Tolerance", "Region", "Predicted [um]", "Residual [um]"},
-                     rows, "points") +
-         "</section>\n";
-}
-
 std::string options_rows(const ComparisonDocument::Options& o) {
   const auto num = [](double v) {
     char buf[40];
@@ -353,7 +328,8 @@ std::string traceability_section(const ComparisonDocument& doc, const ReportCont
   }
   out += "<h3>Comparison options</h3>\n" + options_rows(doc.options);
   if (!context.job_options_json.empty())
-    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre>" + escape(context.job_options_json) + "</pre>\n";
+    out += "<h3>Job options (every stage, defaults resolved)</h3>\n<pre class=\"options\">" +
+           escape(context.job_options_json) + "</pre>\n";
   return out + "</section>\n";
 }
 
@@ -364,7 +340,7 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
                     escape("QA report " + context.title + ": " + verdict.result()) + "</title>\n<style>" + kStyle +
-                    "</style>\n</head>\n<body>\n";
+                    inspection_record_css() + point_table_css() + "</style>\n</head>\n<body>\n";
   // File names as the user gave them where the context knows them (a job's
   // inputs), else as the comparison names them.
   auto named = [&](const std::string& role, const std::string& fallback) {
@@ -376,19 +352,20 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
          escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
          escape(named("measurements", doc.sources.measurements)) +
          "</code> &middot; Furrow " + escape(FURROW_VERSION) + " &middot; " + escape(context.generated) +
-         "</p>\n" + (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
+         "</p>\n" + record_header_html(context.record) +
+         (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
          "</header>\n";
   out += verdict_section(verdict);
   out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
          "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a "
-         "href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
+         "href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
   out += deviations_section(doc, figures);
   out += prediction_section(doc, figures);
   out += gouges_section(doc, figures);
-  out += points_section(doc);
-  out += traceability_section(doc, context);
+  out += face_summary_html(doc) + point_table_html(doc);
+  out += traceability_section(doc, context) + sign_off_html(context.record);
   return out + kImageCheck + "</body>\n</html>\n";
 }
 

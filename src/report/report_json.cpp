@@ -5,6 +5,7 @@
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
 #include "base/json_fields.hpp"
+#include "report/face_summary.hpp"
 
 namespace furrow {
 
@@ -54,6 +55,44 @@ json options_json(const ComparisonDocument::Options& o) {
   json j = cj::run_options_json(o);
   j["tolerance"] = zone_json(o.tolerance);
   return j;
+}
+
+// The record as its file spells it, filled members only (docs/formats.md
+// "Inspection record"); null without one.
+json record_json(const std::optional<InspectionRecord>& record) {
+  if (!record) return nullptr;
+  json j = json::object();
+  for (const InspectionRecord::Field& f : record->fields())
+    if (std::string(f.key) != "temperature") j[f.key] = f.value;
+  if (record->temperature)
+    j["temperature"] = {{"value", num(record->temperature->value, "temperature")}, {"unit", record->temperature->unit}};
+  json sign = json::object();
+  for (const auto& [role, s] : {std::pair<const char*, const SignOff*>{"prepared", &record->prepared},
+                                {"checked", &record->checked},
+                                {"approved", &record->approved}}) {
+    json one = json::object();
+    if (!s->name.empty()) one["name"] = s->name;
+    if (!s->date.empty()) one["date"] = s->date;
+    if (!one.empty()) sign[role] = std::move(one);
+  }
+  if (!sign.empty()) j["sign_off"] = std::move(sign);
+  return j;
+}
+
+json faces_json(const ComparisonDocument& doc) {
+  json out = json::array();
+  for (const FaceDeviationSummary& f : face_summaries(doc))
+    out.push_back({{"face", f.face},
+                   {"face_index", f.face_index},
+                   {"points", f.points},
+                   {"evaluated", f.evaluated},
+                   {"out_of_tolerance", f.out_of_tolerance},
+                   {"min", opt(f.min_deviation, "min")},
+                   {"max", opt(f.max_deviation, "max")},
+                   {"mean", opt(f.mean_deviation, "mean")},
+                   {"beyond_zone", num(f.worst_excess, "beyond_zone")},
+                   {"worst_point", f.worst_point.empty() ? json(nullptr) : json(f.worst_point)}});
+  return out;
 }
 
 json alignment_json(const ComparisonDocument& doc) {
@@ -126,6 +165,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   d["furrow_version"] = FURROW_VERSION;
   d["title"] = context.title;
   d["generated"] = context.generated;
+  d["record"] = record_json(context.record);
   d["units"] = "mm";
   d["verdict"] = verdict_json(verdict);
   json inputs = json::array();
@@ -162,6 +202,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   } else {
     d["gouges"] = nullptr;
   }
+  d["faces"] = faces_json(doc);
   d["points"] = points_json(doc);
   json figs = json::array();
   for (const ReportFigure& f : figures) figs.push_back({{"file", f.file}, {"section", f.section}, {"title", f.title}});

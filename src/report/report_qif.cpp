@@ -19,7 +19,8 @@ const char* qif_point_status(const std::optional<bool>& in_tolerance) {
 }
 
 std::string comparison_to_qif(const ComparisonDocument& doc, const std::vector<InputDigest>& inputs,
-                              const std::optional<std::string>& time) {
+                              const std::optional<std::string>& time,
+                              const std::optional<InspectionRecord>& record) {
   QifDocumentData d;
   d.part_name = doc.sources.part;
   d.description = std::string("Furrow ") + FURROW_VERSION + ": surface profile inspection of " + doc.sources.part +
@@ -46,6 +47,28 @@ std::string comparison_to_qif(const ComparisonDocument& doc, const std::vector<I
   d.profile = profile;
   d.inspection_status = to_string(doc.summary.verdict);
   d.inspection_status_other = doc.summary.verdict == Verdict::inconclusive;
+  if (record) {
+    QifTraceability t;
+    t.customer = record->customer;
+    t.program = record->program;
+    t.operator_name = record->operator_name;
+    t.report_preparer = record->prepared.name;
+    // Fields QIF has no element for in InspectionTraceability, by their
+    // record file names (docs/formats.md "Inspection record").
+    for (const InspectionRecord::Field& f : record->fields()) {
+      const std::string key = f.key;
+      if (key != "customer" && key != "program" && key != "operator") t.attributes.emplace_back(key, f.value);
+    }
+    // The prepared-by name is ReportPreparer; the rest of the sign-off too
+    // has no element of its own.
+    for (const auto& [role, s] : {std::pair<std::string, const SignOff*>{"prepared", &record->prepared},
+                                  {"checked", &record->checked},
+                                  {"approved", &record->approved}}) {
+      if (role != "prepared") t.attributes.emplace_back(role + "_by", s->name);
+      t.attributes.emplace_back(role + "_date", s->date);
+    }
+    d.traceability = std::move(t);
+  }
   return qif_results_text(d);
 }
 

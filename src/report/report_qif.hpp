@@ -26,17 +26,23 @@
 //                       none, so `furrow compare` writes none and stays
 //                       byte-for-byte reproducible; the QA report gives
 //                       its generation time.
+//   the record          (the report's inspection record, when given)
+//                       InspectionTraceability: customer, CMM program,
+//                       operator, report preparer in their QIF elements,
+//                       the other fields as AttributeStr (docs/qif.md)
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "inspection/comparison_document.hpp"
+#include "report/inspection_record.hpp"
 #include "report/qa_report.hpp"
 
 namespace furrow {
 
 std::string comparison_to_qif(const ComparisonDocument& doc, const std::vector<InputDigest>& inputs,
-                              const std::optional<std::string>& time);
+                              const std::optional<std::string>& time,
+                              const std::optional<InspectionRecord>& record = std::nullopt);
 
 // The QIF names of the verdict and of a point's state (docs/qif.md).
 const char* qif_characteristic_status(Verdict verdict);           // PASS, FAIL, INDETERMINATE

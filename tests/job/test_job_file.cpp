@@ -222,3 +222,31 @@ TEST_CASE("measurements: the CSV dialect and the I++ DME program are read and ch
             .find("job.json: measurements.columns.q: unknown member") == 0);
   CHECK(error_of(minimal(R"( "measurements": {"file": "m.csv", "units": "cubit"},)")).find("units") != std::string::npos);
 }
+
+TEST_CASE("the job's record: inline or a file relative to the job with errors naming the member") {
+  // Inline: read with the record's own rules.
+  const Job inline_job =
+      parse_job(minimal(R"( "record": {"serial": "SN 7", "temperature": {"value": 68, "unit": "F"}},)"), "job.json",
+                "jobs");
+  REQUIRE(inline_job.record);
+  CHECK(inline_job.record->serial == "SN 7");
+  CHECK(inline_job.record->temperature->celsius() == doctest::Approx(20.0));
+  CHECK(inline_job.record_file.empty());
+  CHECK_FALSE(parse_job(minimal(), "job.json", "jobs").record);  // optional
+
+  CHECK(error_of(minimal(R"( "record": {"serail": "SN 7"},)")) ==
+        "job.json: record.serail: unknown member (see docs/formats.md \"Inspection record\")");
+  CHECK(error_of(minimal(R"( "record": {"qualification_date": "2026-13-01"},)"))
+            .find("job.json: record.qualification_date: ") == 0);
+  CHECK(error_of(minimal(R"( "record": 3,)")).find("job.json: record: expected a record file name") == 0);
+
+  // A file: resolved against the job's folder and read at once (a missing
+  // file is refused before any work).
+  const std::string folder = std::string(FURROW_SOURCE_DIR) + "/examples";
+  const Job file_job = parse_job(minimal(R"( "record": "records/mould_first_article.json",)"), "job.json", folder);
+  CHECK(file_job.record_file == folder + "/records/mould_first_article.json");
+  REQUIRE(file_job.record);
+  CHECK(file_job.record->part_number == "MOULD-100-A");
+  CHECK(file_job.record->prepared.name == "J. Doe");
+  CHECK(error_of(minimal(R"( "record": "no_such_record.json",)")).find("no_such_record.json") != std::string::npos);
+}

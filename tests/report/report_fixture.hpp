@@ -15,6 +15,7 @@ namespace furrow::test {
 struct ReportFixture {
   Part part;
   ComparisonDocument doc;
+  std::string comparison_json;  // the text doc was read from (an oracle for the report's tables)
 };
 
 inline ReportFixture make_report_fixture() {
@@ -35,7 +36,8 @@ inline ReportFixture make_report_fixture() {
   ComparisonSources sources;
   sources.part = "examples/parts/mould.json";
   sources.measurements = "grid.csv";
-  f.doc = parse_comparison(comparison_to_json_text(c, measured.set, f.part, options, sources), "comparison.json");
+  f.comparison_json = comparison_to_json_text(c, measured.set, f.part, options, sources);
+  f.doc = parse_comparison(f.comparison_json, "comparison.json");
   return f;
 }
 

@@ -330,6 +330,54 @@ void status(Writer& w, const std::string& value) {
   w.text += "</CharacteristicStatusEnum></Status>";
 }
 
+void write_traceability(Writer& w, const QifDocumentData& d) {
+  // InspectionTraceabilityType (Traceability.xsd), in its sequence order:
+  // ..., CustomerOrganization?, ..., InspectionProgram?, InspectionOperator?,
+  // ReportPreparer?, ReportPreparationDate?, ..., Attributes?.
+  static const QifTraceability kNone;
+  const QifTraceability& t = d.traceability ? *d.traceability : kNone;
+  auto named = [&](const char* element, const std::string& name) {
+    if (name.empty()) return;
+    w.open(5, element);
+    w.leaf(6, "Name", name);
+    w.close(5, element);
+  };
+  w.open(4, "InspectionTraceability");
+  named("CustomerOrganization", t.customer);  // OrganizationType: Name first
+  if (!t.program.empty()) {
+    w.open(5, "InspectionProgram");  // InspectionProgramType: File (FileType: Name)
+    named("File", t.program);
+    w.close(5, "InspectionProgram");
+  }
+  named("InspectionOperator", t.operator_name);  // EmployeeType: Name first
+  named("ReportPreparer", t.report_preparer);
+  if (d.time) w.leaf(5, "ReportPreparationDate", kTime);
+  std::size_t attributes = 0;
+  for (const auto& a : t.attributes) attributes += !a.second.empty();
+  if (attributes > 0) {
+    // AttributesType: n, then AttributeStr with the name and value attributes.
+    w.open_n(5, "Attributes", attributes);
+    for (const auto& [name, value] : t.attributes) {
+      if (value.empty()) continue;
+      w.indent(6);
+      w.text += "<AttributeStr name=\"";
+      w.escaped(name);
+      w.text += "\" value=\"";
+      // An attribute value's line breaks and tabs are kept as references
+      // (a parser would otherwise turn them into spaces).
+      for (char c : value) {
+        if (c == '\n') w.text += "&#10;";
+        else if (c == '\t') w.text += "&#9;";
+        else if (c == '\r') w.text += "&#13;";
+        else w.escaped(std::string(1, c));
+      }
+      w.text += "\"/>\n";
+    }
+    w.close(5, "Attributes");
+  }
+  w.close(4, "InspectionTraceability");
+}
+
 void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   // ResultsType: MeasurementResultsSet (QIFResults.xsd).
   w.open(1, "Results");
@@ -339,11 +387,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   // MeasurementResultsType: InspectionTraceability?, ThisResultsInstanceQPId?,
   // ExternalFileReferences?, MeasuredFeatures?, MeasuredPointSets?,
   // MeasuredCharacteristics?, InspectionStatus.
-  if (d.time) {
-    w.open(4, "InspectionTraceability");  // InspectionTraceabilityType
-    w.leaf(5, "ReportPreparationDate", kTime);
-    w.close(4, "InspectionTraceability");
-  }
+  if (d.time || d.traceability) write_traceability(w, d);
   w.leaf(4, "ThisResultsInstanceQPId", kResultsQpid);
   if (!d.inputs.empty()) {
     w.open_n(4, "ExternalFileReferences", d.inputs.size());

@@ -21,6 +21,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace furrow {
@@ -58,6 +59,18 @@ struct QifProfile {
   std::string status;
 };
 
+// Results only: who and what the inspection was about (Traceability.xsd,
+// InspectionTraceabilityType), from the report's inspection record. Fields
+// with a place of their own in QIF go there - CustomerOrganization/Name,
+// InspectionProgram/File/Name, InspectionOperator/Name, ReportPreparer/Name -
+// and the rest (part number, revision, serial, lot, CMM, probe,
+// qualification date, temperature, notes) into its Attributes as
+// AttributeStr name/value pairs, in the given order. Empty texts are left out.
+struct QifTraceability {
+  std::string customer, program, operator_name, report_preparer;
+  std::vector<std::pair<std::string, std::string>> attributes;
+};
+
 struct QifDocumentData {
   std::string part_name;       // Part/ModelNumber
   std::string description;     // Header/Description (what made the document)
@@ -70,6 +83,7 @@ struct QifDocumentData {
   // or, when `inspection_status_other`, the text of OtherInspectionStatus.
   std::string inspection_status = "NOT_CALCULATED";
   bool inspection_status_other = false;
+  std::optional<QifTraceability> traceability;  // Results only
 };
 
 // The QIF Results document: Features (nominals and items), the profile
