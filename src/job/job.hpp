@@ -70,6 +70,8 @@ struct Job {
   bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
 
   std::string output;  // resolved output folder
+  bool pdf = false;            // "pdf": also report.pdf, printed by headless Chromium (report/pdf_print.hpp)
+  std::string paper = "a4";    // "paper": a4 or letter
 
   bool has_measurements() const { return !measurement_files.empty() || simulate.has_value(); }
 };
