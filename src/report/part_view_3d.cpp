@@ -140,7 +140,7 @@ if(n>0){
 }
 var controls=new THREE.OrbitControls(camera,renderer.domElement);
 function render(){renderer.render(scene,camera);}
-function view(dir,up){camera.position.copy(centre).add(new THREE.Vector3(dir[0],dir[1],dir[2]).normalize().multiplyScalar(size*2.4));camera.up.set(up[0],up[1],up[2]);controls.target.copy(centre);camera.lookAt(centre);controls.update();render();}
+function view(dir,up){camera.position.copy(centre).add(new THREE.Vector3(dir[0],dir[1],dir[2]).normalize().multiplyScalar(size*1.8));camera.up.set(up[0],up[1],up[2]);controls.target.copy(centre);camera.lookAt(centre);controls.update();render();}
 controls.addEventListener('change',render);
 view([0.8,-1.3,1.1],[0,0,1]);controls.saveState();
 var views={top:[[0,0,1],[0,1,0]],front:[[0,-1,0],[0,0,1]],side:[[1,0,0],[0,0,1]],iso:[[0.8,-1.3,1.1],[0,0,1]]};
@@ -203,7 +203,7 @@ PartView3d part_view_3d(const ComparisonDocument& doc, const Part& part, const P
   }
   const double diagonal = box.isEmpty() ? 1.0 : box.diagonal().norm();
   // Visible at a glance but not merging for a typical plan; denser sets get smaller spheres.
-  v.sphere_radius = diagonal * (v.points.size() > 20000 ? 0.0015 : v.points.size() > 2000 ? 0.003 : 0.006);
+  v.sphere_radius = diagonal * (v.points.size() > 20000 ? 0.0015 : v.points.size() > 2000 ? 0.004 : 0.008);
   return v;
 }
 

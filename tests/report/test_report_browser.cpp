@@ -13,6 +13,10 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "geometry/closest_point.hpp"
+#include "inspection/comparison_file.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "io/part_file.hpp"
 #include "cli/report_checks.hpp"
 #include "deviation_ramp.hpp"
 #include "report/part_view_3d.hpp"
@@ -299,4 +303,43 @@ TEST_CASE("report.pdf without Chromium is a clear error") {
   o.paper = "a3";
   CHECK_THROWS_WITH_AS(print_pdf(dir + "/report.html", dir + "/report.pdf", o), doctest::Contains("a4 or letter"),
                        InputError);
+}
+
+TEST_CASE("furrow report --pdf writes report.pdf next to the page; a bad paper writes nothing") {
+  require_tool(test::kChromium, "chromium");
+  require_tool("/usr/bin/pdfinfo", "poppler-utils");
+  // The fixture's comparison as `furrow compare` writes it, its part where it names it.
+  const std::string dir = test::scratch_dir("report-pdf-cli");
+  const Part part = read_part(test::source_path("examples/parts/mould.json"));
+  const InspectionPlan plan = grid_plan(part, 8, 6, {"ruby", 2.0});
+  SimulationOptions sim;
+  sim.noise_sigma = 0.001;
+  sim.seed = 3;
+  const SimulatedMeasurement measured = simulate_measurement(plan, sim, "grid");
+  CompareOptions options;
+  options.tolerance = ToleranceZone::make(0.05, 0.025, "test");
+  const ClosestPointFinder finder(part);
+  const Comparison c = compare_measurements(finder, measured.set, &plan, options);
+  ComparisonSources sources;
+  sources.part = test::source_path("examples/parts/mould.json");
+  test::write_text(dir + "/grid.csv", "the report only digests the measurement file\n");
+  sources.measurements = dir + "/grid.csv";
+  test::write_text(dir + "/comparison.json", comparison_to_json_text(c, measured.set, part, options, sources));
+
+  const test::CliResult ok =
+      test::run_furrow({"report", dir + "/comparison.json", "--out", dir + "/out", "--pdf", "--paper", "letter"});
+  INFO(ok.err);
+  CHECK((ok.status == 0 || ok.status == 1));  // the verdict's status
+  CHECK(ok.out.find("report.pdf") != std::string::npos);
+  const test::ShellResult info = run_shell("pdfinfo " + shell_quote(dir + "/out/report.pdf"), dir + "/info.txt");
+  CHECK(info.status == 0);
+  CHECK(info.out.find("(letter)") != std::string::npos);
+  CHECK(std::filesystem::exists(dir + "/out/report.html"));
+
+  const test::CliResult bad =
+      test::run_furrow({"report", dir + "/comparison.json", "--out", dir + "/out2", "--pdf", "--paper", "a3"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--paper: expected a4 or letter") != std::string::npos);
+  CHECK(test::line_count(bad.err) == 1);
+  CHECK_FALSE(std::filesystem::exists(dir + "/out2"));
 }
