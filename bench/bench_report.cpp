@@ -11,10 +11,12 @@
 // 2 mm, misaligned, 2 um noise), registered and written to comparison.json
 // and read back as `furrow report` does (that set-up is not timed).
 //
-//   ./build/bench_report
+//   ./build/bench_report            both sizes
+//   ./build/bench_report 100000     one size (points, rounded to the grid)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
@@ -110,10 +112,16 @@ void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu,
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const ClosestPointFinder finder(part);
   const Prediction prediction = synthetic_prediction(part);
+  if (argc > 1) {  // an even grid of about that many points, 5:4 like the mould
+    const double n = std::max(20.0, std::atof(argv[1]));
+    run(finder, prediction, static_cast<int>(std::lround(std::sqrt(n * 1.25))),
+        static_cast<int>(std::lround(std::sqrt(n / 1.25))));
+    return 0;
+  }
   run(finder, prediction, 125, 80);   // 10 000
   run(finder, prediction, 400, 250);  // 100 000
   return 0;
