@@ -13,10 +13,13 @@
 //
 //   ./build/bench_report            both sizes
 //   ./build/bench_report 100000     one size (points, rounded to the grid)
+//   ./build/bench_report 100000 DIR also writes that report.html into DIR
+//                                   (to open it, e.g. to time the 3D view)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
@@ -64,7 +67,8 @@ Prediction synthetic_prediction(const Part& part) {
   return p;
 }
 
-void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu, int nv) {
+void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu, int nv,
+         const std::string& html_folder = "") {
   const Part& part = finder.part();
   const InspectionPlan plan = grid_plan(part, nu, nv, {"ball 2 mm", 2});
   SimulationOptions sim;
@@ -108,6 +112,9 @@ void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu,
   for (const FolderFile& f : files)
     if (f.bytes.size() > 5000000) sizes += "  " + f.path + " " + std::to_string(f.bytes.size() / 1000000) + " MB";
   std::printf("         files over 5 MB:%s\n", sizes.c_str());
+  if (!html_folder.empty())
+    for (const FolderFile& f : files)
+      if (f.path == "report.html") std::ofstream(html_folder + "/report.html", std::ios::binary) << f.bytes;
 }
 
 }  // namespace
@@ -119,7 +126,7 @@ int main(int argc, char** argv) {
   if (argc > 1) {  // an even grid of about that many points, 5:4 like the mould
     const double n = std::max(20.0, std::atof(argv[1]));
     run(finder, prediction, static_cast<int>(std::lround(std::sqrt(n * 1.25))),
-        static_cast<int>(std::lround(std::sqrt(n / 1.25))));
+        static_cast<int>(std::lround(std::sqrt(n / 1.25))), argc > 2 ? argv[2] : "");
     return 0;
   }
   run(finder, prediction, 125, 80);   // 10 000

@@ -20,6 +20,10 @@ namespace furrow {
 namespace {
 
 constexpr Rgb kSurfaceGrey{200, 200, 200};
+// Up to this many points each is a sphere mesh (instanced); beyond, a shaded
+// point sprite: 100 000 spheres of ~200 triangles are 20 million triangles,
+// too many to orbit smoothly without a fast GPU.
+constexpr std::size_t kSphereMeshLimit = 20000;
 
 void append_number(std::string& out, double v, int decimals) {
   if (!std::isfinite(v)) v = 0;  // never NaN in the page
@@ -125,7 +129,9 @@ data.faces.forEach(function(f){
   scene.add(m);surfaces.push({geometry:g,grey:grey,pred:pred});
 });
 var n=data.points.xyz.length/3;
-if(n>0){
+var shade='float l=0.6+0.4*max(dot(normalize(n),normalize(vec3(0.3,0.4,0.86))),0.0);gl_FragColor=vec4(vColor*l,1.0);';
+if(n>0&&n<=data.mesh_limit){
+  // Instanced spheres: one sphere mesh, drawn n times in one call.
   var sg=new THREE.SphereBufferGeometry(1,12,8),ig=new THREE.InstancedBufferGeometry();
   ig.setIndex(sg.index);ig.setAttribute('position',sg.attributes.position);ig.setAttribute('normal',sg.attributes.normal);
   ig.setAttribute('offset',new THREE.InstancedBufferAttribute(new Float32Array(data.points.xyz),3));
@@ -134,9 +140,19 @@ if(n>0){
   var sm=new THREE.ShaderMaterial({uniforms:{radius:{value:data.radius}},
     vertexShader:'uniform float radius;attribute vec3 offset;attribute vec3 icolor;varying vec3 vColor;varying vec3 vNormal;'+
       'void main(){vColor=icolor;vNormal=normalize(normalMatrix*normal);gl_Position=projectionMatrix*modelViewMatrix*vec4(offset+position*radius,1.0);}',
-    fragmentShader:'varying vec3 vColor;varying vec3 vNormal;'+
-      'void main(){float l=0.6+0.4*max(dot(normalize(vNormal),normalize(vec3(0.3,0.4,0.86))),0.0);gl_FragColor=vec4(vColor*l,1.0);}'});
+    fragmentShader:'varying vec3 vColor;varying vec3 vNormal;void main(){vec3 n=vNormal;'+shade+'}'});
   var spheres=new THREE.Mesh(ig,sm);spheres.frustumCulled=false;scene.add(spheres);
+}else if(n>0){
+  // Many points: each sphere a shaded point sprite (one vertex instead of
+  // ~200 triangles), still one draw call, sized with the perspective.
+  var pg=new THREE.BufferGeometry();
+  pg.setAttribute('position',new THREE.BufferAttribute(new Float32Array(data.points.xyz),3));
+  pg.setAttribute('icolor',new THREE.BufferAttribute(bytes(data.points.c,n),3));
+  var pm=new THREE.ShaderMaterial({uniforms:{radius:{value:data.radius},scale:{value:height/(2*Math.tan(35*Math.PI/360))}},
+    vertexShader:'uniform float radius;uniform float scale;attribute vec3 icolor;varying vec3 vColor;'+
+      'void main(){vColor=icolor;vec4 mv=modelViewMatrix*vec4(position,1.0);gl_Position=projectionMatrix*mv;gl_PointSize=max(2.0,2.0*radius*scale/-mv.z);}',
+    fragmentShader:'varying vec3 vColor;void main(){vec2 p=gl_PointCoord*2.0-1.0;float r2=dot(p,p);if(r2>1.0)discard;vec3 n=vec3(p.x,-p.y,sqrt(1.0-r2));'+shade+'}'});
+  var sprites=new THREE.Points(pg,pm);sprites.frustumCulled=false;scene.add(sprites);
 }
 var controls=new THREE.OrbitControls(camera,renderer.domElement);
 function render(){renderer.render(scene,camera);}
@@ -148,9 +164,11 @@ root.querySelectorAll('button[data-view]').forEach(function(b){b.addEventListene
 var toggle=root.querySelector('input.view3d-zmap');
 if(toggle){toggle.addEventListener('change',function(){surfaces.forEach(function(s){s.geometry.attributes.color.array.set(toggle.checked?s.pred:s.grey);s.geometry.attributes.color.needsUpdate=true;});render();});}
 live.style.display='block';root.querySelector('.view3d-static').style.display='none';
-render();
+var t0=performance.now();render();
 var gl=renderer.getContext(),px=new Uint8Array(width*height*4),drawn=0;
 gl.readPixels(0,0,width,height,gl.RGBA,gl.UNSIGNED_BYTE,px);
+var t1=performance.now();render();gl.readPixels(0,0,1,1,gl.RGBA,gl.UNSIGNED_BYTE,new Uint8Array(4));
+root.setAttribute('data-view3d-frame-ms',(performance.now()-t1).toFixed(0));
 for(var i=0;i<px.length;i+=4){if(Math.abs(px[i]-248)>3||Math.abs(px[i+1]-248)>3||Math.abs(px[i+2]-248)>3)drawn++;}
 root.setAttribute('data-view3d','drawn:'+drawn);root.setAttribute('data-view3d-spheres',String(n));
 }catch(e){root.setAttribute('data-view3d','error:'+e.message);fallback('error');throw e;}
@@ -213,6 +231,7 @@ std::string part_view_3d_json(const PartView3d& v) {
   out += ",\"radius\":";
   append_number(out, v.sphere_radius, 4);
   out += std::string(",\"prediction\":") + (v.has_prediction ? "true" : "false");
+  out += ",\"mesh_limit\":" + std::to_string(kSphereMeshLimit);
   Eigen::AlignedBox3d box;
   for (const auto& f : v.faces)
     for (const auto& p : f.vertices) box.extend(p);

@@ -10,14 +10,16 @@
 // The page stays one self-contained file that opens offline: three.js
 // (Debian's libjs-three, r111) and its OrbitControls are read from
 // FURROW_THREE_DIR at run time and inlined (about 0.9 MB); the data are a
-// JSON block. Spheres are instanced (one draw call), so 100 000 points stay
-// interactive. Without WebGL (or without script) the section shows static
+// JSON block. Spheres are instanced (one draw call); beyond 20 000 points
+// each is a shaded point sprite (one vertex, still one draw call), so
+// 100 000 points stay interactive. Without WebGL (or without script) the section shows static
 // views instead: the front view (x, z) drawn here and the top view of the
 // Deviations section.
 //
 // For automated checks the viewer writes data-view3d on its section:
 // "drawn:N" (N canvas pixels differing from the background after the first
-// frame), "fallback:REASON" without WebGL, "error:MESSAGE" if it failed.
+// frame), "fallback:REASON" without WebGL, "error:MESSAGE" if it failed;
+// data-view3d-frame-ms the time of a second frame (how interactive it is).
 // Deterministic: the same inputs give the same bytes.
 #include <array>
 #include <string>

@@ -181,6 +181,8 @@ TEST_CASE("the report loads in headless Chromium: the 3D view draws, no console 
   // A non-empty canvas: a large share of its 900 x 560 pixels differ from the background.
   CHECK(std::stol(drawn.substr(6)) > 20000);
   CHECK(attribute_of_view(r.dom, "data-view3d-spheres") == std::to_string(f.doc.points.size()));
+  const std::string frame_ms = attribute_of_view(r.dom, "data-view3d-frame-ms");
+  CHECK(std::regex_match(frame_ms, std::regex("\\d+")));  // a second frame was timed
   CHECK(console_messages(r.log).empty());
   // The figures' images all decoded too (the page's own marker).
   CHECK(r.dom.find("data-images-loaded=\"") != std::string::npos);
@@ -305,7 +307,7 @@ TEST_CASE("report.pdf without Chromium is a clear error") {
                        InputError);
 }
 
-TEST_CASE("furrow report --pdf writes report.pdf next to the page; a bad paper writes nothing") {
+TEST_CASE("furrow report --pdf writes report.pdf next to the page, a bad paper writes nothing") {
   require_tool(test::kChromium, "chromium");
   require_tool("/usr/bin/pdfinfo", "poppler-utils");
   // The fixture's comparison as `furrow compare` writes it, its part where it names it.
