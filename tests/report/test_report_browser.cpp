@@ -188,6 +188,31 @@ TEST_CASE("the report loads in headless Chromium: the 3D view draws, no console 
   CHECK(r.dom.find("data-images-loaded=\"") != std::string::npos);
 }
 
+TEST_CASE("beyond 20 000 points the 3D view draws point sprites, still one sphere per point") {
+  require_tool(test::kChromium, "chromium");
+  const test::ReportFixture& f = fixture();
+  // The fixture's points repeated, shifted a little, to 21 120 points.
+  ComparisonDocument doc = f.doc;
+  doc.points.clear();
+  for (int copy = 0; copy < 110; ++copy)
+    for (auto p : f.doc.points) {
+      p.id += "-" + std::to_string(copy);
+      p.foot.x() += 0.05 * (copy % 11);
+      p.foot.y() += 0.05 * (copy / 11);
+      doc.points.push_back(p);
+    }
+  REQUIRE(doc.points.size() > 20000);
+  const std::string dir = test::scratch_dir("report-browser-sprites");
+  test::write_text(dir + "/report.html", page(make_report(doc, f.part, nullptr, context())));
+  const Loaded r = load_in_chromium(dir + "/report.html", dir, "");
+  INFO("chromium log: " << r.log.substr(0, 3000));
+  const std::string drawn = attribute_of_view(r.dom, "data-view3d");
+  REQUIRE(drawn.rfind("drawn:", 0) == 0);
+  CHECK(std::stol(drawn.substr(6)) > 20000);
+  CHECK(attribute_of_view(r.dom, "data-view3d-spheres") == std::to_string(doc.points.size()));
+  CHECK(console_messages(r.log).empty());
+}
+
 TEST_CASE("the console check sees a page's uncaught exception and console.error") {
   require_tool(test::kChromium, "chromium");
   const std::string dir = test::scratch_dir("report-browser-console");
