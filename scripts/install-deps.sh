@@ -8,9 +8,12 @@ packages=(
   libeigen3-dev libceres-dev libnanoflann-dev libopencv-dev libpng-dev nlohmann-json3-dev doctest-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libssl-dev
   libpugixml-dev
-  # tests only: the QA report is rendered in a real browser, and report.json
-  # is checked against its schema by an independent validator
-  chromium python3-jsonschema
+  # the QA report's 3D view inlines three.js; `furrow report --pdf` prints
+  # with headless Chromium
+  libjs-three chromium
+  # tests only: report.json is checked against its schema by an independent
+  # validator; report.pdf's pages are rendered and read with poppler-utils
+  python3-jsonschema poppler-utils
   # CI only: the sanitizer and fuzz build (docs/testing.md) - clang, its
   # sanitizer runtimes, libFuzzer and clang's OpenMP runtime
   clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev

@@ -5,6 +5,8 @@
 
 #include "cli/commands.hpp"
 #include "base/atomic_file.hpp"
+#include "report/pdf_print.hpp"
+#include "report/print_style.hpp"
 #include "report/report_sources.hpp"
 #include "report/verdict.hpp"
 
@@ -16,8 +18,11 @@ int run_report(Args& args) {
   const std::string out = args.required_option("out");
   const auto title = args.option("title");
   const auto record = args.option("record");
+  const bool pdf = args.flag("pdf");
+  const std::string paper = args.option("paper").value_or("a4");
   const std::string comparison_path = args.positional("COMPARISON (a comparison.json of furrow compare)");
   args.finish();
+  paper_size_css(paper, "--paper");  // a4 or letter, before any work
 
   ReportSources sources = read_report_sources(comparison_path);
   ReportContext context;
@@ -31,15 +36,19 @@ int run_report(Args& args) {
   context.generated = utc_timestamp();
   context.inputs = sources.inputs;
   const std::vector<FolderFile> files =
-      make_report(sources.doc, sources.part, sources.regions ? &*sources.regions : nullptr, context);
-  write_folder_atomically(out, [&](const std::string& staging) { write_folder_files(staging, files); });
+      make_report(sources.doc, sources.part, sources.regions ? &*sources.regions : nullptr, context,
+                  sources.prediction ? &*sources.prediction : nullptr);
+  write_folder_atomically(out, [&](const std::string& staging) {
+    write_folder_files(staging, files);
+    if (pdf) print_pdf(staging + "/report.html", staging + "/report.pdf", PdfOptions{paper});  // no PDF: no folder
+  });
 
   const ReportVerdict v = report_verdict(sources.doc);
   std::printf("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance", v.result(),
               v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated);
   if (v.has_prediction) std::printf(", %zu of %zu predicted gouges confirmed", v.confirmed, v.sites);
-  std::printf(")\nwrote %s/report.html (and report.json, points.csv, results.qif, %zu figures)\n", out.c_str(),
-              files.size() - 4);
+  std::printf(")\nwrote %s/report.html (and report.json, points.csv, results.qif, %zu figure files%s)\n", out.c_str(),
+              files.size() - 4, pdf ? ", report.pdf" : "");
   return exit_status(v.verdict, v.alignment);
 }
 
@@ -48,14 +57,18 @@ int run_report(Args& args) {
 const Command kReportCommand = {
     "report", "QA report of a comparison: self-contained HTML, JSON, CSV, figures",
     "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT] [--record RECORD.json]\n"
+    "                     [--pdf [--paper a4|letter]]\n"
     "\n"
     "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
     "as a whole: report.html (self-contained, opens offline), report.json (every\n"
     "number; docs/report.schema.json), points.csv (one row per measured point),\n"
-    "results.qif (QIF 3.0 Results, docs/qif.md) and the figures as PNG files\n"
-    "(region map, deviation maps, histogram, predicted vs measured, gouge\n"
-    "sites). The report opens with the verdict and names every input file with\n"
-    "its SHA-256 (docs/report.md).\n"
+    "results.qif (QIF 3.0 Results, docs/qif.md) and the figures as SVG and PNG\n"
+    "files (region map, deviation maps, histogram, predicted vs measured, gouge\n"
+    "sites, the 3D view's front view). The page has an interactive 3D view\n"
+    "(three.js from Debian's libjs-three, inlined). The report opens with the\n"
+    "verdict and names every input file with its SHA-256 (docs/report.md).\n"
+    "With --pdf also report.pdf, the page printed by headless Chromium\n"
+    "(/usr/bin/chromium; A4 or Letter, header and page number on every page).\n"
     "The part, plan, regions and prediction the comparison names are looked up\n"
     "relative to the current directory, then next to COMPARISON.\n"
     "Exit status 0 when the comparison passed, 1 when it failed, 4 when it was\n"
@@ -67,7 +80,9 @@ const Command kReportCommand = {
     "                 customer, operator, CMM, probe, qualification date,\n"
     "                 temperature, program, notes, sign-off (docs/formats.md\n"
     "                 \"Inspection record\"); shown in the header, written to\n"
-    "                 report.json and results.qif\n",
+    "                 report.json and results.qif\n"
+    "  --pdf          also print report.pdf (needs Chromium)\n"
+    "  --paper SIZE   a4 (default) or letter\n",
     run_report};
 
 }  // namespace furrow::cli

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "report/print_style.hpp"
 #include "base/text_fields.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
@@ -397,6 +398,9 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
     }
   }
   job.output = path_member(root, "output", folder);
+  root.boolean("pdf", job.pdf);
+  if (auto paper = root.string("paper")) job.paper = *paper;
+  paper_size_css(job.paper, root.at("paper"));  // a4 or letter, checked before any work
   root.finish();
   scale_registration_to_tolerance(job.compare);
   for (const std::string* input : {&job.part, &job.tool, &job.record_file})

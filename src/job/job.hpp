@@ -72,6 +72,8 @@ struct Job {
   bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
 
   std::string output;  // resolved output folder
+  bool pdf = false;            // "pdf": also report.pdf, printed by headless Chromium (report/pdf_print.hpp)
+  std::string paper = "a4";    // "paper": a4 or letter
 
   // The inspection record for the report header, QIF and sign-off
   // (report/inspection_record.hpp): "record" is a file name (record_file,

@@ -21,6 +21,8 @@ std::string job_options_json(const Job& job) {
   j["description"] = job.description;
   j["part"] = job.part;
   j["tool"] = job.tool;
+  j["pdf"] = job.pdf;
+  j["paper"] = job.paper;
   if (job.generate) {
     const ToolpathGeneration& g = *job.generate;
     j["toolpath"] = {{"generate",

@@ -22,6 +22,7 @@
 #include "stage/compare_stage.hpp"
 #include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
+#include "report/pdf_print.hpp"
 #include "stage/predict_stage.hpp"
 #include "stage/toolpath_stage.hpp"
 
@@ -283,7 +284,8 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     // is printed in the report rendered right after.
     const Clock::time_point report_start = Clock::now();
     check_comparison_faces(doc, part);
-    const std::vector<ReportFigure> figures = make_report_figures(doc, part, &map);
+    const std::vector<ReportFigure> figures =
+        make_report_figures(doc, part, &map, job.compare_with_prediction ? &prediction : nullptr);
     context.stages = result.stages;
     context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
     context.total_seconds = clock.total();
@@ -308,7 +310,13 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
 
 void write_job_output(const Job& job, const PipelineResult& result) {
   check_inputs_outside(job.output, result.inputs);
-  write_folder_atomically(job.output, [&](const std::string& staging) { write_folder_files(staging, result.files); });
+  write_folder_atomically(job.output, [&](const std::string& staging) {
+    write_folder_files(staging, result.files);
+    // report.pdf from the written page, inside the staging folder: a failed
+    // print leaves no folder behind, like any failed job.
+    if (job.pdf && result.measured)
+      print_pdf(staging + "/report.html", staging + "/report.pdf", PdfOptions{job.paper});
+  });
 }
 
 }  // namespace furrow

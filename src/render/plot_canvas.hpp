@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "render/colour_scale.hpp"
+#include "render/ticks.hpp"
 
 namespace furrow::plot {
 
@@ -32,10 +33,7 @@ void text_right(cv::Mat& img, const std::string& s, cv::Point right_baseline, do
 // Vertical text (rotated 90 degrees counter-clockwise) centred on a point.
 void text_vertical(cv::Mat& img, const std::string& s, cv::Point centre, double scale = 0.5);
 
-// Tick values at 1-2-5 steps covering [lo, hi], about `target` of them.
-std::vector<double> nice_ticks(double lo, double hi, int target = 6);
-// A number for a tick label: no trailing zeros, no "-0".
-std::string tick_label(double value, double step);
+// nice_ticks, tick_label: render/ticks.hpp (shared with the vector figures).
 
 class PlotArea {
  public:

@@ -2,19 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
-#include "render/plot_canvas.hpp"
+#include "render/chart.hpp"
 
 namespace furrow {
 
 namespace {
 
 constexpr int kWidth = 900, kHeight = 640;
+constexpr Rgb kOutline{150, 150, 150}, kRim{90, 90, 90}, kMuted{120, 120, 120};
 
 struct Bounds {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   void add(const Eigen::Vector2d& p) {
+    if (!p.allFinite()) return;
     x0 = std::min(x0, p.x());
     x1 = std::max(x1, p.x());
     y0 = std::min(y0, p.y());
@@ -35,17 +38,17 @@ struct Bounds {
   }
 };
 
-cv::Mat blank_with_title(const std::string& title) {
-  cv::Mat img(kHeight, kWidth, CV_8UC3, plot::kPaper);
-  plot::text(img, title, {20, 30}, 0.65, plot::kInk, 1);
-  return img;
+Drawing blank_with_title(const std::string& title) {
+  Drawing d(kWidth, kHeight);
+  d.text(title, {20, 30}, 20).bold = true;
+  return d;
 }
 
-void draw_outlines(cv::Mat& img, const plot::PlotArea& area, const std::vector<Outline>& outlines) {
+void draw_outlines(Drawing& d, const ChartFrame& frame, const std::vector<Outline>& outlines) {
   for (const Outline& o : outlines) {
-    std::vector<cv::Point> pts;
-    for (const auto& p : o) pts.push_back(area.to_pixel(p.x(), p.y()));
-    if (pts.size() >= 2) cv::polylines(img, pts, false, cv::Scalar(150, 150, 150), 1, cv::LINE_AA);
+    std::vector<Eigen::Vector2d> pts;
+    for (const auto& p : o) pts.push_back(frame.to_pixel(p));
+    if (pts.size() >= 2) d.polyline(pts, kOutline);
   }
 }
 
@@ -56,23 +59,54 @@ double scale_range(const std::vector<MapPoint>& points, const ToleranceLimits& t
   return range > 0 ? range : 1e-3;
 }
 
+// Micrometres with a sign and one decimal ("+61.3"), as in the report's tables.
+std::string signed_um(double mm) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%+.1f", mm * 1000.0);
+  std::string s = buf;
+  if (s == "-0.0" || s == "+0.0") s = "0.0";
+  return s;
+}
+
+// Labels of the out-of-tolerance points, largest |value| first, at most
+// kMaxMapLabels; the rest are counted in a note under the title.
+void label_out_of_tolerance(Drawing& d, const ChartFrame& frame, const std::vector<MapPoint>& points, double radius) {
+  std::vector<const MapPoint*> out;
+  for (const MapPoint& p : points)
+    if (p.out_of_tolerance && std::isfinite(p.value)) out.push_back(&p);
+  std::stable_sort(out.begin(), out.end(),
+                   [](const MapPoint* a, const MapPoint* b) { return std::fabs(a->value) > std::fabs(b->value); });
+  const std::size_t shown = std::min(out.size(), kMaxMapLabels);
+  for (std::size_t k = 0; k < shown; ++k) {
+    const MapPoint& p = *out[k];
+    const Eigen::Vector2d c = frame.to_pixel(p.position);
+    const std::string value = signed_um(p.value);
+    DrawItem& t = d.text(p.label + " " + value + " \u00b5m", {c.x() + radius + 4, c.y() - radius - 2}, 11.5);
+    t.css_class = "oot-label";
+    t.data = {{"id", p.label}, {"value", value}};
+  }
+  if (shown < out.size())
+    d.text(std::to_string(shown) + " of " + std::to_string(out.size()) +
+               " points out of tolerance labelled (the largest deviations)",
+           {20, 50}, 12, TextAnchor::start, kMuted);
+}
+
 }  // namespace
 
-std::vector<unsigned char> deviation_map_png(const std::string& title, const std::vector<MapPoint>& points,
-                                             const std::vector<Outline>& outlines,
-                                             const ToleranceLimits& tolerance, const std::string& x_label,
-                                             const std::string& y_label, bool equal_aspect) {
-  cv::Mat img = blank_with_title(title);
+Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoint>& points,
+                              const std::vector<Outline>& outlines, const ToleranceLimits& tolerance,
+                              const std::string& x_label, const std::string& y_label, bool equal_aspect) {
+  Drawing d = blank_with_title(title);
   Bounds b;
   for (const auto& o : outlines)
     for (const auto& p : o) b.add(p);
   for (const MapPoint& p : points) b.add(p.position);
   b.pad();
-  const cv::Rect rect(90, 55, kWidth - 90 - 150, kHeight - 55 - 70);
-  const plot::PlotArea area = equal_aspect ? plot::equal_aspect_area(rect, b.x0, b.x1, b.y0, b.y1)
-                                           : plot::PlotArea(rect, b.x0, b.x1, b.y0, b.y1);
-  area.draw_axes(img, x_label, y_label, false);
-  draw_outlines(img, area, outlines);
+  const PixelRect rect{90, 60, kWidth - 90 - 150, kHeight - 60 - 70};
+  const ChartFrame frame = equal_aspect ? equal_aspect_frame(rect, b.x0, b.x1, b.y0, b.y1)
+                                        : ChartFrame(rect, b.x0, b.x1, b.y0, b.y1);
+  frame.draw_axes(d, x_label, y_label, false);
+  draw_outlines(d, frame, outlines);
   const DeviationScale scale{scale_range(points, tolerance)};
   // Larger |value| drawn last so extremes stay visible where points overlap.
   std::vector<const MapPoint*> order;
@@ -80,21 +114,24 @@ std::vector<unsigned char> deviation_map_png(const std::string& title, const std
   std::stable_sort(order.begin(), order.end(), [](const MapPoint* a, const MapPoint* b) {
     return std::fabs(a->value) < std::fabs(b->value);
   });
-  const int radius = points.size() > 2000 ? 3 : points.size() > 300 ? 5 : 7;
+  const double radius = points.size() > 2000 ? 3 : points.size() > 300 ? 5 : 7;
+  // A rim separates markers of similar colour; on 3 px dots it would be
+  // most of the dot, so dense maps go without (and draw twice as fast).
+  const std::optional<Rgb> rim = points.size() > 2000 ? std::nullopt : std::optional<Rgb>(kRim);
   for (const MapPoint* p : order) {
-    const cv::Point c = area.to_pixel(p->position.x(), p->position.y());
-    cv::circle(img, c, radius, plot::bgr(scale.colour(p->value)), cv::FILLED, cv::LINE_AA);
-    cv::circle(img, c, radius, cv::Scalar(90, 90, 90), 1, cv::LINE_AA);
-    if (p->flagged) cv::circle(img, c, radius + 3, plot::kInk, 2, cv::LINE_AA);
+    const Eigen::Vector2d c = frame.to_pixel(p->position);
+    d.circle(c, radius, scale.colour(p->value), rim);
+    if (p->flagged) d.circle(c, radius + 3, std::nullopt, Drawing::kInk, 2);
   }
-  plot::draw_colour_bar(img, cv::Rect(kWidth - 110, 75, 22, kHeight - 75 - 90), scale, tolerance.lower,
-                        tolerance.upper, "um");
-  return plot::encode_png(img);
+  label_out_of_tolerance(d, frame, points, radius);
+  draw_colour_bar(d, {kWidth - 110.0, 75, 22, kHeight - 75 - 90.0}, scale, tolerance.lower, tolerance.upper,
+                  "\u00b5m");
+  return d;
 }
 
-std::vector<unsigned char> histogram_png(const std::string& title, const std::vector<double>& values,
-                                         const ToleranceLimits& tolerance) {
-  cv::Mat img = blank_with_title(title);
+Drawing histogram_drawing(const std::string& title, const std::vector<double>& values,
+                          const ToleranceLimits& tolerance) {
+  Drawing d = blank_with_title(title);
   std::vector<double> um;
   for (double v : values)
     if (std::isfinite(v)) um.push_back(v * 1000.0);
@@ -115,27 +152,28 @@ std::vector<unsigned char> histogram_png(const std::string& title, const std::ve
     ++counts[static_cast<std::size_t>(k)];
   }
   const int peak = std::max(1, *std::max_element(counts.begin(), counts.end()));
-  const plot::PlotArea area(cv::Rect(90, 55, kWidth - 130, kHeight - 55 - 70), lo, hi, 0, peak * 1.1);
-  area.draw_axes(img, "deviation [um]  (+ material left, - overcut)", "points");
+  const ChartFrame frame({90, 60, kWidth - 130, kHeight - 60 - 70}, lo, hi, 0, peak * 1.1);
+  frame.draw_axes(d, "deviation [\u00b5m]  (+ material left, \u2212 overcut)", "points");
   const DeviationScale scale{std::max(std::fabs(lo), std::fabs(hi)) / 1000.0};
   for (int k = 0; k < bins; ++k) {
-    if (counts[static_cast<std::size_t>(k)] == 0) continue;
+    const int n = counts[static_cast<std::size_t>(k)];
+    if (n == 0) continue;
     const double a = lo + (hi - lo) * k / bins, b = lo + (hi - lo) * (k + 1) / bins;
-    const cv::Point p0 = area.to_pixel(a, 0), p1 = area.to_pixel(b, counts[static_cast<std::size_t>(k)]);
-    cv::rectangle(img, p0, p1, plot::bgr(scale.colour(0.5 * (a + b) / 1000.0)), cv::FILLED);
-    cv::rectangle(img, p0, p1, cv::Scalar(90, 90, 90), 1);
+    DrawItem& bar = d.rect(frame.to_pixel(a, 0), frame.to_pixel(b, n), scale.colour(0.5 * (a + b) / 1000.0), kRim);
+    bar.css_class = "bin";
+    bar.data = {{"count", std::to_string(n)}};
   }
   for (double tol : {tolerance.lower, tolerance.upper}) {
-    const cv::Point top = area.to_pixel(tol * 1000.0, peak * 1.1), bottom = area.to_pixel(tol * 1000.0, 0);
-    cv::line(img, top, bottom, plot::kInk, 2);
-    plot::text_centred(img, tol >= 0 ? "+tol" : "-tol", {top.x, top.y - 10}, 0.45);
+    const Eigen::Vector2d top = frame.to_pixel(tol * 1000.0, peak * 1.1), bottom = frame.to_pixel(tol * 1000.0, 0);
+    d.line(top, bottom, Drawing::kInk, 2);
+    d.text(tol >= 0 ? "+tol" : "\u2212tol", {top.x(), top.y() - 6}, 14, TextAnchor::middle);
   }
-  return plot::encode_png(img);
+  return d;
 }
 
-std::vector<unsigned char> scatter_png(const std::string& title, const std::vector<double>& predicted,
-                                       const std::vector<double>& measured, const std::vector<double>& sigma) {
-  cv::Mat img = blank_with_title(title);
+Drawing scatter_drawing(const std::string& title, const std::vector<double>& predicted,
+                        const std::vector<double>& measured, const std::vector<double>& sigma) {
+  Drawing d = blank_with_title(title);
   double lo = 0, hi = 0;
   const std::size_t n = std::min(predicted.size(), measured.size());
   for (std::size_t k = 0; k < n; ++k) {
@@ -146,65 +184,60 @@ std::vector<unsigned char> scatter_png(const std::string& title, const std::vect
   const double pad = 0.05 * std::max(hi - lo, 1e-6);
   lo = (lo - pad) * 1000.0;
   hi = (hi + pad) * 1000.0;
-  const int side = kHeight - 55 - 70;
-  const plot::PlotArea area(cv::Rect(110, 55, side, side), lo, hi, lo, hi);
-  area.draw_axes(img, "predicted [um]", "measured [um]");
-  cv::line(img, area.to_pixel(lo, lo), area.to_pixel(hi, hi), cv::Scalar(120, 120, 120), 1, cv::LINE_AA);
-  plot::text(img, "measured = predicted", area.to_pixel(lo + 0.05 * (hi - lo), lo + 0.12 * (hi - lo)), 0.4,
-             cv::Scalar(120, 120, 120));
+  const double side = kHeight - 60 - 70;
+  const ChartFrame frame({110, 60, side, side}, lo, hi, lo, hi);
+  frame.draw_axes(d, "predicted [\u00b5m]", "measured [\u00b5m]");
+  d.line(frame.to_pixel(lo, lo), frame.to_pixel(hi, hi), kMuted);
+  d.text("measured = predicted", frame.to_pixel(lo + 0.05 * (hi - lo), lo + 0.12 * (hi - lo)), 12.5,
+         TextAnchor::start, kMuted);
   for (std::size_t k = 0; k < n; ++k) {
     const double x = predicted[k] * 1000.0, y = measured[k] * 1000.0;
     if (k < sigma.size() && sigma[k] > 0) {
       const double s = sigma[k] * 1000.0;
-      cv::line(img, area.to_pixel(x, y - s), area.to_pixel(x, y + s), cv::Scalar(150, 150, 150), 1);
+      d.line(frame.to_pixel(x, y - s), frame.to_pixel(x, y + s), kOutline);
     }
-    cv::circle(img, area.to_pixel(x, y), 4, cv::Scalar(160, 90, 30), cv::FILLED, cv::LINE_AA);
+    d.circle(frame.to_pixel(x, y), 4, Rgb{30, 90, 160});
   }
-  return plot::encode_png(img);
+  return d;
 }
 
-std::vector<unsigned char> status_map_png(const std::string& title, const std::vector<StatusItem>& items,
-                                          const std::vector<Outline>& outlines,
-                                          const std::vector<Eigen::Vector2d>& background_points,
-                                          const std::string& x_label, const std::string& y_label) {
-  cv::Mat img = blank_with_title(title);
+Drawing status_map_drawing(const std::string& title, const std::vector<StatusItem>& items,
+                           const std::vector<Outline>& outlines, const std::vector<Eigen::Vector2d>& background_points,
+                           const std::string& x_label, const std::string& y_label) {
+  Drawing d = blank_with_title(title);
   Bounds b;
   for (const auto& o : outlines)
     for (const auto& p : o) b.add(p);
   for (const auto& it : items) b.add(it.position);
   for (const auto& p : background_points) b.add(p);
   b.pad();
-  const cv::Rect rect(90, 55, kWidth - 90 - 190, kHeight - 55 - 70);
-  const plot::PlotArea area = plot::equal_aspect_area(rect, b.x0, b.x1, b.y0, b.y1);
-  area.draw_axes(img, x_label, y_label, false);
-  draw_outlines(img, area, outlines);
-  for (const auto& p : background_points)
-    cv::circle(img, area.to_pixel(p.x(), p.y()), 2, cv::Scalar(170, 170, 170), cv::FILLED, cv::LINE_AA);
+  const ChartFrame frame = equal_aspect_frame({90, 60, kWidth - 90 - 190, kHeight - 60 - 70}, b.x0, b.x1, b.y0, b.y1);
+  frame.draw_axes(d, x_label, y_label, false);
+  draw_outlines(d, frame, outlines);
+  for (const auto& p : background_points) d.circle(frame.to_pixel(p), 2, Rgb{170, 170, 170});
   std::map<std::string, int> seen;
   for (const StatusItem& it : items) {
-    const cv::Scalar colour = plot::bgr(status_colour(it.status.c_str()));
+    const Rgb colour = status_colour(it.status.c_str());
     if (it.outline.size() >= 3) {
-      std::vector<cv::Point> poly;
-      for (const auto& p : it.outline) poly.push_back(area.to_pixel(p.x(), p.y()));
-      cv::Mat layer = img.clone();
-      cv::fillPoly(layer, std::vector<std::vector<cv::Point>>{poly}, colour, cv::LINE_AA);
-      cv::addWeighted(layer, 0.45, img, 0.55, 0, img);
-      cv::polylines(img, poly, true, colour, 2, cv::LINE_AA);
+      std::vector<Eigen::Vector2d> poly;
+      for (const auto& p : it.outline) poly.push_back(frame.to_pixel(p));
+      d.polygon(poly, colour, 0.45, colour, 2);
     }
-    const cv::Point c = area.to_pixel(it.position.x(), it.position.y());
-    cv::circle(img, c, 7, colour, cv::FILLED, cv::LINE_AA);
-    cv::circle(img, c, 7, plot::kInk, 1, cv::LINE_AA);
-    plot::text(img, it.label, {c.x + 10, c.y - 8}, 0.45);
+    const Eigen::Vector2d c = frame.to_pixel(it.position);
+    d.circle(c, 7, colour, Drawing::kInk);
+    DrawItem& label = d.text(it.label, {c.x() + 10, c.y() - 8}, 14);
+    label.css_class = "site-label";
+    label.data = {{"id", it.label}, {"status", it.status}};
     seen.emplace(it.status, 0);
   }
-  int y = 80;
+  double y = 80;
   for (const auto& [status, unused] : seen) {
     (void)unused;
-    cv::circle(img, {kWidth - 175, y - 5}, 7, plot::bgr(status_colour(status.c_str())), cv::FILLED, cv::LINE_AA);
-    plot::text(img, status, {kWidth - 160, y}, 0.45);
+    d.circle({kWidth - 175.0, y - 5}, 7, status_colour(status.c_str()));
+    d.text(status, {kWidth - 160.0, y}, 14);
     y += 26;
   }
-  return plot::encode_png(img);
+  return d;
 }
 
 }  // namespace furrow

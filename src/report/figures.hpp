@@ -1,12 +1,16 @@
 #pragma once
-// The report's figures as PNG bytes (OpenCV drawing stays inside the .cpp).
+// The report's figures as drawing descriptions (render/drawing.hpp): each
+// figure is described once and rendered as SVG (inline in the HTML) or PNG
+// (figure files, large maps) by the back ends, never drawn twice.
 //
 // Deviations are in millimetres in, micrometres on the axes and colour bars
-// (what a QA engineer reads). Every figure is deterministic: the same data
-// give the same bytes.
+// (what a QA engineer reads; the SVG writes "µm"). Every figure is
+// deterministic: the same data give the same drawing.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
+
+#include "render/drawing.hpp"
 
 namespace furrow {
 
@@ -16,7 +20,14 @@ struct MapPoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   double value = 0;      // deviation [mm]
   bool flagged = false;  // drawn with a black ring (outlier / out of tolerance)
+  std::string label;     // point id; written next to the point with its value when out of tolerance
+  bool out_of_tolerance = false;
 };
+
+// At most this many out-of-tolerance points are labelled in one map (the
+// largest |value| first; the figure says how many were left out): beyond
+// that the labels would hide the map.
+constexpr std::size_t kMaxMapLabels = 60;
 
 // A polyline drawn in thin grey under the points (face outlines, region
 // borders) in the same frame.
@@ -27,19 +38,20 @@ struct ToleranceLimits {
 };
 
 // Points coloured by value on a diverging scale with a colour bar in µm and
-// the tolerance limits marked. `equal_aspect` for geometric maps.
-std::vector<unsigned char> deviation_map_png(const std::string& title, const std::vector<MapPoint>& points,
-                                             const std::vector<Outline>& outlines,
-                                             const ToleranceLimits& tolerance, const std::string& x_label,
-                                             const std::string& y_label, bool equal_aspect);
+// the tolerance limits marked. `equal_aspect` for geometric maps. Each
+// out-of-tolerance label is an SVG <text class="oot-label" data-id=ID
+// data-value=UM> reading "ID +61.3 µm" (value in µm, one decimal).
+Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoint>& points,
+                              const std::vector<Outline>& outlines, const ToleranceLimits& tolerance,
+                              const std::string& x_label, const std::string& y_label, bool equal_aspect);
 
 // Histogram of deviations (µm) with the tolerance limits as vertical lines.
-std::vector<unsigned char> histogram_png(const std::string& title, const std::vector<double>& values,
+Drawing histogram_drawing(const std::string& title, const std::vector<double>& values,
                                          const ToleranceLimits& tolerance);
 
 // Scatter of measured (y) against predicted (x) values in µm, with the line
 // y = x and, when `sigma` is given per point, vertical 1-sigma bars.
-std::vector<unsigned char> scatter_png(const std::string& title, const std::vector<double>& predicted,
+Drawing scatter_drawing(const std::string& title, const std::vector<double>& predicted,
                                        const std::vector<double>& measured, const std::vector<double>& sigma);
 
 // A labelled marker figure: each item is a filled disc (or, when `outline`
@@ -51,7 +63,7 @@ struct StatusItem {
   std::string label;      // drawn next to the marker
   std::string status;     // e.g. "CONFIRMED" (colour from status_colour)
 };
-std::vector<unsigned char> status_map_png(const std::string& title, const std::vector<StatusItem>& items,
+Drawing status_map_drawing(const std::string& title, const std::vector<StatusItem>& items,
                                           const std::vector<Outline>& outlines,
                                           const std::vector<Eigen::Vector2d>& background_points,
                                           const std::string& x_label, const std::string& y_label);

@@ -61,9 +61,9 @@ std::string utc_timestamp() {
 }
 
 std::vector<FolderFile> make_report(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
-                                    const ReportContext& context) {
+                                    const ReportContext& context, const Prediction* prediction) {
   check_comparison_faces(doc, part);
-  return render_report(doc, regions, make_report_figures(doc, part, regions), context);
+  return render_report(doc, regions, make_report_figures(doc, part, regions, prediction), context);
 }
 
 std::vector<FolderFile> render_report(const ComparisonDocument& doc, const RegionMap* regions,
@@ -75,7 +75,10 @@ std::vector<FolderFile> render_report(const ComparisonDocument& doc, const Regio
   files.push_back({"points.csv", points_csv_text(doc)});
   files.push_back({"results.qif",  // docs/qif.md
                    comparison_to_qif(doc, context.inputs, context.generated, context.record)});
-  for (const ReportFigure& f : figures) files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
+  for (const ReportFigure& f : figures) {
+    files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
+    if (!f.svg.empty()) files.push_back({f.svg_file(), f.svg});  // the same text as inline in the HTML
+  }
   return files;
 }
 

@@ -74,8 +74,10 @@ void check_comparison_faces(const ComparisonDocument& doc, const Part& part);
 
 // Renders the whole folder in memory. `regions` may be null. Checks the
 // faces first (check_comparison_faces).
+// `prediction` (may be null) colours the 3D view's surface with the
+// predicted error field.
 std::vector<FolderFile> make_report(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
-                                    const ReportContext& context);
+                                    const ReportContext& context, const Prediction* prediction = nullptr);
 // The same in two steps, for a caller that times the figures (the costly
 // part) and puts the time into the context: the figures come from
 // make_report_figures (report_figures.hpp) after check_comparison_faces.

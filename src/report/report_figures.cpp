@@ -4,7 +4,10 @@
 
 #include "report/figures.hpp"
 #include "report/part_outlines.hpp"
+#include "report/part_view_3d.hpp"
 #include "report/region_map_figure.hpp"
+#include "render/drawing_raster.hpp"
+#include "render/svg.hpp"
 
 namespace furrow {
 
@@ -15,7 +18,17 @@ MapPoint map_point(const ComparisonDocument::Point& p, const Eigen::Vector2d& po
   m.position = position;
   m.value = p.evaluated ? p.deviation : std::nan("");
   m.flagged = !p.evaluated || !p.in_tolerance.value_or(true);
+  m.label = p.id;
+  m.out_of_tolerance = p.evaluated && !p.in_tolerance.value_or(true);
   return m;
+}
+
+// Both back ends from the one drawing; the SVG id is the file's stem.
+ReportFigure figure(const std::string& file, const std::string& section, const std::string& title,
+                    const std::string& caption, const Drawing& drawing, bool vector) {
+  ReportFigure f{file, section, title, caption, to_png(drawing), ""};
+  if (vector) f.svg = to_svg(drawing, title, "fig-" + file.substr(8, file.size() - 12));
+  return f;
 }
 
 ToleranceLimits limits(const ComparisonDocument& doc) {
@@ -30,12 +43,15 @@ void add_deviation_maps(const ComparisonDocument& doc, const Part& part, const R
   std::vector<Outline> outlines = face_outlines_xy(part);
   if (regions)
     for (Outline& o : region_borders_xy(*regions)) outlines.push_back(std::move(o));
-  out.push_back({"figures/deviation_top.png", "deviations",
+  const bool vector = top.size() <= kVectorPointLimit;
+  out.push_back(figure("figures/deviation_top.png", "deviations",
                  "Deviation map, top view",
                  "Signed deviation at every measured point (foot point on the nominal surface, seen from "
                  "above): red = material left, blue = overcut; grey = not evaluated (outlier); a black "
-                 "ring marks a point outside the profile zone or not evaluated.",
-                 deviation_map_png("Deviation [um], top view", top, outlines, tol, "x [mm]", "y [mm]", true)});
+                 "ring marks a point outside the profile zone or not evaluated; points out of tolerance are labelled "
+                 "with their id and deviation.",
+                 deviation_map_drawing("Deviation [\u00b5m], top view", top, outlines, tol, "x [mm]", "y [mm]", true),
+                 vector));
 
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
     std::vector<MapPoint> pts;
@@ -46,20 +62,24 @@ void add_deviation_maps(const ComparisonDocument& doc, const Part& part, const R
     std::vector<Outline> uv = face_outlines_uv(face);
     if (regions)
       for (Outline& o : region_borders_uv(*regions, static_cast<int>(f))) uv.push_back(std::move(o));
-    out.push_back({"figures/deviation_uv_" + std::to_string(f) + ".png", "deviations",
+    const bool vector_uv = pts.size() <= kVectorPointLimit;
+    out.push_back(figure("figures/deviation_uv_" + std::to_string(f) + ".png", "deviations",
                    "Deviation map on face \"" + face.name() + "\" (u, v)",
                    "The same deviations on the face's parameter domain, with its boundary" +
                        std::string(regions ? " and the region borders." : "."),
-                   deviation_map_png("Deviation [um] on " + face.name() + " (u, v)", pts, uv, tol, "u", "v", false)});
+                   deviation_map_drawing("Deviation [\u00b5m] on " + face.name() + " (u, v)", pts, uv, tol, "u", "v",
+                                         false),
+                   vector_uv));
   }
 
   std::vector<double> evaluated;
   for (const auto& p : doc.points)
     if (p.evaluated) evaluated.push_back(p.deviation);
-  out.push_back({"figures/histogram.png", "deviations", "Histogram of deviations",
-                 "Evaluated points only; the vertical lines are the limits of the profile zone.",
-                 histogram_png("Deviations of " + std::to_string(evaluated.size()) + " evaluated points", evaluated,
-                               tol)});
+  out.push_back(figure("figures/histogram.png", "deviations", "Histogram of deviations",
+                       "Evaluated points only; the vertical lines are the limits of the profile zone.",
+                       histogram_drawing("Deviations of " + std::to_string(evaluated.size()) + " evaluated points",
+                                         evaluated, tol),
+                       true));
 }
 
 void add_prediction_figures(const ComparisonDocument& doc, const Part& part, std::vector<ReportFigure>& out) {
@@ -70,11 +90,12 @@ void add_prediction_figures(const ComparisonDocument& doc, const Part& part, std
       measured.push_back(p.prediction->measured);
       sigma.push_back(p.prediction->sigma);
     }
-  out.push_back({"figures/predicted_vs_measured.png", "prediction", "Predicted vs measured",
+  out.push_back(figure("figures/predicted_vs_measured.png", "prediction", "Predicted vs measured",
                  "Each compared point's predicted machining error (x) against its measured deviation after "
                  "the prediction alignment (y), with 1-sigma bars of the combined uncertainty; a perfect "
                  "prediction lies on the diagonal.",
-                 scatter_png("Predicted vs measured error [um]", predicted, measured, sigma)});
+                 scatter_drawing("Predicted vs measured error [\u00b5m]", predicted, measured, sigma),
+                 predicted.size() <= kVectorPointLimit));
 
   if (!doc.gouges) return;
   std::vector<StatusItem> items;
@@ -96,24 +117,27 @@ void add_prediction_figures(const ComparisonDocument& doc, const Part& part, std
   }
   std::vector<Eigen::Vector2d> background;
   for (const auto& p : doc.points) background.emplace_back(p.foot.x(), p.foot.y());
-  out.push_back({"figures/gouge_sites.png", "gouges", "Gouge sites",
+  out.push_back(figure("figures/gouge_sites.png", "gouges", "Gouge sites",
                  "Predicted gouge sites (their extent on the surface, from above) coloured by status, "
                  "unexplained overcuts (measured, not predicted) in purple; grey dots are the measured points.",
-                 status_map_png("Gouge sites and unexplained overcuts, top view", items, face_outlines_xy(part),
-                                background, "x [mm]", "y [mm]")});
+                 status_map_drawing("Gouge sites and unexplained overcuts, top view", items, face_outlines_xy(part),
+                                    background, "x [mm]", "y [mm]"),
+                 background.size() <= kVectorPointLimit));
 }
 
 }  // namespace
 
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
-                                              const RegionMap* regions) {
+                                              const RegionMap* regions, const Prediction* prediction,
+                                              bool interactive) {
   std::vector<ReportFigure> out;
   if (regions)
     out.push_back({"figures/region_map.png", "regions", "Curvature regions",
                    "The partition the plan and the statistics per region use, seen from above: convex orange, "
                    "concave blue, saddle green, planar sand.",
-                   region_map_png("Curvature regions, top view", part, *regions)});
+                   region_map_png("Curvature regions, top view", part, *regions), ""});
   add_deviation_maps(doc, part, regions, out);
+  if (interactive) out.push_back(part_view_3d_figure(doc, part, prediction));
   if (doc.prediction) add_prediction_figures(doc, part, out);
   return out;
 }

@@ -1,7 +1,11 @@
 #pragma once
 // The figures of a QA report, drawn from a comparison document and the part
-// (and its partition when the comparison has one): PNG bytes with a file
-// name inside the report folder, a title and a caption for the HTML.
+// (and its partition when the comparison has one), each described once
+// (render/drawing.hpp) and rendered by two back ends: SVG, inline in the
+// HTML and written as figures/NAME.svg, and PNG, written as figures/NAME.png.
+// Raster only (no SVG) where vector graphics would be too heavy for a page:
+// the region map (a painted image) and deviation maps of more than
+// kVectorPointLimit points.
 //
 //   figures/region_map.png          the partition from above (with regions)
 //   figures/deviation_top.png       deviations at the foot points, top view
@@ -18,6 +22,7 @@
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
+#include "machining/prediction/prediction.hpp"
 #include "partition/region_map.hpp"
 
 namespace furrow {
@@ -27,12 +32,22 @@ struct ReportFigure {
   std::string section;  // "regions", "deviations", "prediction", "gouges"
   std::string title;
   std::string caption;
-  std::vector<unsigned char> png;
+  std::vector<unsigned char> png;  // always: the raster back end
+  std::string svg;                 // the vector back end; empty for a raster-only figure
+  std::string html;                // an interactive section placed instead (the 3D view), may be empty
+  // figures/NAME.svg for `file` figures/NAME.png.
+  std::string svg_file() const { return file.substr(0, file.size() - 4) + ".svg"; }
 };
 
-// `regions` may be null. Precondition: doc's faces are faces of `part` (the
-// report checks the face names first).
+// Maps of more points than this are raster only in the page.
+constexpr std::size_t kVectorPointLimit = 5000;
+
+// `regions` and `prediction` may be null. Precondition: doc's faces are
+// faces of `part` (the report checks the face names first). With
+// `interactive`, the last figure of the deviations is the 3D view
+// (part_view_3d.hpp; section "view3d"), which needs three.js installed.
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
-                                              const RegionMap* regions);
+                                              const RegionMap* regions, const Prediction* prediction = nullptr,
+                                              bool interactive = true);
 
 }  // namespace furrow

@@ -7,6 +7,7 @@
 #include "report/html.hpp"
 #include "report/inspection_record_html.hpp"
 #include "report/point_table_html.hpp"
+#include "report/print_style.hpp"
 #include "base/numbers.hpp"
 
 namespace furrow {
@@ -48,7 +49,7 @@ table.points{font-size:0.8em}table.points td{white-space:nowrap}table.files td{t
 tr.out td{background:#fde2e2}tr.outlier td{color:#888;font-style:italic}
 .status{font-weight:bold;padding:1px 6px;border-radius:3px;color:#fff;white-space:nowrap}
 .CONFIRMED{background:#c81e1e}.NOT_CONFIRMED{background:#28963c}.NOT_MEASURED{background:#8c8c8c}.UNEXPLAINED{background:#8232aa}
-figure{margin:0.8em 0;display:inline-block;max-width:100%}figure img{max-width:100%;height:auto;border:1px solid #ddd}
+figure{margin:0.8em 0;display:inline-block;max-width:100%}figure img,figure svg{max-width:100%;height:auto;border:1px solid #ddd}
 figcaption{font-size:0.85em;color:#555;max-width:900px}
 code,pre{font-family:"DejaVu Sans Mono",monospace;font-size:0.85em}pre{background:#f6f6f6;padding:8px;overflow-x:auto}
 .hash{font-family:"DejaVu Sans Mono",monospace;font-size:0.8em;word-break:break-all}
@@ -73,8 +74,14 @@ std::string figures_of(const std::vector<ReportFigure>& figures, const std::stri
   std::string out;
   for (const ReportFigure& f : figures) {
     if (f.section != section) continue;
-    out += "<figure>" + html::embedded_png(f.png, f.title) + "<figcaption><b>" + escape(f.title) + ".</b> " +
-           escape(f.caption) + " (<code>" + escape(f.file) + "</code>)</figcaption></figure>\n";
+    if (!f.html.empty()) {  // an interactive section with its own static fallback (the 3D view)
+      out += f.html;
+      continue;
+    }
+    // Vector figures inline (crisp, text selectable); raster-only ones as PNG.
+    const std::string body = f.svg.empty() ? html::embedded_png(f.png, f.title) : f.svg;
+    out += "<figure>" + body + "<figcaption><b>" + escape(f.title) + ".</b> " + escape(f.caption) + " (<code>" +
+           escape(f.svg.empty() ? f.file : f.svg_file()) + "</code>)</figcaption></figure>\n";
   }
   return out;
 }
@@ -340,7 +347,7 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
                     escape("QA report " + context.title + ": " + verdict.result()) + "</title>\n<style>" + kStyle +
-                    inspection_record_css() + point_table_css() + "</style>\n</head>\n<body>\n";
+                    inspection_record_css() + point_table_css() + "</style>\n";
   // File names as the user gave them where the context knows them (a job's
   // inputs), else as the comparison names them.
   auto named = [&](const std::string& role, const std::string& fallback) {
@@ -348,6 +355,7 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
       if (in.role == role) return in.path;
     return fallback;
   };
+  out += print_style(named("part", doc.sources.part), context.title) + "</head>\n<body>\n";  // print_style.hpp
   out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
          escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
          escape(named("measurements", doc.sources.measurements)) +
@@ -357,11 +365,13 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
          "</header>\n";
   out += verdict_section(verdict);
   out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
-         "Deviations</a><a href=\"#prediction\">Predicted vs measured</a><a href=\"#gouges\">Gouges</a><a "
-         "href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a href=\"#traceability\">Traceability</a></nav>\n";
+         "Deviations</a><a href=\"#view3d\">3D view</a><a href=\"#prediction\">Predicted vs measured</a><a "
+         "href=\"#gouges\">Gouges</a><a href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a "
+         "href=\"#traceability\">Traceability</a></nav>\n";
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
   out += deviations_section(doc, figures);
+  out += figures_of(figures, "view3d");  // part_view_3d.hpp: a whole section, when present
   out += prediction_section(doc, figures);
   out += gouges_section(doc, figures);
   out += face_summary_html(doc) + point_table_html(doc);

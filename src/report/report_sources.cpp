@@ -5,6 +5,7 @@
 #include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 
 namespace furrow {
@@ -33,19 +34,24 @@ ReportSources read_report_sources(const std::string& comparison_path) {
       {"part", &src.part},       {"measurements", &src.measurements}, {"plan", &src.plan},
       {"regions", &src.regions}, {"prediction", &src.prediction},
   };
-  std::string part_path, regions_path;
+  std::string part_path, regions_path, prediction_path;
   for (const auto& [role, path] : named) {
     if (path->empty()) continue;
     const std::string found = locate(comparison_path, role, *path);
     s.inputs.push_back(digest_file(role, found));
     if (path == &src.part) part_path = found;
     if (path == &src.regions) regions_path = found;
+    if (path == &src.prediction) prediction_path = found;
   }
   if (part_path.empty()) throw InputError(comparison_path + ": names no part file");
   s.part = read_part(part_path);
   if (!regions_path.empty()) {
     s.regions = read_regions(regions_path);
     s.regions->check_belongs_to(s.part, regions_path, part_path);
+  }
+  if (!prediction_path.empty()) {
+    s.prediction = read_prediction(prediction_path);
+    check_prediction_against_part(*s.prediction, s.part, prediction_path, part_path);
   }
   check_comparison_faces(s.doc, s.part);
   return s;

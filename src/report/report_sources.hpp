@@ -17,6 +17,7 @@
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
+#include "machining/prediction/prediction.hpp"
 #include "partition/region_map.hpp"
 #include "report/qa_report.hpp"
 
@@ -26,6 +27,7 @@ struct ReportSources {
   ComparisonDocument doc;
   Part part;
   std::optional<RegionMap> regions;
+  std::optional<Prediction> prediction;  // when the comparison names one (the report's 3D view shows its error field)
   std::vector<InputDigest> inputs;  // comparison first, then its sources
 };
 

@@ -250,3 +250,17 @@ TEST_CASE("the job's record: inline or a file relative to the job with errors na
   CHECK(file_job.record->prepared.name == "J. Doe");
   CHECK(error_of(minimal(R"( "record": "no_such_record.json",)")).find("no_such_record.json") != std::string::npos);
 }
+
+TEST_CASE("pdf and paper: report.pdf on request, a4 or letter, recorded with the options") {
+  const Job plain = parse_job(minimal(), "job.json", "");
+  CHECK_FALSE(plain.pdf);
+  CHECK(plain.paper == "a4");
+  const Job job = parse_job(minimal(R"( "pdf": true, "paper": "letter",)"), "job.json", "");
+  CHECK(job.pdf);
+  CHECK(job.paper == "letter");
+  const nlohmann::json j = nlohmann::json::parse(job_options_json(job));
+  CHECK(j["pdf"] == true);
+  CHECK(j["paper"] == "letter");
+  CHECK(error_of(minimal(R"( "paper": "a3",)")).find("job.json: paper: expected a4 or letter") == 0);
+  CHECK(error_of(minimal(R"( "pdf": "yes",)")).find("job.json: pdf") == 0);
+}

@@ -211,29 +211,45 @@ TEST_CASE("report.json holds the document's numbers, and only the timestamp and 
   CHECK(ja["inputs"][0]["sha256"] == "44136fa355b3678a1146ad16f7e8649e94fb4fc21fe77e8310c060f61caaff8a");  // sha256("{}")
 }
 
-TEST_CASE("report.html is self-contained: every image is an embedded PNG, the same as its file") {
+TEST_CASE("report.html is self-contained: every figure is inline SVG or an embedded PNG, the same as its file") {
   const test::ReportFixture& f = fixture();
   const std::vector<FolderFile> files = make_report(f.doc, f.part, nullptr, context("2024-01-01T00:00:00Z"));
   const std::string& html = file_named(files, "report.html").bytes;
   CHECK(html.find("<div class=\"result\" id=\"verdict-result\">FAIL</div>") != std::string::npos);
-  CHECK(html.find("http://") == std::string::npos);
-  CHECK(html.find("https://") == std::string::npos);
+  // Nothing fetched from elsewhere: no link, import or remote src/href (URLs
+  // inside three.js's text and the SVG namespace name are not fetched).
   CHECK(html.find("<link") == std::string::npos);
-  // Collect the embedded images and compare them with the figure files.
+  CHECK(html.find("@import") == std::string::npos);
+  for (const char* remote : {"src=\"http", "href=\"http", "src=\"//", "href=\"//", "url(http", "url(//"})
+    CHECK_MESSAGE(html.find(remote) == std::string::npos, remote);
+  // Embedded raster images (none here: every figure of this report is vector).
   std::vector<std::string> embedded;
-  const std::string marker = "src=\"";
+  const std::string marker = "<img ";
   for (std::size_t at = html.find(marker); at != std::string::npos; at = html.find(marker, at + 1)) {
-    const std::size_t start = at + marker.size(), end = html.find('"', start);
+    const std::size_t start = html.find("src=\"", at) + 5, end = html.find('"', start);
     const std::string src = html.substr(start, end - start);
     REQUIRE(src.rfind("data:image/png;base64,", 0) == 0);  // nothing external
     embedded.push_back(base64_decode(src.substr(22)));
   }
-  std::vector<std::string> figures;
-  for (const FolderFile& file : files)
-    if (file.path.rfind("figures/", 0) == 0) figures.push_back(file.bytes);
-  CHECK(figures.size() == 3);  // top view, face (u, v), histogram: no regions, no prediction
-  CHECK(embedded == figures);
-  for (const std::string& png : embedded) {
+  // Inline SVG: each the same text as its figures/*.svg file.
+  std::vector<std::string> inline_svg;
+  for (std::size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) {
+    const std::size_t end = html.find("</svg>\n", at);
+    REQUIRE(end != std::string::npos);
+    inline_svg.push_back(html.substr(at, end + 7 - at));
+  }
+  std::vector<std::string> png_files, svg_files;
+  for (const FolderFile& file : files) {
+    if (file.path.rfind("figures/", 0) != 0) continue;
+    (file.path.size() > 4 && file.path.compare(file.path.size() - 4, 4, ".svg") == 0 ? svg_files : png_files)
+        .push_back(file.bytes);
+  }
+  // Top view, face (u, v), histogram, the 3D view's front view: no regions, no prediction.
+  CHECK(png_files.size() == 4);
+  CHECK(svg_files.size() == 4);  // all four are vector figures (192 points)
+  CHECK(embedded.empty());
+  CHECK(inline_svg == svg_files);
+  for (const std::string& png : png_files) {
     const cv::Mat img = cv::imdecode(std::vector<unsigned char>(png.begin(), png.end()), cv::IMREAD_COLOR);
     CHECK_FALSE(img.empty());
   }

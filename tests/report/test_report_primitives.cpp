@@ -49,6 +49,7 @@ TEST_CASE("the diverging scale is white at zero, blue below, red above, saturate
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "render/drawing_raster.hpp"
 #include "report/figures.hpp"
 
 namespace {
@@ -70,10 +71,10 @@ int count_colour(const cv::Mat& img, const Rgb& c) {
 
 TEST_CASE("figures are valid, deterministic PNGs that show their data") {
   std::vector<MapPoint> pts;
-  for (int k = 0; k < 50; ++k) pts.push_back({Eigen::Vector2d(k, k % 7), (k - 25) * 0.004, k == 3});
+  for (int k = 0; k < 50; ++k) pts.push_back({Eigen::Vector2d(k, k % 7), (k - 25) * 0.004, k == 3, "", false});
   const ToleranceLimits tol{-0.05, 0.05};
-  const auto map = deviation_map_png("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true);
-  CHECK(map == deviation_map_png("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true));
+  const auto map = to_png(deviation_map_drawing("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true));
+  CHECK(map == to_png(deviation_map_drawing("map", pts, {{{0, 0}, {50, 0}, {50, 7}, {0, 7}, {0, 0}}}, tol, "x", "y", true)));
   const cv::Mat img = decode(map);
   REQUIRE_FALSE(img.empty());
   CHECK(img.cols == 900);
@@ -81,11 +82,11 @@ TEST_CASE("figures are valid, deterministic PNGs that show their data") {
   // (range = max(tol, max |value|) = 0.1 mm, value -0.1).
   CHECK(count_colour(img, diverging_colour(-1.0)) > 20);
   const std::vector<double> values = {-0.01, 0.0, 0.01, 0.02, 0.02, 0.03};
-  const cv::Mat hist = decode(histogram_png("h", values, tol));
+  const cv::Mat hist = decode(to_png(histogram_drawing("h", values, tol)));
   REQUIRE_FALSE(hist.empty());
-  const cv::Mat sc = decode(scatter_png("s", {0.0, 0.01}, {0.001, 0.012}, {0.002, 0.002}));
+  const cv::Mat sc = decode(to_png(scatter_drawing("s", {0.0, 0.01}, {0.001, 0.012}, {0.002, 0.002})));
   REQUIRE_FALSE(sc.empty());
-  const cv::Mat st = decode(status_map_png("g", {{Eigen::Vector2d(1, 1), {}, "G1", "CONFIRMED"}}, {}, {}, "x", "y"));
+  const cv::Mat st = decode(to_png(status_map_drawing("g", {{Eigen::Vector2d(1, 1), {}, "G1", "CONFIRMED"}}, {}, {}, "x", "y")));
   REQUIRE_FALSE(st.empty());
   CHECK(count_colour(st, status_colour("CONFIRMED")) > 50);
 }

@@ -1,0 +1,135 @@
+// Report generation for large point sets: the figures (each drawn once,
+// SVG and/or PNG), the 3D view (data + inlined three.js) and the whole
+// folder rendered in memory, for 10 000 and 100 000 simulated points on the
+// mould with a prediction; prints seconds and the size of report.html.
+// Target (docs/report.md): under 3 s for 100 000 points, the 3D view
+// still interactive (instanced spheres: one draw call). Prints figures; it
+// does not pass or fail.
+//
+// Data: a smooth +-8 um predicted error field with two 40 um dents on
+// 100 x 80 cells, measurements simulated from it on an even grid plan (probe
+// 2 mm, misaligned, 2 um noise), registered and written to comparison.json
+// and read back as `furrow report` does (that set-up is not timed).
+//
+//   ./build/bench_report            both sizes
+//   ./build/bench_report 100000     one size (points, rounded to the grid)
+//   ./build/bench_report 100000 DIR also writes that report.html into DIR
+//                                   (to open it, e.g. to time the 3D view)
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include "inspection/comparison_file.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "io/part_file.hpp"
+#include "report/part_view_3d.hpp"
+#include "report/qa_report.hpp"
+
+using namespace furrow;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double field(const Eigen::Vector2d& uv) {
+  double e = 0.008 * std::sin(2 * M_PI * uv.x()) * std::cos(M_PI * uv.y());
+  for (const Eigen::Vector2d c : {Eigen::Vector2d(0.3, 0.4), Eigen::Vector2d(0.7, 0.6)}) {
+    const double rho = (uv - c).norm() / 0.05;
+    if (rho < 1) e -= 0.02 * (1 + std::cos(M_PI * rho));
+  }
+  return e;
+}
+
+Prediction synthetic_prediction(const Part& part) {
+  Prediction p;
+  p.part = "mould.json";
+  p.toolpath = "bench.nc";
+  p.tool = {"ball_d10", ToolType::ball, 10, 5};
+  p.tolerance = p.gouge_threshold = 0.01;
+  FaceGridRecord f;
+  f.name = part.faces[0].name();
+  f.domain = part.faces[0].domain();
+  f.cells_u = 100;
+  f.cells_v = 80;
+  for (int j = 0; j < f.cells_v; ++j)
+    for (int i = 0; i < f.cells_u; ++i) {
+      const double m = field({(i + 0.5) / f.cells_u, (j + 0.5) / f.cells_v});
+      f.status.push_back(ErrorCellStatus::reached);
+      f.mean.push_back(m);
+      f.max_undercut.push_back(m + 0.001);
+      f.max_overcut.push_back(m - 0.001);
+    }
+  p.faces.push_back(f);
+  return p;
+}
+
+void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu, int nv,
+         const std::string& html_folder = "") {
+  const Part& part = finder.part();
+  const InspectionPlan plan = grid_plan(part, nu, nv, {"ball 2 mm", 2});
+  SimulationOptions sim;
+  sim.misalignment = {{2, -3, 40}, {20, -12, 15}};
+  sim.surface_offset = predicted_surface_offsets(plan, prediction).lookup(plan);
+  const SimulatedMeasurement m = simulate_measurement(plan, sim);
+  CompareOptions o;
+  o.tolerance = ToleranceZone::make(0.05, 0.025, "bench");
+  o.registration.loss_scale = o.registration.outlier_floor = 0.025;
+  Comparison c = compare_measurements(finder, m.set, &plan, o);
+  verify_prediction(c, part, m.set.probe_radius, prediction, o);
+  const ComparisonDocument doc = parse_comparison(
+      comparison_to_json_text(c, m.set, part, o, {"mould.json", "m.csv", "plan.json", "", "prediction.json", "mm"}),
+      "comparison.json");
+
+  ReportContext context;
+  context.title = "bench";
+  context.generated = "2024-01-01T00:00:00Z";
+  auto t0 = Clock::now();
+  const std::vector<ReportFigure> figures2d = make_report_figures(doc, part, nullptr, &prediction, false);
+  const double t_figures = seconds_since(t0);
+  t0 = Clock::now();
+  const ReportFigure view = part_view_3d_figure(doc, part, &prediction);
+  const double t_view = seconds_since(t0);
+  t0 = Clock::now();
+  const std::vector<FolderFile> files = make_report(doc, part, nullptr, context, &prediction);
+  const double t_total = seconds_since(t0);
+  std::size_t html = 0, svg = 0, folder = 0;
+  for (const FolderFile& f : files) {
+    folder += f.bytes.size();
+    if (f.path == "report.html") html = f.bytes.size();
+    if (f.path.size() > 4 && f.path.compare(f.path.size() - 4, 4, ".svg") == 0) svg += f.bytes.size();
+  }
+  std::size_t vector_figures = 0;
+  for (const ReportFigure& f : figures2d) vector_figures += !f.svg.empty();
+  std::printf("%7zu points  whole report %5.2f s (2D figures %5.2f s, 3D view %5.2f s)  report.html %5.1f MB "
+              "(3D section %4.1f MB)  folder %5.1f MB  %zu of %zu 2D figures vector (%.1f MB SVG)\n",
+              doc.points.size(), t_total, t_figures, t_view, html / 1e6, view.html.size() / 1e6, folder / 1e6,
+              vector_figures, figures2d.size(), svg / 1e6);
+  std::string sizes;
+  for (const FolderFile& f : files)
+    if (f.bytes.size() > 5000000) sizes += "  " + f.path + " " + std::to_string(f.bytes.size() / 1000000) + " MB";
+  std::printf("         files over 5 MB:%s\n", sizes.c_str());
+  if (!html_folder.empty())
+    for (const FolderFile& f : files)
+      if (f.path == "report.html") std::ofstream(html_folder + "/report.html", std::ios::binary) << f.bytes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
+  const ClosestPointFinder finder(part);
+  const Prediction prediction = synthetic_prediction(part);
+  if (argc > 1) {  // an even grid of about that many points, 5:4 like the mould
+    const double n = std::max(20.0, std::atof(argv[1]));
+    run(finder, prediction, static_cast<int>(std::lround(std::sqrt(n * 1.25))),
+        static_cast<int>(std::lround(std::sqrt(n / 1.25))), argc > 2 ? argv[2] : "");
+    return 0;
+  }
+  run(finder, prediction, 125, 80);   // 10 000
+  run(finder, prediction, 400, 250);  // 100 000
+  return 0;
+}
