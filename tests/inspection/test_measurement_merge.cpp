@@ -34,7 +34,7 @@ std::string refusal(const std::vector<MeasurementSet>& sets) {
 
 }  // namespace
 
-TEST_CASE("merge_measurements: the last file measuring an id wins, in place; every replacement is listed") {
+TEST_CASE("merge_measurements: the last file measuring an id wins, in place, every replacement is listed") {
   const MergedMeasurements m = merge_measurements({set_of("a.csv", {{"P1", 1}, {"P2", 2}, {"P3", 3}}),
                                                    set_of("b.csv", {{"P2", 20}, {"Q1", 100}}),
                                                    set_of("c.csv", {{"P2", 200}, {"P1", 10}})});
@@ -55,7 +55,7 @@ TEST_CASE("merge_measurements: the last file measuring an id wins, in place; eve
   CHECK((m.replaced[2].id == "P1" && m.replaced[2].file == 0 && m.replaced[2].by_file == 2 && m.replaced[2].was.x() == 1));
 }
 
-TEST_CASE("merge_measurements: one file as it is; refusals name the file") {
+TEST_CASE("merge_measurements: one file as it is, refusals name the file") {
   MeasurementSet xyz = set_of("c.xyz", {{"1", 1}});
   xyz.ids_from_file = false;
   const MergedMeasurements one = merge_measurements({xyz});  // alone: read as before

@@ -124,7 +124,7 @@ TEST_CASE("observability: a sphere cap leaves the three turns about its centre")
   }
 }
 
-TEST_CASE("observability: a wavy patch fixes all six; the extremes bound every motion (brute force)") {
+TEST_CASE("observability: a wavy patch fixes all six, the extremes bound every motion (brute force)") {
   // z = 8 sin(x/12) cos(y/9) over 60 x 40 mm: bumps and hollows, no motion
   // slides along it.
   Cloud c;
@@ -174,7 +174,7 @@ TEST_CASE("observability: a wavy patch fixes all six; the extremes bound every m
   CHECK(lo / largest == doctest::Approx(o.ratios.front()).epsilon(1e-3));
 }
 
-TEST_CASE("observability: locked degrees of freedom are not analysed; the free ones are") {
+TEST_CASE("observability: locked degrees of freedom are not analysed, the free ones are") {
   const Cloud c = plane_patch(Eigen::Vector3d(5, 5, 0));
   // Only tz, rx, ry free: the plane fixes them all.
   const Observability o = analyse_observability(c.x, c.n, free_parameter_basis({true, true, false, false, false, true}), 1e-3);

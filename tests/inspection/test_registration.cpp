@@ -261,7 +261,7 @@ TEST_CASE("covariance: standard deviations halve when the points quadruple") {
 }
 
 TEST_CASE(
-    "a real gouge is a large deviation, evaluated; isolated blunders are not; edges are refused") {
+    "a real gouge is a large deviation, evaluated, isolated blunders are not, edges are refused") {
   const Part part = mould();
   const ClosestPointFinder finder(part);
   InspectionPlan plan = grid_plan(part, 40, 32, {"ball", 2});

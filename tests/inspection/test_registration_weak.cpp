@@ -153,7 +153,7 @@ TEST_CASE("weakly constrained: held directions give the fit of the same directio
   CHECK(held.sigma == doctest::Approx(locked.sigma).epsilon(1e-9));
 }
 
-TEST_CASE("fits that cannot succeed: too few points, exit 3 with the state written; never exit 2, never PASS") {
+TEST_CASE("fits that cannot succeed: too few points, exit 3 with the state written, never exit 2, never PASS") {
   const std::string dir = test::scratch_dir("registration-too-few");
   const Part plane = test::one_face("plane", make_plane({0, 0, 0}, {100, 0, 0}, {0, 60, 0}));
   write_part_json(plane, dir + "/plane.json");

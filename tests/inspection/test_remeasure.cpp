@@ -57,7 +57,7 @@ void check_on_part(const InspectionPlan& plan, const Part& part) {
 
 }  // namespace
 
-TEST_CASE("remeasure: a one-point dent is re-probed with a ring; the dent confirmed fails, dirt passes") {
+TEST_CASE("remeasure: a one-point dent is re-probed with a ring, the dent confirmed fails, dirt passes") {
   const std::string dir = test::scratch_dir("remeasure-dent");
   const InspectionPlan plan = write_grid_plan(dir + "/plan.json");
   const Part part = read_part(kMould);

@@ -37,7 +37,7 @@ std::string error_of(const std::function<void()>& f) {
 
 }  // namespace
 
-TEST_CASE("measurements: Excel's CSV UTF-8 with ';' and CRLF reads like the plain CSV") {
+TEST_CASE("measurements: Excel's CSV UTF-8 with semicolons and CRLF reads like the plain CSV") {
   MeasurementReadOptions o;
   o.format = MeasurementFormat::csv;
   o.probe_diameter = 2;
@@ -87,7 +87,7 @@ TEST_CASE("measurements: coordinates are checked after the inch conversion") {
   CHECK(far.rfind("m.csv:2: x: 1.27e+06 mm is outside the coordinate range", 0) == 0);
 }
 
-TEST_CASE("contact points: Excel's CSV with ';', CRLF and a byte-order mark") {
+TEST_CASE("contact points: Excel's CSV with semicolons, CRLF and a byte-order mark") {
   const auto points = parse_contact_points_csv(kBom + crlf("id;x;y;z\nA;1.5;2;3\nB;4;5;6\n"), "cc.csv", "mm");
   REQUIRE(points.size() == 2);
   CHECK(points[0].id == "A");
@@ -96,7 +96,7 @@ TEST_CASE("contact points: Excel's CSV with ';', CRLF and a byte-order mark") {
   CHECK(points[1].line == 3);
 }
 
-TEST_CASE("tool-path CSV: Excel's CSV with ';', CRLF and a byte-order mark") {
+TEST_CASE("tool-path CSV: Excel's CSV with semicolons, CRLF and a byte-order mark") {
   const Toolpath p = parse_toolpath_csv(kBom + crlf("x;y;z\n0;0;1\n10;0;1.5\n"), "p.csv", {});
   REQUIRE(p.passes.size() == 1);
   REQUIRE(p.passes[0].points.size() == 2);

@@ -133,7 +133,7 @@ TEST_CASE("analytic: cylinder, cone, sphere and torus as B-spline and as revolut
   }
 }
 
-TEST_CASE("analytic: a perturbed B-spline and a free-form face are not recognised; the part file keeps the metadata") {
+TEST_CASE("analytic: a perturbed B-spline and a free-form face are not recognised, the part file keeps the metadata") {
   const Handle(Geom_BSplineSurface) cyl = Handle(Geom_BSplineSurface)::DownCast(
       as_bspline(new Geom_CylindricalSurface(frame(), 12.5), 0, 1.5 * kPi, -10, 25));
   REQUIRE(!cyl.IsNull());

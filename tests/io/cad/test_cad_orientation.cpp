@@ -117,7 +117,7 @@ TEST_CASE("orientation: a surface model with random face flips comes in outward,
   CHECK(inward > 0);
 }
 
-TEST_CASE("orientation: an open shell is made consistent; +z, -z and a point rule decide its side") {
+TEST_CASE("orientation: an open shell is made consistent, +z, -z and a point rule decide its side") {
   // The free-form block's top and its four sides, no bottom: an open shell.
   const ReferenceModel model = make_reference_model();
   SolidsClassifier solids(model);

@@ -104,7 +104,7 @@ TEST_CASE("DMIS results: malformed features name the line") {
   CHECK(error_of("FA(S)=FEAT/PLANE,CART,0,0,0,0,0,1\n") == "run.dmo: no measured points in the file");
 }
 
-TEST_CASE("DMIS results: every DMIS output extension in any case; .res is sniffed") {
+TEST_CASE("DMIS results: every DMIS output extension in any case, .res is sniffed") {
   for (const char* path : {"a.dmo", "a.DMS", "a.Out", "a.dmi", "a.DMIS", "a.res"})
     CHECK(measurement_format_from_path(path) == MeasurementFormat::dmis);
   CHECK(measurement_format_from_path("a.RES", "FA(P)=FEAT/POINT,CART,0,0,0,0,0,1\n") == MeasurementFormat::dmis);

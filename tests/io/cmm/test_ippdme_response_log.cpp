@@ -69,7 +69,7 @@ TEST_CASE("I++ DME log: responses out of order are matched by tag") {
   CHECK_FALSE(set.points[1].ijk.has_value());
 }
 
-TEST_CASE("I++ DME log: an error without a point fails naming the tag; with a point it is kept") {
+TEST_CASE("I++ DME log: an error without a point fails naming the tag, with a point it is kept") {
   CHECK(error_of("00010 &\n00010 # X(1), Y(2), Z(3)\n00010 %\n00011 &\n"
                  "00011 ! Error(2, 0500, \"PtMeas\", \"Probe hit not detected\")\n00011 %\n") ==
         "run.log:5: command 00011 returned an error and no point: "
@@ -86,7 +86,7 @@ TEST_CASE("I++ DME log: an error without a point fails naming the tag; with a po
   CHECK(error_of("00010 %\n") == "run.log:1: tag 00010 completes a command that was not started");
 }
 
-TEST_CASE("I++ DME log: a reused tag is a new command; the client's own lines are skipped") {
+TEST_CASE("I++ DME log: a reused tag is a new command, the client's own lines are skipped") {
   const MeasurementSet set = read_log("00005 PtMeas(X(1), Y(2), Z(3), IJK(0, 0, 1))\n"
                                       "00005 &\n00005 # X(1), Y(2), Z(3)\n00005 %\n"
                                       "00005 &\n00005 # X(4), Y(5), Z(6)\n00005 %\n");

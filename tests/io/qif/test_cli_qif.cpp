@@ -43,7 +43,7 @@ std::vector<double> triple(const char* text) {
 
 }  // namespace
 
-TEST_CASE("QIF end to end: simulated QIF compares like CSV; results.qif matches comparison.json point by point") {
+TEST_CASE("QIF end to end: simulated QIF compares like CSV, results.qif matches comparison.json point by point") {
   const std::string dir = test::scratch_dir("cli-qif-roundtrip");
   const std::string plan = write_mould_plan(dir);
   // Noise near the zone's half width gives FAIL points, blunders NOT_ANALYZED ones.
