@@ -12,4 +12,10 @@ void read_probe_motion_options(Args& args, PlannerOptions& o) {
   o.max_tilt_degrees = args.number_or("max-tilt", o.max_tilt_degrees);
 }
 
+void read_program_options(Args& args, PlannerOptions& o) {
+  o.program.revision = args.option_or("revision", o.program.revision);
+  o.program.date = args.option_or("program-date", o.program.date);
+  if (const auto h = args.number("head-length")) o.program.head_length = *h;
+}
+
 }  // namespace furrow::cli

@@ -398,12 +398,18 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   return result;
 }
 
-ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, double stylus_length) {
+ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options) {
   ProbeProgram program;
   program.name = name;
   program.part = result.plan.part;
+  program.revision = options.program.revision;
+  program.date = options.program.date;
   program.probe = result.plan.probe;
-  program.stylus_length = stylus_length;
+  program.stylus_length = options.stylus_length;
+  program.head_length = options.program.head_length.value_or(options.stylus_length);
+  program.move_speed = options.motion.move_speed;
+  program.measure_speed = options.motion.touch_speed;
+  program.tolerance = options.program.tolerance;
   program.approach = result.approach;
   program.retract = result.retract;
   program.search = result.search;

@@ -75,6 +75,7 @@ struct PlannerOptions {
   RegionDomainOptions domain;      // `border` is set from the option above
   AccessOptions access;            // distances and clearance_z are set from the options above
   std::string part_name;           // recorded in plan.json (informative)
+  ProgramSettings program;         // header, head length, tolerance of the CMM programs
 };
 
 // Throws InputError naming the option for an invalid value.
@@ -148,7 +149,9 @@ using PlanProgress = std::function<void(const char* stage, std::size_t done, std
 PlanResult plan_probe_points(const Part& part, const RegionMap& map, const PlannerOptions& options,
                              const RiskMap* risk = nullptr, const PlanProgress& progress = {});
 
-// The measuring program of a plan (DMIS / I++ DME writers).
-ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, double stylus_length);
+// The measuring program of a plan (DMIS / I++ DME writers): the options give
+// the stylus and head lengths, the speeds (motion.move_speed, touch_speed)
+// and the header and tolerance (options.program).
+ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options);
 
 }  // namespace furrow

@@ -24,7 +24,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   PlanStage out;
   out.result = plan_probe_points(part, map, options, risk, progress);
   out.program = program;
-  const ProbeProgram cmm = make_probe_program(out.result, program, options.stylus_length);
+  const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);
   const std::vector<unsigned char> png = plan_image_png(part, map, out.result);
   out.files = {

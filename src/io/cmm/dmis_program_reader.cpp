@@ -85,7 +85,8 @@ class Cursor {
 };
 
 const std::string kNum = R"((-?[0-9]+(?:\.[0-9]+)?))";
-const std::string kLabel = R"(([A-Za-z0-9_]+))";
+// Labels as the writer spells them: upper case (dmis_label).
+const std::string kLabel = R"(([A-Z0-9_]+))";
 
 }  // namespace
 
@@ -97,17 +98,33 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
   const std::vector<std::string> filnam = in.expect(std::regex(R"(FILNAM/'([A-Za-z0-9_-]+)',05\.2)"), "FILNAM/'name',05.2");
   if (filnam[1] != program.name) fail(name, in.line(), "FILNAM differs from DMISMN");
   in.expect(std::regex("UNITS/MM,ANGDEC"), "UNITS/MM,ANGDEC");
+  const std::regex part_id("PN\\(PART\\)=PARTID/'([ -&(-~]*)'");
+  const std::regex part_revision("PR\\(REV\\)=PARTRV/'([ -&(-~]*)'");
+  if (in.next_is(part_id)) program.part = in.expect(part_id, "PN(PART)=PARTID/'part'")[1];
+  if (in.next_is(part_revision)) program.revision = in.expect(part_revision, "PR(REV)=PARTRV/'revision'")[1];
+  if (in.expect(std::regex("PL\\(PROGRAM\\)=PLANID/'([A-Za-z0-9_-]+)'"), "PL(PROGRAM)=PLANID/'name'")[1] !=
+      program.name)
+    fail(name, in.line(), "PLANID differs from DMISMN");
   in.expect(std::regex("PRCOMP/ON"), "PRCOMP/ON");
   const std::vector<std::string> sensor = in.expect(
       std::regex("S\\(" + kLabel + "\\)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + kNum + "," + kNum),
-      "S(label)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,length,diameter");
+      "S(LABEL)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,head_length,diameter");
   program.probe.name = sensor[1];
-  program.stylus_length = number(sensor[2], name, in.line());
+  program.head_length = number(sensor[2], name, in.line());
   program.probe.diameter = number(sensor[3], name, in.line());
-  if (!(program.probe.diameter > 0) || !(program.stylus_length > 0))
-    fail(name, in.line(), "stylus length and ball diameter must be positive");
+  if (!(program.probe.diameter > 0) || !(program.head_length > 0))
+    fail(name, in.line(), "head-to-ball length and ball diameter must be positive");
   if (in.expect(std::regex("SNSLCT/S\\(" + kLabel + "\\)"), "SNSLCT/S(label)")[1] != program.probe.name)
     fail(name, in.line(), "SNSLCT selects a sensor that was not defined");
+  auto speed = [&](const char* key) {
+    const double v = number(in.expect(std::regex(std::string("FEDRAT/") + key + ",MMPS," + kNum),
+                                      (std::string("FEDRAT/") + key + ",MMPS,value").c_str())[1],
+                            name, in.line());
+    if (!(v > 0)) fail(name, in.line(), std::string(key) + " must be positive");
+    return v;
+  };
+  program.move_speed = speed("POSVEL");
+  program.measure_speed = speed("MESVEL");
   auto setting = [&](const char* key) {
     const double v = number(in.expect(std::regex(std::string("SNSET/") + key + "," + kNum),
                                       (std::string("SNSET/") + key + ",value").c_str())[1],
@@ -118,6 +135,14 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
   program.approach = setting("APPRCH");
   program.retract = setting("RETRCT");
   program.search = setting("SEARCH");
+  const std::regex profile("T\\(PROFILE\\)=TOL/PROFP," + kNum + "," + kNum);
+  if (in.next_is(profile)) {
+    const std::vector<std::string> t = in.expect(profile, "T(PROFILE)=TOL/PROFP,lower,upper");
+    PointProfileTolerance zone{number(t[1], name, in.line()), number(t[2], name, in.line())};
+    if (zone.lower > 0 || zone.upper < 0 || !(zone.upper - zone.lower > 0))
+      fail(name, in.line(), "the profile zone must run from a limit <= 0 to one >= 0");
+    program.tolerance = zone;
+  }
   if (in.expect(std::regex(R"(DID\(RESULTS\)=DEVICE/STOR,'([A-Za-z0-9_-]+)\.dmo')"),
                 "DID(RESULTS)=DEVICE/STOR,'name.dmo'")[1] != program.name)
     fail(name, in.line(), "the results file is not named after the program");
@@ -128,7 +153,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
   const std::regex feature("F\\(" + kLabel + "\\)=FEAT/POINT,CART(,-?[0-9]+(\\.[0-9]+)?){6}");
   const std::regex meas("MEAS/POINT,F\\(" + kLabel + "\\),1");
   const std::regex ptmeas("PTMEAS/CART(,-?[0-9]+(\\.[0-9]+)?){6}");
-  const std::regex output("OUTPUT/FA\\(" + kLabel + "\\)");
+  const std::regex output("OUTPUT/FA\\(" + kLabel + "\\)" + (program.tolerance ? ",TA\\(PROFILE\\)" : ""));
   std::set<std::string> labels;
   std::vector<Eigen::Vector3d> moves;
   auto read_move = [&] {
@@ -154,7 +179,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     if (touch != point3(ff, 2, name, fs.line) || touch_ijk != point3(ff, 5, name, fs.line))
       fail(name, ps.line, "PTMEAS differs from the nominal of " + f->label);
     in.expect(std::regex("ENDMES"), "ENDMES");
-    if (in.expect(output, "OUTPUT/FA(label)")[1] != f->label)
+    if (in.expect(output, program.tolerance ? "OUTPUT/FA(LABEL),TA(PROFILE)" : "OUTPUT/FA(LABEL)")[1] != f->label)
       fail(name, in.line(), "OUTPUT refers to another feature than " + f->label);
     ProgramStep step;
     step.point.id = f->label;

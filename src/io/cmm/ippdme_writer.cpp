@@ -42,6 +42,8 @@ std::string ippdme_program_text(const ProbeProgram& program) {
   file.command("SetProp(Tool.PtMeasPar.Approach(" + fixed_number(program.approach, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Retract(" + fixed_number(program.retract, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Search(" + fixed_number(program.search, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.GoToPar.Speed(" + fixed_number(program.move_speed, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.PtMeasPar.Speed(" + fixed_number(program.measure_speed, kProgramDecimals) + "))");
   file.command("OnPtMeasReport(X(), Y(), Z(), IJK())");
   for (const ProgramStep& step : program.steps) {
     for (const Eigen::Vector3d& m : step.moves_before) file.command("GoTo(" + position(m) + ")");

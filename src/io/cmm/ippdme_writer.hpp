@@ -18,6 +18,7 @@
 //   ChangeTool("probe")
 //   SetProp(Tool.PtMeasPar.Approach(a)) SetProp(Tool.PtMeasPar.Retract(r))
 //   SetProp(Tool.PtMeasPar.Search(s))
+//   SetProp(Tool.GoToPar.Speed(v))      SetProp(Tool.PtMeasPar.Speed(v))   (mm/s)
 //   OnPtMeasReport(X(), Y(), Z(), IJK())
 //   per point: GoTo(X(x), Y(y), Z(z)) ...  PtMeas(X(x), Y(y), Z(z), IJK(i, j, k))
 //   GoTo(...) up to the clearance plane
@@ -25,7 +26,9 @@
 //
 // GoTo targets are ball-centre positions; PtMeas targets are nominal surface
 // points with the outward normal (the server compensates the probe radius).
-// Speeds are not set: the server keeps those the probe was qualified with.
+// Speeds are in mm/s, the spec's default units. The file carries no part
+// name, revision, date or tolerance: the command set has no comment and no
+// tolerance; the client keeps those (docs/cmm.md).
 #include <string>
 
 #include "io/cmm/probe_program.hpp"
