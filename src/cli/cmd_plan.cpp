@@ -77,6 +77,7 @@ int run_plan(Args& args) {
   o.probe_diameter = args.number_or("probe-diameter", o.probe_diameter);
   read_probe_motion_options(args, o);
   read_program_options(args, o);
+  read_datum_option(args, o);
   o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
   o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
@@ -151,6 +152,7 @@ const Command kPlanCommand = {
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
     "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
     "                   [--revision TEXT] [--program-date YYYY-MM-DD] [--head-length MM]\n"
+    "                   [--datums auto|FACE,FACE,FACE]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -191,7 +193,12 @@ const Command kPlanCommand = {
     "  --tolerance T        profile zone width in mm stated in plan.qif and, per\n"
     "                       point, in the DMIS program (TOL/PROFP) (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2)\n"
-    FURROW_PROGRAM_OPTIONS_HELP,
+    FURROW_PROGRAM_OPTIONS_HELP
+    "  --datums auto|A,B,C  part alignment measured first (docs/cmm.md \"Part\n"
+    "                       alignment\"): auto (default) proposes the largest plane\n"
+    "                       facing +z, the largest wall, the largest wall across it;\n"
+    "                       or three face names; a part without them gets a manual\n"
+    "                       best-fit alignment on three points\n",
     run_plan};
 
 }  // namespace furrow::cli

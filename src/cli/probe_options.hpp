@@ -18,6 +18,10 @@ void read_probe_motion_options(Args& args, PlannerOptions& o);
 // the same plan gives the same bytes on any day.
 void read_program_options(Args& args, PlannerOptions& o);
 
+// --datums auto|FACE,FACE,FACE into o.datums (furrow plan only: a
+// re-measuring plan runs on the first plan's alignment).
+void read_datum_option(Args& args, PlannerOptions& o);
+
 // The help lines of read_program_options, for the commands' usage texts
 // (a literal, because usage texts are literals).
 #define FURROW_PROGRAM_OPTIONS_HELP                                                   \

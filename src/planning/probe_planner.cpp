@@ -1,5 +1,7 @@
 #include "planning/probe_planner.hpp"
 
+#include "planning/alignment_moves.hpp"
+
 #include <sstream>
 #include <algorithm>
 #include <chrono>
@@ -416,6 +418,7 @@ ProbeProgram make_probe_program(const PlanResult& result, const std::string& nam
   for (std::size_t k = 0; k < result.plan.points.size(); ++k)
     program.steps.push_back({result.plan.points[k], result.moves[k].waypoints});
   program.final_moves = result.final_moves;
+  if (result.plan.alignment) add_alignment_moves(program, *result.plan.alignment, result.clearance_z, result.start);
   return program;
 }
 

@@ -38,6 +38,7 @@
 #include "partition/region_map.hpp"
 #include "planning/accessibility.hpp"
 #include "planning/allocation.hpp"
+#include "planning/datum_selection.hpp"
 #include "planning/moves.hpp"
 #include "planning/region_domain.hpp"
 #include "planning/risk_map.hpp"
@@ -76,6 +77,7 @@ struct PlannerOptions {
   AccessOptions access;            // distances and clearance_z are set from the options above
   std::string part_name;           // recorded in plan.json (informative)
   ProgramSettings program;         // header, head length, tolerance of the CMM programs
+  DatumChoice datums;              // part alignment (stage/plan_stage.hpp, datum_selection.hpp)
 };
 
 // Throws InputError naming the option for an invalid value.

@@ -23,6 +23,18 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
                      const std::string& prediction_name, const PlanProgress& progress) {
   PlanStage out;
   out.result = plan_probe_points(part, map, options, risk, progress);
+  // The alignment the programs measure first (docs/cmm.md "Part alignment").
+  {
+    const ClosestPointFinder finder(part);
+    AccessOptions access = options.access;
+    access.approach = out.result.approach;
+    access.retract = out.result.retract;
+    access.clearance_z = out.result.clearance_z;
+    DatumOptions datum_options;
+    datum_options.border = out.result.border;
+    out.result.plan.alignment =
+        choose_alignment(part, finder, out.result.probe, access, options.datums, datum_options);
+  }
   out.program = program;
   const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);

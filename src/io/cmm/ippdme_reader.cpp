@@ -121,6 +121,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
   Stage stage = Stage::start;
   int expected_tag = 1;
   long commands = 0;  // commands read so far, this one included
+  bool aligned = false;  // the alignment points are behind us
   std::size_t k = 0;
   std::vector<Eigen::Vector3d> moves;
   for (; k < lines.size() && lines[k].text != ":"; k += 2) {
@@ -147,6 +148,14 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
     } else if (cmd == "Home()") {
       require(Stage::home, "Home");
       stage = Stage::csy;
+    } else if (cmd == "SetCoordSystem(PartCsy)" && stage == Stage::body) {
+      // The end of the alignment: what was measured so far aligns the part.
+      if (aligned || program.steps.empty()) fail(name, n, "SetCoordSystem(PartCsy) again without alignment points before it");
+      aligned = true;
+      program.alignment_steps = std::move(program.steps);
+      program.steps.clear();
+      program.alignment_final_moves = std::move(moves);
+      moves.clear();
     } else if (cmd == "SetCoordSystem(PartCsy)") {
       require(Stage::csy, "SetCoordSystem");
       stage = Stage::tool;

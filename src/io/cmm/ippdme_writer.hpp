@@ -20,6 +20,12 @@
 //   SetProp(Tool.PtMeasPar.Search(s))
 //   SetProp(Tool.GoToPar.Speed(v))      SetProp(Tool.PtMeasPar.Speed(v))   (mm/s)
 //   OnPtMeasReport(X(), Y(), Z(), IJK())
+//   with an alignment: per alignment point GoTo ... PtMeas(...), GoTo(...)
+//     up and over to the first point, SetCoordSystem(PartCsy) again: a
+//     command file cannot compute a frame, so the client sets PartCsy from
+//     the alignment points' responses (SetCsyTransformation) at this
+//     command; a client that does not measures on the pre-alignment
+//     (docs/cmm.md "Part alignment")
 //   per point: GoTo(X(x), Y(y), Z(z)) ...  PtMeas(X(x), Y(y), Z(z), IJK(i, j, k))
 //   GoTo(...) up to the clearance plane
 //   EndSession()

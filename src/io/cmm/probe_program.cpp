@@ -117,7 +117,27 @@ void check_program(const ProbeProgram& program, const std::string& format) {
   positive(program.move_speed, "move speed");
   positive(program.measure_speed, "measuring speed");
   std::set<std::string> labels;
-  for (const ProgramStep& s : program.steps) {
+  if (program.alignment) {
+    const PartAlignment& a = *program.alignment;
+    if (program.alignment_steps.size() != a.points().size())
+      throw InputError(what + ": the alignment has " + std::to_string(a.points().size()) + " points but " +
+                       std::to_string(program.alignment_steps.size()) + " steps");
+    if (a.method == PartAlignment::Method::datums) {
+      if (a.datums.size() != 3) throw InputError(what + ": a 3-2-1 alignment needs 3 datums");
+      for (const DatumFeature& d : a.datums)
+        if (!is_label(d.label) || d.points.empty() || !(d.origin_axis == 'X' || d.origin_axis == 'Y' || d.origin_axis == 'Z'))
+          throw InputError(what + ": datum " + quote_field(d.label) + " cannot be written");
+      check_vector(a.origin, what + ": alignment origin");
+    }
+  } else if (!program.alignment_steps.empty()) {
+    throw InputError(what + ": alignment steps without an alignment");
+  }
+  std::vector<const ProgramStep*> all;
+  for (const ProgramStep& s : program.alignment_steps) all.push_back(&s);
+  for (const ProgramStep& s : program.steps) all.push_back(&s);
+  for (const Eigen::Vector3d& m : program.alignment_final_moves) check_vector(m, what + ": move after the alignment");
+  for (const ProgramStep* step : all) {
+    const ProgramStep& s = *step;
     if (!is_label(s.point.id))
       throw InputError(what + ": point id " + quote_field(s.point.id) + " is not a label (1-32 letters, digits or '_')");
     if (!labels.insert(dmis_label(s.point.id)).second)

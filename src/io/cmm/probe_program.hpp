@@ -81,6 +81,14 @@ struct ProbeProgram {
   double move_speed = 0;     // positioning [mm/s] (DMIS FEDRAT/POSVEL, I++ Tool.GoToPar.Speed)
   double measure_speed = 0;  // touch [mm/s] (DMIS FEDRAT/MESVEL, I++ Tool.PtMeasPar.Speed)
   std::optional<PointProfileTolerance> tolerance;  // DMIS only
+  // The part alignment measured before the steps (docs/cmm.md "Part
+  // alignment"): its features (DMIS only; the I++ DME reader cannot tell
+  // them apart and leaves it unset), every alignment point in measuring
+  // order with its moves, and the moves from the last one to the start of
+  // the steps (the clearance plane above the first approach point).
+  std::optional<PartAlignment> alignment;
+  std::vector<ProgramStep> alignment_steps;
+  std::vector<Eigen::Vector3d> alignment_final_moves;
   std::vector<ProgramStep> steps;
   std::vector<Eigen::Vector3d> final_moves;
 };
