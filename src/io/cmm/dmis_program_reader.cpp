@@ -215,6 +215,7 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
       }
       in.expect(std::regex("ENDMES"), "ENDMES");
     }
+    program.alignment_final_moves = read_moves(in);
     if (in.expect(std::regex("D\\(DATUMS\\)=(" + ds + ")"), "D(DATUMS)=DATSET/... as D(MANUAL)")[1] != datset_text)
       fail(name, in.line(), "D(DATUMS) differs from D(MANUAL)");
     const std::vector<std::string> t2 = in.expect(trans, "D(PART)=TRANS/XORIG,x,YORIG,y,ZORIG,z");
@@ -248,7 +249,6 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
   } else {
     return;  // no alignment
   }
-  program.alignment_final_moves = read_moves(in);
   program.alignment = std::move(a);
 }
 

@@ -66,7 +66,11 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
       line("ENDMES");
       line("OUTPUT/FA(" + label + ")");
     }
+    // No moves here: the operator leaves the probe above the clearance
+    // plane, and the tour starts from there as without an alignment (a
+    // GOTO here could not be told from the first point's moves).
     line("MODE/PROG,MAN");
+    return;
   } else {
     line("$$ Manual pre-alignment: touch the datum points by joystick when prompted; the program");
     line("$$ then measures the datums again under program control and sets the part frame.");
@@ -103,11 +107,13 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
       }
       line("ENDMES");
     }
+    // Up and over to the tour's start before the frame statements, which
+    // end the alignment for a reader.
+    for (const Eigen::Vector3d& m : program.alignment_final_moves) line("GOTO/" + xyz_text(m));
     line("D(DATUMS)=" + datset(a));
     line("D(PART)=" + trans(a));
     for (const DatumFeature& d : a.datums) line("OUTPUT/FA(DATUM_" + d.label + ")");
   }
-  for (const Eigen::Vector3d& m : program.alignment_final_moves) line("GOTO/" + xyz_text(m));
 }
 
 }  // namespace

@@ -14,6 +14,13 @@
 //   T(PROFILE)=TOL/PROFP,lower,upper          (with a tolerance)
 //   DID(RESULTS)=DEVICE/STOR,'name.dmo'  OPEN/DID(RESULTS),FDATA,DMIS,OUTPUT
 //   MODE/PROG,MAN
+//   the part alignment when the program has one (docs/cmm.md "Part
+//   alignment"): datum features, the manual pass (MODE/MAN, TEXT/MAN
+//   prompts, MEAS without PTMEAS), D(MANUAL)=DATSET, D(MANUAL_CAD)=TRANS,
+//   MODE/PROG,MAN, the programmed pass (MEAS with GOTO and PTMEAS), GOTOs up
+//   and over to the tour, D(DATUMS)=DATSET, D(PART)=TRANS, OUTPUT of the
+//   datums; or, for a free-form part, the manual points (MODE/MAN, a
+//   prompt, MEAS, OUTPUT each) and MODE/PROG,MAN
 //   per point, in execution order:
 //     GOTO/x,y,z ...                       (probe-centre moves, the last = approach point)
 //     F(id)=FEAT/POINT,CART,x,y,z,i,j,k    (nominal contact point, outward normal)

@@ -210,7 +210,13 @@ TEST_CASE("programs measure the datums first, and the strict readers give back t
   }
   CHECK((back.alignment->origin - a.origin).cwiseAbs().maxCoeff() <= 5e-7);
   REQUIRE(back.steps.size() == p.steps.size());
-  for (std::size_t k = 0; k < p.steps.size(); ++k) CHECK(back.steps[k].point.xyz == p.steps[k].point.xyz);
+  for (std::size_t k = 0; k < p.steps.size(); ++k) {
+    CHECK(back.steps[k].point.xyz == p.steps[k].point.xyz);
+    CHECK(back.steps[k].moves_before == p.steps[k].moves_before);  // the alignment's moves are its own
+  }
+  REQUIRE(back.alignment_final_moves.size() == p.alignment_final_moves.size());
+  for (std::size_t k = 0; k < p.alignment_final_moves.size(); ++k)
+    CHECK((back.alignment_final_moves[k] - p.alignment_final_moves[k]).cwiseAbs().maxCoeff() <= 5e-7);
 
   const std::string prg = ippdme_program_text(p);
   const std::size_t last_datum = prg.rfind("PtMeas", prg.find("SetCoordSystem(PartCsy)", prg.find("OnPtMeasReport")));
@@ -279,6 +285,8 @@ TEST_CASE("a part of one free-form face gets a manual best-fit alignment, docume
   REQUIRE(back.alignment_steps.size() == 3);
   for (std::size_t k = 0; k < 3; ++k)
     CHECK((back.alignment_steps[k].point.xyz - a.manual[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
+  REQUIRE(back.steps.size() == p.steps.size());
+  CHECK(back.steps[0].moves_before == p.steps[0].moves_before);
   const ProbeProgram ipp = parse_ippdme_program(ippdme_program_text(p), "mould.prg");
   CHECK(ipp.alignment_steps.size() == 3);
 }
