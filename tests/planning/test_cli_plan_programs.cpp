@@ -99,3 +99,44 @@ TEST_CASE("furrow plan: bad program options give one line and exit 2") {
     CHECK_FALSE(fs::exists(dir + "/out"));
   }
 }
+
+TEST_CASE("furrow plan: the mould (one free-form face) gets a manual alignment, in plan.json and both programs") {
+  const std::string dir = scratch_dir("cli-plan-alignment");
+  const std::string part = source_path("examples/parts/mould.json");
+  REQUIRE(run_furrow({"plan", part, "--regions", mould_regions_for_programs(), "--out", dir + "/m", "--points", "20"})
+              .status == 0);
+  const InspectionPlan plan = read_plan(dir + "/m/plan.json");
+  REQUIRE(plan.alignment.has_value());
+  CHECK(plan.alignment->method == PartAlignment::Method::free_form);
+  CHECK_FALSE(plan.alignment->reason.empty());
+  const std::vector<PlannedPoint> manual = plan.alignment->points();
+  REQUIRE(manual.size() == 3);
+  const ProbeProgram dmis = read_dmis_program(dir + "/m/m.dmi");
+  const ProbeProgram ipp = read_ippdme_program(dir + "/m/m.prg");
+  REQUIRE(dmis.alignment_steps.size() == 3);
+  REQUIRE(ipp.alignment_steps.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(dmis.alignment_steps[k].point.id == manual[k].id);
+    CHECK((dmis.alignment_steps[k].point.xyz - manual[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
+    CHECK((ipp.alignment_steps[k].point.xyz - manual[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
+    CHECK((ipp.alignment_steps[k].moves_before.back() - manual[k].approach).cwiseAbs().maxCoeff() <= 5e-7);
+  }
+  // The free-form points follow, unchanged by the alignment.
+  REQUIRE(dmis.steps.size() == plan.points.size());
+  REQUIRE(ipp.steps.size() == plan.points.size());
+  for (const PlannedPoint& p : plan.points) {
+    const std::size_t k = static_cast<std::size_t>(p.order) - 1;
+    CHECK((dmis.steps[k].point.xyz - p.xyz).cwiseAbs().maxCoeff() <= 5e-7);
+    CHECK((ipp.steps[k].point.xyz - p.xyz).cwiseAbs().maxCoeff() <= 5e-7);
+    CHECK((dmis.steps[k].moves_before.back() - p.approach).cwiseAbs().maxCoeff() <= 5e-7);
+  }
+  // Naming datums on a part without planes is refused, naming the face.
+  const CliResult named = run_furrow({"plan", part, "--regions", mould_regions_for_programs(), "--out", dir + "/n",
+                                      "--points", "20", "--datums", "mould,mould,mould"});
+  CHECK(named.status == 2);
+  CHECK(named.err.find("is not a plane") != std::string::npos);
+  const CliResult bad = run_furrow({"plan", part, "--regions", mould_regions_for_programs(), "--out", dir + "/n",
+                                    "--datums", "top"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--datums") != std::string::npos);
+}
