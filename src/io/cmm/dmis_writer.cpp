@@ -131,7 +131,10 @@ std::string dmis_program_text(const ProbeProgram& program) {
        fixed_number(program.probe.diameter, 4) + " mm, stylus length " + fixed_number(program.stylus_length, 3) +
        " mm, head to ball centre " + fixed_number(program.head_length, 3) + " mm");
   line("$$ Coordinates are the part's CAD frame: establish the part coordinate system");
-  line("$$ (alignment) before running, with the probe qualified and above the clearance plane.");
+  if (program.alignment)
+    line("$$ with the alignment this program begins with; start with the probe qualified and above the clearance plane.");
+  else
+    line("$$ (alignment) before running, with the probe qualified and above the clearance plane.");
   line("DMISMN/'" + program.name + "',05.2");
   line("FILNAM/'" + program.name + "',05.2");
   line("UNITS/MM,ANGDEC");
