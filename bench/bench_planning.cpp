@@ -75,7 +75,7 @@ void bench(const Part& part, const RegionMap& map, long points, const char* stra
               100 * (1 - kept.tour.length / kept.tour.nearest_neighbour_length));
   std::printf("cycle time estimate %.1f min\n", kept.cycle.seconds / 60);
   const auto t1 = std::chrono::steady_clock::now();
-  const ProbeProgram program = make_probe_program(kept, "bench", options.stylus_length);
+  const ProbeProgram program = make_probe_program(kept, "bench", options);
   const std::size_t bytes = dmis_program_text(program).size() + ippdme_program_text(program).size();
   const double texts = since(t1);
   const auto t2 = std::chrono::steady_clock::now();

@@ -95,6 +95,8 @@ int run_plan(Args& args) {
   o.probe_name = args.option_or("probe-name", o.probe_name);
   o.probe_diameter = args.number_or("probe-diameter", o.probe_diameter);
   read_probe_motion_options(args, o);
+  read_program_options(args, o);
+  read_datum_option(args, o);
   o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
   o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
@@ -106,6 +108,9 @@ int run_plan(Args& args) {
   const bool allow_uncovered = args.flag("allow-uncovered");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  const ToleranceZone zone = ToleranceZone::make(qif_tolerance, qif_outside.value_or(qif_tolerance / 2),
+                                                 "--tolerance/--outside");
+  o.program.tolerance = PointProfileTolerance{zone.lower(), zone.upper()};
   try {
     validate(o);
   } catch (const InputError& e) {
@@ -145,8 +150,6 @@ int run_plan(Args& args) {
 
   const std::string staging = outputs.folder(out);
   for (const FolderFile& f : stage.files) write_file_atomically(staging + "/" + f.path, f.bytes);
-  const ToleranceZone zone = ToleranceZone::make(qif_tolerance, qif_outside.value_or(qif_tolerance / 2),
-                                                 "--tolerance/--outside");
   write_file_atomically(staging + "/plan.qif", plan_to_qif(parse_plan(stage.plan_json, out + "/plan.json"),
                                                            part_path, zone.width, zone.outside));
   outputs.publish();
@@ -169,7 +172,8 @@ const Command kPlanCommand = {
     "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
     "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
-    "                   [--allow-uncovered]\n"
+    "                   [--revision TEXT] [--program-date YYYY-MM-DD] [--head-length MM]\n"
+    "                   [--datums auto|FACE,FACE,FACE] [--allow-uncovered]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -203,11 +207,19 @@ const Command kPlanCommand = {
     "  --clearance MM       ball-to-part clearance of straight moves; the clearance\n"
     "                       plane is this far above the part (default 2)\n"
     "  --max-tilt DEG       largest angle between normal and vertical (default 75)\n"
-    "  --move-speed, --touch-speed, --acceleration, --dwell   for the cycle time\n"
-    "                       estimate (defaults 50 mm/s, 4 mm/s, 500 mm/s^2, 0.2 s)\n"
+    "  --move-speed, --touch-speed  positioning and measuring speeds the programs set\n"
+    "                       (defaults 50 mm/s, 4 mm/s)\n"
+    "  --acceleration, --dwell  for the cycle time estimate (defaults 500 mm/s^2, 0.2 s)\n"
     "  --gouge-points N     points on each predicted gouge site (default 1)\n"
-    "  --tolerance T        profile zone width in mm stated in plan.qif (default 0.05)\n"
+    "  --tolerance T        profile zone width in mm stated in plan.qif and, per\n"
+    "                       point, in the DMIS program (TOL/PROFP) (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2)\n"
+    FURROW_PROGRAM_OPTIONS_HELP
+    "  --datums auto|A,B,C  part alignment measured first (docs/cmm.md \"Part\n"
+    "                       alignment\"): auto (default) proposes the largest plane\n"
+    "                       facing +z, the largest wall, the largest wall across it;\n"
+    "                       or three face names; a part without them gets a manual\n"
+    "                       best-fit alignment on three points\n"
     "  --allow-uncovered    exit 0 although some region holds fewer than\n"
     "                       --min-per-region points (they are still reported, and\n"
     "                       plan.json lists them so no verdict passes them unseen)\n"

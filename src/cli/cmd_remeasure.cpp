@@ -35,6 +35,9 @@ int run_remeasure(Args& args) {
   const auto probe_name = args.option("probe-name");
   if (probe_name) p.probe_name = *probe_name;
   read_probe_motion_options(args, p);
+  read_program_options(args, p);
+  p.motion.move_speed = args.number_or("move-speed", p.motion.move_speed);
+  p.motion.touch_speed = args.number_or("touch-speed", p.motion.touch_speed);
   const std::string comparison_path = args.positional("COMPARISON (comparison.json of furrow compare)");
   args.finish();
 
@@ -102,7 +105,7 @@ int run_remeasure(Args& args) {
   if (base.empty() || base == "." || base == "..")
     base = std::filesystem::path(out).lexically_normal().parent_path().filename().string();
   const std::string name = cmm_program_name(base, "furrow_remeasure");
-  const ProbeProgram program = make_probe_program(r.result, name, p.stylus_length);
+  const ProbeProgram program = make_probe_program(r.result, name, p);
   const std::string staging = outputs.folder(out);
   write_file_atomically(staging + "/plan.json", plan_to_json_text(planned));
   write_file_atomically(staging + "/plan.csv", plan_to_csv_text(planned));
@@ -123,6 +126,8 @@ const Command kRemeasureCommand = {
     "                        [--radius MM] [--ring N] [--probe-diameter MM] [--probe-name NAME]\n"
     "                        [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
     "                        [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
+    "                        [--move-speed MM/S] [--touch-speed MM/S] [--revision TEXT]\n"
+    "                        [--program-date YYYY-MM-DD] [--head-length MM]\n"
     "\n"
     "Reads the reasons of an INCONCLUSIVE comparison (furrow compare) and plans\n"
     "the points that answer them, in the part frame of the original plan:\n"
@@ -150,7 +155,10 @@ const Command kRemeasureCommand = {
     "                       comparison's)\n"
     "  --probe-name NAME    tool / sensor name (default: the plan's)\n"
     "  --stylus-length, --stylus-diameter, --approach, --retract, --search,\n"
-    "  --clearance, --max-tilt   as for furrow plan\n",
+    "  --clearance, --max-tilt   as for furrow plan\n"
+    "  --move-speed, --touch-speed  positioning and measuring speeds the programs\n"
+    "                       set (defaults 50 mm/s, 4 mm/s)\n"
+    FURROW_PROGRAM_OPTIONS_HELP,
     run_remeasure};
 
 }  // namespace furrow::cli

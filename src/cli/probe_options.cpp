@@ -1,5 +1,7 @@
 #include "cli/probe_options.hpp"
 
+#include "base/error.hpp"
+
 namespace furrow::cli {
 
 void read_probe_motion_options(Args& args, PlannerOptions& o) {
@@ -10,6 +12,22 @@ void read_probe_motion_options(Args& args, PlannerOptions& o) {
   o.search = args.number("search");
   o.clearance = args.number_or("clearance", o.clearance);
   o.max_tilt_degrees = args.number_or("max-tilt", o.max_tilt_degrees);
+}
+
+void read_program_options(Args& args, PlannerOptions& o) {
+  o.program.revision = args.option_or("revision", o.program.revision);
+  o.program.date = args.option_or("program-date", o.program.date);
+  if (const auto h = args.number("head-length")) o.program.head_length = *h;
+}
+
+void read_datum_option(Args& args, PlannerOptions& o) {
+  if (const auto d = args.option("datums")) {
+    try {
+      o.datums = parse_datum_choice(*d, "--datums");
+    } catch (const InputError& e) {
+      args.fail(e.what());
+    }
+  }
 }
 
 }  // namespace furrow::cli

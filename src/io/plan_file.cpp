@@ -95,6 +95,93 @@ UncoveredRegion parse_uncovered(const json& ju, const std::string& where) {
   return u;
 }
 
+char axis_letter(const json& j, const std::string& where, bool allow_none) {
+  const std::string a = jf::string(j, where);
+  if (a == "X" || a == "Y" || a == "Z") return a[0];
+  if (allow_none && a.empty()) return 0;
+  throw InputError(where + ": " + quote_field(a) + " is not an axis (\"X\", \"Y\" or \"Z\")");
+}
+
+std::vector<PlannedPoint> parse_points(const json& j, const std::string& where, double scale) {
+  std::vector<PlannedPoint> points;
+  const json& arr = jf::array(j, where);
+  for (std::size_t k = 0; k < arr.size(); ++k) points.push_back(parse_point(arr[k], jf::child(where, k), scale));
+  return points;
+}
+
+PartAlignment parse_alignment(const json& j, const std::string& where, double scale) {
+  jf::object(j, where);
+  PartAlignment a;
+  const std::string method = jf::string(jf::member(j, "method", where), jf::child(where, "method"));
+  if (method == "datums") a.method = PartAlignment::Method::datums;
+  else if (method == "free_form") a.method = PartAlignment::Method::free_form;
+  else throw InputError(jf::child(where, "method") + ": " + quote_field(method) + " is not \"datums\" or \"free_form\"");
+  if (const json* r = jf::optional_member(j, "reason", where)) a.reason = jf::string(*r, jf::child(where, "reason"));
+  if (a.method == PartAlignment::Method::datums) {
+    a.origin = scale * jf::vector3(jf::member(j, "origin", where), jf::child(where, "origin"));
+    const std::string dw = jf::child(where, "datums");
+    const json& jd = jf::array(jf::member(j, "datums", where), dw);
+    if (jd.size() != 3) throw InputError(dw + ": a 3-2-1 alignment needs 3 datums, got " + std::to_string(jd.size()));
+    for (std::size_t k = 0; k < jd.size(); ++k) {
+      const std::string w = jf::child(dw, k);
+      jf::object(jd[k], w);
+      auto field = [&](const char* key) -> const json& { return jf::member(jd[k], key, w); };
+      DatumFeature d;
+      d.label = jf::string(field("label"), jf::child(w, "label"));
+      const std::string kind = jf::string(field("kind"), jf::child(w, "kind"));
+      if (kind == "plane") d.kind = DatumFeature::Kind::plane;
+      else if (kind == "line") d.kind = DatumFeature::Kind::line;
+      else if (kind == "point") d.kind = DatumFeature::Kind::point;
+      else throw InputError(jf::child(w, "kind") + ": " + quote_field(kind) + " is not plane, line or point");
+      d.face = jf::string(field("face"), jf::child(w, "face"));
+      const int fi = jf::integer(field("face_index"), jf::child(w, "face_index"));
+      if (fi < 0) throw InputError(jf::child(w, "face_index") + ": must not be negative");
+      d.face_index = static_cast<std::size_t>(fi);
+      d.origin = scale * jf::vector3(field("origin"), jf::child(w, "origin"));
+      d.direction = unit(jf::vector3(field("direction"), jf::child(w, "direction")), jf::child(w, "direction"));
+      d.normal = unit(jf::vector3(field("normal"), jf::child(w, "normal")), jf::child(w, "normal"));
+      d.axis = axis_letter(field("axis"), jf::child(w, "axis"), true);
+      d.origin_axis = axis_letter(field("origin_axis"), jf::child(w, "origin_axis"), false);
+      d.points = parse_points(field("points"), jf::child(w, "points"), scale);
+      const std::size_t need = d.kind == DatumFeature::Kind::plane ? 3 : d.kind == DatumFeature::Kind::line ? 2 : 1;
+      if (d.points.size() < need)
+        throw InputError(jf::child(w, "points") + ": a " + kind + " needs at least " + std::to_string(need) + " points");
+      a.datums.push_back(std::move(d));
+    }
+  } else {
+    a.manual = parse_points(jf::member(j, "manual", where), jf::child(where, "manual"), scale);
+    if (a.manual.size() < 3) throw InputError(jf::child(where, "manual") + ": at least 3 points are needed");
+  }
+  return a;
+}
+
+json points_json(const std::vector<PlannedPoint>& points);
+
+json alignment_json(const PartAlignment& a) {
+  json j;
+  j["method"] = to_string(a.method);
+  j["reason"] = a.reason;
+  if (a.method == PartAlignment::Method::datums) {
+    j["origin"] = jf::vector_json(a.origin);
+    json datums = json::array();
+    for (const DatumFeature& d : a.datums)
+      datums.push_back({{"label", d.label},
+                        {"kind", to_string(d.kind)},
+                        {"face", d.face},
+                        {"face_index", d.face_index},
+                        {"origin", jf::vector_json(d.origin)},
+                        {"direction", jf::vector_json(d.direction)},
+                        {"normal", jf::vector_json(d.normal)},
+                        {"axis", d.axis ? std::string(1, d.axis) : std::string()},
+                        {"origin_axis", std::string(1, d.origin_axis)},
+                        {"points", points_json(d.points)}});
+    j["datums"] = std::move(datums);
+  } else {
+    j["manual"] = points_json(a.manual);
+  }
+  return j;
+}
+
 }  // namespace
 
 InspectionPlan parse_plan(const std::string& text, const std::string& name) {
@@ -149,6 +236,13 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
     for (std::size_t k = 0; k < list.size(); ++k)
       plan.uncovered_regions.push_back(parse_uncovered(list[k], jf::child(where, k)));
   }
+  if (const json* ja = jf::optional_member(doc, "alignment", root)) {
+    const std::string where = jf::child(root, "alignment");
+    plan.alignment = parse_alignment(*ja, where, scale);
+    for (const PlannedPoint& p : plan.alignment->points())
+      if (const auto [it, fresh] = ids.emplace(p.id, 0); !fresh)
+        throw InputError(where + ": duplicate id " + quote_field(p.id) + " (ids are unique over points and alignment)");
+  }
   return plan;
 }
 
@@ -161,8 +255,26 @@ std::string plan_to_json_text(const InspectionPlan& plan) {
   if (!plan.part.empty()) doc["part"] = plan.part;
   doc["probe"] = {{"name", plan.probe.name},
                   {"diameter", jf::finite(plan.probe.diameter, "probe diameter")}};
+  doc["points"] = points_json(plan.points);
+  if (plan.alignment) doc["alignment"] = alignment_json(*plan.alignment);
+  if (!plan.uncovered_regions.empty()) {
+    json list = json::array();
+    for (const UncoveredRegion& u : plan.uncovered_regions)
+      list.push_back({{"region", u.region},
+                      {"face_index", u.face_index},
+                      {"planned", u.planned},
+                      {"required", u.required},
+                      {"reason", u.reason}});
+    doc["uncovered_regions"] = std::move(list);
+  }
+  return jf::to_text(doc);
+}
+
+namespace {
+
+json points_json(const std::vector<PlannedPoint>& list) {
   json points = json::array();
-  for (const PlannedPoint& p : plan.points) {
+  for (const PlannedPoint& p : list) {
     json jp;
     jp["id"] = p.id;
     jp["order"] = p.order;
@@ -177,19 +289,10 @@ std::string plan_to_json_text(const InspectionPlan& plan) {
     jp["retract"] = jf::vector_json(p.retract);
     points.push_back(std::move(jp));
   }
-  doc["points"] = std::move(points);
-  if (!plan.uncovered_regions.empty()) {
-    json list = json::array();
-    for (const UncoveredRegion& u : plan.uncovered_regions)
-      list.push_back({{"region", u.region},
-                      {"face_index", u.face_index},
-                      {"planned", u.planned},
-                      {"required", u.required},
-                      {"reason", u.reason}});
-    doc["uncovered_regions"] = std::move(list);
-  }
-  return jf::to_text(doc);
+  return points;
 }
+
+}  // namespace
 
 void write_plan(const InspectionPlan& plan, const std::string& path) {
   write_file_atomically(path, plan_to_json_text(plan));
@@ -197,9 +300,13 @@ void write_plan(const InspectionPlan& plan, const std::string& path) {
 
 void check_plan_against_part(const InspectionPlan& plan, const Part& part, const std::string& name,
                              double tolerance) {
-  for (std::size_t k = 0; k < plan.points.size(); ++k) {
-    const PlannedPoint& p = plan.points[k];
-    const std::string where = name + ": points[" + std::to_string(k) + "] (id " + p.id + ")";
+  std::vector<PlannedPoint> all = plan.points;
+  if (plan.alignment)
+    for (const PlannedPoint& p : plan.alignment->points()) all.push_back(p);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const PlannedPoint& p = all[k];
+    const std::string where = name + ": " + (k < plan.points.size() ? "points[" + std::to_string(k) + "]" : std::string("alignment point")) +
+                              " (id " + p.id + ")";
     if (p.face_index >= part.faces.size())
       throw InputError(where + ": face_index " + std::to_string(p.face_index) +
                        " but the part has " + std::to_string(part.faces.size()) + " faces");

@@ -24,30 +24,10 @@
 #include <vector>
 
 #include "geometry/part.hpp"
+#include "io/plan_alignment.hpp"
+#include "io/plan_point.hpp"
 
 namespace furrow {
-
-struct ProbeDefinition {
-  std::string name;     // free text ("TESASTAR 2 mm ruby")
-  double diameter = 0;  // ball diameter [mm], > 0
-  double radius() const { return diameter / 2; }
-};
-
-struct PlannedPoint {
-  std::string id;    // unique, non-empty, no ',' or white space (also a DMIS label)
-  int order = 0;     // execution order, unique, >= 1
-  std::string face;  // Face::name() of the face it lies on
-  std::size_t face_index = 0;
-  std::optional<int> region;  // region index in the partition, if the plan has regions
-  Eigen::Vector2d uv = Eigen::Vector2d::Zero();
-  Eigen::Vector3d xyz = Eigen::Vector3d::Zero();       // nominal contact point [mm]
-  Eigen::Vector3d ijk = Eigen::Vector3d::UnitZ();      // unit normal, out of the material
-  Eigen::Vector3d approach = Eigen::Vector3d::Zero();  // probe centre where the touch starts [mm]
-  Eigen::Vector3d retract = Eigen::Vector3d::Zero();   // probe centre after the touch [mm]
-
-  // Nominal probe-ball centre at contact: xyz + r ijk.
-  Eigen::Vector3d centre(double probe_radius) const { return xyz + probe_radius * ijk; }
-};
 
 // A region of the partition the planner could not give its minimum number
 // of points (docs/cmm.md "Coverage"). Kept in the plan so that a comparison
@@ -65,6 +45,10 @@ struct InspectionPlan {
   ProbeDefinition probe;
   std::vector<PlannedPoint> points;
   std::vector<UncoveredRegion> uncovered_regions;  // optional in plan.json
+  // How the part is aligned before the points are measured; absent in plans
+  // of older versions and in re-measuring plans (run on the first one's
+  // alignment).
+  std::optional<PartAlignment> alignment;
 
   // Index of the point with that id, or nullopt (linear search).
   std::optional<std::size_t> find(const std::string& id) const;

@@ -218,6 +218,12 @@ void read_plan(Section p, Job& job) {
   p.positive("acceleration", o.motion.acceleration);
   p.non_negative("dwell", o.motion.dwell);
   p.integer("gouge_points", o.gouge_points, 1);
+  if (const auto r = p.string("revision")) o.program.revision = *r;
+  if (const auto d = p.string("program_date")) o.program.date = *d;
+  if (const auto d = p.string("datums")) o.datums = parse_datum_choice(*d, p.at("datums"));
+  std::optional<double> head_length;
+  p.optional_positive("head_length", head_length);
+  o.program.head_length = head_length;
   p.finish();
   with_context(p.where(), [&] { validate(o); });
   if (needs_risk(o.strategy) && !job.plan_with_prediction)

@@ -71,7 +71,11 @@ std::string job_options_json(const Job& job) {
                {"touch_speed", jf::finite(o.motion.touch_speed, "touch speed")},
                {"acceleration", jf::finite(o.motion.acceleration, "acceleration")},
                {"dwell", jf::finite(o.motion.dwell, "dwell")},
-               {"gouge_points", o.gouge_points}};
+               {"gouge_points", o.gouge_points},
+               {"revision", o.program.revision},
+               {"datums", to_string(o.datums)},
+               {"program_date", o.program.date.empty() ? json(nullptr) : json(o.program.date)},
+               {"head_length", jf::finite(o.program.head_length.value_or(o.stylus_length), "head length")}};
   if (job.simulate) {
     const SimulationOptions& s = job.simulate->options;
     json bumps = json::array();

@@ -130,6 +130,8 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   const Job& job = s.job;
   PlannerOptions o = job.plan;
   o.part_name = s.part_name;
+  // The programs state the job's profile zone per point (TOL/PROFP).
+  o.program.tolerance = PointProfileTolerance{job.compare.tolerance.lower(), job.compare.tolerance.upper()};
   std::optional<PredictionRiskMap> risk;
   if (job.plan_with_prediction) risk.emplace(prediction, part, "prediction.json", s.part_name);
   PlanStage stage = plan_stage(part, map, o, risk ? &*risk : nullptr, cmm_program_name(job.name, "furrow_job"),

@@ -71,6 +71,7 @@ void validate(const PlannerOptions& o) {
   positive(o.motion.acceleration, "--acceleration (mm/s^2)");
   non_negative(o.motion.dwell, "--dwell (s)");
   if (o.gouge_points < 1) throw InputError("--gouge-points must be at least 1");
+  validate(o.program, o.stylus_length);
   for (unsigned char c : o.probe_name)
     if (!std::isalnum(c) && c != '_') throw InputError("--probe-name " + quote_field(o.probe_name) + ": use letters, digits and '_' only");
   if (o.probe_name.empty() || o.probe_name.size() > 32) throw InputError("--probe-name must have 1 to 32 characters");

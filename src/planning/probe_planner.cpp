@@ -1,5 +1,7 @@
 #include "planning/probe_planner.hpp"
 
+#include "planning/alignment_moves.hpp"
+
 #include <sstream>
 #include <algorithm>
 #include <chrono>
@@ -398,18 +400,25 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   return result;
 }
 
-ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, double stylus_length) {
+ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options) {
   ProbeProgram program;
   program.name = name;
   program.part = result.plan.part;
+  program.revision = options.program.revision;
+  program.date = options.program.date;
   program.probe = result.plan.probe;
-  program.stylus_length = stylus_length;
+  program.stylus_length = options.stylus_length;
+  program.head_length = options.program.head_length.value_or(options.stylus_length);
+  program.move_speed = options.motion.move_speed;
+  program.measure_speed = options.motion.touch_speed;
+  program.tolerance = options.program.tolerance;
   program.approach = result.approach;
   program.retract = result.retract;
   program.search = result.search;
   for (std::size_t k = 0; k < result.plan.points.size(); ++k)
     program.steps.push_back({result.plan.points[k], result.moves[k].waypoints});
   program.final_moves = result.final_moves;
+  if (result.plan.alignment) add_alignment_moves(program, *result.plan.alignment, result.clearance_z, result.start);
   return program;
 }
 

@@ -38,6 +38,7 @@
 #include "partition/region_map.hpp"
 #include "planning/accessibility.hpp"
 #include "planning/allocation.hpp"
+#include "planning/datum_selection.hpp"
 #include "planning/moves.hpp"
 #include "planning/region_domain.hpp"
 #include "planning/risk_map.hpp"
@@ -75,6 +76,8 @@ struct PlannerOptions {
   RegionDomainOptions domain;      // `border` is set from the option above
   AccessOptions access;            // distances and clearance_z are set from the options above
   std::string part_name;           // recorded in plan.json (informative)
+  ProgramSettings program;         // header, head length, tolerance of the CMM programs
+  DatumChoice datums;              // part alignment (stage/plan_stage.hpp, datum_selection.hpp)
 };
 
 // Throws InputError naming the option for an invalid value.
@@ -148,7 +151,9 @@ using PlanProgress = std::function<void(const char* stage, std::size_t done, std
 PlanResult plan_probe_points(const Part& part, const RegionMap& map, const PlannerOptions& options,
                              const RiskMap* risk = nullptr, const PlanProgress& progress = {});
 
-// The measuring program of a plan (DMIS / I++ DME writers).
-ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, double stylus_length);
+// The measuring program of a plan (DMIS / I++ DME writers): the options give
+// the stylus and head lengths, the speeds (motion.move_speed, touch_speed)
+// and the header and tolerance (options.program).
+ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options);
 
 }  // namespace furrow

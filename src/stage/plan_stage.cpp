@@ -27,8 +27,20 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   for (const RegionCoverage& r : out.coverage.uncovered())
     out.result.plan.uncovered_regions.push_back(
         {r.region, static_cast<std::size_t>(r.face), r.planned, r.required, r.reason});
+  // The alignment the programs measure first (docs/cmm.md "Part alignment").
+  {
+    const ClosestPointFinder finder(part);
+    AccessOptions access = options.access;
+    access.approach = out.result.approach;
+    access.retract = out.result.retract;
+    access.clearance_z = out.result.clearance_z;
+    DatumOptions datum_options;
+    datum_options.border = out.result.border;
+    out.result.plan.alignment =
+        choose_alignment(part, finder, out.result.probe, access, options.datums, datum_options);
+  }
   out.program = program;
-  const ProbeProgram cmm = make_probe_program(out.result, program, options.stylus_length);
+  const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);
   const std::vector<unsigned char> png = plan_image_png(part, map, out.result);
   out.files = {

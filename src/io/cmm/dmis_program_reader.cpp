@@ -85,7 +85,172 @@ class Cursor {
 };
 
 const std::string kNum = R"((-?[0-9]+(?:\.[0-9]+)?))";
-const std::string kLabel = R"(([A-Za-z0-9_]+))";
+// Labels as the writer spells them: upper case (dmis_label).
+const std::string kLabel = R"(([A-Z0-9_]+))";
+
+const std::regex kGoTo("GOTO/" + kNum + "," + kNum + "," + kNum);
+const std::regex kText("TEXT/MAN,'[^']*'");
+
+Eigen::Vector3d vec(const std::vector<std::string>& m, std::size_t first, const std::string& name, int line) {
+  return {number(m[first], name, line), number(m[first + 1], name, line), number(m[first + 2], name, line)};
+}
+
+std::vector<Eigen::Vector3d> read_moves(Cursor& in) {
+  std::vector<Eigen::Vector3d> moves;
+  while (in.next_is(kGoTo)) {
+    const std::vector<std::string> m = in.expect(kGoTo, "GOTO/x,y,z");
+    moves.push_back(vec(m, 1, in.name(), in.line()));
+  }
+  return moves;
+}
+
+const char* meas_word(DatumFeature::Kind k) {
+  return k == DatumFeature::Kind::plane ? "PLANE" : k == DatumFeature::Kind::line ? "LINE" : "POINT";
+}
+
+// The 3-2-1 alignment or the manual points (dmis_writer.hpp); checks that
+// the DCC pass measures what the features and the manual pass name.
+void read_alignment(Cursor& in, ProbeProgram& program) {
+  const std::string& name = in.name();
+  const std::string n6 = "," + kNum + "," + kNum + "," + kNum + "," + kNum + "," + kNum + "," + kNum;
+  const std::regex plane("F\\(DATUM_" + kLabel + "\\)=FEAT/PLANE,CART" + n6);
+  const std::regex line("F\\(DATUM_" + kLabel + "\\)=FEAT/LINE,BND,CART" + n6 + "," + kNum + "," + kNum + "," + kNum);
+  const std::regex point("F\\(DATUM_" + kLabel + "\\)=FEAT/POINT,CART" + n6);
+  const std::regex manual_point("F\\(" + kLabel + "\\)=FEAT/POINT,CART" + n6);
+  PartAlignment a;
+  if (in.next_is(plane)) {
+    a.method = PartAlignment::Method::datums;
+    for (int k = 0; k < 3; ++k) {
+      DatumFeature d;
+      std::vector<std::string> m;
+      if (in.next_is(plane)) {
+        m = in.expect(plane, "a datum plane");
+        d.kind = DatumFeature::Kind::plane;
+        d.origin = vec(m, 2, name, in.line());
+        d.direction = vec(m, 5, name, in.line());
+        d.normal = d.direction;
+      } else if (in.next_is(line)) {
+        m = in.expect(line, "a datum line");
+        d.kind = DatumFeature::Kind::line;
+        d.origin = vec(m, 2, name, in.line());
+        Eigen::Vector3d t = vec(m, 5, name, in.line()) - d.origin;
+        t.z() = 0;
+        if (!(t.norm() > 0)) fail(name, in.line(), "a datum line needs two points apart horizontally");
+        d.direction = t.normalized();
+        d.normal = vec(m, 8, name, in.line());
+      } else {
+        m = in.expect(point, "F(DATUM_LABEL)=FEAT/PLANE|LINE|POINT,...");
+        d.kind = DatumFeature::Kind::point;
+        d.origin = vec(m, 2, name, in.line());
+        d.direction = vec(m, 5, name, in.line());
+        d.normal = d.direction;
+      }
+      if (!(d.normal.norm() > 0)) fail(name, in.line(), "a datum direction has zero length");
+      d.normal.normalize();
+      d.direction.normalize();
+      d.label = m[1];
+      for (const DatumFeature& e : a.datums)
+        if (e.label == d.label) fail(name, in.line(), "datum " + d.label + " is defined twice");
+      a.datums.push_back(std::move(d));
+    }
+    in.expect(std::regex("MODE/MAN"), "MODE/MAN");
+    std::vector<int> counts;
+    for (const DatumFeature& d : a.datums) {
+      in.expect(kText, "TEXT/MAN,'prompt'");
+      const std::vector<std::string> m = in.expect(
+          std::regex(std::string("MEAS/") + meas_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
+          "MEAS/kind,F(DATUM_label),n of the datum defined in that place");
+      counts.push_back(std::stoi(m[1]));
+      const int need = d.kind == DatumFeature::Kind::plane ? 3 : d.kind == DatumFeature::Kind::line ? 2 : 1;
+      if (counts.back() < need || counts.back() > 1000) fail(name, in.line(), "too few or too many points for datum " + d.label);
+      in.expect(std::regex("ENDMES"), "ENDMES");
+    }
+    // DATSET: every datum in order, with the axis it directs and the origin it sets.
+    std::string ds = "DATSET";
+    char sep = '/';
+    for (const DatumFeature& d : a.datums) {
+      ds += sep + std::string("FA\\(DATUM_") + d.label + "\\)(,[XYZ]DIR)?,[XYZ]ORIG";
+      sep = ',';
+    }
+    const std::regex datset_manual("D\\(MANUAL\\)=(" + ds + ")");
+    const std::regex trans("D\\((MANUAL_CAD|PART)\\)=TRANS/XORIG," + kNum + ",YORIG," + kNum + ",ZORIG," + kNum);
+    const std::string datset_text = in.expect(datset_manual, "D(MANUAL)=DATSET/FA(DATUM_A),...")[1];
+    {
+      // Axes: from the DATSET text, one datum after the other.
+      std::size_t at = 0;
+      for (DatumFeature& d : a.datums) {
+        at = datset_text.find("FA(DATUM_" + d.label + ")", at);
+        const std::size_t end = datset_text.find("ORIG", at);
+        const std::string part = datset_text.substr(at, end - at);
+        d.origin_axis = datset_text[end - 1];
+        const std::size_t dir = part.find("DIR");
+        d.axis = dir == std::string::npos ? 0 : part[dir - 1];
+        at = end;
+      }
+    }
+    const std::vector<std::string> t = in.expect(trans, "D(MANUAL_CAD)=TRANS/XORIG,x,YORIG,y,ZORIG,z");
+    if (t[1] != "MANUAL_CAD") fail(name, in.line(), "expected D(MANUAL_CAD)=TRANS/...");
+    a.origin = -vec(t, 2, name, in.line());
+    in.expect(std::regex("MODE/PROG,MAN"), "MODE/PROG,MAN");
+    const std::regex ptmeas("PTMEAS/CART" + n6);
+    int order = 0;
+    for (std::size_t k = 0; k < a.datums.size(); ++k) {
+      DatumFeature& d = a.datums[k];
+      const std::vector<std::string> m = in.expect(
+          std::regex(std::string("MEAS/") + meas_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
+          "MEAS/kind,F(DATUM_label),n as in the manual pass");
+      if (std::stoi(m[1]) != counts[k]) fail(name, in.line(), "datum " + d.label + " has another point count than in the manual pass");
+      for (int n = 1; n <= counts[k]; ++n) {
+        ProgramStep step;
+        step.moves_before = read_moves(in);
+        const std::vector<std::string> p = in.expect(ptmeas, "PTMEAS/CART,x,y,z,i,j,k");
+        step.point.id = "D" + d.label + std::to_string(n);
+        step.point.order = ++order;
+        step.point.xyz = vec(p, 1, name, in.line());
+        step.point.ijk = vec(p, 4, name, in.line());
+        if (!(step.point.ijk.norm() > 0)) fail(name, in.line(), "PTMEAS direction has zero length");
+        step.point.ijk.normalize();
+        d.points.push_back(step.point);
+        program.alignment_steps.push_back(std::move(step));
+      }
+      in.expect(std::regex("ENDMES"), "ENDMES");
+    }
+    program.alignment_final_moves = read_moves(in);
+    if (in.expect(std::regex("D\\(DATUMS\\)=(" + ds + ")"), "D(DATUMS)=DATSET/... as D(MANUAL)")[1] != datset_text)
+      fail(name, in.line(), "D(DATUMS) differs from D(MANUAL)");
+    const std::vector<std::string> t2 = in.expect(trans, "D(PART)=TRANS/XORIG,x,YORIG,y,ZORIG,z");
+    if (t2[1] != "PART" || t2[2] != t[2] || t2[3] != t[3] || t2[4] != t[4])
+      fail(name, in.line(), "D(PART)=TRANS differs from D(MANUAL_CAD)");
+    for (const DatumFeature& d : a.datums)
+      in.expect(std::regex("OUTPUT/FA\\(DATUM_" + d.label + "\\)"), "OUTPUT/FA(DATUM_label) of every datum in order");
+  } else if (in.next_is(std::regex("MODE/MAN"))) {
+    a.method = PartAlignment::Method::free_form;
+    in.expect(std::regex("MODE/MAN"), "MODE/MAN");
+    while (in.next_is(manual_point)) {
+      const std::vector<std::string> m = in.expect(manual_point, "F(label)=FEAT/POINT,CART,...");
+      ProgramStep step;
+      step.point.id = m[1];
+      step.point.order = static_cast<int>(a.manual.size()) + 1;
+      step.point.xyz = vec(m, 2, name, in.line());
+      step.point.ijk = vec(m, 5, name, in.line());
+      if (!(step.point.ijk.norm() > 0)) fail(name, in.line(), "a direction has zero length");
+      step.point.ijk.normalize();
+      in.expect(kText, "TEXT/MAN,'prompt'");
+      if (in.expect(std::regex("MEAS/POINT,F\\(" + kLabel + "\\),1"), "MEAS/POINT,F(label),1")[1] != m[1])
+        fail(name, in.line(), "MEAS refers to another feature than " + m[1]);
+      in.expect(std::regex("ENDMES"), "ENDMES");
+      if (in.expect(std::regex("OUTPUT/FA\\(" + kLabel + "\\)"), "OUTPUT/FA(label)")[1] != m[1])
+        fail(name, in.line(), "OUTPUT refers to another feature than " + m[1]);
+      a.manual.push_back(step.point);
+      program.alignment_steps.push_back(std::move(step));
+    }
+    if (a.manual.size() < 3) fail(name, in.line(), "a manual alignment needs at least 3 points");
+    in.expect(std::regex("MODE/PROG,MAN"), "MODE/PROG,MAN");
+  } else {
+    return;  // no alignment
+  }
+  program.alignment = std::move(a);
+}
 
 }  // namespace
 
@@ -97,17 +262,33 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
   const std::vector<std::string> filnam = in.expect(std::regex(R"(FILNAM/'([A-Za-z0-9_-]+)',05\.2)"), "FILNAM/'name',05.2");
   if (filnam[1] != program.name) fail(name, in.line(), "FILNAM differs from DMISMN");
   in.expect(std::regex("UNITS/MM,ANGDEC"), "UNITS/MM,ANGDEC");
+  const std::regex part_id("PN\\(PART\\)=PARTID/'([ -&(-~]*)'");
+  const std::regex part_revision("PR\\(REV\\)=PARTRV/'([ -&(-~]*)'");
+  if (in.next_is(part_id)) program.part = in.expect(part_id, "PN(PART)=PARTID/'part'")[1];
+  if (in.next_is(part_revision)) program.revision = in.expect(part_revision, "PR(REV)=PARTRV/'revision'")[1];
+  if (in.expect(std::regex("PL\\(PROGRAM\\)=PLANID/'([A-Za-z0-9_-]+)'"), "PL(PROGRAM)=PLANID/'name'")[1] !=
+      program.name)
+    fail(name, in.line(), "PLANID differs from DMISMN");
   in.expect(std::regex("PRCOMP/ON"), "PRCOMP/ON");
   const std::vector<std::string> sensor = in.expect(
       std::regex("S\\(" + kLabel + "\\)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + kNum + "," + kNum),
-      "S(label)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,length,diameter");
+      "S(LABEL)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,head_length,diameter");
   program.probe.name = sensor[1];
-  program.stylus_length = number(sensor[2], name, in.line());
+  program.head_length = number(sensor[2], name, in.line());
   program.probe.diameter = number(sensor[3], name, in.line());
-  if (!(program.probe.diameter > 0) || !(program.stylus_length > 0))
-    fail(name, in.line(), "stylus length and ball diameter must be positive");
+  if (!(program.probe.diameter > 0) || !(program.head_length > 0))
+    fail(name, in.line(), "head-to-ball length and ball diameter must be positive");
   if (in.expect(std::regex("SNSLCT/S\\(" + kLabel + "\\)"), "SNSLCT/S(label)")[1] != program.probe.name)
     fail(name, in.line(), "SNSLCT selects a sensor that was not defined");
+  auto speed = [&](const char* key) {
+    const double v = number(in.expect(std::regex(std::string("FEDRAT/") + key + ",MMPS," + kNum),
+                                      (std::string("FEDRAT/") + key + ",MMPS,value").c_str())[1],
+                            name, in.line());
+    if (!(v > 0)) fail(name, in.line(), std::string(key) + " must be positive");
+    return v;
+  };
+  program.move_speed = speed("POSVEL");
+  program.measure_speed = speed("MESVEL");
   auto setting = [&](const char* key) {
     const double v = number(in.expect(std::regex(std::string("SNSET/") + key + "," + kNum),
                                       (std::string("SNSET/") + key + ",value").c_str())[1],
@@ -118,17 +299,26 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
   program.approach = setting("APPRCH");
   program.retract = setting("RETRCT");
   program.search = setting("SEARCH");
+  const std::regex profile("T\\(PROFILE\\)=TOL/PROFP," + kNum + "," + kNum);
+  if (in.next_is(profile)) {
+    const std::vector<std::string> t = in.expect(profile, "T(PROFILE)=TOL/PROFP,lower,upper");
+    PointProfileTolerance zone{number(t[1], name, in.line()), number(t[2], name, in.line())};
+    if (zone.lower > 0 || zone.upper < 0 || !(zone.upper - zone.lower > 0))
+      fail(name, in.line(), "the profile zone must run from a limit <= 0 to one >= 0");
+    program.tolerance = zone;
+  }
   if (in.expect(std::regex(R"(DID\(RESULTS\)=DEVICE/STOR,'([A-Za-z0-9_-]+)\.dmo')"),
                 "DID(RESULTS)=DEVICE/STOR,'name.dmo'")[1] != program.name)
     fail(name, in.line(), "the results file is not named after the program");
   in.expect(std::regex("OPEN/DID\\(RESULTS\\),FDATA,DMIS,OUTPUT"), "OPEN/DID(RESULTS),FDATA,DMIS,OUTPUT");
   in.expect(std::regex("MODE/PROG,MAN"), "MODE/PROG,MAN");
+  read_alignment(in, program);
 
   const std::regex go_to("GOTO/" + kNum + "," + kNum + "," + kNum);
   const std::regex feature("F\\(" + kLabel + "\\)=FEAT/POINT,CART(,-?[0-9]+(\\.[0-9]+)?){6}");
   const std::regex meas("MEAS/POINT,F\\(" + kLabel + "\\),1");
   const std::regex ptmeas("PTMEAS/CART(,-?[0-9]+(\\.[0-9]+)?){6}");
-  const std::regex output("OUTPUT/FA\\(" + kLabel + "\\)");
+  const std::regex output("OUTPUT/FA\\(" + kLabel + "\\)" + (program.tolerance ? ",TA\\(PROFILE\\)" : ""));
   std::set<std::string> labels;
   std::vector<Eigen::Vector3d> moves;
   auto read_move = [&] {
@@ -154,7 +344,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     if (touch != point3(ff, 2, name, fs.line) || touch_ijk != point3(ff, 5, name, fs.line))
       fail(name, ps.line, "PTMEAS differs from the nominal of " + f->label);
     in.expect(std::regex("ENDMES"), "ENDMES");
-    if (in.expect(output, "OUTPUT/FA(label)")[1] != f->label)
+    if (in.expect(output, program.tolerance ? "OUTPUT/FA(LABEL),TA(PROFILE)" : "OUTPUT/FA(LABEL)")[1] != f->label)
       fail(name, in.line(), "OUTPUT refers to another feature than " + f->label);
     ProgramStep step;
     step.point.id = f->label;

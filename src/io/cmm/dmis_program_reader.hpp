@@ -9,7 +9,9 @@
 // Checked besides the syntax: DMISMN first and ENDFIL last; UNITS/MM; the
 // sensor selected is the one defined; every MEAS refers to the feature
 // defined just before it and holds exactly one PTMEAS equal to the nominal;
-// every feature is measured and output exactly once; labels are unique.
+// every feature is measured and output exactly once; labels are unique and
+// upper case; PLANID names the program; with a TOL/PROFP every OUTPUT also
+// reports TA(PROFILE), without one none does.
 // Point feature statements are parsed by the measurement reader's DMIS
 // functions (dmis_results.hpp), so the results file a CMM writes for the
 // program reads back with the same labels and nominals.
@@ -28,9 +30,11 @@ namespace furrow {
 // characters).
 constexpr std::size_t kMaxDmisProgramStatement = 1000;
 
-// Points come back with id, order (1, 2, ... in program order), xyz and ijk
-// (normalised); the probe with name and diameter; moves as written. Fields
-// the program does not carry (face, region, u, v) stay default.
+// Points come back with id (the upper-case label), order (1, 2, ... in
+// program order), xyz and ijk (normalised); the probe with its label and
+// diameter, the head length, speeds, part, revision and tolerance; moves as
+// written. Fields the program carries only in comments (date, stylus
+// length) or not at all (face, region, u, v) stay default.
 ProbeProgram parse_dmis_program(const std::string& text, const std::string& name);
 ProbeProgram read_dmis_program(const std::string& path);
 

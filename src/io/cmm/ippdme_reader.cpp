@@ -113,12 +113,15 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
   const std::regex pt_meas("PtMeas\\(X\\(" + kNum + "\\),Y\\(" + kNum + "\\),Z\\(" + kNum + "\\),IJK\\(" + kNum +
                            "," + kNum + "," + kNum + "\\)\\)");
   const std::regex change_tool(R"re(ChangeTool\("([A-Za-z0-9_]+)"\))re");
-  const std::regex set_prop("SetProp\\(Tool\\.PtMeasPar\\.(Approach|Retract|Search)\\(" + kNum + "\\)\\)");
+  const std::regex set_prop("SetProp\\(Tool\\.(PtMeasPar\\.Approach|PtMeasPar\\.Retract|PtMeasPar\\.Search|"
+                            "GoToPar\\.Speed|PtMeasPar\\.Speed)\\(" + kNum + "\\)\\)");
 
   ProbeProgram program;
-  enum class Stage { start, home, csy, tool, approach, retract, search, report, body, ended };
+  enum class Stage { start, home, csy, tool, approach, retract, search, move_speed, measure_speed, report, body, ended };
   Stage stage = Stage::start;
   int expected_tag = 1;
+  long commands = 0;  // commands read so far, this one included
+  bool aligned = false;  // the alignment points are behind us
   std::size_t k = 0;
   std::vector<Eigen::Vector3d> moves;
   for (; k < lines.size() && lines[k].text != ":"; k += 2) {
@@ -130,6 +133,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
     if (tag != expected_tag)
       fail(name, line.number, "tag " + m[1].str() + " out of sequence (expected " + std::to_string(expected_tag) + ")");
     expected_tag = expected_tag == kMaxIppTag ? 1 : expected_tag + 1;
+    ++commands;
     if (k + 1 >= lines.size() || lines[k + 1].text != "\\\\")
       fail(name, line.number + 1, "a command must be followed by a line holding \\\\");
     const std::string cmd = unspace(m[2], name, line.number);
@@ -144,6 +148,14 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
     } else if (cmd == "Home()") {
       require(Stage::home, "Home");
       stage = Stage::csy;
+    } else if (cmd == "SetCoordSystem(PartCsy)" && stage == Stage::body) {
+      // The end of the alignment: what was measured so far aligns the part.
+      if (aligned || program.steps.empty()) fail(name, n, "SetCoordSystem(PartCsy) again without alignment points before it");
+      aligned = true;
+      program.alignment_steps = std::move(program.steps);
+      program.steps.clear();
+      program.alignment_final_moves = std::move(moves);
+      moves.clear();
     } else if (cmd == "SetCoordSystem(PartCsy)") {
       require(Stage::csy, "SetCoordSystem");
       stage = Stage::tool;
@@ -155,9 +167,16 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
       const std::string key = a[1];
       const double v = number(a[2], name, n);
       if (!(v > 0)) fail(name, n, key + " must be positive");
-      if (key == "Approach") require(Stage::approach, "SetProp(Approach)"), program.approach = v, stage = Stage::retract;
-      else if (key == "Retract") require(Stage::retract, "SetProp(Retract)"), program.retract = v, stage = Stage::search;
-      else require(Stage::search, "SetProp(Search)"), program.search = v, stage = Stage::report;
+      if (key == "PtMeasPar.Approach")
+        require(Stage::approach, "SetProp(Approach)"), program.approach = v, stage = Stage::retract;
+      else if (key == "PtMeasPar.Retract")
+        require(Stage::retract, "SetProp(Retract)"), program.retract = v, stage = Stage::search;
+      else if (key == "PtMeasPar.Search")
+        require(Stage::search, "SetProp(Search)"), program.search = v, stage = Stage::move_speed;
+      else if (key == "GoToPar.Speed")
+        require(Stage::move_speed, "SetProp(GoToPar.Speed)"), program.move_speed = v, stage = Stage::measure_speed;
+      else
+        require(Stage::measure_speed, "SetProp(PtMeasPar.Speed)"), program.measure_speed = v, stage = Stage::report;
     } else if (cmd == "OnPtMeasReport(X(),Y(),Z(),IJK())") {
       require(Stage::report, "OnPtMeasReport");
       stage = Stage::body;
@@ -170,6 +189,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
       if (!(ijk.norm() > 0)) fail(name, n, "PtMeas direction IJK has zero length");
       ProgramStep step;
       step.point.order = static_cast<int>(program.steps.size()) + 1;
+      step.command = commands;
       step.point.xyz = xyz(a, 1, name, n);
       step.point.ijk = ijk.normalized();
       step.moves_before = std::move(moves);

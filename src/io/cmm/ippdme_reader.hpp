@@ -30,8 +30,11 @@ namespace furrow {
 constexpr std::size_t kMaxIppdmeLine = 1000;
 
 // Points come back in PtMeas order with order 1, 2, ..., an empty id, xyz
-// and ijk (normalised); moves as written; the tool name, approach, retract
-// and search. The file does not carry a name, part, probe diameter or
+// and ijk (normalised); moves as written; the tool name, approach, retract,
+// search and the two speeds. PtMeas commands before a second
+// SetCoordSystem(PartCsy) are the alignment's (alignment_steps, with the
+// GoTo moves before that command as alignment_final_moves); `alignment`
+// stays unset, the file does not say which feature a point belongs to. The file does not carry a name, part, probe diameter or
 // stylus length (left 0 / empty).
 ProbeProgram parse_ippdme_program(const std::string& text, const std::string& name);
 ProbeProgram read_ippdme_program(const std::string& path);

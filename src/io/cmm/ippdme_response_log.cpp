@@ -164,24 +164,29 @@ void parse_ippdme_response_log(std::string_view text, const std::string& name, c
   set.ids_from_file = false;  // tags are not plan ids
   if (!program) return;
 
-  // The program's commands: 8 to set up the session, then per step its
-  // moves and its PtMeas (ippdme_writer.cpp); command n has tag n % 99999 + 1.
+  // Each step's PtMeas command number, as the program reader counted them
+  // (ProgramStep::command); command n has tag (n - 1) % 99999 + 1 and is the
+  // (n - 1) / 99999 + 1-th use of that tag.
+  // Alignment points (measured first) answer like the others: points on
+  // the part with their nominals.
+  std::vector<const ProgramStep*> steps;
+  for (const ProgramStep& s : program->alignment_steps) steps.push_back(&s);
+  for (const ProgramStep& s : program->steps) steps.push_back(&s);
   std::unordered_map<long, std::size_t> ptmeas;  // use * 100000 + tag -> step
-  std::vector<long> step_key(program->steps.size());
-  long n = 8;
-  for (std::size_t s = 0; s < program->steps.size(); ++s) {
-    n += static_cast<long>(program->steps[s].moves_before.size());
+  std::vector<long> step_key(steps.size());
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const long n = steps[s]->command - 1;
+    if (n < 0) throw InputError(program_name + ": step " + std::to_string(s + 1) + " has no PtMeas command number");
     step_key[s] = (n / kMaxIppTag + 1) * (kMaxIppTag + 1) + n % kMaxIppTag + 1;
     ptmeas.emplace(step_key[s], s);
-    ++n;
   }
-  std::vector<char> answered(program->steps.size(), 0);
+  std::vector<char> answered(steps.size(), 0);
   for (std::size_t k = 0; k < set.points.size(); ++k) {
     MeasuredPoint& p = set.points[k];
     const auto it = ptmeas.find(tag_of_point[k]);
     if (it == ptmeas.end())
       mf::fail(name, p.line, "command " + p.id + " returned a point but is not a PtMeas of " + program_name);
-    const PlannedPoint& planned = program->steps[it->second].point;
+    const PlannedPoint& planned = steps[it->second]->point;
     p.nominal = planned.xyz;
     p.nominal_ijk = planned.ijk;
     answered[it->second] = 1;

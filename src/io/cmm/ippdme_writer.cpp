@@ -42,13 +42,24 @@ std::string ippdme_program_text(const ProbeProgram& program) {
   file.command("SetProp(Tool.PtMeasPar.Approach(" + fixed_number(program.approach, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Retract(" + fixed_number(program.retract, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Search(" + fixed_number(program.search, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.GoToPar.Speed(" + fixed_number(program.move_speed, kProgramDecimals) + "))");
+  file.command("SetProp(Tool.PtMeasPar.Speed(" + fixed_number(program.measure_speed, kProgramDecimals) + "))");
   file.command("OnPtMeasReport(X(), Y(), Z(), IJK())");
-  for (const ProgramStep& step : program.steps) {
+  auto measure = [&](const ProgramStep& step) {
     for (const Eigen::Vector3d& m : step.moves_before) file.command("GoTo(" + position(m) + ")");
     const Eigen::Vector3d& n = step.point.ijk;
     file.command("PtMeas(" + position(step.point.xyz) + ", IJK(" + fixed_number(n.x(), kDirectionDecimals) + ", " +
                  fixed_number(n.y(), kDirectionDecimals) + ", " + fixed_number(n.z(), kDirectionDecimals) + "))");
+  };
+  if (program.alignment) {
+    // The alignment points, in the pre-aligned PartCsy; the client computes
+    // the part frame from their responses and sets it (SetCsyTransformation)
+    // before PartCsy is selected again (docs/cmm.md "Part alignment").
+    for (const ProgramStep& step : program.alignment_steps) measure(step);
+    for (const Eigen::Vector3d& m : program.alignment_final_moves) file.command("GoTo(" + position(m) + ")");
+    file.command("SetCoordSystem(PartCsy)");
   }
+  for (const ProgramStep& step : program.steps) measure(step);
   for (const Eigen::Vector3d& m : program.final_moves) file.command("GoTo(" + position(m) + ")");
   file.command("EndSession()");
   return file.finish();

@@ -18,14 +18,23 @@
 //   ChangeTool("probe")
 //   SetProp(Tool.PtMeasPar.Approach(a)) SetProp(Tool.PtMeasPar.Retract(r))
 //   SetProp(Tool.PtMeasPar.Search(s))
+//   SetProp(Tool.GoToPar.Speed(v))      SetProp(Tool.PtMeasPar.Speed(v))   (mm/s)
 //   OnPtMeasReport(X(), Y(), Z(), IJK())
+//   with an alignment: per alignment point GoTo ... PtMeas(...), GoTo(...)
+//     up and over to the first point, SetCoordSystem(PartCsy) again: a
+//     command file cannot compute a frame, so the client sets PartCsy from
+//     the alignment points' responses (SetCsyTransformation) at this
+//     command; a client that does not measures on the pre-alignment
+//     (docs/cmm.md "Part alignment")
 //   per point: GoTo(X(x), Y(y), Z(z)) ...  PtMeas(X(x), Y(y), Z(z), IJK(i, j, k))
 //   GoTo(...) up to the clearance plane
 //   EndSession()
 //
 // GoTo targets are ball-centre positions; PtMeas targets are nominal surface
 // points with the outward normal (the server compensates the probe radius).
-// Speeds are not set: the server keeps those the probe was qualified with.
+// Speeds are in mm/s, the spec's default units. The file carries no part
+// name, revision, date or tolerance: the command set has no comment and no
+// tolerance; the client keeps those (docs/cmm.md).
 #include <string>
 
 #include "io/cmm/probe_program.hpp"

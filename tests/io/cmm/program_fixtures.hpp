@@ -11,7 +11,13 @@ inline ProbeProgram tiny_program() {
   p.name = "tiny";
   p.part = "tiny_plane.json";
   p.probe = {"Probe1", 2};
+  p.revision = "C";
+  p.date = "2026-03-14";
   p.stylus_length = 20;
+  p.head_length = 62.5;  // e.g. 20 mm stylus + probe module and body below the head's centre
+  p.move_speed = 50;
+  p.measure_speed = 4;
+  p.tolerance = PointProfileTolerance{-0.02, 0.03};
   p.approach = 3;
   p.retract = 3;
   p.search = 3;

@@ -33,6 +33,9 @@ ProbeProgram two_point_program() {
   p.name = "t";
   p.probe = {"ruby", 2};
   p.stylus_length = 30;
+  p.head_length = 30;
+  p.move_speed = 50;
+  p.measure_speed = 4;
   p.approach = 2, p.retract = 2, p.search = 4;
   for (int k = 0; k < 2; ++k) {
     ProgramStep s;
@@ -99,16 +102,16 @@ TEST_CASE("I++ DME log with its program: PtMeas targets become nominals, a missi
   const std::string dir = test::scratch_dir("ippdme-log-program");
   const std::string prg = dir + "/t.prg";
   test::write_text(prg, ippdme_program_text(two_point_program()));
-  // Tags 00010 and 00012 are the two PtMeas (8 set-up commands, then GoTo/PtMeas pairs).
-  const std::string both = "00012 &\n00012 # X(10), Y(5), Z(1.5)\n00012 %\n00010 &\n00010 # X(0), Y(5), Z(0.5)\n00010 %\n";
+  // Tags 00012 and 00014 are the two PtMeas (10 set-up commands, then GoTo/PtMeas pairs).
+  const std::string both = "00014 &\n00014 # X(10), Y(5), Z(1.5)\n00014 %\n00012 &\n00012 # X(0), Y(5), Z(0.5)\n00012 %\n";
   const MeasurementSet set = read_log(both, prg);
   REQUIRE(set.points.size() == 2);
   CHECK(*set.points[0].nominal == Eigen::Vector3d(10, 5, 1));
   CHECK(*set.points[1].nominal == Eigen::Vector3d(0, 5, 1));
-  CHECK(error_of("00010 &\n00010 # X(0), Y(5), Z(0.5)\n00010 %\n", prg) ==
-        "run.log: PtMeas 00012 of " + prg + " has no point in the log (not measured)");
-  CHECK(error_of("00009 &\n00009 # X(0), Y(5), Z(0.5)\n00009 %\n", prg) ==
-        "run.log:2: command 00009 returned a point but is not a PtMeas of " + prg);
+  CHECK(error_of("00012 &\n00012 # X(0), Y(5), Z(0.5)\n00012 %\n", prg) ==
+        "run.log: PtMeas 00014 of " + prg + " has no point in the log (not measured)");
+  CHECK(error_of("00011 &\n00011 # X(0), Y(5), Z(0.5)\n00011 %\n", prg) ==
+        "run.log:2: command 00011 returned a point but is not a PtMeas of " + prg);
 }
 
 TEST_CASE("I++ DME log writer: tags wrap after 99999, every coordinate reads back exactly") {

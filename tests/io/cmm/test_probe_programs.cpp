@@ -53,8 +53,9 @@ void check_same_program(const ProbeProgram& got, const ProbeProgram& want, bool 
   REQUIRE(got.final_moves.size() == want.final_moves.size());
   for (std::size_t m = 0; m < want.final_moves.size(); ++m)
     CHECK((got.final_moves[m] - want.final_moves[m]).cwiseAbs().maxCoeff() <= tolerance);
-  CHECK(got.probe.name == want.probe.name);
   CHECK(got.approach == want.approach);
+  CHECK(got.move_speed == want.move_speed);
+  CHECK(got.measure_speed == want.measure_speed);
   CHECK(got.retract == want.retract);
   CHECK(got.search == want.search);
 }
@@ -68,8 +69,74 @@ TEST_CASE("DMIS program of the tiny part matches its golden file and reads back"
   const ProbeProgram back = parse_dmis_program(text, "tiny.dmi");
   check_same_program(back, p, true, 0);
   CHECK(back.name == "tiny");
+  CHECK(back.probe.name == "PROBE1");  // DMIS labels are upper case
   CHECK(back.probe.diameter == 2);
-  CHECK(back.stylus_length == 20);
+  CHECK(back.head_length == 62.5);     // SNSDEF carries the head-to-ball length, not the stylus
+  CHECK(back.part == "tiny_plane.json");
+  CHECK(back.revision == "C");
+  REQUIRE(back.tolerance.has_value());
+  CHECK(back.tolerance->lower == -0.02);
+  CHECK(back.tolerance->upper == 0.03);
+  // The date is in the header comment, from the program, not from the clock.
+  CHECK(text.find("$$ part: tiny_plane.json; revision: C; date: 2026-03-14\r\n") != std::string::npos);
+}
+
+TEST_CASE("DMIS labels are upper case; header fields, speeds and the tolerance follow the program") {
+  ProbeProgram p = test::tiny_program();
+  p.probe.name = "ruby_2mm";
+  p.steps[0].point.id = "a1";
+  p.move_speed = 80;
+  p.measure_speed = 2.5;
+  p.tolerance.reset();
+  p.revision.clear();
+  p.date.clear();
+  const std::string text = dmis_program_text(p);
+  CHECK(text.find("S(RUBY_2MM)=SNSDEF/") != std::string::npos);
+  CHECK(text.find("SNSLCT/S(RUBY_2MM)\r\n") != std::string::npos);
+  CHECK(text.find("F(A1)=FEAT/POINT") != std::string::npos);
+  CHECK(text.find("FEDRAT/POSVEL,MMPS,80.000000\r\n") != std::string::npos);
+  CHECK(text.find("FEDRAT/MESVEL,MMPS,2.500000\r\n") != std::string::npos);
+  CHECK(text.find("TOL/PROFP") == std::string::npos);
+  CHECK(text.find(",TA(") == std::string::npos);
+  CHECK(text.find("PARTRV") == std::string::npos);
+  CHECK(text.find("revision: not stated; date: not stated") != std::string::npos);
+  const ProbeProgram back = parse_dmis_program(text, "u.dmi");
+  CHECK(back.steps[0].point.id == "A1");
+  CHECK(back.move_speed == 80);
+  CHECK(back.measure_speed == 2.5);
+  CHECK_FALSE(back.tolerance.has_value());
+  const ProbeProgram ipp = parse_ippdme_program(ippdme_program_text(p), "u.prg");
+  CHECK(ipp.probe.name == "ruby_2mm");  // the tool name the I++ server knows, as given
+  CHECK(ipp.move_speed == 80);
+  CHECK(ipp.measure_speed == 2.5);
+  // Two ids that are one DMIS label are refused, not merged.
+  p.steps[1].point.id = "A1";
+  CHECK_THROWS_AS(dmis_program_text(p), InputError);
+}
+
+TEST_CASE("program settings: dates, revisions, head length and zones are checked") {
+  ProgramSettings s;
+  for (const char* good : {"2026-03-14", "2024-02-29", "2000-02-29", "1999-12-31"}) {
+    s.date = good;
+    CHECK_NOTHROW(validate(s, 20));
+  }
+  for (const char* bad : {"2026-3-14", "2023-02-29", "1900-02-29", "2026-13-01", "2026-04-31", "14.03.2026", "today"}) {
+    s.date = bad;
+    CHECK_THROWS_AS(validate(s, 20), InputError);
+  }
+  s.date.clear();
+  s.revision = "it's";
+  CHECK_THROWS_AS(validate(s, 20), InputError);
+  s.revision = "B.2";
+  CHECK_NOTHROW(validate(s, 20));
+  s.head_length = 19.5;
+  CHECK_THROWS_AS(validate(s, 20), InputError);
+  s.head_length = 20;
+  CHECK_NOTHROW(validate(s, 20));
+  s.tolerance = PointProfileTolerance{0.01, 0.05};
+  CHECK_THROWS_AS(validate(s, 20), InputError);
+  s.tolerance = PointProfileTolerance{0, 0.05};
+  CHECK_NOTHROW(validate(s, 20));
 }
 
 TEST_CASE("I++ DME command file of the tiny part matches its golden file and reads back") {
@@ -127,7 +194,11 @@ TEST_CASE("the strict DMIS reader refuses what Furrow does not write") {
   refused(replace(ok, "ENDMES\r\nOUTPUT/FA(P0001)", "OUTPUT/FA(P0001)"), "missing ENDMES");
   refused(replace(ok, "F(P0002)=FEAT", "F(P0001)=FEAT"), "label defined twice");
   refused(replace(ok, "UNITS/MM,ANGDEC", "UNITS/INCH,ANGDEC"), "inch");
-  refused(replace(ok, "SNSLCT/S(Probe1)", "SNSLCT/S(Other)"), "another sensor");
+  refused(replace(ok, "SNSLCT/S(PROBE1)", "SNSLCT/S(OTHER)"), "another sensor");
+  refused(replace(ok, "F(P0002)=FEAT", "F(p0002)=FEAT"), "lower-case label");
+  refused(replace(ok, "OUTPUT/FA(P0002),TA(PROFILE)", "OUTPUT/FA(P0002)"), "a point without its tolerance");
+  refused(replace(ok, "FEDRAT/MESVEL,MMPS,4.000000\r\n", ""), "no measuring speed");
+  refused(replace(ok, "PL(PROGRAM)=PLANID/'tiny'", "PL(PROGRAM)=PLANID/'other'"), "PLANID of another program");
   refused(replace(ok, "GOTO/5.000000,5.000000,9.000000", "GOTO/5.0e0,5.000000,9.000000"), "exponent");
 }
 
