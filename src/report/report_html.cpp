@@ -355,7 +355,16 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
       if (in.role == role) return in.path;
     return fallback;
   };
-  out += print_style(named("part", doc.sources.part), context.title) + "</head>\n<body>\n";  // print_style.hpp
+  // The printed page header: the part number and serial when the record
+  // has them (what a filed report is looked up by), else the part file.
+  std::string print_part = named("part", doc.sources.part), print_title = context.title;
+  if (context.record) {
+    const InspectionRecord& r = *context.record;
+    if (!r.part_number.empty()) print_part = r.part_number + (r.revision.empty() ? "" : " rev " + r.revision);
+    if (!r.serial.empty()) print_title += ", serial " + r.serial;
+    else if (!r.lot.empty()) print_title += ", lot " + r.lot;
+  }
+  out += print_style(print_part, print_title) + "</head>\n<body>\n";  // print_style.hpp
   out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
          escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
          escape(named("measurements", doc.sources.measurements)) +
