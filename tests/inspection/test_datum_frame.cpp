@@ -330,7 +330,7 @@ TEST_CASE("datums: degenerate datum data and a missing datum point are refused w
   }
 }
 
-TEST_CASE("furrow compare --align: comparison.json records the method, the datums and both profiles; exit codes") {
+TEST_CASE("furrow compare --align: comparison.json records the method, the datums and both profiles, and the exit codes") {
   const Part part = datum_part();
   const InspectionPlan plan = datum_plan(part);
   const std::string dir = test::scratch_dir("compare-align-datums");
