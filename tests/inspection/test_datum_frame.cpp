@@ -243,6 +243,30 @@ TEST_CASE("datums: flatness and straightness of noisy datum points are their res
   CHECK(c.datum_frame->datums[0].form_error == doctest::Approx(r.maxCoeff() - r.minCoeff()).epsilon(1e-6));
   // B has two points: a line through both, straightness zero.
   CHECK(c.datum_frame->datums[1].form_error < 1e-9);
+
+  // Three B points at one height: the straightness is the spread of their
+  // residuals across the least-squares line through (x, y) of the contact
+  // points, fitted here by SVD (A's tilt by the noise moves all three alike).
+  InspectionPlan three = plan;
+  DatumFeature& b = three.alignment->datums[1];
+  b.points.insert(b.points.begin() + 1, b.points[0]);
+  b.points[1].id = "B3";
+  b.points[1].xyz = {47, 0, -15};
+  planted.clear();
+  const Comparison t = run(part, three, measure(three, placement(), 1.0, [&](const PlannedPoint& p) {
+                             return planted[p.id] = p.face == "B" ? 10 * noise(rng) : 0.0;
+                           }), AlignMethod::datums);
+  Eigen::MatrixXd line(b.points.size(), 2);
+  for (std::size_t k = 0; k < b.points.size(); ++k) {
+    const Eigen::Vector3d q = b.points[k].xyz + planted[b.points[k].id] * b.normal;
+    line.row(static_cast<Eigen::Index>(k)) = Eigen::RowVector2d(q.x(), q.y());
+  }
+  const Eigen::MatrixXd lc = line.rowwise() - line.colwise().mean();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> ls(lc, Eigen::ComputeFullV);
+  const Eigen::VectorXd across = lc * ls.matrixV().col(1);
+  REQUIRE(t.datum_frame);
+  CHECK(across.maxCoeff() - across.minCoeff() > 0.005);
+  CHECK(std::abs(t.datum_frame->datums[1].form_error - (across.maxCoeff() - across.minCoeff())) < 1e-7);
   // The frame moved by at most the noise over the part (a few microns).
   const Eigen::Isometry3d e = c.datum_frame->transform * placement();
   for (const PlannedPoint& p : plan.points) CHECK((e * p.xyz - p.xyz).norm() < 0.05);
