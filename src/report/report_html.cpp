@@ -143,8 +143,10 @@ std::string alignment_section(const ComparisonDocument& doc) {
                      count(doc.summary.evaluated) + " evaluated"},
       {"Outliers", outliers.empty() ? "none" : outliers},
   };
-  kv.insert(kv.begin(), std::make_pair(std::string("Method"), escape(doc.alignment.method) +
-                                       (doc.alignment.note.empty() ? "" : ": " + escape(doc.alignment.note))));
+  // Only a frame other than the best fit is named: the best fit is what the rest describes.
+  if (doc.alignment.method != "bestfit")
+    kv.insert(kv.begin(), std::make_pair(std::string("Method"), escape(doc.alignment.method) +
+                                         (doc.alignment.note.empty() ? "" : ": " + escape(doc.alignment.note))));
   for (const auto& d : doc.alignment.datums)
     kv.push_back({"Datum " + escape(d.label) + " (" + escape(d.kind) + ", " + count(d.points.size()) + " points)",
                   d.kind == "plane"  ? "flatness " + fixed(d.form_error * 1000, 1) + " &micro;m"
