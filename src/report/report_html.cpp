@@ -143,6 +143,15 @@ std::string alignment_section(const ComparisonDocument& doc) {
                      count(doc.summary.evaluated) + " evaluated"},
       {"Outliers", outliers.empty() ? "none" : outliers},
   };
+  // Only a frame other than the best fit is named: the best fit is what the rest describes.
+  if (doc.alignment.method != "bestfit")
+    kv.insert(kv.begin(), std::make_pair(std::string("Method"), escape(doc.alignment.method) +
+                                         (doc.alignment.note.empty() ? "" : ": " + escape(doc.alignment.note))));
+  for (const auto& d : doc.alignment.datums)
+    kv.push_back({"Datum " + escape(d.label) + " (" + escape(d.kind) + ", " + count(d.points.size()) + " points)",
+                  d.kind == "plane"  ? "flatness " + fixed(d.form_error * 1000, 1) + " &micro;m"
+                  : d.kind == "line" ? "straightness " + fixed(d.form_error * 1000, 1) + " &micro;m"
+                                     : "sets the last origin"});
   if (r.covariance) {
     const auto& c = *r.covariance;
     const double deg = 180 / kPi;
@@ -168,6 +177,17 @@ std::string alignment_section(const ComparisonDocument& doc) {
   return out + html::key_value_table(kv) + "</section>\n";
 }
 
+// With the CMM's or the datum frame, the frame's profile (form + location)
+// beside the best fit's (form alone): they answer different questions
+// (docs/registration.md "Alignments").
+std::string profile_text(const ComparisonDocument& doc) {
+  const std::string frame = fixed(doc.summary.profile * 1000, 1) + " &micro;m";
+  const auto& a = doc.alignment;
+  if (a.method == "bestfit" || !a.bestfit_profile) return frame;
+  return frame + " in the " + (a.method == "datums" ? std::string("datum frame") : std::string("CMM frame")) +
+         " (form + location); " + fixed(*a.bestfit_profile * 1000, 1) + " &micro;m best fit (form)";
+}
+
 std::string deviations_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
   const ComparisonSummary& s = doc.summary;
   std::string out = "<section id=\"deviations\"><h2>Deviations</h2>\n";
@@ -176,7 +196,7 @@ std::string deviations_section(const ComparisonDocument& doc, const std::vector<
                                " out of tolerance)"},
       {"Mean / sigma", um(s.deviations.mean) + " / " + fixed(s.deviations.sigma * 1000, 1) + " &micro;m"},
       {"Min / max", um(s.deviations.min) + " / " + um(s.deviations.max) + " &micro;m"},
-      {"Profile (2 max |d|)", fixed(s.profile * 1000, 1) + " &micro;m"},
+      {"Profile (2 max |d|)", profile_text(doc)},
   });
   return out + figures_of(figures, "deviations") + "</section>\n";
 }
