@@ -239,6 +239,17 @@ RemeasurePlan plan_remeasure(const Part& part, const ComparisonDocument& c, cons
         if (k != c.points_by_id.end() && c.points[k->second].evaluated) continue;
         builder.add({p.id, p.face_index, p.uv, p.xyz, p.ijk, p.region}, target);
       }
+      // A region the planner could not cover has no plan point left to take
+      // again: say why instead of an empty target (docs/cmm.md "Coverage").
+      if (target.points.empty() && target.dropped.empty()) {
+        std::string why = reason.text + ": the plan holds no point left to measure there";
+        for (const UncoveredRegion& u : plan->uncovered_regions)
+          if ("region " + std::to_string(u.region) == reason.subject)
+            why += " (the planner could not cover it: " + u.reason + "); plan it again with a smaller probe or a lower "
+                   "--border, or measure it by other means";
+        out.not_covered.push_back(why);
+        continue;
+      }
     } else {
       out.not_covered.push_back(reason.text);
       continue;

@@ -148,4 +148,14 @@ TEST_CASE("furrow plan exits 1 naming an uncovered region, 0 with --allow-uncove
   CHECK(text.find("region_below_minimum") != std::string::npos);
   CHECK(text.find("region " + std::to_string(p.uncovered_regions.front().region) + " has 0 evaluated points") !=
         std::string::npos);
+
+  // Re-measuring cannot cover it: the plan holds no point there. It says so
+  // with the planner's reason instead of planning nothing in silence.
+  const CliResult again = run_furrow({"remeasure", dir + "/comparison.json", "--plan", dir + "/allowed/plan.json",
+                                      "--out", dir + "/remeasure"});
+  CHECK(again.status == 0);
+  CHECK(again.out.find("not covered by re-measuring: region " + std::to_string(p.uncovered_regions.front().region)) !=
+        std::string::npos);
+  CHECK(again.out.find("the planner could not cover it: " + p.uncovered_regions.front().reason) != std::string::npos);
+  CHECK(!fs::exists(dir + "/remeasure"));
 }
