@@ -88,7 +88,11 @@ TEST_CASE("furrow plan: bad program options give one line and exit 2") {
       {{"--revision", "it's"}, "--revision"},
       {{"--head-length", "10"}, "--head-length"},
   };
-  for (const auto& [extra, message] : cases) {
+  for (const auto& c : cases) {
+    // Named copies, not structured bindings: CAPTURE's lambda cannot capture
+    // a binding before C++20, and clang refuses it.
+    const std::vector<std::string>& extra = c.first;
+    const char* message = c.second;
     std::vector<std::string> args{"plan", part, "--regions", mould_regions_for_programs(), "--out", dir + "/out",
                                   "--points", "10"};
     args.insert(args.end(), extra.begin(), extra.end());
