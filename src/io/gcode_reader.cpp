@@ -154,6 +154,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     bool radius_given = false;
     bool home = false;     // G28
     bool machine = false;  // G53
+    int motion_here = -1;  // motion word on this line
     for (const Word& w : words) {
       const std::string word = std::string(1, w.letter) + w.text;
       switch (w.letter) {
@@ -163,6 +164,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           const double g = w.value;
           if (g == 0 || g == 1 || g == 2 || g == 3) {
             motion = static_cast<int>(g);
+            motion_here = motion;
           } else if (g == 17 || g == 18 || g == 19) {
             plane = static_cast<ArcPlane>(static_cast<int>(g));
           } else if (g == 20) {
@@ -249,7 +251,9 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
       // The tool goes to (or through) machine coordinates, which this file
       // does not place in the part frame: the pass ends, and the axes moved
       // are unknown until an absolute position names them again.
-      if (machine && motion != 0)
+      // G53 moves at rapid whatever the motion mode (as on Fanuc controls);
+      // a cutting word on its own line asks for something it cannot do.
+      if (machine && motion_here > 0)
         fail_line(name, number, "G53 with a cutting move: machine coordinates are not in the part frame");
       const bool any = axis_given[0] || axis_given[1] || axis_given[2];
       close_pass();

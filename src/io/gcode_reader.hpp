@@ -12,7 +12,8 @@
 // I J (G17), I K (G18), J K (G19) or a signed R (R < 0: the long arc), G20
 // inch / G21 mm, G90 / G91 absolute / incremental coordinates, G91.1
 // incremental arc centres (the default). G28 (return to home, as posts write
-// `G28 G91 Z0.`) and G53 with G0 (a rapid in machine coordinates) end the pass
+// `G28 G91 Z0.`) and G53 (a rapid in machine coordinates, whatever the motion
+// mode, as on Fanuc controls) end the pass
 // and make the named axes (all, for a bare G28) unknown until an absolute
 // position is given again: the machine's home is not in the part frame.
 // G54-G59: the first one selected is the part frame; a switch to another one
@@ -25,9 +26,9 @@
 //
 // Refused, naming the line (dropping them would predict the wrong part):
 // G90.1 (absolute arc centres), cutter compensation G41/G42, canned cycles
-// G73 G74 G76 G81-G89, G53 with a cutting move, rotary axes A B C, any other
-// G code or letter, arc errors (gcode_arc.hpp), I J K R outside an arc or in
-// the wrong plane, an arc with both R and I J K.
+// G73 G74 G76 G81-G89, G53 with G1/G2/G3 on its line, rotary axes A B C,
+// any other G code or letter, arc errors (gcode_arc.hpp), I J K R outside an
+// arc or in the wrong plane, an arc with both R and I J K.
 //
 // `N` numbers, `O` numbers, `( )` and `;` comments, `%` lines, words without
 // spaces (`G90G20M03S2000`, `G1X1.Y2.`) and numbers like `1.` or `.5` are

@@ -142,6 +142,8 @@ TEST_CASE("G-code: numbers as posts write them, and G28 and G53 make the axes un
   CHECK(error_of("G90 G0 X0 Y0 Z0\nG28\nG90 G0 Z5\nG1 X1\n").find("cam.nc:4: cutting move before X, Y and Z") == 0);
   CHECK(error_of("G90 G0 X0 Y0 Z0\nG53 G0 Z0.\nG0 Z5\nG1 X1\n").empty());
   CHECK(error_of("G90 G0 X0 Y0 Z0\nG53 G1 Z0.\n").find("cam.nc:2: G53 with a cutting move") == 0);
+  // G53 rapids whatever the motion mode: after it the pass is over and Z unknown.
+  CHECK(error_of("G90 G0 X0 Y0 Z0\nG1 X1\nG53 Z0.\nX2\n").find("cam.nc:4: cutting move before X, Y and Z") == 0);
 }
 
 TEST_CASE("G-code: constructs the control would expand or offset are refused, naming the line") {
