@@ -24,6 +24,8 @@ std::string unquoted(const std::string& quoted_text) { return quoted_text.substr
 
 // Removes comments: "( ... )" anywhere and everything after ';'.
 std::string strip_comments(const std::string& line, const std::string& name, int number) {
+  // Most lines have no comment: nothing to copy character by character.
+  if (line.find_first_of("();") == std::string::npos) return line;
   std::string out;
   int depth = 0;
   for (char c : line) {
@@ -156,7 +158,8 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     bool machine = false;  // G53
     int motion_here = -1;  // motion word on this line
     for (const Word& w : words) {
-      const std::string word = std::string(1, w.letter) + w.text;
+      // Only errors and ignored words need the word as written.
+      auto written = [&w]() { return std::string(1, w.letter) + w.text; };
       switch (w.letter) {
         case 'N':
         case 'O': break;  // line and program numbers
@@ -178,7 +181,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           } else if (g == 91.1) {
             // Incremental arc centres: what this reader does anyway.
           } else if (g == 90.1) {
-            fail_line(name, number, word + " (absolute arc centres) is not supported; I J K are read as "
+            fail_line(name, number, written() + " (absolute arc centres) is not supported; I J K are read as "
                                     "offsets from the arc's start (G91.1)");
           } else if (g == 28) {
             home = true;
@@ -187,20 +190,20 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           } else if (g >= 54 && g <= 59 && g == std::floor(g)) {
             const int offset = static_cast<int>(g);
             if (work_offset != 0 && offset != work_offset)
-              fail_line(name, number, word + " switches the work offset from G" + std::to_string(work_offset) +
+              fail_line(name, number, written() + " switches the work offset from G" + std::to_string(work_offset) +
                                           ": the offsets between them are not in the file, so the path "
                                           "must stay in one part frame");
             work_offset = offset;
           } else if (g == 41 || g == 42) {
-            fail_line(name, number, word + " (cutter compensation) is not supported: the control would "
+            fail_line(name, number, written() + " (cutter compensation) is not supported: the control would "
                                     "offset the path by a radius that is not in the file");
           } else if (is_canned_cycle(g)) {
-            fail_line(name, number, word + " (canned cycle) is not supported: the control would expand it "
+            fail_line(name, number, written() + " (canned cycle) is not supported: the control would expand it "
                                     "into moves that are not in the file");
           } else if (is_ignored_g(g)) {
-            path.ignored.push_back({number, word});
+            path.ignored.push_back({number, written()});
           } else {
-            fail_line(name, number, word + " is not supported (G0 G1 G2 G3, G17-G21, G90 G91, G28, G53 and "
+            fail_line(name, number, written() + " is not supported (G0 G1 G2 G3, G17-G21, G90 G91, G28, G53 and "
                                     "G54-G59 move or place the tool here)");
           }
           break;
@@ -237,10 +240,10 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
         case 'T':
         case 'H':
         case 'D':
-          path.ignored.push_back({number, word});
+          path.ignored.push_back({number, written()});
           break;
         default:
-          fail_line(name, number, "word " + word + " is not supported (no rotary axes in 3-axis paths)");
+          fail_line(name, number, "word " + written() + " is not supported (no rotary axes in 3-axis paths)");
       }
     }
     const bool arc_words = radius_given || centre_given[0] || centre_given[1] || centre_given[2];
