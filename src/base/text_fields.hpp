@@ -13,6 +13,10 @@ bool parse_finite(const std::string& text, double& out);
 // `text` without leading and trailing blanks (space, tab, CR, LF).
 std::string trim(const std::string& text);
 
+// Escapes & < > " ' as XML/HTML entities: safe in text and in quoted
+// attribute values of SVG, HTML and XML alike.
+std::string markup_escape(const std::string& text);
+
 // ASCII lower case.
 std::string to_lower(std::string text);
 

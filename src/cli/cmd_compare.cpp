@@ -34,6 +34,7 @@ int run_compare(Args& args) {
   const auto qif_path = args.option("qif");  // QIF 3.0 Results next to comparison.json (docs/qif.md)
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
+  const std::string align = args.option_or("align", "bestfit");
   const std::string dof = args.option_or("dof", "all");
   const std::string loss = args.option_or("loss", "cauchy");
   const auto points = args.option("points");
@@ -63,6 +64,7 @@ int run_compare(Args& args) {
 
   options.tolerance =
       ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
+  options.align = parse_align_method(align, "--align");
   RegistrationOptions& reg = options.registration;
   reg.dof = DegreesOfFreedom::parse(dof, "--dof");
   reg.loss = parse_robust_loss(loss, "--loss");
@@ -122,7 +124,15 @@ int run_compare(Args& args) {
   MergedMeasurements merged = merge_measurements(sets);
   if (measurement_files.size() > 1)  // recorded with several files only (comparison_file.hpp)
     for (const std::string& m : measurement_files) merged.sha256.push_back(digest_file("measurements", m).sha256);
-  const MeasurementSet& set = merged.set;
+  // With datums, the datum points set the frame and the rest are compared.
+  MeasurementSet set;
+  try {
+    set = prepare_alignment(options, merged.set, plan ? &*plan : nullptr, plan_path.value_or(""));
+  } catch (const DatumFrameError& e) {  // degenerate datum data: the computation did not succeed
+    std::fprintf(stderr, "error: no datum frame: %s\n", e.what());
+    return kExitInternal;
+  }
+  restrict_to(merged, set);
   const std::string measurements = set.source;
 
   const Comparison c = naming_inputs(part_path + " with " + measurements, [&] {
@@ -152,6 +162,16 @@ int run_compare(Args& args) {
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
+  std::printf("alignment: %s\n", to_string(c.align));
+  if (c.datum_frame)
+    for (const DatumFit& d : c.datum_frame->datums) {
+      std::printf("datum %s (%s, %zu point%s): ", d.label.c_str(), to_string(d.kind), d.point_ids.size(),
+                  d.point_ids.size() == 1 ? "" : "s");
+      if (d.kind == DatumFeature::Kind::point)
+        std::printf("sets the last origin\n");
+      else
+        std::printf("%s %.4f mm\n", d.kind == DatumFeature::Kind::plane ? "flatness" : "straightness", d.form_error);
+    }
   std::printf("registration: %s (%s start), rms %.4f -> %.4f mm, %zu of %zu points in the fit\n",
               r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit,
               s.points);
@@ -163,6 +183,9 @@ int run_compare(Args& args) {
   }
   std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n",
               s.deviations.min, s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
+  if (c.bestfit_profile)
+    std::printf("profile: %s frame %.4f mm (form + location), best fit %.4f mm (form)\n", to_string(c.align),
+                s.profile, *c.bestfit_profile);
   std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out, %zu outliers\n",
               c.tolerance.width, c.tolerance.lower(), c.tolerance.upper(), s.in_tolerance,
               s.out_of_tolerance, s.outliers);
@@ -214,6 +237,12 @@ const Command kCompareCommand = {
     "  --regions FILE       regions.json of PART (furrow partition): each point's\n"
     "                       region is the one holding its foot point; statistics\n"
     "                       per region (default: the plan points' regions)\n"
+    "  --align A            bestfit (default: a robust best fit, form only), cmm\n"
+    "                       (the CMM program aligned the part: evaluated as\n"
+    "                       measured, no fit) or datums (the 3-2-1 datum frame\n"
+    "                       from the plan's datum points, needs --plan: form +\n"
+    "                       location); cmm and datums also give the best-fit\n"
+    "                       profile (docs/registration.md \"Alignments\")\n"
     "  --tolerance T        profile tolerance zone width in mm (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2 =\n"
     "                       bilateral; T unilateral outside, 0 unilateral inside)\n"

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 
 #include "base/error.hpp"
+#include "inspection/fixed_alignment.hpp"
 
 namespace furrow {
 
@@ -25,6 +27,24 @@ Verdict parse_verdict(const std::string& text, const std::string& where) {
   for (Verdict v : {Verdict::pass, Verdict::fail, Verdict::inconclusive})
     if (text == to_string(v)) return v;
   throw InputError(where + ": unknown verdict \"" + text + "\" (valid: PASS, FAIL, INCONCLUSIVE)");
+}
+
+const char* to_string(AlignMethod method) {
+  switch (method) {
+    case AlignMethod::bestfit:
+      return "bestfit";
+    case AlignMethod::cmm:
+      return "cmm";
+    case AlignMethod::datums:
+      return "datums";
+  }
+  return "?";
+}
+
+AlignMethod parse_align_method(const std::string& text, const std::string& where) {
+  for (AlignMethod m : {AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums})
+    if (text == to_string(m)) return m;
+  throw InputError(where + ": \"" + text + "\" is not an alignment (bestfit, cmm, datums)");
 }
 
 namespace {
@@ -212,7 +232,28 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
   Comparison c;
   c.tolerance = options.tolerance;
   for (const MeasuredPoint& p : set.points) c.point_ids.push_back(p.id);
-  c.registration = register_measurements(finder, set, plan, options.registration);
+  c.align = options.align;
+  if (options.align == AlignMethod::bestfit) {
+    c.registration = register_measurements(finder, set, plan, options.registration);
+  } else {
+    if (options.align == AlignMethod::datums) {
+      if (!options.datum_frame) throw std::logic_error("compare_measurements: datums without a datum frame");
+      c.datum_frame = options.datum_frame;
+      c.registration = evaluate_at_transform(finder, set, c.datum_frame->transform, options.registration,
+                                             "datum frame: evaluated as aligned by the datums, no fit");
+    } else {
+      c.registration = evaluate_at_transform(finder, set, Eigen::Isometry3d::Identity(), options.registration,
+                                             "cmm frame: evaluated as measured, no fit");
+    }
+    // The best fit of the same points: form alone, for comparison.
+    RegistrationOptions quiet = options.registration;
+    quiet.compute_covariance = false;
+    c.bestfit = register_measurements(finder, set, plan, quiet);
+    double max_abs = 0;
+    for (const RegisteredPoint& p : c.bestfit->points)
+      if (p.evaluated) max_abs = std::max(max_abs, std::abs(p.deviation));
+    c.bestfit_profile = 2 * max_abs;
+  }
   c.region.assign(set.points.size(), std::nullopt);
   // The regions of the points are known by id here; with generated ids only
   // a partition can tell them (compare_stage), else the rule cannot apply.

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "inspection/datum_frame.hpp"
 #include "inspection/gouge_confirmation.hpp"
 #include "inspection/prediction_comparison.hpp"
 #include "inspection/registration.hpp"
@@ -85,7 +86,23 @@ struct ComparisonSummary {
   std::vector<RegionStatistics> regions;  // by increasing region id; empty without region ids
 };
 
+// How the measured points are put into the part frame (docs/registration.md
+// "Alignments"): a best fit (form only), the CMM's own frame as measured
+// (cmm: the program aligned the part), or the datum reference frame from
+// the plan's datum features (form + location).
+enum class AlignMethod { bestfit, cmm, datums };
+const char* to_string(AlignMethod method);  // "bestfit", "cmm", "datums"
+// Throws InputError naming `where` for any other text.
+AlignMethod parse_align_method(const std::string& text, const std::string& where);
+
 struct Comparison {
+  AlignMethod align = AlignMethod::bestfit;
+  std::optional<DatumFrame> datum_frame;  // with datums
+  // With cmm and datums: the best-fit registration of the same points,
+  // kept for its profile (2 max |d| over its evaluated points) - form
+  // alone, next to the frame's form + location.
+  std::optional<RegistrationResult> bestfit;
+  std::optional<double> bestfit_profile;
   std::vector<std::string> point_ids;  // per point, as in the measurement set
   RegistrationResult registration;
   ToleranceZone tolerance;
@@ -102,6 +119,10 @@ struct Comparison {
 };
 
 struct CompareOptions {
+  AlignMethod align = AlignMethod::bestfit;
+  // datums: the frame fitted to the datum points (prepare_alignment,
+  // compare_stage.hpp); required then.
+  std::optional<DatumFrame> datum_frame;
   RegistrationOptions registration;
   ToleranceZone tolerance;
   PredictionComparisonOptions prediction;  // used with a prediction only

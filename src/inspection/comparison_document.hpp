@@ -103,6 +103,24 @@ struct ComparisonDocument {
     std::map<std::string, std::size_t> outliers;
   } registration;
 
+  // How the points were put into the part frame (docs/registration.md
+  // "Alignments"); files written before it have none: a best fit.
+  struct Alignment {
+    std::string method = "bestfit";  // "bestfit", "cmm", "datums"
+    std::string note;                // cmm/datums: why there is no fit and no observability question
+    struct Datum {
+      std::string label, kind;       // "A"; "plane", "line", "point"
+      std::vector<std::string> points;
+      Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // as measured, CMM frame [mm]
+      Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // plane normal, line direction, point normal
+      double form_error = 0;         // plane flatness, line straightness, 0 for the point [mm]
+    };
+    std::vector<Datum> datums;       // datums only
+    // cmm/datums: the best fit of the same points, form alone [mm].
+    std::optional<double> bestfit_profile;
+    std::string bestfit_status;
+  } alignment;
+
   struct Point {
     std::string id;
     std::size_t file = 0;  // index into sources.measurement_files it came from

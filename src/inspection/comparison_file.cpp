@@ -89,6 +89,33 @@ json registration_json(const RegistrationResult& r, const RegistrationOptions& o
   return j;
 }
 
+// The alignment method, with datums each datum's fit, and the best-fit
+// profile of the same points next to the frame's (docs/formats.md
+// "Comparison").
+json alignment_json(const Comparison& c) {
+  json j = {{"method", to_string(c.align)}};
+  if (c.align == AlignMethod::bestfit) return j;
+  j["note"] = c.align == AlignMethod::cmm
+                  ? "the measurement frame is the part frame (the CMM program aligned the part): no fit, so "
+                    "observability is not a question"
+                  : "the datum frame fixes the part: no fit, so observability is not a question";
+  json datums = json::array();
+  if (c.datum_frame)
+    for (const DatumFit& d : c.datum_frame->datums)
+      datums.push_back({{"label", d.label},
+                        {"kind", to_string(d.kind)},
+                        {"points", d.point_ids},
+                        {"origin", jf::vector_json(d.origin)},
+                        {"direction", jf::vector_json(d.direction)},
+                        {"form_error", jf::finite(d.form_error, "datum form error")}});
+  j["datums"] = std::move(datums);
+  j["bestfit"] = {{"profile", jf::finite(c.bestfit_profile.value_or(0), "best-fit profile")},
+                  {"status", c.bestfit ? c.bestfit->status : std::string("not computed")},
+                  {"transform", c.bestfit ? cj::matrix_json(c.bestfit->transform.matrix(), "best-fit transform")
+                                          : json(nullptr)}};
+  return j;
+}
+
 // The options as comparison_document.hpp holds them (see above).
 ComparisonDocument::Options document_options(const CompareOptions& o, const MeasurementSet& set,
                                              const ComparisonSources& sources) {
@@ -219,6 +246,7 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                       {"upper", jf::finite(c.tolerance.upper(), "upper limit")},
                       {"disposition", c.tolerance.disposition()}};
   doc["registration"] = registration_json(c.registration, options.registration);
+  doc["alignment"] = alignment_json(c);
   doc["summary"] = {{"points", s.points},
                     {"in_fit", s.in_fit},
                     {"evaluated", s.evaluated},

@@ -122,6 +122,36 @@ ComparisonDocument::Registration read_registration(const Node& n) {
   return r;
 }
 
+ComparisonDocument::Alignment read_alignment(const Node& n) {
+  ComparisonDocument::Alignment a;
+  a.method = n.string("method");
+  if (a.method != "bestfit" && a.method != "cmm" && a.method != "datums")
+    throw InputError(n.path("method") + ": unknown alignment " + quote_field(a.method) +
+                     " (valid: bestfit, cmm, datums)");
+  if (a.method == "bestfit") return a;
+  a.note = n.string("note");
+  const json& list = n.array("datums");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const Node d(list[k], jf::child(n.path("datums"), k));
+    ComparisonDocument::Alignment::Datum x;
+    x.label = d.string("label");
+    x.kind = d.string("kind");
+    const json& ids = d.array("points");
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (!ids[i].is_string()) throw InputError(jf::child(d.path("points"), i) + ": expected a point id");
+      x.points.push_back(ids[i].get<std::string>());
+    }
+    x.origin = d.vector3("origin");
+    x.direction = d.vector3("direction");
+    x.form_error = d.non_negative("form_error");
+    a.datums.push_back(x);
+  }
+  const Node b = n.at("bestfit");
+  a.bestfit_profile = b.non_negative("profile");
+  a.bestfit_status = b.string("status");
+  return a;
+}
+
 ComparisonDocument::Point read_point(const Node& n) {
   ComparisonDocument::Point p;
   p.id = n.string("id");
@@ -232,6 +262,7 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   d.sources.prediction = root.optional_string("prediction_file");
   d.options = read_options(root.at("options"));
   d.registration = read_registration(root.at("registration"));
+  if (root.has("alignment")) d.alignment = read_alignment(root.at("alignment"));
 
   d.summary = read_summary(root.at("summary"));
   const Node reasons = root.at("summary").at("outlier_reasons");

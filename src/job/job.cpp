@@ -347,6 +347,7 @@ void read_measurements(Section& root, Job& job, const std::string& folder) {
 void read_comparison(Section c, Job& job) {
   CompareOptions& o = job.compare;
   RegistrationOptions& r = o.registration;
+  if (const auto align = c.string("align")) o.align = parse_align_method(*align, c.at("align"));
   if (const auto dof = c.string("dof")) r.dof = DegreesOfFreedom::parse(*dof, c.at("dof"));
   if (const auto loss = c.string("loss")) r.loss = parse_robust_loss(*loss, c.at("loss"));
   c.positive("outlier_sigma", r.outlier_sigma);

@@ -114,7 +114,8 @@ std::string job_options_json(const Job& job) {
   const RegistrationOptions& r = job.compare.registration;
   const PredictionComparisonOptions& pc = job.compare.prediction;
   const GougeConfirmationOptions& g = job.compare.gouges;
-  j["comparison"] = {{"dof", r.dof.to_string()},
+  j["comparison"] = {{"align", to_string(job.compare.align)},
+                     {"dof", r.dof.to_string()},
                      {"loss", to_string(r.loss)},
                      {"outlier_sigma", jf::finite(r.outlier_sigma, "outlier sigma")},
                      {"outlier_rejection", r.flag_outliers},

@@ -202,10 +202,14 @@ MeasurementSet measurement_stage(Staged& s, const InspectionPlan& plan, const Pr
 }
 
 ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPlan& plan, const RegionMap& map,
-                                 const Prediction& prediction, const MeasurementSet& set) {
+                                 const Prediction& prediction, const MeasurementSet& all) {
   const Job& job = s.job;
   CompareOptions options = job.compare;
   options.registration.progress = [&](const std::string& what) { s.note("compare: " + what); };
+  // With datums, the datum points set the frame and the rest are compared.
+  const MeasurementSet compared = prepare_alignment(options, all, &plan, "plan/plan.json");
+  if (s.merged) restrict_to(*s.merged, compared);
+  const MeasurementSet& set = compared;
   const Comparison c =
       compare_stage(part, set, &plan, &map, job.compare_with_prediction ? &prediction : nullptr, options);
   ComparisonSources sources;

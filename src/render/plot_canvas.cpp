@@ -41,21 +41,14 @@ void text_vertical(cv::Mat& img, const std::string& s, cv::Point centre, double 
 }
 
 PlotArea::PlotArea(cv::Rect rect, double x0, double x1, double y0, double y1)
-    : rect_(rect), x0_(x0), x1_(x1), y0_(y0), y1_(y1) {
-  auto widen = [](double& a, double& b) {
-    if (!(b > a)) {
-      const double pad = std::max(1e-9, std::fabs(a) * 0.05);
-      a -= pad;
-      b += pad;
-    }
-  };
-  widen(x0_, x1_);
-  widen(y0_, y1_);
-}
+    : rect_(rect),
+      frame_(PixelRect{static_cast<double>(rect.x), static_cast<double>(rect.y), static_cast<double>(rect.width),
+                       static_cast<double>(rect.height)},
+             x0, x1, y0, y1) {}
 
 cv::Point2d PlotArea::to_pixel_exact(double x, double y) const {
-  return {rect_.x + (x - x0_) / (x1_ - x0_) * rect_.width,
-          rect_.y + rect_.height - (y - y0_) / (y1_ - y0_) * rect_.height};
+  const Eigen::Vector2d p = frame_.to_pixel(x, y);
+  return {p.x(), p.y()};
 }
 
 cv::Point PlotArea::to_pixel(double x, double y) const {
@@ -65,16 +58,16 @@ cv::Point PlotArea::to_pixel(double x, double y) const {
 
 void PlotArea::draw_axes(cv::Mat& img, const std::string& x_label, const std::string& y_label,
                          bool grid) const {
-  const std::vector<double> xt = nice_ticks(x0_, x1_), yt = nice_ticks(y0_, y1_);
+  const std::vector<double> xt = nice_ticks(x0(), x1()), yt = nice_ticks(y0(), y1());
   const double xs = xt.size() > 1 ? xt[1] - xt[0] : 1, ys = yt.size() > 1 ? yt[1] - yt[0] : 1;
   for (double x : xt) {
-    const cv::Point p = to_pixel(x, y0_);
+    const cv::Point p = to_pixel(x, y0());
     if (grid) cv::line(img, {p.x, rect_.y}, {p.x, rect_.y + rect_.height}, kGrid, 1);
     cv::line(img, p, {p.x, p.y + 5}, kInk, 1);
     text_centred(img, tick_label(x, xs), {p.x, p.y + 16}, 0.4);
   }
   for (double y : yt) {
-    const cv::Point p = to_pixel(x0_, y);
+    const cv::Point p = to_pixel(x0(), y);
     if (grid) cv::line(img, {rect_.x, p.y}, {rect_.x + rect_.width, p.y}, kGrid, 1);
     cv::line(img, {p.x - 5, p.y}, p, kInk, 1);
     text_right(img, tick_label(y, ys), {p.x - 8, p.y + 4}, 0.4);
@@ -86,12 +79,10 @@ void PlotArea::draw_axes(cv::Mat& img, const std::string& x_label, const std::st
 }
 
 PlotArea equal_aspect_area(cv::Rect rect, double x0, double x1, double y0, double y1) {
-  double w = std::max(x1 - x0, 1e-9), h = std::max(y1 - y0, 1e-9);
-  const double per_px = std::max(w / rect.width, h / rect.height);
-  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
-  w = per_px * rect.width;
-  h = per_px * rect.height;
-  return PlotArea(rect, cx - w / 2, cx + w / 2, cy - h / 2, cy + h / 2);
+  const ChartFrame f = equal_aspect_frame(PixelRect{static_cast<double>(rect.x), static_cast<double>(rect.y),
+                                                    static_cast<double>(rect.width), static_cast<double>(rect.height)},
+                                          x0, x1, y0, y1);
+  return PlotArea(rect, f.x0(), f.x1(), f.y0(), f.y1());
 }
 
 void draw_colour_bar(cv::Mat& img, cv::Rect bar, const DeviationScale& scale, double lower_tolerance,

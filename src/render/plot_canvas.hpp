@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "render/chart.hpp"
 #include "render/colour_scale.hpp"
 #include "render/ticks.hpp"
 
@@ -43,16 +44,16 @@ class PlotArea {
   cv::Point to_pixel(double x, double y) const;
   cv::Point2d to_pixel_exact(double x, double y) const;
   const cv::Rect& rect() const { return rect_; }
-  double x0() const { return x0_; }
-  double x1() const { return x1_; }
-  double y0() const { return y0_; }
-  double y1() const { return y1_; }
+  double x0() const { return frame_.x0(); }
+  double x1() const { return frame_.x1(); }
+  double y0() const { return frame_.y0(); }
+  double y1() const { return frame_.y1(); }
   // Frame, grid, ticks and labels.
   void draw_axes(cv::Mat& img, const std::string& x_label, const std::string& y_label, bool grid = true) const;
 
  private:
   cv::Rect rect_;
-  double x0_, x1_, y0_, y1_;
+  ChartFrame frame_;  // the data-to-pixel mapping, shared with the vector figures
 };
 
 // Equal-aspect data window: expands [x0,x1] x [y0,y1] so one data unit is

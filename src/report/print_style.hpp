@@ -2,7 +2,8 @@
 // How report.html prints (a browser's Print, and `furrow report --pdf`
 // through headless Chromium, pdf_print.hpp): A4 pages by default, a running
 // header on every page naming the part and the report (its title: the job's
-// name or the report folder's, which identifies the measured piece), "Page
+// name or the report folder's; report.html adds the part number and the
+// serial or lot of the inspection record when it has them), "Page
 // N of M" at the foot, table rows never cut between pages (a row moves to
 // the next page whole) with the column heads repeated, figures and the
 // verdict kept on one page, navigation and interactive parts hidden (the

@@ -143,6 +143,15 @@ std::string alignment_section(const ComparisonDocument& doc) {
                      count(doc.summary.evaluated) + " evaluated"},
       {"Outliers", outliers.empty() ? "none" : outliers},
   };
+  // Only a frame other than the best fit is named: the best fit is what the rest describes.
+  if (doc.alignment.method != "bestfit")
+    kv.insert(kv.begin(), std::make_pair(std::string("Method"), escape(doc.alignment.method) +
+                                         (doc.alignment.note.empty() ? "" : ": " + escape(doc.alignment.note))));
+  for (const auto& d : doc.alignment.datums)
+    kv.push_back({"Datum " + escape(d.label) + " (" + escape(d.kind) + ", " + count(d.points.size()) + " points)",
+                  d.kind == "plane"  ? "flatness " + fixed(d.form_error * 1000, 1) + " &micro;m"
+                  : d.kind == "line" ? "straightness " + fixed(d.form_error * 1000, 1) + " &micro;m"
+                                     : "sets the last origin"});
   if (r.covariance) {
     const auto& c = *r.covariance;
     const double deg = 180 / kPi;
@@ -168,6 +177,17 @@ std::string alignment_section(const ComparisonDocument& doc) {
   return out + html::key_value_table(kv) + "</section>\n";
 }
 
+// With the CMM's or the datum frame, the frame's profile (form + location)
+// beside the best fit's (form alone): they answer different questions
+// (docs/registration.md "Alignments").
+std::string profile_text(const ComparisonDocument& doc) {
+  const std::string frame = fixed(doc.summary.profile * 1000, 1) + " &micro;m";
+  const auto& a = doc.alignment;
+  if (a.method == "bestfit" || !a.bestfit_profile) return frame;
+  return frame + " in the " + (a.method == "datums" ? std::string("datum frame") : std::string("CMM frame")) +
+         " (form + location); " + fixed(*a.bestfit_profile * 1000, 1) + " &micro;m best fit (form)";
+}
+
 std::string deviations_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
   const ComparisonSummary& s = doc.summary;
   std::string out = "<section id=\"deviations\"><h2>Deviations</h2>\n";
@@ -176,7 +196,7 @@ std::string deviations_section(const ComparisonDocument& doc, const std::vector<
                                " out of tolerance)"},
       {"Mean / sigma", um(s.deviations.mean) + " / " + fixed(s.deviations.sigma * 1000, 1) + " &micro;m"},
       {"Min / max", um(s.deviations.min) + " / " + um(s.deviations.max) + " &micro;m"},
-      {"Profile (2 max |d|)", fixed(s.profile * 1000, 1) + " &micro;m"},
+      {"Profile (2 max |d|)", profile_text(doc)},
   });
   return out + figures_of(figures, "deviations") + "</section>\n";
 }
@@ -355,7 +375,16 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
       if (in.role == role) return in.path;
     return fallback;
   };
-  out += print_style(named("part", doc.sources.part), context.title) + "</head>\n<body>\n";  // print_style.hpp
+  // The printed page header: the part number and serial when the record
+  // has them (what a filed report is looked up by), else the part file.
+  std::string print_part = named("part", doc.sources.part), print_title = context.title;
+  if (context.record) {
+    const InspectionRecord& r = *context.record;
+    if (!r.part_number.empty()) print_part = r.part_number + (r.revision.empty() ? "" : " rev " + r.revision);
+    if (!r.serial.empty()) print_title += ", serial " + r.serial;
+    else if (!r.lot.empty()) print_title += ", lot " + r.lot;
+  }
+  out += print_style(print_part, print_title) + "</head>\n<body>\n";  // print_style.hpp
   out += "<header><h1>QA report: " + escape(context.title) + "</h1>\n<p class=\"meta\">Part <code>" +
          escape(named("part", doc.sources.part)) + "</code>, measurements <code>" +
          escape(named("measurements", doc.sources.measurements)) +

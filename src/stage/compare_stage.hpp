@@ -4,6 +4,7 @@
 // from a partition, and — with a prediction — predicted versus measured and
 // gouge confirmation. One function for both callers.
 #include "inspection/comparison.hpp"
+#include "inspection/measurement_merge.hpp"
 #include "io/cmm/measurement_file.hpp"
 
 namespace furrow {
@@ -12,6 +13,20 @@ namespace furrow {
 // tolerance: half the zone's width (docs/registration.md says why). Call
 // after setting options.tolerance.
 void scale_registration_to_tolerance(CompareOptions& options);
+
+// The points to compare under options.align (docs/registration.md
+// "Alignments"): with datums, fits the datum frame to the plan's datum
+// points (datum_frame.hpp: InputError without a datums alignment in `plan`
+// or with a datum point missing, DatumFrameError for degenerate data) into
+// options.datum_frame and returns the other points; else `set` as it is.
+// `plan_name` names the plan in messages.
+MeasurementSet prepare_alignment(CompareOptions& options, const MeasurementSet& set, const InspectionPlan* plan,
+                                 const std::string& plan_name);
+
+// Keeps only the points of `compared` (by id) in `merged` - its set and the
+// file each point came from - so that it describes the compared points
+// after prepare_alignment took the datum points away.
+void restrict_to(MergedMeasurements& merged, const MeasurementSet& compared);
 
 // `plan`, `regions` and `prediction` may each be null. The measurement set,
 // plan, regions and prediction must belong to `part` (their readers' checks).

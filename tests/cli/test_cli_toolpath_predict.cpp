@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include <filesystem>
 
 #include "io/toolpath_file.hpp"
@@ -93,7 +95,12 @@ TEST_CASE("furrow predict on a planned path: prediction.json, PNG, within tolera
   CHECK(p.regions[0].curvature_class == "convex");
   CHECK(p.regions[0].reached > 0);
   CHECK(p.regions[0].max_overcut.error >= p.summary.max_overcut.error - 1e-9);
-  CHECK(p.regions[0].max_overcut.error <= p.summary.max_overcut.error + 1e-6);
+  // A sample lies within half a diagonal of the 0.1 mm grid, d = 0.0707 mm,
+  // of the refined extreme; the error surface there bends at most like the
+  // ball (r = 3) plus the cylinder (R = 25.4), so the sample misses it by at
+  // most d^2 / 2 (1/r + 1/R).
+  const double d = 0.1 / std::sqrt(2.0);
+  CHECK(p.regions[0].max_overcut.error <= p.summary.max_overcut.error + d * d / 2 * (1 / 3.0 + 1 / 25.4));
   // A regions file of another part is refused.
   REQUIRE(run_furrow({"partition", kMould, "--out", dir + "/mould_regions.json"}).status == 0);
   r = run_furrow({"predict", kCylinder, "--tool", kBall6, "--toolpath", dir + "/cyl.nc", "--regions",

@@ -65,7 +65,7 @@ TEST_CASE("every stage's options are read into the library's option structs") {
     "measurements": {"simulate": {"prediction": false, "misalign": [1, 2, 3, 4, 5, 6], "noise": 0.001,
                                   "blunders": 3, "blunder_size": [0.2, 0.5], "seed": 11, "points": "contact",
                                   "bumps": [[10, 20, 5, 4, -0.03]]}},
-    "comparison": {"dof": "translation", "loss": "huber", "outlier_sigma": 4, "outlier_rejection": false,
+    "comparison": {"align": "cmm", "dof": "translation", "loss": "huber", "outlier_sigma": 4, "outlier_rejection": false,
                    "prediction": false, "probe_sigma": 0.003, "overcut_sigmas": 2, "overcut_fraction": 0.25,
                    "site_margin": 2, "contact_cluster": 3, "overcut_cluster": 6},
     "output": "o"})",
@@ -116,6 +116,7 @@ TEST_CASE("every stage's options are read into the library's option structs") {
   CHECK(s.bumps[0].centre == Eigen::Vector3d(10, 20, 5));
   CHECK(s.bumps[0].radius == 4);
   CHECK(s.bumps[0].height == -0.03);
+  CHECK(job.compare.align == AlignMethod::cmm);
   CHECK(job.compare.registration.dof.to_string() == "translation");
   CHECK(job.compare.registration.loss == RobustLoss::huber);
   CHECK(job.compare.registration.outlier_sigma == 4);
@@ -175,6 +176,7 @@ TEST_CASE("job errors name the file and the member") {
   CHECK(error_of(minimal(R"( "comparison": {"overcut_fraction": 2},)")).find("comparison.overcut_fraction") !=
         std::string::npos);
   CHECK(error_of(minimal(R"( "comparison": {"dof": "sideways"},)")).find("comparison.dof") != std::string::npos);
+  CHECK(error_of(minimal(R"( "comparison": {"align": "rps"},)")).find("comparison.align") != std::string::npos);
   CHECK(error_of(minimal(R"( "version": 2,)")).find("job.json: version") == 0);
   CHECK(error_of(R"({"part": "p", "tool": "t", "toolpath": {"generate": {"direction": "w"}}, "tolerance": 0.05,
                      "output": "o"})")
@@ -197,6 +199,7 @@ TEST_CASE("the resolved options name every default a stage used") {
   CHECK(j["measurements"]["simulate"]["seed"] == 3);
   CHECK(j["measurements"]["simulate"]["noise"] == 0.002);
   CHECK(j["comparison"]["dof"] == "all");
+  CHECK(j["comparison"]["align"] == "bestfit");
   CHECK(j["tolerance"]["outside"] == 0.025);
   // Deterministic text.
   CHECK(job_options_json(job) == job_options_json(job));

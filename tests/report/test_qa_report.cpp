@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -283,4 +284,28 @@ TEST_CASE("an input inside the output folder is refused before the folder is rep
   std::vector<InputDigest> generated = inputs;
   generated[0].generated = true;  // written by the same run: replaced with the folder
   CHECK_NOTHROW(check_inputs_outside(dir, generated));
+}
+
+TEST_CASE("report.html shows a datum frame's profile beside the best fit's, and each datum's form") {
+  const test::ReportFixture& f = fixture();
+  ComparisonDocument doc = f.doc;
+  doc.alignment.method = "datums";
+  doc.alignment.note = "the datum frame fixes the part";
+  doc.alignment.bestfit_profile = 0.01234;
+  ComparisonDocument::Alignment::Datum a;
+  a.label = "A";
+  a.kind = "plane";
+  a.points = {"A1", "A2", "A3"};
+  a.form_error = 0.0045;
+  doc.alignment.datums = {a};
+  const std::string html = file_named(make_report(doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.html").bytes;
+  char frame[64];
+  std::snprintf(frame, sizeof frame, "%.1f &micro;m in the datum frame (form + location); 12.3 &micro;m best fit (form)",
+                doc.summary.profile * 1000);
+  CHECK(html.find(frame) != std::string::npos);
+  CHECK(html.find("Datum A (plane, 3 points)") != std::string::npos);
+  CHECK(html.find("flatness 4.5 &micro;m") != std::string::npos);
+  // A best fit says nothing of it.
+  const std::string plain = file_named(make_report(f.doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.html").bytes;
+  CHECK(plain.find("best fit (form)") == std::string::npos);
 }

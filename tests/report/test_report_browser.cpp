@@ -245,7 +245,11 @@ TEST_CASE("report.pdf: pages with the header and page number, no table row cut, 
   require_tool("/usr/bin/pdftoppm", "poppler-utils");
   const test::ReportFixture& f = fixture();
   const std::string dir = test::scratch_dir("report-pdf");
-  test::write_text(dir + "/report.html", page(make_report(f.doc, f.part, nullptr, context())));
+  // With an inspection record the header names the part number and serial.
+  ReportContext with_record = context();
+  with_record.record = parse_inspection_record(R"({"part_number": "MOULD-100-A", "revision": "C", "serial": "SN 0042"})",
+                                               "record.json");
+  test::write_text(dir + "/report.html", page(make_report(f.doc, f.part, nullptr, with_record)));
   for (const std::string paper : {"a4", "letter"}) {
     CAPTURE(paper);
     const std::string pdf = dir + "/report-" + paper + ".pdf";
@@ -291,25 +295,26 @@ TEST_CASE("report.pdf: pages with the header and page number, no table row cut, 
     for (int k = 0; k < pages; ++k) {
       const std::string& t = page_texts[static_cast<std::size_t>(k)];
       CAPTURE(k);
-      CHECK(t.find("Part examples/parts/mould.json") != std::string::npos);
-      CHECK(t.find("QA report: browser check") != std::string::npos);
+      CHECK(t.find("Part MOULD-100-A rev C") != std::string::npos);
+      CHECK(t.find("QA report: browser check, serial SN 0042") != std::string::npos);
       CHECK(t.find("Page " + std::to_string(k + 1) + " of " + std::to_string(pages)) != std::string::npos);
       std::istringstream in(t);
       for (std::string line; std::getline(in, line);) {
         std::smatch row;
-        // "#  Id  Face  u  v  x  y  z  deviation ..." of the point table.
+        // "#  Id  Face  nominal XYZ  IJK  actual XYZ  deviation ..." of the point table.
         if (!std::regex_search(line, row, std::regex("^\\s*(\\d+)\\s+(P\\d{5})\\s+mould\\s+(.*)$"))) continue;
         const std::size_t index = std::stoul(row[1].str()) - 1;
         REQUIRE(index < f.doc.points.size());
         const auto& p = f.doc.points[index];
         CHECK(row[2].str() == p.id);
-        // The rest of the row on the same line: u, v, x, y, z, deviation and the tolerance status.
+        // The rest of the row on the same line: nominal x y z, i j k, actual
+        // x y z, deviation, the limits, the amount out and the status.
         std::istringstream cells(row[3].str());
         std::vector<std::string> c;
         for (std::string cell; cells >> cell;) c.push_back(cell);
-        REQUIRE(c.size() >= 8);
-        CHECK(std::fabs(std::stod(c[0]) - p.uv.x()) <= 5e-5 + 1e-12);  // u with 4 decimals
-        CHECK(std::fabs(std::stod(c[5]) - p.deviation * 1000) <= 0.05 + 1e-9);  // deviation [um], one decimal
+        REQUIRE(c.size() >= 14);
+        CHECK(std::fabs(std::stod(c[0]) - p.foot.x()) <= 5e-5 + 1e-9);  // nominal x [mm], 4 decimals
+        CHECK(std::fabs(std::stod(c[9]) - p.deviation) <= 5e-5 + 1e-9);  // deviation [mm], 4 decimals
         ++rows[p.id];
       }
     }

@@ -149,7 +149,7 @@ TEST_CASE("datum points lie on their faces, clear of the edges, and the probe re
   CHECK(widest > 0.8 * std::hypot(ReferenceGeometry::box_x, ReferenceGeometry::box_y));
 }
 
-TEST_CASE("named datums take the faces in the order given; a face that cannot serve is refused by name") {
+TEST_CASE("named datums take the faces in the order given, a face that cannot serve is refused by name") {
   Fixture& f = box();
   const PartAlignment a = choose_alignment(f.part, *f.finder, f.probe, f.access, {});
   DatumChoice named = parse_datum_choice(a.datums[0].face + "," + a.datums[2].face + "," + a.datums[1].face, "--datums");

@@ -81,7 +81,7 @@ TEST_CASE("DMIS program of the tiny part matches its golden file and reads back"
   CHECK(text.find("$$ part: tiny_plane.json; revision: C; date: 2026-03-14\r\n") != std::string::npos);
 }
 
-TEST_CASE("DMIS labels are upper case; header fields, speeds and the tolerance follow the program") {
+TEST_CASE("DMIS labels are upper case, header fields, speeds and the tolerance follow the program") {
   ProbeProgram p = test::tiny_program();
   p.probe.name = "ruby_2mm";
   p.steps[0].point.id = "a1";

@@ -1,0 +1,168 @@
+#include "inspection/datum_frame.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "base/error.hpp"
+
+namespace furrow {
+
+namespace {
+
+// Below this share of the largest spread a direction counts as absent:
+// points that far from spanning a plane (or a line) carry no orientation
+// that survives probing noise.
+constexpr double kDegenerate = 1e-6;
+
+Eigen::Vector3d centroid_of(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : points) c += p;
+  return c / static_cast<double>(points.size());
+}
+
+// Singular values (descending) and right singular vectors of the centred
+// points: the principal directions of the point cloud.
+Eigen::JacobiSVD<Eigen::MatrixXd> principal(const std::vector<Eigen::Vector3d>& points,
+                                            const Eigen::Vector3d& centre) {
+  Eigen::MatrixXd m(points.size(), 3);
+  for (std::size_t i = 0; i < points.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = (points[i] - centre).transpose();
+  return Eigen::JacobiSVD<Eigen::MatrixXd>(m, Eigen::ComputeFullV);
+}
+
+double spread(const std::vector<double>& v) {
+  if (v.empty()) return 0;
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi - *lo;
+}
+
+Eigen::Isometry3d frame(const Eigen::Vector3d& origin, const Eigen::Vector3d& x, const Eigen::Vector3d& z) {
+  Eigen::Isometry3d f = Eigen::Isometry3d::Identity();
+  f.linear().col(0) = x;
+  f.linear().col(1) = z.cross(x);
+  f.linear().col(2) = z;
+  f.translation() = origin;
+  return f;
+}
+
+// The in-plane unit direction of `d` (plane normal z), or why there is none.
+Eigen::Vector3d in_plane(const Eigen::Vector3d& d, const Eigen::Vector3d& z, const std::string& what) {
+  const Eigen::Vector3d p = d - d.dot(z) * z;
+  if (!(p.norm() > kDegenerate * d.norm()))
+    throw DatumFrameError(what + " runs along the primary plane's normal: it fixes no direction in the plane");
+  return p.normalized();
+}
+
+}  // namespace
+
+PlaneFit fit_plane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& orientation,
+                   const std::string& what) {
+  if (points.size() < 3)
+    throw DatumFrameError(what + ": " + std::to_string(points.size()) + " points cannot fix a plane (3 needed)");
+  PlaneFit f;
+  f.centroid = centroid_of(points);
+  const auto svd = principal(points, f.centroid);
+  const Eigen::Vector3d s = svd.singularValues();
+  if (!(s(0) > 0) || !(s(1) > kDegenerate * s(0)))
+    throw DatumFrameError(what + ": the points are collinear, they fix no plane");
+  f.normal = svd.matrixV().col(2);
+  if (f.normal.dot(orientation) < 0) f.normal = -f.normal;
+  std::vector<double> r;
+  for (const Eigen::Vector3d& p : points) r.push_back((p - f.centroid).dot(f.normal));
+  f.flatness = spread(r);
+  return f;
+}
+
+DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet& set, const std::string& where) {
+  if (alignment.method != PartAlignment::Method::datums)
+    throw InputError(where + ": alignment method is " + to_string(alignment.method) +
+                     ", --align datums needs a datums alignment");
+  const std::vector<DatumFeature>& d = alignment.datums;
+  if (d.size() != 3 || d[0].kind != DatumFeature::Kind::plane || d[1].kind != DatumFeature::Kind::line ||
+      d[2].kind != DatumFeature::Kind::point)
+    throw InputError(where + ": alignment.datums must be a plane, a line and a point (3-2-1)");
+  if (!set.ids_from_file)
+    throw InputError(set.source + ": the points carry no ids, so the datum points cannot be found");
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < set.points.size(); ++i) index.emplace(set.points[i].id, i);
+  auto measured = [&](const DatumFeature& f) {
+    std::vector<Eigen::Vector3d> out;
+    for (const PlannedPoint& p : f.points) {
+      const auto k = index.find(p.id);
+      if (k == index.end())
+        throw InputError(set.source + ": datum " + f.label + " point " + p.id + " (" + where +
+                         " alignment) is not among the measured points");
+      out.push_back(set.points[k->second].xyz);
+    }
+    return out;
+  };
+  const std::vector<Eigen::Vector3d> a = measured(d[0]), b = measured(d[1]), c = measured(d[2]);
+  if (b.size() < 2) throw DatumFrameError("datum " + d[1].label + ": a line needs 2 points");
+  const double r = set.probe_radius;
+
+  // The nominal frame first: its directions orient the measured ones.
+  const Eigen::Vector3d zn = d[0].normal.normalized();
+  const Eigen::Vector3d xn = in_plane(d[1].direction, zn, "nominal datum " + d[1].label);
+  if (std::abs(d[2].normal.normalized().dot(xn)) < 0.1)
+    throw DatumFrameError("datum " + d[2].label + ": its face does not face along datum " + d[1].label +
+                          ", so the point fixes no origin along it");
+  const Eigen::Vector3d bn = d[1].origin - (d[1].origin - d[0].origin).dot(zn) * zn;
+  DatumFrame out;
+  out.nominal = frame(bn + (d[2].origin - bn).dot(xn) * xn, xn, zn);
+
+  // Primary: the plane, moved back by the probe radius for centre points.
+  const PlaneFit pa = fit_plane(a, zn, "datum " + d[0].label);
+  const Eigen::Vector3d z = pa.normal, ca = pa.centroid - r * z;
+  // Secondary: its points in plane A, the least-squares line.
+  std::vector<Eigen::Vector3d> q;
+  for (const Eigen::Vector3d& p : b) q.push_back(p - (p - ca).dot(z) * z);
+  const Eigen::Vector3d qc = centroid_of(q);
+  const auto svd = principal(q, qc);
+  double reach = 0;
+  for (const Eigen::Vector3d& p : b) reach = std::max(reach, (p - centroid_of(b)).norm());
+  if (!(svd.singularValues()(0) > kDegenerate * std::max(reach, 1.0)))
+    throw DatumFrameError("datum " + d[1].label + ": its points coincide once projected into datum " + d[0].label +
+                          " (the line runs along the primary plane's normal), so it fixes no direction");
+  // The plan lists B's points first to last along its nominal direction,
+  // and the program measures them in that order: their order orients x
+  // (a placement cannot reverse it, whatever it is).
+  Eigen::Vector3d x = in_plane(svd.matrixV().col(0), z, "datum " + d[1].label);
+  if ((q.back() - q.front()).dot(x) < 0) x = -x;
+  // Rotation taking part directions to CMM directions: where B's and C's
+  // outward normals point on the CMM, for the probe compensation.
+  const Eigen::Matrix3d rel = frame(Eigen::Vector3d::Zero(), x, z).linear() * out.nominal.linear().transpose();
+  const Eigen::Vector3d nb = rel * d[1].normal.normalized(), nc = rel * d[2].normal.normalized();
+  const Eigen::Vector3d nb_plane = nb - nb.dot(z) * z;
+  const Eigen::Vector3d line_point = qc - r * nb_plane;
+  std::vector<double> across;
+  for (const Eigen::Vector3d& p : q) across.push_back((p - qc).dot(z.cross(x)));
+  // Tertiary: the point, moved back by the radius along its normal.
+  const Eigen::Vector3d cp = c[0] - r * nc;
+  out.measured = frame(line_point + (cp - line_point).dot(x) * x, x, z);
+  out.transform = out.nominal * out.measured.inverse();
+
+  std::vector<std::string> ids[3];
+  for (int k = 0; k < 3; ++k)
+    for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
+  out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
+  out.datums.push_back({d[1].label, d[1].kind, ids[1], line_point, x, spread(across)});
+  out.datums.push_back({d[2].label, d[2].kind, ids[2], cp, nc, 0.0});
+  const Eigen::Matrix4d m = out.transform.matrix();
+  if (!m.allFinite()) throw DatumFrameError("the datum frame is not finite");
+  return out;
+}
+
+MeasurementSet without_datum_points(const MeasurementSet& set, const PartAlignment& alignment) {
+  std::set<std::string> datum_ids;
+  for (const DatumFeature& f : alignment.datums)
+    for (const PlannedPoint& p : f.points) datum_ids.insert(p.id);
+  MeasurementSet out = set;
+  out.points.clear();
+  for (const MeasuredPoint& p : set.points)
+    if (!datum_ids.count(p.id)) out.points.push_back(p);
+  return out;
+}
+
+}  // namespace furrow
