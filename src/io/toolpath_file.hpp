@@ -2,19 +2,11 @@
 // Tool paths: a G-code subset and CSV files (docs/architecture.md "Files").
 //
 // A path is a list of passes; a pass is a polyline the tool follows while
-// cutting (G1). Rapid moves (G0) separate passes and are not cut. Positions
+// cutting (G1, G2, G3). Rapid moves (G0) separate passes and are not cut. Positions
 // are millimetres in the part frame; the tool axis is +z.
 //
-// G-code subset: G0/G00, G1/G01, G20 (inch), G21 (mm), G90 (absolute), G91
-// (relative), words X Y Z F, N line numbers, comments in parentheses or after
-// ';', '%' and O program-number lines. Words that do not change the tool's
-// geometry (spindle M3/M4/M5 S, coolant M7/M8/M9, tool change T M6, program
-// end M2/M30, plane G17, cancels G40/G49/G80, work offsets G54-G59, G94, G64)
-// are ignored and listed with their line numbers in `ignored`. Anything that
-// would change the geometry but is not supported (arcs G2/G3, cutter
-// compensation G41/G42, length offset G43, rotary axes A B C, arc words I J K
-// R, G28 homing, unknown G codes or letters) is an error naming the line:
-// silently dropping it would predict the wrong part.
+// G-code: the dialect of Fanuc-style CAM posts, arcs flattened to polylines;
+// what is read, ignored and refused is listed in io/gcode_reader.hpp.
 //
 // CSV: `x,y,z` tool tips or `x,y,z,nx,ny,nz` contact points with their
 // surface normals, one point per line, an optional header line naming the
@@ -65,12 +57,14 @@ struct Toolpath {
 struct ToolpathReadOptions {
   // Units of CSV coordinates, and of G-code before any G20/G21 ("mm"|"inch").
   std::string units = "mm";
+  // G-code arcs (G2/G3) become polylines whose chords stay within this
+  // distance of the arc [mm] (io/gcode_arc.hpp): 0.1 µm, the resolution the
+  // reports print.
+  double arc_tolerance = 1e-4;
 };
 
 // Dispatches on the extension: .csv / .txt as CSV, anything else as G-code.
 Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& options = {});
-Toolpath parse_gcode(const std::string& text, const std::string& name,
-                     const ToolpathReadOptions& options = {});
 Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
                             const ToolpathReadOptions& options = {});
 
@@ -81,3 +75,6 @@ std::string toolpath_to_gcode(const Toolpath& path, double safe_z, double feed,
                               const std::string& header_comment);
 
 }  // namespace furrow
+
+// parse_gcode, declared with its dialect; needs the types above.
+#include "io/gcode_reader.hpp"  // IWYU pragma: export

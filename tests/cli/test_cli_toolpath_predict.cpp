@@ -162,10 +162,10 @@ TEST_CASE("furrow predict and toolpath: bad input is one clear error and status 
   CHECK(r.status == 2);
   CHECK(r.err.find("bad.nc:3:") != std::string::npos);
   CHECK(line_count(r.err) == 1);
-  write_text(dir + "/arc.nc", "G21 G90\nG0 X0 Y0 Z30\nG2 X10 Y0 I5 J0\n");
+  write_text(dir + "/arc.nc", "G21 G90\nG0 X0 Y0 Z30\nG2 X10 Y1 I5 J0\n");
   r = run_furrow({"predict", kMould, "--tool", kBall6, "--toolpath", dir + "/arc.nc", "--out", dir + "/p.json"});
   CHECK(r.status == 2);
-  CHECK(r.err.find("arc.nc:3: G2 is not supported") != std::string::npos);
+  CHECK(r.err.find("arc.nc:3: G2: arc start radius") != std::string::npos);
   write_text(dir + "/empty.nc", "");
   r = run_furrow({"predict", kMould, "--tool", kBall6, "--toolpath", dir + "/empty.nc", "--out", dir + "/p.json"});
   CHECK(r.status == 2);

@@ -57,7 +57,7 @@ TEST_CASE("G-code: absolute and relative moves, rapids separate passes, comments
   // Ignored words are reported with their lines, nothing silently dropped.
   std::vector<std::string> ignored;
   for (const auto& w : p.ignored) ignored.push_back(std::to_string(w.line) + ":" + w.word);
-  CHECK(ignored == std::vector<std::string>{"3:G17", "4:T1", "4:M6", "5:S12000", "5:M3", "14:M30"});
+  CHECK(ignored == std::vector<std::string>{"4:T1", "4:M6", "5:S12000", "5:M3", "14:M30"});
 }
 
 TEST_CASE("G-code: inch units convert to mm, also mid-file, and apply to the line they are on") {
@@ -74,9 +74,9 @@ TEST_CASE("G-code: inch units convert to mm, also mid-file, and apply to the lin
 }
 
 TEST_CASE("G-code errors name the line") {
-  CHECK(error_of("") == "path.nc: no cutting moves (G1) in the file");
-  CHECK(error_of("(only a comment)\n") == "path.nc: no cutting moves (G1) in the file");
-  CHECK(error_of("G0 X0 Y0 Z0\nG2 X1 Y1 I1 J0\n").find("path.nc:2: G2 is not supported") == 0);
+  CHECK(error_of("") == "path.nc: no cutting moves (G1, G2, G3) in the file");
+  CHECK(error_of("(only a comment)\n") == "path.nc: no cutting moves (G1, G2, G3) in the file");
+  CHECK(error_of("G0 X0 Y0 Z0\nG2 X1 Y1 I1 J1\n").find("path.nc:2: G2: arc radius is zero") == 0);
   CHECK(error_of("G0 X0 Y0 Z0\nG1 X1 A30\n").find("path.nc:2: word A30 is not supported") == 0);
   CHECK(error_of("G0 X0 Y0 Z0\nG1 X1 Y\n").find("path.nc:2: word 'Y' has no valid number") == 0);
   CHECK(error_of("G0 X0 Y0 Z0\nG1 X1 (open\n").find("path.nc:2: comment '(' is not closed") == 0);

@@ -1,0 +1,47 @@
+#pragma once
+// The G-code reader: the dialect Fanuc-style CAM posts (Mastercam, Fusion 360,
+// and the like) write for 3-axis milling, read into tool-tip passes
+// (docs/formats.md "Tool paths").
+//
+// Positions are tool tips in millimetres in the part frame; the tool axis is
+// +z. A pass is the polyline the tool follows while cutting (G1, G2, G3);
+// a rapid (G0), G28 or G53 ends the pass and is not cut.
+//
+// Read and honoured: G0 G1 G2 G3 (arcs flattened by gcode_arc.hpp, chord sag
+// ToolpathReadOptions::arc_tolerance), planes G17 G18 G19 with centre words
+// I J (G17), I K (G18), J K (G19) or a signed R (R < 0: the long arc), G20
+// inch / G21 mm, G90 / G91 absolute / incremental coordinates, G91.1
+// incremental arc centres (the default). G28 (return to home, as posts write
+// `G28 G91 Z0.`) and G53 (a rapid in machine coordinates, whatever the motion
+// mode, as on Fanuc controls) end the pass
+// and make the named axes (all, for a bare G28) unknown until an absolute
+// position is given again: the machine's home is not in the part frame.
+// G54-G59: the first one selected is the part frame; a switch to another one
+// is an error (the offsets between them are not in the file). G43 H: the
+// positions are taken as tool tips, i.e. the length offset is assumed to be
+// the one the tool was measured with; G43 is listed in `ignored`.
+//
+// Ignored and listed with their line numbers in `ignored` (no geometric
+// effect on tool tips): M S T H D words, G40 G43 G49 G61 G64 G80 G94.
+//
+// Refused, naming the line (dropping them would predict the wrong part):
+// G90.1 (absolute arc centres), cutter compensation G41/G42, canned cycles
+// G73 G74 G76 G81-G89, G53 with G1/G2/G3 on its line, rotary axes A B C,
+// any other G code or letter, arc errors (gcode_arc.hpp), I J K R outside an
+// arc or in the wrong plane, an arc with both R and I J K.
+//
+// `N` numbers, `O` numbers, `( )` and `;` comments, `%` lines, words without
+// spaces (`G90G20M03S2000`, `G1X1.Y2.`) and numbers like `1.` or `.5` are
+// read as written. Mode and unit words apply to the coordinates of their own
+// line, in any word order.
+#include <string>
+
+#include "io/toolpath_file.hpp"
+
+namespace furrow {
+
+// Throws InputError "name:line: what" for anything refused above, and
+// "name: no cutting moves" for a file without G1/G2/G3.
+Toolpath parse_gcode(const std::string& text, const std::string& name, const ToolpathReadOptions& options = ToolpathReadOptions{});
+
+}  // namespace furrow
