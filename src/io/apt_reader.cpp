@@ -1,5 +1,6 @@
 #include "io/apt_reader.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -129,6 +130,9 @@ class AptReader {
   void statement(const AptStatement& s) {
     const std::string& m = s.major;
     if (m.empty()) fail_line(name_, s.line, "a statement without a major word (expected e.g. GOTO/x,y,z)");
+    for (char c : m)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == ' ' || c == ',' || c == '-' || c == '_'))
+        fail_line(name_, s.line, "not an APT statement (letters, digits, '-' or '_' before '/'): a binary or UTF-16 file?");
     if (m == "GOTO") return go_to(s);
     if (m == "FROM") return from(s);
     if (m == "GODLTA") return go_delta(s);
@@ -384,7 +388,7 @@ class AptReader {
     // The line in XY: l0 + t (l1 - l0); its points at distance r from c.
     const Eigen::Vector2d p0 = (l0 - c).head<2>();
     const Eigen::Vector2d dl = (l1 - l0).head<2>();
-    if (!(dl.norm() > 0)) fail_line(name_, s.line, "(LINE/...) has two equal points in XY");
+    if (!(dl.norm() > ArcTolerances().same_point)) fail_line(name_, s.line, "(LINE/...) has two equal points in XY");
     const double a = dl.squaredNorm(), b = 2 * p0.dot(dl), q = p0.squaredNorm() - r * r;
     const double disc = b * b - 4 * a * q;
     if (disc < 0) fail_line(name_, s.line, "(LINE/...) does not meet the circle");
