@@ -109,6 +109,11 @@ int run_predict(Args& args) {
     if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
     options.resolution = *resolution;
   }
+  // Only APT CL data names its cutter (CUTTER/): any other path needs --tool,
+  // said before any file is read.
+  const std::string path_ext = lower_extension(toolpath_path);
+  if (!tool_path && path_ext != ".cl" && path_ext != ".apt" && path_ext != ".cls")
+    args.fail("--tool is required (only an APT CL path, .cl .apt .cls, names its own cutter with CUTTER/)");
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
   OutputSet outputs;
