@@ -220,6 +220,46 @@ def gcode_cases():
         put("gcode", name, data)
 
 
+# ------------------------------------------------------------------ APT CL data
+def apt_cases():
+    head = "PARTNO BAD\nUNITS/MM\nCUTTER/6,3\nRAPID\nGOTO/60,28,40\n"
+    cut = "GOTO/60,28,21.9\nGOTO/64,28,21.2\n"
+    cases = {
+        "empty.cl": "",
+        "bom_only.cl": BOM,
+        "garbage.cl": GARBAGE,
+        "nul.cl": b"GOTO/1\x00,2,3\n",
+        "no_cut.cl": head + "FINI\n",
+        "x_1e308.cl": head + "GOTO/1e308,28,20\n",
+        "x_2e6.cl": head + "GOTO/2000000,28,20\n",
+        "x_nan.cl": head + "GOTO/nan,28,20\n",
+        "x_huge_digits.cl": head + "GOTO/" + HUGE_NUMBER + ",28,20\n",
+        "inch_overflow.cl": "UNITS/INCHES\nCUTTER/0.25\nRAPID\nGOTO/0,0,1\nGOTO/1e307,0,1\n",
+        "missing_value.cl": head + "GOTO/60,,20\n",
+        "trailing_comma.cl": head + "GOTO/60,28,\n",
+        "two_values.cl": head + "GOTO/60,28\n",
+        "tilted_axis.cl": head + "GOTO/60,28,20,0,0.5,0.866\n",
+        "tilted_tlaxis.cl": head + "TLAXIS/0,1,1\n" + cut,
+        "tapered_cutter.cl": "CUTTER/10,1,4,1,10,0,50\nRAPID\nGOTO/60,28,40\n" + cut,
+        "two_cutters.cl": head + cut + "CUTTER/10\n" + cut,
+        "cutter_1e308.cl": "CUTTER/1e308\nRAPID\nGOTO/60,28,40\n" + cut,
+        "unknown_major.cl": head + "RETRCT\n" + cut,
+        "insert.cl": head + "INSERT G41 D1\n" + cut,
+        "cutcom.cl": head + "CUTCOM/LEFT\n" + cut,
+        "circle_alone.cl": head + cut + "CIRCLE/64,30,21.2,0,0,1,2\nFINI\n",
+        "circle_radius.cl": head + cut + "CIRCLE/64,30,21.2,0,0,1,3\nGOTO/64,32,21.2\n",
+        "after_fini.cl": head + cut + "FINI\nGOTO/1,1,1\n",
+        "continued_at_end.cl": head + cut + "GOTO/1,2,$\n",
+        "unknown_position.cl": "CUTTER/6,3\n" + cut,
+        "feed_zero.cl": head + "FEDRAT/0\n" + cut,
+        "units_feet.cl": "UNITS/FEET\n" + head + cut,
+        "crlf_bom_tilted.cl": BOM + (head + "GOTO/60,28,20,0.1,0,1\n").replace("\n", "\r\n").encode(),
+        "utf16.cl": (head + cut).encode("utf-16"),
+    }
+    for name, data in cases.items():
+        put("apt", name, data)
+
+
 # ------------------------------------------------------------------ tool-path CSV
 def toolpath_csv_cases():
     cases = {
@@ -494,6 +534,7 @@ def main():
     part_cases()
     tool_cases()
     gcode_cases()
+    apt_cases()
     toolpath_csv_cases()
     contact_cases()
     measurement_cases()

@@ -1,4 +1,4 @@
-// furrow predict PART --tool T.json --toolpath P --out prediction.json [--map errors.png]
+// furrow predict PART [--tool T.json] --toolpath P --out prediction.json [--map errors.png]
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -90,7 +90,7 @@ void print_summary(std::ostream& out, const Prediction& p) {
 }
 
 int run_predict(Args& args) {
-  const std::string tool_path = args.required_option("tool");
+  const auto tool_path = args.option("tool");
   const std::string toolpath_path = args.required_option("toolpath");
   const std::string out_path = args.required_option("out");
   const auto map_path = args.option("map");
@@ -109,11 +109,16 @@ int run_predict(Args& args) {
     if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
     options.resolution = *resolution;
   }
+  // Only APT CL data names its cutter (CUTTER/): any other path needs --tool,
+  // said before any file is read.
+  const std::string path_ext = lower_extension(toolpath_path);
+  if (!tool_path && path_ext != ".cl" && path_ext != ".apt" && path_ext != ".cls")
+    args.fail("--tool is required (only an APT CL path, .cl .apt .cls, names its own cutter with CUTTER/)");
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
   OutputSet outputs;
   outputs.add_input(part_path, "part");
-  outputs.add_input(tool_path, "tool");
+  if (tool_path) outputs.add_input(*tool_path, "tool");
   outputs.add_input(toolpath_path, "tool path");
   if (regions) outputs.add_input(*regions, "regions");
   outputs.will_write(out_path);
@@ -125,8 +130,11 @@ int run_predict(Args& args) {
     region_map = read_regions(*regions);
     region_map->check_belongs_to(part, *regions, part_path);
   }
-  const Cutter cutter(read_tool_file(tool_path));
   const Toolpath path = read_toolpath(toolpath_path, read_options);
+  // An APT path names its cutter (CUTTER/): it is the tool when --tool is
+  // not given, and a --tool that contradicts it is refused.
+  const Cutter cutter(tool_for_path(tool_path ? std::optional<ToolSpec>(read_tool_file(*tool_path)) : std::nullopt,
+                                    tool_path.value_or(""), path));
   TerminalProgress progress;
   const PredictedPath predicted = naming_inputs(part_path + " with " + toolpath_path, [&] {
     return predict_stage(part, cutter, path, options, {part_path, toolpath_path, regions.value_or("")},
@@ -148,7 +156,7 @@ int run_predict(Args& args) {
 
 const Command kPredictCommand = {
     "predict", "machining error of a tool path: per step, z-map error map, scallops, gouges",
-    "usage: furrow predict PART --tool TOOL.json --toolpath PATH --out PREDICTION.json\n"
+    "usage: furrow predict PART [--tool TOOL.json] --toolpath PATH --out PREDICTION.json\n"
     "                      [--map ERRORS.png] [--regions REGIONS.json] [--tolerance MM]\n"
     "                      [--gouge-threshold MM]\n"
     "                      [--resolution MM] [--cell MM] [--map-scale UM] [--units mm|inch]\n"
@@ -162,13 +170,15 @@ const Command kPredictCommand = {
     "    areas of overcut beyond the threshold) with depth, area and extent;\n"
     "  - contact points where the cutter is more curved than the part (local\n"
     "    gouges, in every tangent direction).\n"
-    "PATH is G-code (tool tips; mapped back to contact points on PART) or CSV\n"
+    "PATH is G-code or APT CL data (.cl .apt .cls) (tool tips; mapped back to\n"
+    "contact points on PART) or CSV\n"
     "(x,y,z tips, or x,y,z,nx,ny,nz contact points, optionally with face,u,v).\n"
     "The prediction (docs/formats.md \"prediction.json\") stores the error per\n"
     "face on a (u,v) grid of cells for later stages.\n"
     "\n"
-    "  --tool FILE           tool JSON (ball, flat or bull; required)\n"
-    "  --toolpath FILE       tool path, G-code or CSV (required)\n"
+    "  --tool FILE           tool JSON (ball, flat or bull); required unless PATH is\n"
+    "                        APT with a CUTTER/, which it must then match\n"
+    "  --toolpath FILE       tool path, G-code, APT CL or CSV (required)\n"
     "  --out FILE            prediction to write (.json, required)\n"
     "  --map FILE            also draw the error map per face (.png, colour scale in um)\n"
     "  --regions FILE        regions.json of furrow partition for PART: error summary\n"

@@ -188,6 +188,7 @@ Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& optio
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path + ": the file is empty");
   const std::string ext = lower_extension(path);
   if (ext == ".csv" || ext == ".txt") return parse_toolpath_csv(text, path, options);
+  if (ext == ".cl" || ext == ".apt" || ext == ".cls") return parse_apt(text, path, options);
   return parse_gcode(text, path, options);
 }
 

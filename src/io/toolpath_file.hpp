@@ -1,5 +1,5 @@
 #pragma once
-// Tool paths: a G-code subset and CSV files (docs/architecture.md "Files").
+// Tool paths: a G-code subset, APT CL data and CSV files (docs/architecture.md "Files").
 //
 // A path is a list of passes; a pass is a polyline the tool follows while
 // cutting (G1, G2, G3). Rapid moves (G0) separate passes and are not cut. Positions
@@ -16,8 +16,11 @@
 // are an error), '#' comments, and a blank line between passes when there is
 // no `pass` column.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "io/tool_file.hpp"
 
 namespace furrow {
 
@@ -49,6 +52,10 @@ struct Toolpath {
   std::vector<ToolpathPass> passes;
   std::vector<IgnoredWord> ignored;  // G-code words read but without geometric effect
   std::string source;                // file name, for reports
+  // The cutter the file itself defines (APT `CUTTER/`, io/apt_reader.hpp),
+  // and the line that defines it; empty for G-code and CSV.
+  std::optional<ToolSpec> tool;
+  int tool_line = 0;
 
   std::size_t point_count() const;
   std::size_t move_count() const;  // cutting segments
@@ -63,7 +70,8 @@ struct ToolpathReadOptions {
   double arc_tolerance = 1e-4;
 };
 
-// Dispatches on the extension: .csv / .txt as CSV, anything else as G-code.
+// Dispatches on the extension: .csv / .txt as CSV, .cl / .apt / .cls as APT
+// CL data (io/apt_reader.hpp), anything else as G-code.
 Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& options = {});
 Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
                             const ToolpathReadOptions& options = {});
@@ -76,5 +84,6 @@ std::string toolpath_to_gcode(const Toolpath& path, double safe_z, double feed,
 
 }  // namespace furrow
 
-// parse_gcode, declared with its dialect; needs the types above.
+// parse_gcode and parse_apt, declared with their dialects; need the types above.
+#include "io/apt_reader.hpp"    // IWYU pragma: export
 #include "io/gcode_reader.hpp"  // IWYU pragma: export

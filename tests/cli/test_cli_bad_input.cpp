@@ -61,6 +61,7 @@ TEST_CASE("bad input: every file of the corpus is refused with exit 2, one line 
       {"tool", {"toolpath", part, "--tool", "{FILE}", "--scallop", "0.05", "--out", "{OUT}/path.nc"}},
       {"tool_library", {"select-tool", part, "--library", "{FILE}", "--grid", "2", "--out", "{OUT}/tools.json"}},
       {"gcode", {"predict", part, "--tool", tool, "--toolpath", "{FILE}", "--out", "{OUT}/prediction.json"}},
+      {"apt", {"predict", part, "--toolpath", "{FILE}", "--out", "{OUT}/prediction.json"}},
       {"toolpath_csv", {"predict", part, "--tool", tool, "--toolpath", "{FILE}", "--out", "{OUT}/prediction.json"}},
       {"contact_csv", {"gouge", part, "--tool", tool, "--points", "{FILE}", "--out", "{OUT}/gouge.json"}},
       {"measurements_csv",

@@ -1,0 +1,121 @@
+// An APT CL file through `furrow predict` gives the prediction of the
+// equivalent G-code file, with the cutter taken from the file's CUTTER/; a
+// --tool that contradicts it and hostile numbers are refused with status 2.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/run_cli.hpp"
+
+using namespace furrow::test;
+using nlohmann::json;
+
+namespace {
+
+const std::string kMould = source_path("examples/parts/mould.json");
+const std::string kBall6 = source_path("examples/tools/ball_d6.json");
+
+// A raster over the mould's dimple flank with a turn-around arc.
+const char* kApt =
+    "PARTNO MOULD FLANK\n"
+    "UNITS/MM\n"
+    "CUTTER/6.0000,3.0000,0.0000,3.0000,0.0000,0.0000,50.0000\n"
+    "LOADTL/1\n"
+    "RAPID\nGOTO/60.0000,28.0000,40.0000\n"
+    "RAPID\nGOTO/60.0000,28.0000,21.9000\n"
+    "FEDRAT/MMPM,800.0000\n"
+    "GOTO/64.0000,28.0000,21.2000\n"
+    "GOTO/68.0000,28.0000,$\n 20.2000\n"
+    "$$ turn around\n"
+    "CIRCLE/68.0000,28.2500,20.2000,0.0000000,0.0000000,1.0000000,0.2500,0.0600,0.5000,6.0000,0.0000\n"
+    "GOTO/68.0000,28.5000,20.2000\n"
+    "GOTO/64.0000,28.5000,21.2000\n"
+    "GOTO/60.0000,28.5000,21.9000\n"
+    "RAPID\nGOTO/60.0000,28.5000,40.0000\n"
+    "FINI\n";
+const char* kGcode =
+    "%\nG21 G90 G17\nG0 X60 Y28 Z40\nG0 Z21.9\nG1 X64 Y28 Z21.2 F800\nG1 X68 Y28 Z20.2\n"
+    "G3 X68 Y28.5 I0 J0.25\nG1 X64 Y28.5 Z21.2\nG1 X60 Y28.5 Z21.9\nG0 Z40\nM30\n%\n";
+
+// Every number of `a` equals the one at the same place in `b` (to 1e-9,
+// relative above 1); strings (file names, the tool's name) may differ.
+void check_same_numbers(const json& a, const json& b, const std::string& where, int& compared) {
+  CAPTURE(where);
+  REQUIRE(a.type() == b.type());
+  if (a.is_object()) {
+    REQUIRE(a.size() == b.size());
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      REQUIRE(b.contains(it.key()));
+      check_same_numbers(*it, b.at(it.key()), where + "." + it.key(), compared);
+    }
+  } else if (a.is_array()) {
+    REQUIRE(a.size() == b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) check_same_numbers(a[k], b[k], where + "[" + std::to_string(k) + "]", compared);
+  } else if (a.is_number()) {
+    const double x = a.get<double>(), y = b.get<double>();
+    CHECK(std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x)));
+    ++compared;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("APT through furrow predict: the G-code file's prediction, the tool from CUTTER/") {
+  const std::string dir = scratch_dir("io-apt-predict");
+  write_text(dir + "/flank.cl", kApt);
+  write_text(dir + "/flank.nc", kGcode);
+  CliResult r = run_furrow({"predict", kMould, "--tool", kBall6, "--toolpath", dir + "/flank.nc", "--resolution",
+                            "0.2", "--out", dir + "/gcode.json"});
+  CAPTURE(r.err);
+  REQUIRE(r.status == 0);
+  // No --tool: the cutter is the file's CUTTER/ (ball, 6 mm).
+  r = run_furrow({"predict", kMould, "--toolpath", dir + "/flank.cl", "--resolution", "0.2", "--out",
+                  dir + "/apt.json"});
+  CAPTURE(r.err);
+  REQUIRE(r.status == 0);
+  // The same tool given explicitly agrees with the file.
+  r = run_furrow({"predict", kMould, "--tool", kBall6, "--toolpath", dir + "/flank.cl", "--resolution", "0.2",
+                  "--out", dir + "/apt_tool.json"});
+  CAPTURE(r.err);
+  REQUIRE(r.status == 0);
+
+  const json g = json::parse(slurp(dir + "/gcode.json"));
+  REQUIRE(g.contains("steps"));
+  REQUIRE(g.at("steps").size() > 10);  // the arc is flattened into many steps
+  for (const char* file : {"apt.json", "apt_tool.json"}) {
+    CAPTURE(file);
+    int compared = 0;
+    check_same_numbers(g, json::parse(slurp(dir + "/" + file)), "", compared);
+    CHECK(compared > 100);
+  }
+}
+
+TEST_CASE("APT through furrow predict: a contradicting --tool, a path without a tool and hostile numbers exit 2") {
+  const std::string dir = scratch_dir("io-apt-predict-errors");
+  write_text(dir + "/flank.cl", kApt);
+  write_text(dir + "/flat6.json", "{\"name\": \"F6\", \"type\": \"flat\", \"diameter\": 6}\n");
+  CliResult r = run_furrow({"predict", kMould, "--tool", dir + "/flat6.json", "--toolpath", dir + "/flank.cl",
+                            "--out", dir + "/p.json"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("flat6.json") != std::string::npos);
+  CHECK(r.err.find("flank.cl:3") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir + "/p.json"));
+
+  write_text(dir + "/flank.nc", kGcode);
+  r = run_furrow({"predict", kMould, "--toolpath", dir + "/flank.nc", "--out", dir + "/p.json"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--tool") != std::string::npos);
+
+  const std::string head = "CUTTER/6,3\nRAPID\nGOTO/60,28,40\n";  // lines 1-3
+  for (const std::string bad : {"GOTO/1e308,28,20\n", "GOTO/nan,28,20\n", "GOTO/60,,20\n", "GOTO/60,28\n"}) {
+    CAPTURE(bad);
+    write_text(dir + "/bad.apt", head + bad);
+    r = run_furrow({"predict", kMould, "--toolpath", dir + "/bad.apt", "--out", dir + "/p.json"});
+    CHECK(r.status == 2);
+    CHECK(r.err.find("bad.apt:4:") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir + "/p.json"));
+  }
+}
