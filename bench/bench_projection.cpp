@@ -4,8 +4,8 @@
 // from our control net) and the same points (target: >= 10x faster,
 // accuracy no worse). Prints figures; it does not pass or fail.
 //
-// Two point sets: "near" = typical CMM points (a surface point moved up to
-// +-3 mm along its normal) and "box" = uniform in the part's box grown by
+// Three point sets: "near" = typical CMM points (a surface point moved up to
+// +-3 mm along its normal), "far" = the same up to +-20 mm, and "box" = uniform in the part's box grown by
 // 10 mm (far points, points beyond the edges, points past the dimple's centre
 // of curvature). Accuracy columns:
 //   tangential  max |component of (q - foot) along the surface| at interior
@@ -13,8 +13,22 @@
 //   vs oracle   max (distance - oracle distance) on a 400-point subset, the
 //               oracle being a 600 x 600 sampling refined by a compass search;
 //   worse       points where the other method found a nearer foot by > 1e-9 mm;
-//   no answer   points where OCCT returned nothing or furrow did not converge.
+//   no answer   points where OCCT returned nothing or furrow did not converge;
+//   on edge     of the "worse" points, those whose foot lies on the patch's
+//               parameter boundary (u or v at 0 or 1).
+//
+// OpenCASCADE is run at its best too: the Tree algorithm restricted to minima
+// (Extrema_ExtFlag_MIN), and its seeded local solver Extrema_GenLocateExtPS.
+// The seeded rows give both libraries the same seed: for "near" and "far" points the
+// (u,v) the point was generated from (what a CMM program's nominal point
+// gives), for "box" points the nearest of 21 x 21 samples. Furrow's seeded
+// row is ClosestPointFinder::project with that seed as hint: still a global
+// search, the hint only orders the work. OCCT's seeded solver is local: it
+// returns the extremum its iteration reaches from the seed.
+#include <Extrema_GenLocateExtPS.hxx>
+#include <Extrema_POnSurf.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -128,7 +142,7 @@ void report(const char* name, double seconds, std::size_t n, const std::vector<F
             const std::vector<Foot>& other, const Face& face,
             const std::vector<Eigen::Vector3d>& pts, const std::vector<double>& oracle) {
   double tang = 0, vs_oracle = -1e300;
-  int worse = 0, missing = 0;
+  int worse = 0, on_edge = 0, missing = 0;
   for (std::size_t k = 0; k < n; ++k) {
     if (!feet[k].found) {
       ++missing;
@@ -137,13 +151,16 @@ void report(const char* name, double seconds, std::size_t n, const std::vector<F
     const Eigen::Vector2d& uv = feet[k].uv;
     if (uv.x() > 0 && uv.x() < 1 && uv.y() > 0 && uv.y() < 1)
       tang = std::max(tang, tangential(face, pts[k], uv));
-    if (other[k].found && other[k].distance < feet[k].distance - 1e-9) ++worse;
+    if (other[k].found && other[k].distance < feet[k].distance - 1e-9) {
+      ++worse;
+      if (uv.x() <= 0 || uv.x() >= 1 || uv.y() <= 0 || uv.y() >= 1) ++on_edge;
+    }
     if (k < oracle.size()) vs_oracle = std::max(vs_oracle, feet[k].distance - oracle[k]);
   }
   std::printf(
-      "  %-34s %9.0f pts/s  %8.2f us/pt  tangential %.1e  vs oracle %+.1e  worse %5d  no answer "
-      "%5d\n",
-      name, n / seconds, 1e6 * seconds / n, tang, vs_oracle, worse, missing);
+      "  %-38s %9.0f pts/s  %8.2f us/pt  tangential %.1e  vs oracle %+.1e  worse %5d (on edge "
+      "%5d)  no answer %5d\n",
+      name, n / seconds, 1e6 * seconds / n, tang, vs_oracle, worse, on_edge, missing);
 }
 
 }  // namespace
@@ -179,13 +196,19 @@ int main() {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0, 1), offset(-3, 3);
   const Eigen::AlignedBox3d box = part.control_box();
-  for (const char* set : {"near (+-3 mm along the normal)", "box (part box grown by 10 mm)"}) {
-    const bool near = set[0] == 'n';
+  for (const char* set : {"near (+-3 mm along the normal)", "far (+-20 mm along the normal)",
+                          "box (part box grown by 10 mm)"}) {
+    const bool near = set[0] != 'b';
+    const double reach = set[0] == 'n' ? 1.0 : 20.0 / 3.0;  // scales offset (+-3 mm)
     std::vector<Eigen::Vector3d> pts(count);
-    for (auto& q : pts) {
+    std::vector<Eigen::Vector2d> seeds(count);  // for the seeded rows (see the header comment)
+    for (std::size_t k = 0; k < count; ++k) {
+      Eigen::Vector3d& q = pts[k];
       if (near) {
-        const DifferentialGeometry g = face.geometry(unit(rng), unit(rng));
-        q = g.point + offset(rng) * g.normal;
+        const double u = unit(rng), v = unit(rng);
+        const DifferentialGeometry g = face.geometry(u, v);
+        q = g.point + reach * offset(rng) * g.normal;
+        seeds[k] = Eigen::Vector2d(u, v);
       } else {
         const Eigen::Vector3d lo = box.min().array() - 10, hi = box.max().array() + 10;
         q = lo + Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).cwiseProduct(hi - lo);
@@ -195,20 +218,48 @@ int main() {
     for (int k = 0; k < oracle_points; ++k)
       oracle[k] = oracle_distance(face.surface(), grid, oracle_grid, pts[k]);
 
-    std::vector<Foot> ours(count), grad(count), tree(count);
+    if (!near) {  // nearest of 21 x 21 samples
+      const int n = 20, stride = oracle_grid / n;
+      for (std::size_t k = 0; k < count; ++k) {
+        double best = 1e300;
+        for (int i = 0; i <= n; ++i)
+          for (int j = 0; j <= n; ++j) {
+            const auto at = static_cast<std::size_t>(i * stride * (oracle_grid + 1) + j * stride);
+            const double d = (grid[at] - pts[k]).squaredNorm();
+            if (d < best) {
+              best = d;
+              seeds[k] = Eigen::Vector2d(static_cast<double>(i) / n, static_cast<double>(j) / n);
+            }
+          }
+      }
+    }
+
+    std::vector<Foot> ours(count), seeded(count), grad(count), tree(count), tree_min(count),
+        located(count);
     const double t_ours = best_seconds(3, [&] {
       for (std::size_t k = 0; k < count; ++k) {
         const ClosestPoint c = finder.project(pts[k]);
         ours[k] = {c.converged, c.distance, c.uv};
       }
     });
+    const double t_seeded = best_seconds(3, [&] {
+      for (std::size_t k = 0; k < count; ++k) {
+        ClosestPoint hint;
+        hint.face = 0;
+        hint.uv = seeds[k];
+        hint.point = face.surface().point(seeds[k].x(), seeds[k].y());
+        const ClosestPoint c = finder.project(pts[k], hint);
+        seeded[k] = {c.converged, c.distance, c.uv};
+      }
+    });
     double t_ours_mt = best_seconds(3, [&] {
 #pragma omp parallel for schedule(dynamic, 256) num_threads(2)
       for (std::size_t k = 0; k < count; ++k) finder.project(pts[k]);
     });
-    auto run_occt = [&](Extrema_ExtAlgo algo, std::vector<Foot>& out) {
+    auto run_occt = [&](Extrema_ExtAlgo algo, Extrema_ExtFlag flag, std::vector<Foot>& out) {
       GeomAPI_ProjectPointOnSurf proj;
       proj.Init(occt, 0, 1, 0, 1, algo);
+      proj.SetExtremaFlag(flag);
       for (std::size_t k = 0; k < count; ++k) {
         proj.Perform(gp_Pnt(pts[k].x(), pts[k].y(), pts[k].z()));
         Foot f;
@@ -220,15 +271,40 @@ int main() {
         out[k] = f;
       }
     };
-    const double t_grad = best_seconds(3, [&] { run_occt(Extrema_ExtAlgo_Grad, grad); });
-    const double t_tree = best_seconds(3, [&] { run_occt(Extrema_ExtAlgo_Tree, tree); });
+    const double t_grad =
+        best_seconds(3, [&] { run_occt(Extrema_ExtAlgo_Grad, Extrema_ExtFlag_MINMAX, grad); });
+    const double t_tree =
+        best_seconds(3, [&] { run_occt(Extrema_ExtAlgo_Tree, Extrema_ExtFlag_MINMAX, tree); });
+    const double t_tree_min =
+        best_seconds(3, [&] { run_occt(Extrema_ExtAlgo_Tree, Extrema_ExtFlag_MIN, tree_min); });
+    const GeomAdaptor_Surface adaptor(occt);
+    const double t_located = best_seconds(3, [&] {
+      Extrema_GenLocateExtPS locate(adaptor);
+      for (std::size_t k = 0; k < count; ++k) {
+        locate.Perform(gp_Pnt(pts[k].x(), pts[k].y(), pts[k].z()), seeds[k].x(), seeds[k].y());
+        Foot f;
+        if (locate.IsDone()) {
+          f.found = true;
+          f.distance = std::sqrt(locate.SquareDistance());
+          locate.Point().Parameter(f.uv.x(), f.uv.y());
+        }
+        located[k] = f;
+      }
+    });
 
     std::printf("%s\n", set);
-    report("furrow ClosestPointFinder", t_ours, count, ours, grad, face, pts, oracle);
+    report("furrow ClosestPointFinder", t_ours, count, ours, tree_min, face, pts, oracle);
+    report("furrow, seeded (global)", t_seeded, count, seeded, tree_min, face, pts, oracle);
     report("OCCT ProjectPointOnSurf (Grad)", t_grad, count, grad, ours, face, pts, oracle);
     report("OCCT ProjectPointOnSurf (Tree)", t_tree, count, tree, ours, face, pts, oracle);
-    std::printf("  speed-up vs Grad %.1fx, vs Tree %.1fx; furrow on 2 threads %.0f pts/s\n\n",
-                t_grad / t_ours, t_tree / t_ours, count / t_ours_mt);
+    report("OCCT ProjectPointOnSurf (Tree, MIN)", t_tree_min, count, tree_min, ours, face, pts,
+           oracle);
+    report("OCCT GenLocateExtPS (seeded, local)", t_located, count, located, ours, face, pts,
+           oracle);
+    std::printf(
+        "  furrow vs OCCT at its best: %.1fx Tree+MIN, seeded %.1fx GenLocateExtPS; furrow on 2 "
+        "threads %.0f pts/s\n\n",
+        t_tree_min / t_ours, t_located / t_seeded, count / t_ours_mt);
   }
   return 0;
 }

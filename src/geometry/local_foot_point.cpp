@@ -38,7 +38,8 @@ std::pair<double, Vec<N>> lowest_eigen(const Mat<N>& m) {
 
 // Newton direction on the free parameters (zero on the held ones, which are
 // masked out with a unit row and column). Uses the full Hessian where it is
-// positive definite, else Gauss-Newton; when that direction is negligible
+// positive definite, the shifted Hessian where it is indefinite and
+// Gauss-Newton where it is semi-definite; when that direction is negligible
 // although the Hessian has negative curvature (q sits on a maximum or saddle
 // of the distance, e.g. opposite a concave wall), it returns the
 // negative-curvature direction instead, so the solve leaves it.
@@ -60,8 +61,14 @@ Vec<N> descent_direction(Mat<N> H, Mat<N> JtJ, Vec<N> g, const std::array<bool, 
   }
   const auto [lambda_min, lowest] = lowest_eigen<N>(H);
   if (lambda_min > 1e-10 * scale) return H.inverse() * (-g);  // closed form for N <= 2
-  JtJ.diagonal().array() += 1e-12 * scale;
-  Vec<N> step = JtJ.inverse() * (-g);
+  // Not positive definite (q beyond a centre of curvature): shift the
+  // Hessian until its lowest eigenvalue is 1e-3 of the scale (Hessian
+  // modification, Nocedal & Wright 3.4). Gauss-Newton would ignore the
+  // curvature term r . S'' that dominates here and crawl in steps of
+  // micrometres along an almost flat valley until the iteration cap.
+  Mat<N> M = lambda_min < 0 ? Mat<N>(H + (1e-3 * scale - lambda_min) * Mat<N>::Identity())
+                            : Mat<N>(JtJ + 1e-12 * scale * Mat<N>::Identity());
+  Vec<N> step = M.inverse() * (-g);
   for (int i = 0; i < N; ++i)
     if (!free[i]) step(i) = 0;
   if ((J * step).norm() <= 10 * step_tolerance && lambda_min < -1e-10 * scale) {

@@ -423,6 +423,47 @@ TEST_CASE("a hint changes the cost, never the answer") {
   }
 }
 
+// A CMM point's nominal (u,v) is the natural hint, and it sits on the normal
+// line through q: a stationary point of the distance. Beyond the centre of
+// curvature it is a saddle or maximum, and Newton from there can crawl along
+// an almost flat valley up to its iteration cap. Found by bench_projection
+// (points 20 mm off the mould); the hinted answer must still be the global,
+// converged one.
+TEST_CASE("a hint at a stationary point beyond the centre of curvature gives the cold answer") {
+  const Part part = mould();
+  const ClosestPointFinder finder(part);
+  ClosestPoint hint;
+  hint.face = 0;
+  hint.uv = {0.29444521553662723, 0.57097231067760024};
+  hint.point = part.faces[0].surface().point(hint.uv.x(), hint.uv.y());
+  const Eigen::Vector3d q(30.588187818458294, 45.03498303255013, 11.978131817196406);
+  const ClosestPoint cold = finder.project(q);
+  const ClosestPoint warm = finder.project(q, hint);
+  CHECK(cold.converged);
+  CHECK(warm.converged);
+  CHECK(std::abs(warm.distance - cold.distance) <= 1e-12);
+  check_against_oracle(finder, q);
+  // The same kind of hint over many points 20 mm off the surface.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1), h(-20, 20);
+  int unconverged = 0;
+  double worst = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double uu = unit(rng), vv = unit(rng);
+    const DifferentialGeometry g = part.faces[0].geometry(uu, vv);
+    const Eigen::Vector3d p = g.point + h(rng) * g.normal;
+    ClosestPoint nominal;
+    nominal.face = 0;
+    nominal.uv = {uu, vv};
+    nominal.point = g.point;
+    const ClosestPoint a = finder.project(p), b = finder.project(p, nominal);
+    unconverged += !a.converged || !b.converged;
+    worst = std::max(worst, std::abs(a.distance - b.distance));
+  }
+  CHECK(unconverged == 0);
+  CHECK(worst <= 1e-9);
+}
+
 TEST_CASE("non-convergence is reported, not hidden") {
   const Part part = mould();
   ClosestPointOptions o;
