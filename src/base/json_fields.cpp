@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/json_text.hpp"
 #include "base/text_fields.hpp"
 
 namespace furrow::json_fields {
@@ -193,39 +194,9 @@ json vector_json(const Eigen::Vector2d& v) {
   return json::array({finite(v.x(), "u"), finite(v.y(), "v")});
 }
 
-namespace {
-
-void write_value(const json& v, int indent, std::string& out) {
-  constexpr std::size_t kInlineWidth = 100;
-  const std::string compact = v.dump();
-  if ((!v.is_array() && !v.is_object()) || v.empty() || compact.size() <= kInlineWidth) {
-    if (v.is_object() && !v.empty()) {
-      // Objects always break, so that files diff well.
-    } else {
-      out += compact;
-      return;
-    }
-  }
-  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
-  const bool is_object = v.is_object();
-  out += is_object ? "{\n" : "[\n";
-  std::size_t k = 0;
-  for (auto it = v.begin(); it != v.end(); ++it, ++k) {
-    out += pad;
-    if (is_object) out += json(it.key()).dump() + ": ";
-    write_value(*it, indent + 2, out);
-    if (k + 1 < v.size()) out += ",";
-    out += "\n";
-  }
-  out += std::string(static_cast<std::size_t>(indent), ' ');
-  out += is_object ? "}" : "]";
-}
-
-}  // namespace
-
 std::string to_text(const json& value) {
   std::string out;
-  write_value(value, 0, out);
+  json_text::append_value(out, value, 0);  // the layout lives there, shared with streamed files
   out += "\n";
   return out;
 }

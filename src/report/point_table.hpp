@@ -44,5 +44,8 @@ struct PointTableRow {
 double out_of_tolerance_amount(double deviation, const ToleranceZone& zone);
 
 std::vector<PointTableRow> point_table(const ComparisonDocument& doc);
+// Row `i` of that table alone (i < doc.points.size()), for a writer that
+// goes through the points once without holding every row.
+PointTableRow point_table_row(const ComparisonDocument& doc, std::size_t i);
 
 }  // namespace furrow

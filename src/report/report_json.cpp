@@ -5,6 +5,7 @@
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
 #include "base/json_fields.hpp"
+#include "base/json_text.hpp"
 #include "report/face_summary.hpp"
 
 namespace furrow {
@@ -132,27 +133,60 @@ json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
   return out;
 }
 
-json points_json(const ComparisonDocument& doc) {
-  json out = json::array();
+// The points, streamed: one object each, members in key order as the tree
+// of the other members has them (json_text.hpp). Only the prediction, a
+// few members, goes through a tree, so that its fields are spelled in one
+// place (verification_json).
+void write_points(json_text::Writer& w, const ComparisonDocument& doc) {
+  w.begin_array();
   for (const auto& p : doc.points) {
-    json j;
-    j["id"] = p.id;
-    j["face"] = p.face;
-    j["uv"] = jf::vector_json(p.uv);
-    j["foot"] = jf::vector_json(p.foot);
-    j["normal"] = jf::vector_json(p.normal);
-    j["measured"] = jf::vector_json(p.measured);
-    j["deviation"] = num(p.deviation, "deviation");
-    j["uncertainty"] = opt(p.uncertainty, "uncertainty");
-    j["evaluated"] = p.evaluated;
-    j["in_tolerance"] = p.in_tolerance ? json(*p.in_tolerance) : json(nullptr);
-    j["in_fit"] = p.in_fit;
-    j["outlier"] = p.outlier.empty() ? json(nullptr) : json(p.outlier);
-    j["region"] = p.region ? json(*p.region) : json(nullptr);
-    j["prediction"] = p.prediction ? vj::point_prediction_json(*p.prediction) : json(nullptr);
-    out.push_back(std::move(j));
+    w.begin_object();
+    w.key("deviation");
+    w.number(p.deviation, "deviation");
+    w.key("evaluated");
+    w.boolean(p.evaluated);
+    w.key("face");
+    w.string(p.face);
+    w.key("foot");
+    w.vector(p.foot);
+    w.key("id");
+    w.string(p.id);
+    w.key("in_fit");
+    w.boolean(p.in_fit);
+    w.key("in_tolerance");
+    if (p.in_tolerance)
+      w.boolean(*p.in_tolerance);
+    else
+      w.null();
+    w.key("measured");
+    w.vector(p.measured);
+    w.key("normal");
+    w.vector(p.normal);
+    w.key("outlier");
+    if (p.outlier.empty())
+      w.null();
+    else
+      w.string(p.outlier);
+    w.key("prediction");
+    if (p.prediction)
+      w.value(vj::point_prediction_json(*p.prediction));
+    else
+      w.null();
+    w.key("region");
+    if (p.region)
+      w.integer(*p.region);
+    else
+      w.null();
+    w.key("uncertainty");
+    if (p.uncertainty)
+      w.number(*p.uncertainty, "uncertainty");
+    else
+      w.null();
+    w.key("uv");
+    w.vector(p.uv);
+    w.end_object();
   }
-  return out;
+  w.end_array();
 }
 
 }  // namespace
@@ -203,7 +237,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
     d["gouges"] = nullptr;
   }
   d["faces"] = faces_json(doc);
-  d["points"] = points_json(doc);
+  d["points"] = nullptr;  // streamed below, in its place among the members
   json figs = json::array();
   for (const ReportFigure& f : figures) figs.push_back({{"file", f.file}, {"section", f.section}, {"title", f.title}});
   d["figures"] = std::move(figs);
@@ -215,7 +249,21 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
     for (const StageTime& t : context.stages) stages.push_back({{"stage", t.stage}, {"seconds", num(t.seconds, "seconds")}});
     d["timing"] = {{"stages", std::move(stages)}, {"total_seconds", num(context.total_seconds, "total")}};
   }
-  return jf::to_text(d);
+  // About 860 bytes a point, written in one piece.
+  std::string out;
+  out.reserve(20000 + 900 * doc.points.size());
+  json_text::Writer w(out);
+  w.begin_object();
+  for (auto it = d.begin(); it != d.end(); ++it) {
+    w.key(it.key());
+    if (it.key() == "points")
+      write_points(w, doc);
+    else
+      w.value(*it);
+  }
+  w.end_object();
+  w.finish();
+  return out;
 }
 
 }  // namespace furrow

@@ -2,8 +2,9 @@
 // report.json of a QA report: every number of the report in one document,
 // described by docs/report.schema.json (JSON Schema 2020-12) and
 // docs/formats.md "report.json". Lengths in mm, rotations as in
-// comparison.json. Written with json_fields::to_text: deterministic, every
-// double in its shortest exact text. "generated" and "timing" are the only
+// comparison.json. In json_fields::to_text's layout, the points streamed
+// (json_text.hpp) rather than built as a tree: deterministic, every double
+// in its shortest exact text. "generated" and "timing" are the only
 // members that change between two runs on the same inputs.
 #include <string>
 #include <vector>

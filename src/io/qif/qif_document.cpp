@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "io/qif/qif_uuid.hpp"
 
@@ -24,6 +26,24 @@ const std::string kTime = "0000-00-00T00:00:00 (time)";
 class Writer {
  public:
   std::string text;
+  // Where the placeholders above were written (offsets into text, in
+  // order), so that set_qpids replaces them without searching 100 MB of
+  // numbers, which are full of "0000", and only them (a name that happens
+  // to spell a placeholder stays as written).
+  std::vector<std::pair<std::size_t, const std::string*>> placeholders;
+
+  // <name>placeholder</name> on its own line, its place noted.
+  void placeholder(int depth, const char* name, const std::string& which) {
+    indent(depth);
+    text += '<';
+    text += name;
+    text += '>';
+    placeholders.emplace_back(text.size(), &which);
+    text += which;
+    text += "</";
+    text += name;
+    text += ">\n";
+  }
 
   void number(double v) {
     if (!std::isfinite(v)) throw std::invalid_argument("QIF: a non-finite number");
@@ -190,10 +210,10 @@ void write_head(Writer& w, const QifDocumentData& d, const Ids& ids, const char*
   w.text += "\" versionQIF=\"3.0.0\" idMax=\"";
   w.integer(ids.max);
   w.text += "\">\n";
-  w.leaf(1, "QPId", kDocumentQpid);
+  w.placeholder(1, "QPId", kDocumentQpid);
   if (d.time) {
     w.open(1, "Version");  // VersionBaseType
-    w.leaf(2, "TimeCreated", kTime);
+    w.placeholder(2, "TimeCreated", kTime);
     w.close(1, "Version");
   }
   w.open(1, "Header");  // QIFDocumentHeaderType: Application, Description, Scope
@@ -351,7 +371,7 @@ void write_traceability(Writer& w, const QifDocumentData& d) {
   }
   named("InspectionOperator", t.operator_name);  // EmployeeType: Name first
   named("ReportPreparer", t.report_preparer);
-  if (d.time) w.leaf(5, "ReportPreparationDate", kTime);
+  if (d.time) w.placeholder(5, "ReportPreparationDate", kTime);
   std::size_t attributes = 0;
   for (const auto& a : t.attributes) attributes += !a.second.empty();
   if (attributes > 0) {
@@ -388,7 +408,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   // ExternalFileReferences?, MeasuredFeatures?, MeasuredPointSets?,
   // MeasuredCharacteristics?, InspectionStatus.
   if (d.time || d.traceability) write_traceability(w, d);
-  w.leaf(4, "ThisResultsInstanceQPId", kResultsQpid);
+  w.placeholder(4, "ThisResultsInstanceQPId", kResultsQpid);
   if (!d.inputs.empty()) {
     w.open_n(4, "ExternalFileReferences", d.inputs.size());
     for (const QifFile& f : d.inputs) {
@@ -487,20 +507,37 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
 }
 
 // The placeholders replaced by UUIDs derived from the text around them,
-// then the time's by the time.
-void set_qpids(std::string& text, const std::optional<std::string>& time) {
+// then the time's by the time. The UUIDs have the placeholders' length and
+// go in place; the time, when its length differs, costs one copy of the text.
+void set_qpids(Writer& w, const std::optional<std::string>& time) {
+  std::string& text = w.text;
   const std::string digest = qif_sha256_hex(text);
   const std::string document = uuid_from_content(digest + " QPId");
   const std::string results = uuid_from_content(digest + " ThisResultsInstanceQPId");
-  for (const auto& [placeholder, uuid] : {std::pair{kDocumentQpid, document}, std::pair{kResultsQpid, results}}) {
-    const std::size_t at = text.find(placeholder);
-    if (at != std::string::npos) text.replace(at, placeholder.size(), uuid);
-  }
-  if (!time) return;
   std::string escaped;
-  for (char c : *time) escaped += (c == '<' || c == '>' || c == '&' || static_cast<unsigned char>(c) < 0x20) ? '?' : c;
-  for (std::size_t at = text.find(kTime); at != std::string::npos; at = text.find(kTime, at + escaped.size()))
-    text.replace(at, kTime.size(), escaped);
+  if (time)
+    for (char c : *time) escaped += (c == '<' || c == '>' || c == '&' || static_cast<unsigned char>(c) < 0x20) ? '?' : c;
+  auto replacement = [&](const std::string* which) -> const std::string& {
+    if (which == &kDocumentQpid) return document;
+    if (which == &kResultsQpid) return results;
+    return escaped;
+  };
+  bool same_length = true;
+  for (const auto& [at, which] : w.placeholders) same_length &= replacement(which).size() == which->size();
+  if (same_length) {
+    for (const auto& [at, which] : w.placeholders) text.replace(at, which->size(), replacement(which));
+    return;
+  }
+  std::string out;
+  out.reserve(text.size() + w.placeholders.size() * escaped.size());
+  std::size_t from = 0;
+  for (const auto& [at, which] : w.placeholders) {
+    out.append(text, from, at - from);
+    out += replacement(which);
+    from = at + which->size();
+  }
+  out.append(text, from, std::string::npos);
+  text = std::move(out);
 }
 
 }  // namespace
@@ -508,13 +545,13 @@ void set_qpids(std::string& text, const std::optional<std::string>& time) {
 std::string qif_results_text(const QifDocumentData& d) {
   const Ids ids = number_ids(d, true);
   Writer w;
-  w.text.reserve(600 * (d.points.size() + 4));
+  w.text.reserve(1400 * (d.points.size() + 4));  // about 1270 bytes a point: no reallocation
   write_head(w, d, ids, "Results");
   write_features(w, d, ids);
   if (d.profile) write_characteristics(w, d, ids, true);
   write_results(w, d, ids);
   w.text += "</QIFDocument>\n";
-  set_qpids(w.text, d.time);
+  set_qpids(w, d.time);
   return std::move(w.text);
 }
 
@@ -559,7 +596,7 @@ std::string qif_plan_text(const QifDocumentData& d) {
   if (d.profile) write_characteristics(w, d, ids, false);
   write_plan(w, d, ids);
   w.text += "</QIFDocument>\n";
-  set_qpids(w.text, d.time);
+  set_qpids(w, d.time);
   return std::move(w.text);
 }
 
