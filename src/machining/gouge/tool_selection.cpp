@@ -4,15 +4,14 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "base/error.hpp"
 
 namespace furrow {
 
 namespace {
-
-// Per site and tool, what the tool does there.
-enum Verdict : unsigned char { kClear = 0, kLocal = 1, kInterferes = 2 };
 
 // How far the cutter located by `g` at `point` would rest above its location
 // when lowered at its axis (> 0: it cuts in elsewhere) [mm].
@@ -27,6 +26,10 @@ double interference_depth(const Cutter& cutter, const TipContactFinder& finder,
 }
 
 }  // namespace
+
+bool cutter_contains(const Cutter& outer, const Cutter& inner) {
+  return inner.flat_radius() <= outer.flat_radius() && inner.corner_radius() <= outer.corner_radius();
+}
 
 std::vector<Cutter> order_by_size(std::vector<Cutter> library) {
   std::stable_sort(library.begin(), library.end(), [](const Cutter& a, const Cutter& b) {
@@ -45,13 +48,21 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
   ToolSelection result;
   result.library = order_by_size(std::move(library));
   const std::size_t tools = result.library.size();
+  // contains[outer * tools + inner]: only outer < inner can hold (the order).
+  std::vector<unsigned char> contains(tools * tools, 0);
+  for (std::size_t a = 0; a < tools; ++a)
+    for (std::size_t b = a + 1; b < tools; ++b)
+      contains[a * tools + b] = cutter_contains(result.library[a], result.library[b]);
+  const bool share = options.check_interference && options.share_interference;
   std::vector<std::unique_ptr<TipContactFinder>> finders;
   if (options.check_interference)
     for (const Cutter& c : result.library)
       finders.push_back(std::make_unique<TipContactFinder>(part, c, options.contact));
 
   result.sites.resize(sites.size());
-  std::vector<unsigned char> verdicts(sites.size() * tools, kClear);  // [site * tools + tool]
+  std::vector<ToolVerdict>& verdicts = result.verdicts;
+  verdicts.assign(sites.size() * tools, ToolVerdict::clear);
+  std::vector<unsigned> searches(sites.size(), 0);
   const GougeOptions& gouge = options.scan.gouge;
   const BorderLocator locator(part, options.scan.border);
   const long n = static_cast<long>(sites.size());
@@ -61,13 +72,16 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
     const ContactSite& site = sites[static_cast<std::size_t>(k)];
     const ContactSurfaces surfaces = contact_surfaces(locator, site.face, site.uv);
     SiteSelection& s = result.sites[static_cast<std::size_t>(k)];
-    unsigned char* verdict = &verdicts[static_cast<std::size_t>(k) * tools];
+    ToolVerdict* verdict = &verdicts[static_cast<std::size_t>(k) * tools];
     s.site = site;
     s.point = surfaces.geometry.point;
     s.normal = surfaces.geometry.normal;
     s.k1 = surfaces.geometry.k1;
     s.k2 = surfaces.geometry.k2;
     s.border_search_converged = surfaces.border_search_converged;
+    // The clear tools so far and how each was located (normal, axis side).
+    std::vector<std::size_t> clear;
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> placed(tools);
     for (std::size_t t = 0; t < tools; ++t) {
       const Cutter& cutter = result.library[t];
       const LocalGouge g = check_contact(cutter, surfaces, gouge);
@@ -80,17 +94,27 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
       }
       double depth = 0;
       if (g.gouges()) {
-        verdict[t] = kLocal;
+        verdict[t] = ToolVerdict::local;
       } else if (options.check_interference) {
-        depth = interference_depth(cutter, *finders[t], s.point, g, gouge);
-        if (depth > options.interference_tolerance) verdict[t] = kInterferes;
+        placed[t] = {g.cutter.normal, g.cutter.toward_axis};
+        // A clear container located the same way decides it (the header);
+        // the depth is then never reported, as this site has a tool.
+        const bool inside_clear = share && std::any_of(clear.begin(), clear.end(), [&](std::size_t a) {
+          return contains[a * tools + t] && placed[a] == placed[t];
+        });
+        if (!inside_clear) {
+          depth = interference_depth(cutter, *finders[t], s.point, g, gouge);
+          ++searches[static_cast<std::size_t>(k)];
+          if (depth > options.interference_tolerance) verdict[t] = ToolVerdict::interferes;
+        }
       }
-      if (verdict[t] == kClear && s.tool < 0) s.tool = static_cast<int>(t);
+      if (verdict[t] == ToolVerdict::clear) clear.push_back(t);
+      if (verdict[t] == ToolVerdict::clear && s.tool < 0) s.tool = static_cast<int>(t);
       if (!last) continue;
       s.smallest_status = g.status;
       if (s.tool >= 0) continue;
       s.smallest_gouges_locally = g.gouges();
-      if (verdict[t] == kInterferes) s.interference = depth;
+      if (verdict[t] == ToolVerdict::interferes) s.interference = depth;
       if (g.gouges()) {
         s.needed.direction = g.direction(g.max_excess_angle);
         s.needed.excess = g.max_excess;
@@ -118,14 +142,15 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
   for (std::size_t k = 0; k < sites.size(); ++k) {
     const SiteSelection& s = result.sites[k];
     result.border_unresolved += !s.border_search_converged;
+    result.interference_searches += searches[k];
     if (!s.machinable) {
       ++result.unmachinable;
       continue;
     }
     if (s.tool < 0) ++result.without_tool;
     for (std::size_t t = 0; t < tools; ++t) {
-      result.gouging_sites[t] += verdicts[k * tools + t] != kClear;
-      result.interfering_sites[t] += verdicts[k * tools + t] == kInterferes;
+      result.gouging_sites[t] += verdicts[k * tools + t] != ToolVerdict::clear;
+      result.interfering_sites[t] += verdicts[k * tools + t] == ToolVerdict::interferes;
     }
   }
   for (std::size_t t = 0; t < tools && result.whole_surface < 0; ++t)

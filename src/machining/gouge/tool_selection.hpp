@@ -6,26 +6,26 @@
 // "Largest" orders by shank radius R, then corner radius r (both
 // descending; names break ties so the order is deterministic). Gouge-freeness
 // is not monotone in size across families (a small flat end mill gouges a
-// concave wall that a bigger ball clears), so every tool is checked at every
-// site: the per-site pick is the first gouge-free tool in that order, the
-// whole-surface pick the first tool with no gouging site.
+// concave wall that a bigger ball clears), so every tool gets a verdict at
+// every site (the per-tool counts of the output need them all): the per-site
+// pick is the first gouge-free tool in that order, the whole-surface pick the
+// first tool with no gouging site.
 //
-// Besides the local check, each tool is by default also checked for
-// interference away from the contact: the cutter, located at the site, is
-// lowered at its axis (contact_from_tip.hpp); if it would rest higher, it
-// cuts into the part elsewhere (e.g. a flat end mill on the wall of a trough
-// narrower than its bottom; no curvature at the contact shows that). Such a
-// tool is not gouge-free there either. (Interference with face edges, where
-// the cutter rests on an edge rather than on a tangency, is not detected.)
-//
-// Sites that no end mill can machine are excluded from the picks and
-// counted: unreachable from above (n_z < 0; a vertical wall, n_z = 0, is cut with the
-// side), degenerate normals, concave
-// creases. Where even the smallest tool gouges, the result says by how much
-// the design would have to change: in the smallest tool's worst direction the
-// part's normal curvature and the most it may be there (the tool's own
-// curvature in that direction), i.e. the radius of curvature the design would
-// need.
+// Shared interference verdicts (docs/tool_selection.md), off by default:
+// the local check is cheap, the interference search (a drop-cutter query,
+// contact_from_tip.hpp) is not. Two end mills located at the same contact
+// point with the same normal and axis side nest when the inner one has
+// neither a wider flat bottom nor a larger corner radius (cutter_contains);
+// a part that does not reach into the outer cutter cannot reach into the
+// inner one. So once a tool is clear at a site, every tool it contains that
+// is locally clear there can be taken as clear without its own search (tools
+// are visited largest first, so every container comes first). Every per-site
+// result (pick, needed curvature, interference depth) is then the same as
+// with every search run: up to a site's pick nothing is skipped, and a site
+// without a tool had no clear container. Per-tool counts can be lower: the
+// search is a seeded Newton method that now and then misses where a larger
+// tool rests (the smaller tool's own search finds it), and the shared path
+// carries such a miss down to the tools inside. That is why it is opt-in.
 #include <Eigen/Core>
 #include <functional>
 #include <vector>
@@ -52,7 +52,19 @@ struct ToolSelectionOptions {
   // A cutter resting more than this above its location interferes [mm].
   double interference_tolerance = 1e-6;
   TipContactOptions contact;
+  // Take a tool's interference verdict from a clear tool containing it
+  // (above): several times faster; the same per-site results, per-tool
+  // counts at most as large. False: every tool's own search.
+  bool share_interference = false;
 };
+
+// Whether `inner`, located at any contact point with the same normal and
+// axis side as `outer`, lies inside `outer`: both are the flat-bottom disc
+// of radius R - r (extended up the axis) swept by a ball of radius r, and
+// the inner one's disc and ball fit when R_in - r_in <= R_out - r_out and
+// r_in <= r_out (docs/tool_selection.md). A ball fits in a bull-nose of at
+// least its radius; no bull-nose fits in a ball.
+bool cutter_contains(const Cutter& outer, const Cutter& inner);
 
 struct SiteSelection {
   ContactSite site;
@@ -73,6 +85,13 @@ struct SiteSelection {
   bool border_search_converged = true;
 };
 
+// What a tool does at a site.
+enum class ToolVerdict : unsigned char {
+  clear = 0,       // gouge-free (also for unmachinable sites: no verdict)
+  local = 1,       // gouges by the local curvature comparison
+  interferes = 2,  // locally clear, but cuts into the part away from the contact
+};
+
 struct ToolSelection {
   std::vector<Cutter> library;               // ordered largest first
   std::vector<std::size_t> gouging_sites;    // per tool: machinable sites where it gouges
@@ -82,6 +101,10 @@ struct ToolSelection {
   std::size_t unmachinable = 0;              // sites excluded (see above)
   std::size_t without_tool = 0;              // machinable sites where every tool gouges
   std::size_t border_unresolved = 0;         // sites with border_search_converged false
+  std::vector<ToolVerdict> verdicts;           // [site * library.size() + tool]
+  // Interference searches run (a cost figure, not a result: it depends on
+  // ToolSelectionOptions::share_interference, nothing else does).
+  std::size_t interference_searches = 0;
 };
 
 // Throws InputError for an empty library.

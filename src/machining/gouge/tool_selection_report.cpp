@@ -57,6 +57,8 @@ std::string tool_selection_json(const Part& part, const std::string& part_path,
   doc["sites"] = sj::sites_source(source.grid, source.points_file, sel.sites.size());
   doc["curvature_tolerance"] = json_fields::finite(options.scan.gouge.curvature_tolerance, "tolerance");
   doc["interference_check"] = options.check_interference;
+  // Only when on, so the default document is unchanged.
+  if (options.check_interference && options.share_interference) doc["interference_shared"] = true;
   json tools = json::array();
   for (std::size_t t = 0; t < sel.library.size(); ++t) {
     const ToolSpec spec = sel.library[t].spec();
