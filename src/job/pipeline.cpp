@@ -10,6 +10,7 @@
 #include "base/json_fields.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
+#include "io/apt_reader.hpp"
 #include "io/cmm/measurement_csv.hpp"
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
@@ -94,7 +95,14 @@ struct Staged {
 
 Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
   const Job& job = s.job;
-  if (job.toolpath_file) return read_toolpath(*job.toolpath_file, job.toolpath_read);
+  if (job.toolpath_file) {
+    Toolpath path = read_toolpath(*job.toolpath_file, job.toolpath_read);
+    // A CL file names its cutter: the job's tool must be that cutter, or the
+    // prediction would be of a cut the program does not make (docs/formats.md
+    // "APT CL data"). Throws InputError naming both.
+    tool_for_path(read_tool_file(job.tool), job.tool, path);
+    return path;
+  }
   GeneratedToolpath generated = generate_toolpath(part, job.part, cutter, *job.generate,
                                                   [&](std::size_t d, std::size_t t) { s.note("toolpath", d, t); });
   s.add("toolpath.csv", std::move(generated.contacts_csv));

@@ -119,3 +119,25 @@ TEST_CASE("APT through furrow predict: a contradicting --tool, a path without a 
     CHECK_FALSE(std::filesystem::exists(dir + "/p.json"));
   }
 }
+
+TEST_CASE("APT in a job: the job's tool must be the file's CUTTER/") {
+  const std::string dir = scratch_dir("apt_job");
+  write_text(dir + "/flank.cl", kApt);
+  write_text(dir + "/flat6.json", "{\"name\": \"F6\", \"type\": \"flat\", \"diameter\": 6}\n");
+  auto job = [&](const std::string& tool, const std::string& out) {
+    const std::string file = dir + "/" + out + ".json";
+    write_text(file, json{{"part", kMould}, {"tool", tool}, {"toolpath", dir + "/flank.cl"}, {"tolerance", 0.05},
+                          {"output", dir + "/" + out}}
+                         .dump());
+    return file;
+  };
+  CliResult r = run_furrow({"run", job(dir + "/flat6.json", "wrong")});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("flat6.json") != std::string::npos);
+  CHECK(r.err.find("flank.cl:3") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir + "/wrong"));
+  // The same cutter as the file's: the job runs (no measurements: it plans).
+  r = run_furrow({"run", job(kBall6, "right")});
+  CHECK(r.err.find("CUTTER") == std::string::npos);
+  CHECK(std::filesystem::exists(dir + "/right/prediction.json"));
+}
