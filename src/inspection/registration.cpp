@@ -135,6 +135,63 @@ double motion(const Eigen::Matrix<double, 6, 1>& a, const Eigen::Matrix<double, 
   return (ma.translation() - mb.translation()).norm() + angle * reach;
 };
 
+// The held weak directions (`held`: origin motions, columns) moved so that
+// the points whose foot lies on a face or trim boundary come back onto the
+// bounded face: for those the whole offset from the probe-compensated foot,
+// x - (f + r n), is the residual (their true distance to the bounded
+// surface, sideways part included), for the others the signed deviation.
+// Linear least squares in the held directions only, re-projected until no
+// point moves more than `tolerance`. The held motions are those the surface
+// does not see, so only the edges decide them; without this the coarse
+// start alone would, and a start turned a few degrees about a plane's
+// normal keeps its corner points off the face for good. Returns whether
+// anything moved.
+bool settle_on_faces(Workspace& ws, const MotionBasis& held, double probe_radius, double reach,
+                     double tolerance) {
+  const std::size_t n = ws.fit.size();
+  const Eigen::Index m = held.cols();
+  if (m == 0) return false;
+  bool moved = false;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
+    std::size_t on_edge = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ClosestPoint& f = ws.feet[i];
+      if (!f.converged || ws.excluded[i]) continue;
+      const Eigen::Vector3d x = ws.fit.moved(i);
+      Eigen::Matrix<double, 3, 6> d;  // displacement w x x + t of an origin motion (w, t)
+      d << 0, x.z(), -x.y(), 1, 0, 0, -x.z(), 0, x.x(), 0, 1, 0, x.y(), -x.x(), 0, 0, 0, 1;
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> dm = d * held;
+      const Eigen::Vector3d e = x - (f.point + probe_radius * f.normal);
+      if (f.location == FootLocation::interior) {
+        const Eigen::RowVectorXd j = f.normal.transpose() * dm;
+        a += j.transpose() * j;
+        b += j.transpose() * f.normal.dot(e);
+      } else {
+        ++on_edge;
+        a += dm.transpose() * dm;
+        b += dm.transpose() * e;
+      }
+    }
+    if (on_edge == 0) break;
+    const Eigen::VectorXd step = -a.completeOrthogonalDecomposition().solve(b);
+    Eigen::Matrix<double, 6, 1> w = held * step;
+    const Eigen::Matrix<double, 6, 1> before = ws.fit.parameters();
+    // Compose: x' = exp(w) x + t_w applied after the current correction.
+    const Eigen::Isometry3d after = rigid_motion(w) * rigid_motion(before);
+    const Eigen::AngleAxisd aa(after.linear());
+    Eigen::Matrix<double, 6, 1> p;
+    p.head<3>() = aa.angle() * aa.axis();
+    p.tail<3>() = after.translation();
+    ws.fit.set_parameters(p);
+    ws.project();
+    moved = true;
+    if (motion(before, p, reach) <= tolerance) break;
+  }
+  return moved;
+}
+
 double rms(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x * x;
@@ -211,6 +268,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   ws.project();
   // The points on the part at the start decide which motions are weak.
   MotionBasis release(6, 0);
+  MotionBasis held_basis(6, 0);  // the weak directions held (columns)
   enum class Holding { none, all, exact_only } holding = Holding::none;
   auto points_in_fit = [&](std::vector<Eigen::Vector3d>& x, std::vector<Eigen::Vector3d>& normal) {
     for (std::size_t i = 0; i < n; ++i)
@@ -227,6 +285,9 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     if (options.hold_weak && !start.weak.empty()) {
       fit.restrict_motion(start.constrained);
       result.held = start.weak;
+      held_basis.resize(6, static_cast<Eigen::Index>(start.weak.size()));
+      for (std::size_t k = 0; k < start.weak.size(); ++k)
+        held_basis.col(static_cast<Eigen::Index>(k)) = start.weak[k].parameters;
       holding = Holding::all;
       // The motions the points see at all (not exact symmetries): released
       // for a last fit once the others have converged.
@@ -283,6 +344,12 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   for (int pass = 1; too_few.empty() && pass <= std::max(1, options.max_outlier_passes); ++pass) {
     result.outlier_passes = pass;
     iterate(std::to_string(pass));
+    // Points left beyond a face edge by where the start put the held
+    // directions: those directions moved to bring them back, then the
+    // constrained ones re-fitted, before any point is classified.
+    if (result.converged && too_few.empty() && solver_message.empty() &&
+        settle_on_faces(ws, held_basis, set.probe_radius, reach, options.motion_tolerance))
+      iterate(std::to_string(pass) + " settled");
     if (!options.flag_outliers || !solver_message.empty() || !too_few.empty()) break;
     std::vector<Eigen::Vector3d> positions(n);
     std::vector<double> deviation(n);

@@ -51,7 +51,9 @@
 // weak_ratio of the largest) are held where the start put them, so the fit
 // moves only along the others - the same fit as with those directions locked
 // by hand, and it cannot slide the part off the measured surface through
-// them. At the solution the analysis is repeated over the points in the fit
+// them. Points the start left beyond a face edge move the held directions
+// (and only them) back onto the face after each fit pass: there the whole
+// offset from the boundary foot is their residual. At the solution the analysis is repeated over the points in the fit
 // and reported; a direction weak only because of where the points are (a
 // grid over the measured faces would fix it) is `from_points`, which makes
 // the comparison's alignment weakly constrained (comparison.hpp).
