@@ -71,7 +71,7 @@ TEST_CASE("G-code rapids: inch, G53, and a rapid that moves nothing") {
   CHECK((p.rapids[1].to - Eigen::Vector3d(25.4, 0, 12.7)).norm() < 1e-12);
 }
 
-TEST_CASE("G-code rapids: CSV tool paths have none; furrow toolpath's G-code reads back with its rapids") {
+TEST_CASE("G-code rapids: CSV tool paths have none, and furrow toolpath's G-code reads back with its rapids") {
   const Toolpath csv = parse_toolpath_csv("0,0,0\n1,0,0\n\n0,1,0\n1,1,0\n", "p.csv");
   CHECK(csv.passes.size() == 2);
   CHECK(csv.rapids.empty());

@@ -89,7 +89,7 @@ TEST_CASE("furrow predict: without rapid gouges the prediction is the one of the
   CHECK(a.dump() == b.dump());
 }
 
-TEST_CASE("furrow predict --stock: rapids below the stock top are rapid gouges; a bad box is refused") {
+TEST_CASE("furrow predict --stock: rapids below the stock top are rapid gouges, a bad box is refused") {
   const std::string dir = scratch_dir("predict-rapid-stock");
   write_inputs(dir);
   write_text(dir + "/clean.nc", std::string(kHead) + kTail);
