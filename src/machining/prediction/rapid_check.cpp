@@ -216,11 +216,19 @@ RapidCheck check_rapids(const Part& part, const Cutter& cutter, const std::vecto
   result.checked = known.size();
   if (known.empty()) return result;
 
-  const std::vector<FaceSamples> faces = sample_faces(part, options);
+  // The control nets' box contains every face: a rapid whose lowest tip is
+  // above its top cannot touch the part (the cutter's lowest point is its
+  // tip). Rapids at a clearance height, the usual case for posts that feed
+  // the last approach with G1, then cost nothing, and when no rapid comes
+  // lower the surface is not even sampled.
+  const Eigen::AlignedBox3d box = part.control_box();
+  auto may_touch = [&](const RapidMove& r) { return !box.isEmpty() && std::min(r.from.z(), r.to.z()) < box.max().z(); };
+  bool any_low = false;
+  for (std::size_t k : known) any_low = any_low || may_touch(rapids[k]);
+  const std::vector<FaceSamples> faces = any_low ? sample_faces(part, options) : std::vector<FaceSamples>{};
   // A rapid may run deep through the part: the normal search must reach
   // across it.
   NormalErrorOptions normal = options.normal;
-  const Eigen::AlignedBox3d box = part.control_box();
   normal.max_distance = std::max(normal.max_distance, box.isEmpty() ? 0.0 : box.diagonal().norm() + 2 * cutter.radius());
 
   std::vector<RapidGouge> found(known.size());
@@ -228,7 +236,8 @@ RapidCheck check_rapids(const Part& part, const Cutter& cutter, const std::vecto
   for (int k = 0; k < static_cast<int>(known.size()); ++k) {
     const RapidMove& rapid = rapids[known[static_cast<std::size_t>(k)]];
     const SweptEnvelope env(cutter, rapid.from, rapid.to);
-    RapidGouge g = part_check(part, faces, env, std::min(rapid.from.z(), rapid.to.z()), options, normal);
+    RapidGouge g;
+    if (may_touch(rapid)) g = part_check(part, faces, env, std::min(rapid.from.z(), rapid.to.z()), options, normal);
     if (!(g.depth > options.threshold) && options.stock) g = stock_check(rapid, cutter.radius(), *options.stock);
     g.rapid = known[static_cast<std::size_t>(k)];
     g.line = rapid.line;

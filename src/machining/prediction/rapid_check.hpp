@@ -16,7 +16,9 @@
 // ones are skipped, as in the error map. Each face's samples are grouped in
 // blocks with their bounding box (padded by a sample step), so a rapid only
 // visits blocks in its shadow that rise above its lowest tip: a rapid at a
-// safe height costs one box test per block.
+// safe height costs one box test per block, and nothing at all when it is
+// above the part's control nets (which contain every face); when no rapid
+// comes that low, the surface is not sampled.
 //
 // Stock (only with a stock box): the cutter starts at its tip, so a rapid
 // enters the stock when its tip is below the box's top while the cutter's
