@@ -27,6 +27,37 @@ std::string um(double mm) {
   return buf;
 }
 
+// Rapid gouges: each one, since a rapid into the part is a crash, not a
+// tolerance question (docs/formats.md "prediction.json", `rapids`).
+// "x, y, z" with 3 decimals, never "-0.000" (a coordinate a hair below zero).
+std::string point3(const Eigen::Vector3d& v) {
+  std::string out;
+  for (int a = 0; a < 3; ++a) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", v[a]);
+    std::string s = buf;
+    if (s == "-0.000") s = "0.000";
+    out += (a ? ", " : "") + s;
+  }
+  return out;
+}
+
+void print_rapids(std::ostream& out, const Prediction& p) {
+  const RapidsRecord& r = p.rapids;
+  if (r.checked + r.unchecked == 0) return;
+  out << "rapids: " << r.checked << " checked against the part" << (r.has_stock ? " and the stock" : "");
+  if (r.unchecked) out << ", " << r.unchecked << " unchecked (not in the part frame: G28, G53, unknown start)";
+  out << "; rapid gouges: " << r.gouges.size() << "\n";
+  for (const RapidGougeRecord& g : r.gouges) {
+    char buf[200];
+    if (g.kind == "part")
+      std::snprintf(buf, sizeof buf, "  RAPID GOUGE line %d: cutter %.4f mm into the part at (", g.line, g.depth);
+    else
+      std::snprintf(buf, sizeof buf, "  RAPID GOUGE line %d: tip %.4f mm below the stock top at (", g.line, g.depth);
+    out << buf << point3(g.at.xyz) << ")" << (g.kind == "part" ? " on " + g.at.face : std::string()) << "\n";
+  }
+}
+
 void print_summary(std::ostream& out, const Prediction& p) {
   const PredictionSummary& s = p.summary;
   out << "tool " << p.tool.name << " (" << to_string(p.tool.type) << ", diameter " << p.tool.diameter
@@ -72,6 +103,7 @@ void print_summary(std::ostream& out, const Prediction& p) {
   if (p.gouge_sites.size() > deepest.size())
     out << "  ... and " << p.gouge_sites.size() - deepest.size() << " shallower sites (all in the prediction file)\n";
   out << "contact points with local gouging: " << s.local_gouge_points << "\n";
+  print_rapids(out, p);
   if (p.has_regions) {
     out << "by region (" << p.regions_file << "):\n";
     for (const RegionErrorRecord& r : p.regions) {
@@ -103,8 +135,18 @@ int run_predict(Args& args) {
   const double scale_um = args.positive_or("map-scale", 2000 * options.tolerance);
   ToolpathReadOptions read_options;
   read_options.units = args.option_or("units", "mm");
+  const auto stock = args.option("stock");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  if (stock) {
+    const std::vector<double> b = parse_number_list(*stock, 6, "stock");
+    const Eigen::Vector3d lo(b[0], b[1], b[2]), hi(b[3], b[4], b[5]);
+    for (int a = 0; a < 3; ++a)
+      if (!(lo[a] < hi[a]))
+        args.fail("--stock " + *stock + ": expected xmin,ymin,zmin,xmax,ymax,zmax with each min below its max (" +
+                  std::string(1, char('x' + a)) + ")");
+    options.stock = Eigen::AlignedBox3d(lo, hi);
+  }
   if (resolution) {
     if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
     options.resolution = *resolution;
@@ -149,7 +191,9 @@ int run_predict(Args& args) {
   outputs.publish(out_path);
   print_summary(std::cout, predicted.record);
   std::cout << "wrote " << out_path << (map_path ? " and " + *map_path : std::string()) << "\n";
-  return kExitOk;
+  // A rapid into the part or the stock is a crash: it fails like a gouge
+  // (`furrow gouge`); cutting moves' gouge sites leave the exit code alone.
+  return predicted.record.rapids.gouges.empty() ? kExitOk : kExitFail;
 }
 
 }  // namespace
@@ -160,6 +204,7 @@ const Command kPredictCommand = {
     "                      [--map ERRORS.png] [--regions REGIONS.json] [--tolerance MM]\n"
     "                      [--gouge-threshold MM]\n"
     "                      [--resolution MM] [--cell MM] [--map-scale UM] [--units mm|inch]\n"
+    "                      [--stock XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX]\n"
     "\n"
     "Predicts the error a 3-axis finishing path leaves on PART (sign: + material\n"
     "left, - overcut), from the swept cutter geometry itself:\n"
@@ -169,7 +214,11 @@ const Command kPredictCommand = {
     "    the largest scallop between adjacent passes, and gouge sites (connected\n"
     "    areas of overcut beyond the threshold) with depth, area and extent;\n"
     "  - contact points where the cutter is more curved than the part (local\n"
-    "    gouges, in every tangent direction).\n"
+    "    gouges, in every tangent direction);\n"
+    "  - rapids (G0, APT RAPID): the cutter swept along each one must stay clear\n"
+    "    of the part (and, with --stock, above the stock top); one that does not\n"
+    "    is a rapid gouge, with its line and deepest point, and the exit code is 1.\n"
+    "    G28/G53 and rapids from an unknown position are counted as unchecked.\n"
     "PATH is G-code or APT CL data (.cl .apt .cls) (tool tips; mapped back to\n"
     "contact points on PART) or CSV\n"
     "(x,y,z tips, or x,y,z,nx,ny,nz contact points, optionally with face,u,v).\n"
@@ -191,7 +240,9 @@ const Command kPredictCommand = {
     "                        tolerance, rounded to 1/2/5; ball 6 mm at 0.01: 0.05)\n"
     "  --cell MM             size of the stored error cells on the surface (default 1)\n"
     "  --map-scale UM        colour saturation of the PNG in um (default 2 x tolerance)\n"
-    "  --units U             units of CSV paths and of G-code before G20/G21 (default mm)\n",
+    "  --units U             units of CSV paths and of G-code before G20/G21 (default mm)\n"
+    "  --stock BOX           raw stock box in the part frame, mm: a rapid whose tip is\n"
+    "                        below its top while the cutter is over it is a rapid gouge\n",
     run_predict};
 
 }  // namespace furrow::cli

@@ -31,8 +31,12 @@ int run_and_report(const Job& job, std::ostream& out) {
   // Without measurements the job's outcome is the plan's: a region left
   // uncovered fails it like `furrow plan` (docs/cmm.md "Coverage"); with
   // them the verdict already counts such regions as not inspected.
-  if (result.measured) return exit_status(result.verdict, result.alignment);
-  return result.plan_complete || job.plan_allow_uncovered ? kExitOk : kExitFail;
+  const int status = result.measured ? exit_status(result.verdict, result.alignment)
+                                     : (result.plan_complete || job.plan_allow_uncovered ? kExitOk : kExitFail);
+  // A rapid into the part or the stock fails the job as it fails `furrow
+  // predict`, whatever the measurement says; a failed computation (3) stays.
+  if (result.rapid_gouges > 0 && (status == kExitOk || status == kExitInconclusive)) return kExitFail;
+  return status;
 }
 
 }  // namespace furrow::cli

@@ -221,6 +221,14 @@ class AptReader {
     if (rapid_next_) {
       if (circle_) fail_line(name_, circle_->line, "CIRCLE/ is followed by a RAPID move instead of its GOTO/");
       rapid_next_ = false;
+      RapidMove rapid;  // checked against the part like a G0 (io/toolpath_file.hpp)
+      rapid.line = line;
+      rapid.known = known_;
+      if (known_) {
+        rapid.from = position_;
+        rapid.to = to;
+      }
+      if (!rapid.known || rapid.from != rapid.to) path_.rapids.push_back(rapid);
       reposition(to);
       return;
     }
@@ -286,6 +294,7 @@ class AptReader {
   }
 
   // A move that is not cut (RAPID GOTO, FROM): the pass ends, as at a G0.
+  // FROM/ only states where the tool is: it is not a move and not a rapid.
   void reposition(const Eigen::Vector3d& to) {
     close_pass();
     position_ = to;

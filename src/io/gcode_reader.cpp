@@ -260,6 +260,9 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
         fail_line(name, number, "G53 with a cutting move: machine coordinates are not in the part frame");
       const bool any = axis_given[0] || axis_given[1] || axis_given[2];
       close_pass();
+      RapidMove unchecked;  // ends in machine coordinates: not placed in the part frame
+      unchecked.line = number;
+      path.rapids.push_back(unchecked);
       for (int a = 0; a < 3; ++a)
         if (axis_given[a] || (home && !any)) known[a] = false;
       continue;
@@ -289,7 +292,17 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
       limits::check_coordinate(next[a], name + ":" + std::to_string(number) + ": " + char('X' + a));
     }
     if (motion == 0) {
+      RapidMove rapid;
+      rapid.line = number;
+      rapid.known = known[0] && known[1] && known[2];  // where it starts
       for (int a = 0; a < 3; ++a) known[a] = known[a] || axis_given[a];
+      rapid.known = rapid.known && known[0] && known[1] && known[2];
+      if (rapid.known) {
+        rapid.from = Eigen::Vector3d(position[0], position[1], position[2]);
+        rapid.to = Eigen::Vector3d(next[0], next[1], next[2]);
+      }
+      // A rapid to where the tool already is moves nothing.
+      if (!rapid.known || rapid.from != rapid.to) path.rapids.push_back(rapid);
       close_pass();
       for (int a = 0; a < 3; ++a) position[a] = next[a];
       continue;

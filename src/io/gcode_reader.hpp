@@ -5,7 +5,11 @@
 //
 // Positions are tool tips in millimetres in the part frame; the tool axis is
 // +z. A pass is the polyline the tool follows while cutting (G1, G2, G3);
-// a rapid (G0), G28 or G53 ends the pass and is not cut.
+// a rapid (G0), G28 or G53 ends the pass and is not cut. Every rapid is
+// also kept in Toolpath::rapids with its line (toolpath_file.hpp RapidMove):
+// a G0 whose start and end are both known in the part frame as a segment,
+// G28, G53 and a G0 from or to a position with an unknown axis as an
+// unchecked move without positions.
 //
 // Read and honoured: G0 G1 G2 G3 (arcs flattened by gcode_arc.hpp, chord sag
 // ToolpathReadOptions::arc_tolerance), planes G17 G18 G19 with centre words

@@ -2,8 +2,11 @@
 // Tool paths: a G-code subset, APT CL data and CSV files (docs/architecture.md "Files").
 //
 // A path is a list of passes; a pass is a polyline the tool follows while
-// cutting (G1, G2, G3). Rapid moves (G0) separate passes and are not cut. Positions
-// are millimetres in the part frame; the tool axis is +z.
+// cutting (G1, G2, G3). Rapid moves (G0) separate passes and are not cut;
+// they are kept beside the passes (Toolpath::rapids, RapidMove below) so
+// that the cutter's travel through them can be checked against the part
+// (machining/prediction/rapid_check.hpp). Positions are millimetres in the
+// part frame; the tool axis is +z.
 //
 // G-code: the dialect of Fanuc-style CAM posts, arcs flattened to polylines;
 // what is read, ignored and refused is listed in io/gcode_reader.hpp.
@@ -42,6 +45,25 @@ struct ToolpathPass {
   std::vector<ToolpathPoint> points;  // at least 2
 };
 
+// One rapid move, in file order, as any tool-path reader records it (G-code
+// G0, G28, G53; an APT RAPID GOTO): a straight tool-tip segment at rapid
+// feed that is not cut but must not touch the part. `known` says whether
+// both ends are positions in the part frame. It is false for a move through
+// or to machine coordinates (G28 home, G53) and for a move that starts or
+// ends with an axis not yet known (the first rapid of a program, which
+// starts wherever the machine is, or one after G28): such a move is counted
+// as unchecked and its positions are left zero, never guessed.
+// Controls move the axes of a rapid together in a straight line only on
+// some machines (others move each axis at its own top speed, a dog-leg):
+// the straight segment is what this records and what is checked.
+// CSV tool paths have no rapids.
+struct RapidMove {
+  int line = 0;        // source line (1-based)
+  bool known = false;  // both ends in the part frame
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();  // tip [mm], only when known
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();
+};
+
 struct IgnoredWord {
   int line = 0;
   std::string word;
@@ -50,6 +72,7 @@ struct IgnoredWord {
 struct Toolpath {
   ToolpathKind kind = ToolpathKind::tool_tips;
   std::vector<ToolpathPass> passes;
+  std::vector<RapidMove> rapids;     // non-cutting moves, in file order (see RapidMove)
   std::vector<IgnoredWord> ignored;  // G-code words read but without geometric effect
   std::string source;                // file name, for reports
   // The cutter the file itself defines (APT `CUTTER/`, io/apt_reader.hpp),

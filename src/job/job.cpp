@@ -185,6 +185,18 @@ void read_prediction(Section p, Job& job) {
   p.positive("resolution", o.resolution);
   p.positive("cell", o.map.cell_size);
   p.positive("map_scale", job.prediction_map_scale);
+  if (const json* v = p.find("stock")) {
+    // The raw stock box, as `furrow predict --stock` (docs/architecture.md "Rapid moves").
+    const std::string w = p.at("stock");
+    const json& a = jf::array(*v, w);
+    if (a.size() != 6) throw InputError(w + ": expected [xmin, ymin, zmin, xmax, ymax, zmax]");
+    double b[6];
+    for (std::size_t k = 0; k < 6; ++k) b[k] = jf::number(a[k], jf::child(w, k));
+    for (int k = 0; k < 3; ++k)
+      if (!(b[k] < b[k + 3]))
+        throw InputError(w + ": each min must be below its max (" + std::string(1, char('x' + k)) + ")");
+    o.stock = Eigen::AlignedBox3d(Eigen::Vector3d(b[0], b[1], b[2]), Eigen::Vector3d(b[3], b[4], b[5]));
+  }
   p.finish();
 }
 

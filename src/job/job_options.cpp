@@ -49,6 +49,11 @@ std::string job_options_json(const Job& job) {
                                                     "gouge threshold")},
                      {"resolution", pr.resolution > 0 ? jf::finite(pr.resolution, "resolution") : json(nullptr)},
                      {"cell", jf::finite(pr.map.cell_size, "cell")}};
+  // Only when given, so that a job without it echoes what it always did.
+  if (pr.stock)
+    j["prediction"]["stock"] = {jf::finite(pr.stock->min().x(), "stock"), jf::finite(pr.stock->min().y(), "stock"),
+                                jf::finite(pr.stock->min().z(), "stock"), jf::finite(pr.stock->max().x(), "stock"),
+                                jf::finite(pr.stock->max().y(), "stock"), jf::finite(pr.stock->max().z(), "stock")};
   const PlannerOptions& o = job.plan;
   j["plan"] = {{"prediction", job.plan_with_prediction},
                {"allow_uncovered", job.plan_allow_uncovered},

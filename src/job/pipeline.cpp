@@ -131,6 +131,11 @@ Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, cons
   const PredictionSummary& p = read_back.summary;
   s.result.summary.push_back(line("prediction: max undercut %.1f um, max overcut %.1f um, %zu gouge sites",
                                   p.max_undercut.error * 1000, p.max_overcut.error * 1000, p.gouge_sites));
+  // Only when there is one, so a clean job's summary is what it was.
+  s.result.rapid_gouges = read_back.rapids.gouges.size();
+  for (const RapidGougeRecord& g : read_back.rapids.gouges)
+    s.result.summary.push_back(line("RAPID GOUGE line %d (%s): %.4f mm deep at (%.3f, %.3f, %.3f)", g.line,
+                                    g.kind.c_str(), g.depth, g.at.xyz.x(), g.at.xyz.y(), g.at.xyz.z()));
   return read_back;
 }
 

@@ -51,6 +51,7 @@ struct PipelineResult {
   Verdict verdict = Verdict::fail;  // when measured
   std::string alignment = "ok";     // when measured: the comparison's alignment state
   bool plan_complete = true;        // every region holds its minimum of plan points
+  std::size_t rapid_gouges = 0;     // rapids into the part or stock: the job fails (docs/architecture.md "Rapid moves")
   std::vector<std::string> summary;  // a few lines for people
 };
 

@@ -110,6 +110,19 @@ TEST_CASE("APT from NX: the same passes as the equivalent G-code, the cutter, th
   const Toolpath gcode = parse_gcode(kNxGcode, "ring.nc");
   check_same_passes(apt, gcode, true);
   REQUIRE(apt.passes.size() == 2);
+  // RAPID GOTOs are the G0 moves, ready for the rapid check; the first starts
+  // from an unknown position in both files.
+  REQUIRE(apt.rapids.size() == gcode.rapids.size());
+  REQUIRE(apt.rapids.size() == 6);
+  const int rapid_lines[] = {15, 17, 30, 32, 34, 42};
+  for (std::size_t k = 0; k < apt.rapids.size(); ++k) {
+    CAPTURE(k);
+    CHECK(apt.rapids[k].line == rapid_lines[k]);
+    CHECK(apt.rapids[k].known == gcode.rapids[k].known);
+    CHECK(apt.rapids[k].known == (k > 0));
+    CHECK((apt.rapids[k].from - gcode.rapids[k].from).norm() < 1e-9);
+    CHECK((apt.rapids[k].to - gcode.rapids[k].to).norm() < 1e-9);
+  }
   CHECK(apt.passes[0].points.front().feed == 800);
   CHECK(apt.passes[1].points.back().feed == 250);
 

@@ -267,3 +267,19 @@ TEST_CASE("pdf and paper: report.pdf on request, a4 or letter, recorded with the
   CHECK(error_of(minimal(R"( "paper": "a3",)")).find("job.json: paper: expected a4 or letter") == 0);
   CHECK(error_of(minimal(R"( "pdf": "yes",)")).find("job.json: pdf") == 0);
 }
+
+TEST_CASE("prediction.stock: the raw stock box for the rapid check, echoed only when given, checked up front") {
+  const Job plain = parse_job(minimal(""), "job.json", "");
+  CHECK_FALSE(plain.prediction.stock);
+  CHECK_FALSE(nlohmann::json::parse(job_options_json(plain))["prediction"].contains("stock"));
+  const Job job = parse_job(minimal(R"( "prediction": {"stock": [-1, -2, -3, 101, 82, 30]},)"), "job.json", "");
+  REQUIRE(job.prediction.stock);
+  CHECK(job.prediction.stock->min() == Eigen::Vector3d(-1, -2, -3));
+  CHECK(job.prediction.stock->max() == Eigen::Vector3d(101, 82, 30));
+  const nlohmann::json j = nlohmann::json::parse(job_options_json(job));
+  CHECK(j["prediction"]["stock"] == nlohmann::json::array({-1, -2, -3, 101, 82, 30}));
+  CHECK(error_of(minimal(R"( "prediction": {"stock": [0, 0, 0, 1, 1]},)")).find("job.json: prediction.stock: expected") ==
+        0);
+  CHECK(error_of(minimal(R"( "prediction": {"stock": [0, 0, 5, 1, 1, 2]},)"))
+            .find("job.json: prediction.stock: each min must be below its max (z)") == 0);
+}

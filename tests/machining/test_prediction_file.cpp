@@ -291,3 +291,43 @@ TEST_CASE("a 20 mm ball through the mould's dimple: local gouges at the bottom, 
     CHECK(p.predicted_error_at(s.face, s.deepest.uv.x(), s.deepest.uv.y()).max_overcut < -0.002);
   }
 }
+
+TEST_CASE("prediction.json: rapids are written only with a finding or a stock box, and read back the same") {
+  Prediction p = small_prediction();
+  p.rapids.checked = 4;
+  p.rapids.unchecked = 2;
+  // Nothing to say: no member, the bytes of a prediction without rapids.
+  CHECK(prediction_to_json_text(p) == prediction_to_json_text(small_prediction()));
+  CHECK_FALSE(parse_prediction_json(prediction_to_json_text(p), "p.json").rapids.written);
+  p.rapids.written = true;
+  p.rapids.has_stock = true;
+  p.rapids.stock = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, -3), Eigen::Vector3d(4, 5, 6));
+  RapidGougeRecord part;
+  part.line = 17;
+  part.kind = "part";
+  part.depth = 1.25;
+  part.at = {"f", {0.5, 1.5}, {1, 2, 3}};
+  RapidGougeRecord stock;
+  stock.line = 30;
+  stock.kind = "stock";
+  stock.depth = 2.5;
+  stock.at.xyz = {-1, 0, 3.5};
+  p.rapids.gouges = {part, stock};
+  const std::string text = prediction_to_json_text(p);
+  const Prediction back = parse_prediction_json(text, "prediction.json");
+  CHECK(prediction_to_json_text(back) == text);
+  CHECK(back.rapids.written);
+  CHECK(back.rapids.checked == 4);
+  CHECK(back.rapids.unchecked == 2);
+  CHECK(back.rapids.stock.max().z() == 6);
+  REQUIRE(back.rapids.gouges.size() == 2);
+  CHECK(back.rapids.gouges[0].at.face == "f");
+  CHECK(back.rapids.gouges[1].at.face.empty());
+  CHECK(back.rapids.gouges[1].depth == 2.5);
+  std::string t = text;
+  replace(t, "\"kind\": \"stock\"", "\"kind\": \"air\"");
+  CHECK(reader_error(t).find("rapids.gouges[1].kind: expected \"part\" or \"stock\"") != std::string::npos);
+  t = text;
+  replace(t, "\"depth\": 2.5", "\"depth\": 0");
+  CHECK(reader_error(t).find("rapids.gouges[1].depth: must be positive") != std::string::npos);
+}

@@ -79,6 +79,17 @@ PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpa
     if (s == GougeStatus::gouge || s == GougeStatus::concave_crease)
       r.local_gouges.push_back({where[k].first, where[k].second, checks[k]});
   }
+
+  // Rapids against the design surface, sampled as finely as the error map.
+  if (progress) progress("rapids", 0, 1);
+  RapidCheckOptions rapid;
+  rapid.threshold = r.gouge_threshold;
+  rapid.sample_spacing = options.map.sample_spacing > 0 ? options.map.sample_spacing : r.resolution;
+  rapid.max_samples = options.map.max_samples;
+  rapid.normal = options.map.normal;
+  rapid.stock = options.stock;
+  r.rapids = check_rapids(part, cutter, path.rapids, rapid);
+  if (progress) progress("rapids", 1, 1);
   return r;
 }
 
@@ -151,6 +162,26 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
       rec.directions_deg.emplace_back(a.start * 180 / M_PI, a.width * 180 / M_PI);
     p.local_gouges.push_back(rec);
   }
+  // Written only when there is something to say (docs/formats.md
+  // "prediction.json"): a prediction without rapid gouges or stock box keeps
+  // the bytes it always had.
+  p.rapids.checked = r.rapids.checked;
+  p.rapids.unchecked = r.rapids.unchecked;
+  p.rapids.has_stock = options.stock.has_value();
+  if (options.stock) p.rapids.stock = *options.stock;
+  for (const RapidGouge& g : r.rapids.gouges) {
+    RapidGougeRecord rec;
+    rec.line = g.line;
+    rec.kind = to_string(g.kind);
+    rec.depth = g.depth;
+    rec.at.xyz = g.at;
+    if (g.face >= 0) {
+      rec.at.face = part.faces[static_cast<std::size_t>(g.face)].name();
+      rec.at.uv = g.uv;
+    }
+    p.rapids.gouges.push_back(rec);
+  }
+  p.rapids.written = p.rapids.has_stock || !p.rapids.gouges.empty();
   s.gouge_sites = p.gouge_sites.size();
   s.local_gouge_points = p.local_gouges.size();
   s.path_points = r.geometry.points;

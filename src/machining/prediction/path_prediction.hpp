@@ -5,7 +5,8 @@
 // over every face (error_map.hpp), the scallop of every pass pair
 // (pass_scallops.hpp), the gouge sites (gouge_sites.hpp) and the contact
 // points where the cutter gouges locally (gouge_scan.hpp, the gouge
-// module's check), then the plain Prediction record (prediction.hpp) that
+// module's check), the rapid moves checked against the part and the stock
+// (rapid_check.hpp), then the plain Prediction record (prediction.hpp) that
 // prediction.json stores.
 #include <functional>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "machining/gouge/gouge_scan.hpp"
 #include "machining/prediction/gouge_sites.hpp"
 #include "machining/prediction/path_steps.hpp"
+#include "machining/prediction/rapid_check.hpp"
 #include "machining/prediction/prediction.hpp"
 
 namespace furrow {
@@ -36,10 +38,13 @@ struct PathPredictionOptions {
   ErrorMapOptions map;  // cell_size: stored cells; sample_spacing 0: the z-map's
   PassScallopOptions scallops;
   GougeScanOptions local;
+  // Raw stock box in the part frame: rapids below its top are rapid gouges
+  // too (rapid_check.hpp); none: rapids are checked against the part only.
+  std::optional<Eigen::AlignedBox3d> stock;
 };
 
 // `progress(stage, done, total)`; stages "locating path", "per-step errors",
-// "z-map", "error map", "local gouges".
+// "z-map", "error map", "local gouges", "rapids".
 using StageProgress = std::function<void(const std::string&, std::size_t, std::size_t)>;
 
 struct PathPrediction {
@@ -55,6 +60,7 @@ struct PathPrediction {
     GougePoint check;
   };
   std::vector<Local> local_gouges;  // contact points whose check is not clear
+  RapidCheck rapids;  // the path's rapid moves against the part (and the stock)
 };
 
 // Throws InputError for invalid options (non-positive tolerance or

@@ -81,6 +81,9 @@ void check_prediction_against_part(const Prediction& prediction, const Part& par
     face_of(prediction.gouge_sites[k].face, prediction_name + ": gouge_sites[" + std::to_string(k) + "]");
   for (std::size_t k = 0; k < prediction.local_gouges.size(); ++k)
     face_of(prediction.local_gouges[k].at.face, prediction_name + ": local_gouges[" + std::to_string(k) + "]");
+  for (std::size_t k = 0; k < prediction.rapids.gouges.size(); ++k)
+    if (prediction.rapids.gouges[k].kind == "part")
+      face_of(prediction.rapids.gouges[k].at.face, prediction_name + ": rapids.gouges[" + std::to_string(k) + "]");
 }
 
 }  // namespace furrow

@@ -73,6 +73,29 @@ struct LocalGougeRecord {
   std::vector<Eigen::Vector2d> directions_deg;  // (start, width) arcs from the cutter's meridian
 };
 
+// A rapid move whose cutter touches the part or enters the stock
+// (rapid_check.hpp): `kind` "part" (at: the deepest point on the design
+// surface, with its face and uv) or "stock" (at.xyz: the lowest tip inside
+// the stock; no face).
+struct RapidGougeRecord {
+  int line = 0;       // source line of the rapid
+  std::string kind;   // "part" or "stock"
+  double depth = 0;   // [mm], positive
+  SurfaceLocation at;
+};
+
+// The rapid check of the path. `written` says whether prediction.json holds
+// it: only with a stock box or a rapid gouge, so that other predictions keep
+// their bytes; a file without it had no rapid gouge (or was written before
+// rapids were checked).
+struct RapidsRecord {
+  bool written = false;
+  std::size_t checked = 0, unchecked = 0;
+  bool has_stock = false;
+  Eigen::AlignedBox3d stock;
+  std::vector<RapidGougeRecord> gouges;
+};
+
 // Error summary of one region of a partition (regions.json), when given.
 struct RegionErrorRecord {
   int region = 0;               // region id of the partition
@@ -139,6 +162,7 @@ struct Prediction {
   std::vector<ScallopRecord> scallops;
   std::vector<GougeSiteRecord> gouge_sites;
   std::vector<LocalGougeRecord> local_gouges;
+  RapidsRecord rapids;
   bool has_regions = false;  // a regions file was given
   std::string regions_file;
   std::vector<RegionErrorRecord> regions;

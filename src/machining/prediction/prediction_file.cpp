@@ -186,6 +186,25 @@ std::string prediction_to_json_text(const Prediction& p) {
     local.push_back(o);
   }
   j["local_gouges"] = local;
+  if (p.rapids.written) {
+    json gouges = json::array();
+    for (const RapidGougeRecord& g : p.rapids.gouges) {
+      json o = json::object();
+      o["line"] = g.line;
+      o["kind"] = g.kind;
+      o["depth"] = length(g.depth, "depth");
+      o["xyz"] = xyz(g.at.xyz);
+      if (g.kind == "part") {
+        o["face"] = g.at.face;
+        o["uv"] = uv(g.at.uv);
+      }
+      gouges.push_back(o);
+    }
+    json stock = nullptr;
+    if (p.rapids.has_stock) stock = {{"min", xyz(p.rapids.stock.min())}, {"max", xyz(p.rapids.stock.max())}};
+    j["rapids"] = {{"checked", p.rapids.checked}, {"unchecked", p.rapids.unchecked}, {"stock", stock},
+                   {"gouges", gouges}};
+  }
   if (p.has_regions) {
     json regions = json::array();
     for (const RegionErrorRecord& r : p.regions) {

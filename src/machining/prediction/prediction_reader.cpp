@@ -262,6 +262,41 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
     for (std::size_t a = 0; a < arcs.size(); ++a) r.directions_deg.push_back(jf::vector2(arcs[a], jf::child(wa, a)));
     p.local_gouges.push_back(r);
   }
+  if (const json* rap = jf::optional_member(doc, "rapids", root)) {
+    const std::string wr = jf::child(root, "rapids");
+    jf::object(*rap, wr);
+    p.rapids.written = true;
+    p.rapids.checked = count(jf::member(*rap, "checked", wr), jf::child(wr, "checked"));
+    p.rapids.unchecked = count(jf::member(*rap, "unchecked", wr), jf::child(wr, "unchecked"));
+    const json& stock = jf::member(*rap, "stock", wr);
+    if (!stock.is_null()) {
+      const std::string ws = jf::child(wr, "stock");
+      jf::object(stock, ws);
+      p.rapids.has_stock = true;
+      p.rapids.stock = Eigen::AlignedBox3d(jf::vector3(jf::member(stock, "min", ws), jf::child(ws, "min")),
+                                           jf::vector3(jf::member(stock, "max", ws), jf::child(ws, "max")));
+      if (p.rapids.stock.isEmpty()) throw InputError(ws + ": min must not exceed max on any axis");
+    }
+    const std::string wg = jf::child(wr, "gouges");
+    const json& gouges = jf::array(jf::member(*rap, "gouges", wr), wg);
+    for (std::size_t k = 0; k < gouges.size(); ++k) {
+      const std::string w = jf::child(wg, k);
+      const json& o = jf::object(gouges[k], w);
+      RapidGougeRecord g;
+      g.line = jf::integer(jf::member(o, "line", w), jf::child(w, "line"));
+      g.kind = jf::string(jf::member(o, "kind", w), jf::child(w, "kind"));
+      if (g.kind != "part" && g.kind != "stock")
+        throw InputError(jf::child(w, "kind") + ": expected \"part\" or \"stock\", got " + quote_field(g.kind));
+      g.depth = jf::number(jf::member(o, "depth", w), jf::child(w, "depth"));
+      if (!(g.depth > 0)) throw InputError(jf::child(w, "depth") + ": must be positive");
+      g.at.xyz = jf::vector3(jf::member(o, "xyz", w), jf::child(w, "xyz"));
+      if (g.kind == "part") {
+        g.at.face = jf::string(jf::member(o, "face", w), jf::child(w, "face"));
+        g.at.uv = jf::vector2(jf::member(o, "uv", w), jf::child(w, "uv"));
+      }
+      p.rapids.gouges.push_back(g);
+    }
+  }
   if (const json* reg = jf::optional_member(doc, "regions", root)) {
     const std::string wr = jf::child(root, "regions");
     jf::object(*reg, wr);
