@@ -241,6 +241,9 @@ TEST_CASE("indexable head: furrow plan --head writes the tip per point and per p
   const std::string dmis = slurp(dir + "/plan/plan.dmi");
   CHECK(dmis.find("S(PROBE1_A0B0)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,45.000000,2.000000") != std::string::npos);
   CHECK(slurp(dir + "/plan/plan.prg").find("ChangeTool(\"Probe1_A0B0\")") != std::string::npos);
+  const std::string report = slurp(dir + "/plan/report.json");
+  CHECK(report.find("\"tip_changes\"") != std::string::npos);
+  CHECK(report.find("\"A45BM90\"") != std::string::npos);
 
   const std::string good = kHead, tip = "\"a\": 45, \"b\": 0";
   write_text(dir + "/bad.json", std::string(good).replace(good.find(tip), tip.size(), "\"a\": 44, \"b\": 0"));
