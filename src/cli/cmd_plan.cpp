@@ -73,6 +73,14 @@ void print_summary(std::ostream& out, const PlanResult& r, const std::string& fo
   out << "tour: " << fixed(r.tour.length, 1) << " mm between probe centres (nearest neighbour "
       << fixed(r.tour.nearest_neighbour_length, 1) << " mm); moves: " << r.cycle.straight_moves << " straight, "
       << r.cycle.plane_moves << " over the clearance plane z = " << fixed(r.clearance_z, 3) << "\n";
+  if (!r.plan.points.empty() && r.plan.points.front().tip) {
+    std::vector<std::string> used;
+    for (const PlannedPoint& p : r.plan.points)
+      if (used.empty() || used.back() != tip_name(*p.tip)) used.push_back(tip_name(*p.tip));
+    out << "tips: " << r.tip_changes << " changes;";
+    for (const std::string& t : used) out << ' ' << t;
+    out << "\n";
+  }
   out << "cycle time estimate: " << fixed(r.cycle.seconds / 60, 1) << " min (" << fixed(r.cycle.positioning_length, 0)
       << " mm positioning)\n";
   for (const PlanIssue& i : r.issues)
@@ -97,6 +105,7 @@ int run_plan(Args& args) {
   read_probe_motion_options(args, o);
   read_program_options(args, o);
   read_datum_option(args, o);
+  const std::optional<std::string> head_path = args.option("head");
   o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
   o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
   o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
@@ -111,6 +120,14 @@ int run_plan(Args& args) {
   const ToleranceZone zone = ToleranceZone::make(qif_tolerance, qif_outside.value_or(qif_tolerance / 2),
                                                  "--tolerance/--outside");
   o.program.tolerance = PointProfileTolerance{zone.lower(), zone.upper()};
+  if (head_path) {
+    // The head file gives the stylus: the stylus options would contradict it.
+    const PlannerOptions defaults;
+    if (o.probe_diameter != defaults.probe_diameter || o.stylus_diameter != defaults.stylus_diameter ||
+        o.stylus_length != defaults.stylus_length)
+      args.fail("--head gives the stylus: leave out --probe-diameter, --stylus-diameter and --stylus-length");
+    use_head(o, read_probe_head(*head_path));  // validated up front: errors name the file and field
+  }
   try {
     validate(o);
   } catch (const InputError& e) {
@@ -122,6 +139,7 @@ int run_plan(Args& args) {
   outputs.add_input(part_path, "part");
   outputs.add_input(regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
+  if (head_path) outputs.add_input(*head_path, "head");
   outputs.will_write(out);
   o.part_name = part_path;
 
@@ -173,7 +191,7 @@ const Command kPlanCommand = {
     "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
     "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
     "                   [--revision TEXT] [--program-date YYYY-MM-DD] [--head-length MM]\n"
-    "                   [--datums auto|FACE,FACE,FACE] [--allow-uncovered]\n"
+    "                   [--datums auto|FACE,FACE,FACE] [--head HEAD.json] [--allow-uncovered]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -220,6 +238,10 @@ const Command kPlanCommand = {
     "                       facing +z, the largest wall, the largest wall across it;\n"
     "                       or three face names; a part without them gets a manual\n"
     "                       best-fit alignment on three points\n"
+    "  --head FILE          indexable probe head (docs/formats.md \"Probe head\"): each\n"
+    "                       point gets a qualified tip that reaches it, points are\n"
+    "                       grouped by tip; the file gives the stylus, and\n"
+    "                       --max-tilt is then measured from the tip's axis\n"
     "  --allow-uncovered    exit 0 although some region holds fewer than\n"
     "                       --min-per-region points (they are still reported, and\n"
     "                       plan.json lists them so no verdict passes them unseen)\n"

@@ -35,8 +35,11 @@ std::string plan_to_csv_text(const InspectionPlan& plan) {
   out << "# Furrow probe plan: part " << (plan.part.empty() ? "(unnamed)" : plan.part) << ", probe "
       << plan.probe.name << " diameter " << shortest(plan.probe.diameter) << " mm, " << plan.points.size()
       << " points, units mm\n";
+  // The tip columns only in plans for an indexable head.
+  const bool tips = std::any_of(order.begin(), order.end(), [](const PlannedPoint* p) { return p->tip.has_value(); });
   out << "order,id,face,face_index,region,u,v,x,y,z,i,j,k,approach_x,approach_y,approach_z,retract_x,retract_y,"
-         "retract_z\n";
+         "retract_z"
+      << (tips ? ",tip_a,tip_b" : "") << "\n";
   for (const PlannedPoint* p : order) {
     out << p->order << ',' << csv_field(p->id) << ',' << csv_field(p->face) << ',' << p->face_index << ',';
     if (p->region) out << *p->region;
@@ -45,6 +48,11 @@ std::string plan_to_csv_text(const InspectionPlan& plan) {
     vector_fields(out, p->ijk);
     vector_fields(out, p->approach);
     vector_fields(out, p->retract);
+    if (tips) {
+      out << ',';
+      if (p->tip) out << shortest(p->tip->a) << ',' << shortest(p->tip->b);
+      else out << ',';
+    }
     out << '\n';
   }
   return out.str();

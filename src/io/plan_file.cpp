@@ -68,6 +68,14 @@ PlannedPoint parse_point(const json& jp, const std::string& where, double scale)
   p.ijk = unit(jf::vector3(field("ijk"), at("ijk")), at("ijk"));
   p.approach = scale * jf::vector3(field("approach"), at("approach"));
   p.retract = scale * jf::vector3(field("retract"), at("retract"));
+  if (const json* jt = jf::optional_member(jp, "tip", where)) {
+    jf::object(*jt, at("tip"));
+    const std::string tw = at("tip");
+    p.tip = TipAngles{jf::number(jf::member(*jt, "a", tw), jf::child(tw, "a")),
+                      jf::number(jf::member(*jt, "b", tw), jf::child(tw, "b"))};
+    if (p.tip->a < 0 || p.tip->a > 180) throw InputError(jf::child(tw, "a") + ": must be from 0 to 180 degrees");
+    if (std::abs(p.tip->b) > 360) throw InputError(jf::child(tw, "b") + ": must be from -360 to 360 degrees");
+  }
   // After unit conversion (docs/formats.md "Limits").
   for (const char* key : {"xyz", "approach", "retract"}) {
     const Eigen::Vector3d& v = key[0] == 'x' ? p.xyz : key[0] == 'a' ? p.approach : p.retract;
@@ -287,6 +295,7 @@ json points_json(const std::vector<PlannedPoint>& list) {
     jp["ijk"] = jf::vector_json(p.ijk);
     jp["approach"] = jf::vector_json(p.approach);
     jp["retract"] = jf::vector_json(p.retract);
+    if (p.tip) jp["tip"] = {{"a", jf::finite(p.tip->a, "tip a")}, {"b", jf::finite(p.tip->b, "tip b")}};
     points.push_back(std::move(jp));
   }
   return points;

@@ -13,6 +13,16 @@ struct ProbeDefinition {
   double radius() const { return diameter / 2; }
 };
 
+// The orientation of an indexable probe head's tip (docs/cmm.md "Indexable
+// heads"): A tilts the stylus away from -z, B turns it about z, degrees.
+// Absent on points planned for the fixed vertical stylus.
+struct TipAngles {
+  double a = 0;  // [degrees]
+  double b = 0;  // [degrees]
+  bool operator==(const TipAngles& o) const { return a == o.a && b == o.b; }
+  bool operator!=(const TipAngles& o) const { return !(*this == o); }
+};
+
 struct PlannedPoint {
   std::string id;    // unique, non-empty, no ',' or white space (also a DMIS label)
   int order = 0;     // execution order, unique, >= 1
@@ -24,6 +34,7 @@ struct PlannedPoint {
   Eigen::Vector3d ijk = Eigen::Vector3d::UnitZ();      // unit normal, out of the material
   Eigen::Vector3d approach = Eigen::Vector3d::Zero();  // probe centre where the touch starts [mm]
   Eigen::Vector3d retract = Eigen::Vector3d::Zero();   // probe centre after the touch [mm]
+  std::optional<TipAngles> tip;  // with an indexable head: the tip that takes the point
 
   // Nominal probe-ball centre at contact: xyz + r ijk.
   Eigen::Vector3d centre(double probe_radius) const { return xyz + probe_radius * ijk; }

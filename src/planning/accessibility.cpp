@@ -13,6 +13,8 @@ const char* to_string(AccessProblem problem) {
     case AccessProblem::approach_path: return "approach/retract path along the normal hits the part";
     case AccessProblem::stylus: return "stylus shaft would hit the part";
     case AccessProblem::vertical_access: return "no vertical access from the clearance plane";
+    case AccessProblem::probe_body: return "probe body or extension would hit the part";
+    case AccessProblem::head: return "probe head would hit the part";
   }
   return "?";
 }
@@ -38,6 +40,53 @@ std::optional<SegmentContact> first_contact(const ClosestPointFinder& finder, co
   return SegmentContact{t, q, finder.project(q).distance, true};
 }
 
+std::optional<SegmentContact> swept_contact(const ClosestPointFinder& finder, const Eigen::Vector3d& s0,
+                                            const Eigen::Vector3d& s1, const Eigen::Vector3d& motion, double radius,
+                                            double tolerance, double min_step, int max_steps) {
+  const double h = std::max(radius / 2, min_step);
+  const double length = (s1 - s0).norm();
+  const int samples = static_cast<int>(std::ceil(length / h)) + 1;
+  for (int k = 0; k < samples; ++k) {
+    const double f = samples == 1 ? 0.0 : static_cast<double>(k) / (samples - 1);
+    const Eigen::Vector3d q = s0 + f * (s1 - s0);
+    if (auto hit = first_contact(finder, q, q + motion, radius + h / 2, tolerance, min_step, max_steps)) return hit;
+  }
+  return std::nullopt;
+}
+
+std::vector<ProbeCapsule> probe_capsules(const Eigen::Vector3d& c, const ProbeGeometry& probe) {
+  std::vector<ProbeCapsule> out;
+  if (!probe.articulated()) return out;
+  const double r = probe.ball_radius, rs = probe.stylus_radius;
+  const double leave = std::sqrt(std::max(0.0, r * r - rs * rs));
+  out.push_back({c + leave * probe.axis, c + probe.stylus_length * probe.axis, rs, AccessProblem::stylus});
+  double along = probe.stylus_length;
+  for (const ProbeSection& s : probe.sections) {
+    out.push_back({c + along * probe.axis, c + (along + s.length) * probe.axis, s.radius, AccessProblem::probe_body});
+    along += s.length;
+  }
+  if (probe.housing.length > 0) {
+    const Eigen::Vector3d pivot = c + along * probe.axis;
+    out.push_back({pivot, pivot + probe.housing.length * Eigen::Vector3d::UnitZ(), probe.housing.radius, AccessProblem::head});
+  }
+  return out;
+}
+
+double assembly_drop(const ProbeGeometry& probe, double max_a_degrees) {
+  double reach = probe.stylus_length, radius = probe.stylus_radius;
+  for (const ProbeSection& s : probe.sections) {
+    reach += s.length;
+    radius = std::max(radius, s.radius);
+  }
+  radius = std::max(radius, probe.housing.radius);
+  // The axis leaves the ball at angle A from +z: its far end sinks by
+  // -reach cos A below the centre when A > 90 degrees, and a cylinder's rim
+  // lies at most its radius (sin A <= 1) below its axis.
+  const double a = std::min(max_a_degrees, 180.0) * kPi / 180;
+  const double rim = max_a_degrees >= 90 ? radius : radius * std::sin(a);
+  return std::max(probe.ball_radius, std::max(0.0, -reach * std::cos(a)) + rim);
+}
+
 Eigen::Vector3d probe_centre(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe) {
   return p + probe.ball_radius * n;
 }
@@ -55,7 +104,7 @@ Eigen::Vector3d retract_point(const Eigen::Vector3d& p, const Eigen::Vector3d& n
 AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                           const ProbeGeometry& probe, const AccessOptions& options) {
   AccessResult result;
-  result.tilt = std::acos(std::clamp(n.z(), -1.0, 1.0));
+  result.tilt = std::acos(std::clamp(n.dot(probe.axis), -1.0, 1.0));
   auto fail = [&](AccessProblem problem, const SegmentContact& c) {
     result.problem = problem;
     result.where = c.where;
@@ -82,8 +131,8 @@ AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3
   const double rs = probe.stylus_radius;
   const double leave = std::sqrt(std::max(0.0, r * r - rs * rs));
   if (probe.stylus_length > leave) {
-    const Eigen::Vector3d s0 = c + leave * Eigen::Vector3d::UnitZ();
-    const Eigen::Vector3d s1 = c + probe.stylus_length * Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d s0 = c + leave * probe.axis;
+    const Eigen::Vector3d s1 = c + probe.stylus_length * probe.axis;
     if (auto hit = first_contact(finder, s0, s1, rs, tol, options.min_step, options.max_steps))
       return fail(AccessProblem::stylus, *hit);
   }
@@ -93,6 +142,18 @@ AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3
     const Eigen::Vector3d top(q.x(), q.y(), options.clearance_z);
     if (auto hit = first_contact(finder, q, top, r, tol, options.min_step, options.max_steps))
       return fail(AccessProblem::vertical_access, *hit);
+  }
+  // 6. The whole assembly of an indexable head, along the touch and the
+  // vertical legs.
+  for (const ProbeCapsule& k : probe_capsules(c, probe))
+    if (auto hit = swept_contact(finder, k.a, k.b, out - c, k.radius, tol, options.min_step, options.max_steps))
+      return fail(k.part, *hit);
+  for (const Eigen::Vector3d& q : {approach_point(p, n, probe, options), retract_point(p, n, probe, options)}) {
+    if (q.z() >= options.clearance_z || !probe.articulated()) continue;
+    const Eigen::Vector3d rise(0, 0, options.clearance_z - q.z());
+    for (const ProbeCapsule& k : probe_capsules(q, probe))
+      if (auto hit = swept_contact(finder, k.a, k.b, rise, k.radius, tol, options.min_step, options.max_steps))
+        return fail(AccessProblem::vertical_access, *hit);
   }
   return result;
 }

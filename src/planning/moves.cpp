@@ -18,8 +18,13 @@ Move plan_move(const ClosestPointFinder& finder, const Eigen::Vector3d& from, co
     move.length = (to - from).norm();
     return move;
   }
+  return plane_move(from, to, options.clearance_z);
+}
+
+Move plane_move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double clearance_z) {
+  Move move;
   move.straight = false;
-  const double z = std::max({options.clearance_z, from.z(), to.z()});
+  const double z = std::max({clearance_z, from.z(), to.z()});
   const Eigen::Vector3d up(from.x(), from.y(), z), over(to.x(), to.y(), z);
   move.waypoints = {up, over, to};
   move.length = (up - from).norm() + (over - up).norm() + (to - over).norm();

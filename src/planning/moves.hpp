@@ -58,6 +58,11 @@ double clearance_plane(const Part& part, double ball_radius, double clearance);
 Move plan_move(const ClosestPointFinder& finder, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                double ball_radius, const MoveOptions& options);
 
+// Up to the clearance plane (or the higher end), over, and down: the move
+// plan_move falls back to, and every move across an indexable head's tip
+// change (the head turns on the plane, above `from`).
+Move plane_move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double clearance_z);
+
 // Rest-to-rest time of a straight leg [s].
 double leg_time(double length, double speed, double acceleration);
 

@@ -38,6 +38,13 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   opt["acceleration_mm_s2"] = jf::finite(o.motion.acceleration, "acceleration");
   opt["dwell_s"] = jf::finite(o.motion.dwell, "dwell");
   opt["gouge_points"] = o.gouge_points;
+  if (o.head) {
+    json tips = json::array();
+    for (const TipAngles& t : o.head->qualified) tips.push_back(tip_name(t));
+    opt["head"] = {{"type", o.head->type},
+                   {"head_to_ball_mm", jf::finite(o.head->reach(), "head reach")},
+                   {"qualified", std::move(tips)}};
+  }
   doc["options"] = std::move(opt);
 
   json alloc;
@@ -116,6 +123,7 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
                  {"optimised_mm", jf::finite(r.tour.length, "tour")},
                  {"passes", r.tour.passes},
                  {"converged", r.tour.converged}};
+  if (o.head) doc["tour"]["tip_changes"] = r.tip_changes;
   doc["cycle"] = {{"positioning_mm", jf::finite(r.cycle.positioning_length, "positioning")},
                   {"touch_mm", jf::finite(r.cycle.touch_length, "touch")},
                   {"straight_moves", r.cycle.straight_moves},

@@ -31,7 +31,33 @@ void non_negative(double v, const char* option) {
 double border_clearance(const PlannerOptions& o) { return o.border.value_or(o.probe_diameter / 2 + 1); }
 double search_distance(const PlannerOptions& o) { return o.search.value_or(o.approach); }
 
+void use_head(PlannerOptions& o, const ProbeHead& head) {
+  o.head = head;
+  o.probe_diameter = head.ball_diameter;
+  o.stylus_diameter = head.stem_diameter;
+  o.stylus_length = head.stylus_length;
+}
+
+ProbeGeometry planner_probe(const PlannerOptions& o) {
+  ProbeGeometry probe{o.probe_diameter / 2, o.stylus_diameter / 2, o.stylus_length};
+  if (!o.head) return probe;
+  if (o.head->extension_length > 0) probe.sections.push_back({o.head->extension_length, o.head->extension_diameter / 2});
+  probe.sections.push_back({o.head->body_length, o.head->body_diameter / 2});
+  probe.housing = {o.head->head_length, o.head->head_diameter / 2};
+  return probe;
+}
+
 void validate(const PlannerOptions& o) {
+  if (o.head) {
+    if (o.probe_diameter != o.head->ball_diameter || o.stylus_diameter != o.head->stem_diameter ||
+        o.stylus_length != o.head->stylus_length)
+      throw InputError("--head gives the stylus: leave out --probe-diameter, --stylus-diameter and --stylus-length");
+    if (o.program.head_length) throw InputError("--head gives the head-to-ball length: leave out --head-length");
+    bool vertical = false;
+    for (const TipAngles& t : o.head->qualified) vertical = vertical || t.a == 0;
+    if (!vertical)
+      throw InputError("--head: the part alignment is measured with the vertical tip: qualify a tip with a = 0");
+  }
   if (o.points && o.density) throw InputError("--points and --density exclude each other");
   if (o.points && *o.points < 1)
     throw InputError("--points must be at least 1, got " + std::to_string(*o.points) + " (a plan needs points)");

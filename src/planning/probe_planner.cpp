@@ -12,6 +12,7 @@
 #include "base/limits.hpp"
 #include "planning/face_orientation_hint.hpp"
 #include "planning/relocation.hpp"
+#include "planning/tip_groups.hpp"
 #include "base/numbers.hpp"
 
 namespace furrow {
@@ -47,6 +48,9 @@ std::string problem_text(const AccessResult& a, const ProbeGeometry& probe) {
   if (a.problem == AccessProblem::tilt) return s + " (" + mm(degrees(a.tilt)) + " degrees)";
   const double allowed = a.problem == AccessProblem::stylus ? probe.stylus_radius : probe.ball_radius;
   if (a.step_cap) return s + " (the clearance march hit its step cap near " + at_text(a.where) + ")";
+  // The head's assembly: capsules of several radii, swept (accessibility.hpp).
+  if (probe.articulated() && a.problem != AccessProblem::ball && a.problem != AccessProblem::approach_path)
+    return s + " (part " + mm(a.distance) + " mm from the probe's axis at " + at_text(a.where) + ")";
   return s + " (part " + mm(a.distance) + " mm from " + (a.problem == AccessProblem::stylus ? "the shaft axis" : "the ball centre") +
          " at " + at_text(a.where) + ", needs " + mm(allowed) + ")";
 }
@@ -65,7 +69,34 @@ struct Candidate {
   Eigen::Vector3d original = Eigen::Vector3d::Zero();
   double moved_by = 0;
   AccessResult access;
+  // With an indexable head: which qualified tips reach the point, the tip
+  // nearest the normal (whose access result `access` is when none reaches)
+  // and the tip chosen.
+  std::vector<char> reach;
+  int nearest_tip = -1;
+  int tip = -1;
 };
+
+// Probe geometry per qualified tip: the axis runs from the ball towards the head.
+std::vector<ProbeGeometry> tip_probes(const ProbeGeometry& probe, const ProbeHead& head) {
+  std::vector<ProbeGeometry> out;
+  for (const TipAngles& t : head.qualified) {
+    ProbeGeometry g = probe;
+    g.axis = -tip_direction(t);
+    out.push_back(g);
+  }
+  return out;
+}
+
+// The tip whose axis is nearest `n` among those with `allowed` (all when null); ties: the first.
+int nearest_tip(const std::vector<ProbeGeometry>& tips, const Eigen::Vector3d& n, const std::vector<char>* allowed) {
+  int best = -1;
+  for (std::size_t t = 0; t < tips.size(); ++t) {
+    if (allowed && !(*allowed)[t]) continue;
+    if (best < 0 || n.dot(tips[t].axis) > n.dot(tips[static_cast<std::size_t>(best)].axis)) best = static_cast<int>(t);
+  }
+  return best;
+}
 
 bool samplable(const RegionDomain& domain) {
   for (const DomainCell& c : domain.cells())
@@ -91,8 +122,17 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   result.search = search_distance(options);
   result.approach = options.approach;
   result.retract = options.retract;
-  result.probe = {options.probe_diameter / 2, options.stylus_diameter / 2, options.stylus_length};
+  result.probe = planner_probe(options);
   result.clearance_z = clearance_plane(part, result.probe.ball_radius, options.clearance);
+  std::vector<ProbeGeometry> tips;
+  if (options.head) {
+    // Raised so that the assembly clears the part over any tilt up to the
+    // largest qualified A: the head turns on this plane.
+    double max_a = 0;
+    for (const TipAngles& t : options.head->qualified) max_a = std::max(max_a, t.a);
+    result.clearance_z += assembly_drop(result.probe, max_a) - result.probe.ball_radius;
+    tips = tip_probes(result.probe, *options.head);
+  }
   AccessOptions access = options.access;
   access.approach = options.approach;
   access.retract = options.retract;
@@ -261,9 +301,21 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
     const DifferentialGeometry g = domain.face().geometry(c.uv.x(), c.uv.y());
     c.original = c.xyz;
     c.normal = g.normal;
-    c.access = g.degenerate ? AccessResult{AccessProblem::tilt} : check_access(finder, c.xyz, c.normal, result.probe, access);
-    c.kept = !g.degenerate && c.access.ok();
-    if (!c.kept) {
+    if (!tips.empty()) {
+      c.reach.assign(tips.size(), 0);
+      c.nearest_tip = nearest_tip(tips, c.normal, nullptr);
+      c.access = AccessResult{AccessProblem::tilt};
+      for (std::size_t t = 0; t < tips.size() && !g.degenerate; ++t) {
+        const AccessResult a = check_access(finder, c.xyz, c.normal, tips[t], access);
+        c.reach[t] = a.ok();
+        if (static_cast<int>(t) == c.nearest_tip) c.access = a;
+      }
+      c.kept = std::find(c.reach.begin(), c.reach.end(), 1) != c.reach.end();
+    } else {
+      c.access = g.degenerate ? AccessResult{AccessProblem::tilt} : check_access(finder, c.xyz, c.normal, result.probe, access);
+      c.kept = !g.degenerate && c.access.ok();
+    }
+    if (!c.kept && tips.empty()) {
       RelocationOptions ro{options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)], options.relocation_rings,
                            options.relocation_directions};
       std::function<bool(const Eigen::Vector2d&)> keep;
@@ -282,12 +334,23 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
       if (progress && (checked % 64 == 0 || checked == candidates.size())) progress("access", checked, candidates.size());
     }
   }
+  // The tip per point, in sampling order: keep the previous point's tip
+  // while it reaches, else the reaching tip nearest the normal.
+  if (!tips.empty()) {
+    int current = -1;
+    for (Candidate& c : candidates) {
+      if (!c.kept) continue;
+      if (current < 0 || !c.reach[static_cast<std::size_t>(current)]) current = nearest_tip(tips, c.normal, &c.reach);
+      c.tip = current;
+    }
+  }
   result.timing.access_seconds = seconds_since(t0);
 
   // 5. Order the kept points.
   t0 = Clock::now();
   std::vector<std::size_t> kept;
   std::vector<Eigen::Vector3d> centres;
+  std::vector<int> kept_tips;
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     Candidate& c = candidates[k];
     RegionPlanSummary& summary = result.regions[static_cast<std::size_t>(c.region)];
@@ -299,8 +362,13 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
       issue.gouge_site = c.site;
       issue.problem = c.access.problem;
       issue.where = c.original;
-      issue.reason = problem_text(c.access, result.probe) + "; no accessible point within " +
-                     mm(options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)]) + " mm";
+      if (!tips.empty())
+        issue.reason = "no qualified tip reaches the point; the tip nearest its normal, " +
+                       tip_name(options.head->qualified[static_cast<std::size_t>(c.nearest_tip)]) + ": " +
+                       problem_text(c.access, tips[static_cast<std::size_t>(c.nearest_tip)]);
+      else
+        issue.reason = problem_text(c.access, result.probe) + "; no accessible point within " +
+                       mm(options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)]) + " mm";
       result.issues.push_back(issue);
       continue;
     }
@@ -308,6 +376,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
     ++summary.planned;
     kept.push_back(k);
     centres.push_back(probe_centre(c.xyz, c.normal, result.probe));
+    kept_tips.push_back(c.tip);
   }
   // Most points dropped: name the faces that face down, the usual cause
   // being normals into the material rather than the probe.
@@ -335,7 +404,12 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
                      (orientation_hint.empty()
                           ? std::string("; see the reasons with a smaller probe, a longer stylus or a larger --max-tilt)")
                           : ")" + orientation_hint));
-  result.tour = plan_tour(centres, options.tour);
+  if (tips.empty()) {
+    result.tour = plan_tour(centres, options.tour);
+  } else {
+    result.tour = grouped_tour(centres, kept_tips, options.tour);
+    result.tip_changes = group_changes(kept_tips, result.tour.order);
+  }
   result.timing.tour_seconds = seconds_since(t0);
 
   // 6. Plan points in execution order, moves, cycle time.
@@ -359,6 +433,7 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
     p.ijk = c.normal;
     p.approach = approach_point(c.xyz, c.normal, result.probe, access);
     p.retract = retract_point(c.xyz, c.normal, result.probe, access);
+    if (!tips.empty()) p.tip = options.head->qualified[static_cast<std::size_t>(c.tip)];
     retracts[k] = p.retract;
     if (c.moved) {
       PlanIssue issue;
@@ -387,11 +462,30 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
   result.moves[0].straight = false;
   result.moves[0].waypoints = {first.approach};
   result.moves[0].length = (first.approach - result.start).norm();
+  // With a head: a straight move also needs the assembly clear along it
+  // (as the ball, `clearance` from the part); a tip change goes over the plane.
+  std::vector<int> point_tips(n, -1);
+  for (std::size_t k = 0; k < n; ++k) point_tips[k] = candidates[kept[static_cast<std::size_t>(result.tour.order[k])]].tip;
 #pragma omp parallel for schedule(dynamic, 16)
-  for (long k = 1; k < static_cast<long>(n); ++k)
-    result.moves[static_cast<std::size_t>(k)] =
-        plan_move(finder, result.plan.points[static_cast<std::size_t>(k) - 1].retract,
-                  result.plan.points[static_cast<std::size_t>(k)].approach, result.probe.ball_radius, move_options);
+  for (long k = 1; k < static_cast<long>(n); ++k) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    const Eigen::Vector3d& from = result.plan.points[i - 1].retract;
+    const Eigen::Vector3d& to = result.plan.points[i].approach;
+    if (tips.empty()) {
+      result.moves[i] = plan_move(finder, from, to, result.probe.ball_radius, move_options);
+      continue;
+    }
+    Move m = point_tips[i] == point_tips[i - 1] ? plan_move(finder, from, to, result.probe.ball_radius, move_options)
+                                                : plane_move(from, to, result.clearance_z);
+    if (m.straight)
+      for (const ProbeCapsule& cap : probe_capsules(from, tips[static_cast<std::size_t>(point_tips[i])]))
+        if (swept_contact(finder, cap.a, cap.b, to - from, cap.radius + options.clearance, access.contact_tolerance,
+                          access.min_step, access.max_steps)) {
+          m = plane_move(from, to, result.clearance_z);
+          break;
+        }
+    result.moves[i] = m;
+  }
   const Eigen::Vector3d& last = result.plan.points.back().retract;
   if (last.z() < result.clearance_z) result.final_moves = {Eigen::Vector3d(last.x(), last.y(), result.clearance_z)};
   result.cycle = estimate_cycle(result.start, result.moves, retracts, result.final_moves, options.approach,
@@ -408,7 +502,7 @@ ProbeProgram make_probe_program(const PlanResult& result, const std::string& nam
   program.date = options.program.date;
   program.probe = result.plan.probe;
   program.stylus_length = options.stylus_length;
-  program.head_length = options.program.head_length.value_or(options.stylus_length);
+  program.head_length = options.head ? options.head->reach() : options.program.head_length.value_or(options.stylus_length);
   program.move_speed = options.motion.move_speed;
   program.measure_speed = options.motion.touch_speed;
   program.tolerance = options.program.tolerance;
@@ -419,6 +513,21 @@ ProbeProgram make_probe_program(const PlanResult& result, const std::string& nam
     program.steps.push_back({result.plan.points[k], result.moves[k].waypoints});
   program.final_moves = result.final_moves;
   if (result.plan.alignment) add_alignment_moves(program, *result.plan.alignment, result.clearance_z, result.start);
+  if (options.head) {
+    // The alignment is measured with the vertical tip (validate() makes sure
+    // there is one), the steps with theirs; sensors in order of first use.
+    if (program.alignment)
+      for (const TipAngles& t : options.head->qualified)
+        if (t.a == 0) {
+          program.start_tip = t;
+          break;
+        }
+    if (!program.start_tip && !program.steps.empty()) program.start_tip = program.steps.front().point.tip;
+    if (program.start_tip) program.tips.push_back(*program.start_tip);
+    for (const ProgramStep& step : program.steps)
+      if (step.point.tip && std::find(program.tips.begin(), program.tips.end(), *step.point.tip) == program.tips.end())
+        program.tips.push_back(*step.point.tip);
+  }
   return program;
 }
 

@@ -16,8 +16,16 @@
 //   4. accessibility (accessibility.hpp) of every point; a point that fails
 //      is moved to the nearest accessible admissible point within
 //      `max_move_fraction` of the region's point spacing (rings around it
-//      in its tangent plane), or dropped; both are reported with the reason;
-//   5. ordering (tour.hpp) and moves (moves.hpp), cycle time.
+//      in its tangent plane), or dropped; both are reported with the reason.
+//      With an indexable head (`head`, docs/cmm.md "Indexable heads") every
+//      qualified tip is checked instead; in sampling order, a point keeps
+//      the tip of the point before it when that tip reaches it, else takes
+//      the reaching tip whose stylus lies closest to its normal; a point no
+//      tip reaches is dropped (no relocation) with the reason for the tip
+//      nearest its normal;
+//   5. ordering (tour.hpp) and moves (moves.hpp), cycle time. With a head,
+//      one run of points per tip (tip_groups.hpp) and every tip change over
+//      the clearance plane, raised so that the head can turn there.
 //
 // Deterministic: the same inputs and options give the same plan bit for bit
 // (per-point work runs in parallel into fixed slots; every sum runs in
@@ -34,6 +42,7 @@
 
 #include "geometry/part.hpp"
 #include "io/plan_file.hpp"
+#include "io/cmm/probe_head.hpp"
 #include "io/cmm/probe_program.hpp"
 #include "partition/region_map.hpp"
 #include "planning/accessibility.hpp"
@@ -78,7 +87,17 @@ struct PlannerOptions {
   std::string part_name;           // recorded in plan.json (informative)
   ProgramSettings program;         // header, head length, tolerance of the CMM programs
   DatumChoice datums;              // part alignment (stage/plan_stage.hpp, datum_selection.hpp)
+  // Indexable head (set with use_head); none: the fixed vertical stylus.
+  // The part alignment is measured with its vertical tip A0B0.
+  std::optional<ProbeHead> head;
 };
+
+// Plans with `head`: also sets the ball, stem and stylus length from it.
+void use_head(PlannerOptions& options, const ProbeHead& head);
+
+// The probe with an indexable head's assembly (sections, housing), axis +z;
+// the vertical stylus of the options without one.
+ProbeGeometry planner_probe(const PlannerOptions& options);
 
 // Throws InputError naming the option for an invalid value.
 void validate(const PlannerOptions& options);
@@ -138,6 +157,7 @@ struct PlanResult {
   std::vector<PlanIssue> issues;
   Allocation allocation;
   TourResult tour;
+  int tip_changes = 0;             // with a head: tip changes between consecutive points
   CycleEstimate cycle;
   PlanTiming timing;               // wall clock, not part of any output file
 };
@@ -153,7 +173,9 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
 
 // The measuring program of a plan (DMIS / I++ DME writers): the options give
 // the stylus and head lengths, the speeds (motion.move_speed, touch_speed)
-// and the header and tolerance (options.program).
+// and the header and tolerance (options.program). With a head: one sensor
+// per tip used (the vertical one first when there is an alignment) and the
+// head-to-ball length from the head.
 ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options);
 
 }  // namespace furrow

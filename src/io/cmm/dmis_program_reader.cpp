@@ -270,16 +270,38 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
       program.name)
     fail(name, in.line(), "PLANID differs from DMISMN");
   in.expect(std::regex("PRCOMP/ON"), "PRCOMP/ON");
-  const std::vector<std::string> sensor = in.expect(
-      std::regex("S\\(" + kLabel + "\\)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + kNum + "," + kNum),
-      "S(LABEL)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,head_length,diameter");
-  program.probe.name = sensor[1];
-  program.head_length = number(sensor[2], name, in.line());
-  program.probe.diameter = number(sensor[3], name, in.line());
-  if (!(program.probe.diameter > 0) || !(program.head_length > 0))
-    fail(name, in.line(), "head-to-ball length and ball diameter must be positive");
-  if (in.expect(std::regex("SNSLCT/S\\(" + kLabel + "\\)"), "SNSLCT/S(label)")[1] != program.probe.name)
+  // One sensor for the vertical stylus, or one per tip of an indexable head
+  // named PROBE_A..B.. after its angles (probe_program.hpp).
+  const std::regex snsdef("S\\(" + kLabel + "\\)=SNSDEF/PROBE,INDEX,POL," + kNum + "," + kNum + ",0,0,-1," + kNum + "," + kNum);
+  std::map<std::string, TipAngles> sensors;  // tip sensors by label
+  do {
+    const std::vector<std::string> sensor = in.expect(snsdef, "S(LABEL)=SNSDEF/PROBE,INDEX,POL,a,b,0,0,-1,head_length,diameter");
+    const double head_length = number(sensor[4], name, in.line());
+    const double diameter = number(sensor[5], name, in.line());
+    if (!(diameter > 0) || !(head_length > 0)) fail(name, in.line(), "head-to-ball length and ball diameter must be positive");
+    const TipAngles angles{number(sensor[2], name, in.line()), number(sensor[3], name, in.line())};
+    const std::optional<TipSensor> tip = split_tip_sensor(sensor[1]);
+    if (tip && tip->tip != angles) fail(name, in.line(), "sensor " + sensor[1] + " is named after other angles than it has");
+    const bool first = program.probe.name.empty();
+    if (first) {
+      program.probe.name = tip ? tip->base : sensor[1];
+      program.head_length = head_length;
+      program.probe.diameter = diameter;
+      if (!tip && (angles.a != 0 || angles.b != 0)) fail(name, in.line(), "the vertical stylus's sensor must have angles 0,0");
+    } else if (!tip || sensors.empty() || tip->base != program.probe.name || head_length != program.head_length ||
+               diameter != program.probe.diameter) {
+      fail(name, in.line(), "a second sensor must be another tip of the same probe (PROBE_A..B.., same length and ball)");
+    }
+    if (tip) {
+      if (!sensors.emplace(sensor[1], angles).second) fail(name, in.line(), "sensor " + sensor[1] + " is defined twice");
+      program.tips.push_back(angles);
+    }
+  } while (in.next_is(snsdef));
+  const std::regex snslct("SNSLCT/S\\(" + kLabel + "\\)");
+  const std::string selected = in.expect(snslct, "SNSLCT/S(label)")[1];
+  if (sensors.empty() ? selected != program.probe.name : !sensors.count(selected))
     fail(name, in.line(), "SNSLCT selects a sensor that was not defined");
+  if (!sensors.empty()) program.start_tip = sensors.at(selected);
   auto speed = [&](const char* key) {
     const double v = number(in.expect(std::regex(std::string("FEDRAT/") + key + ",MMPS," + kNum),
                                       (std::string("FEDRAT/") + key + ",MMPS,value").c_str())[1],
@@ -325,9 +347,30 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     const std::vector<std::string> m = in.expect(go_to, "GOTO/x,y,z");
     moves.emplace_back(number(m[1], name, in.line()), number(m[2], name, in.line()), number(m[3], name, in.line()));
   };
+  std::optional<TipAngles> tip = program.start_tip;
   for (;;) {
-    while (in.next_is(go_to)) read_move();
-    if (!in.next_is(feature)) break;
+    // A tip change comes before the step's moves or after its first one
+    // (probe_program.hpp); which of the two is checked at the point.
+    std::optional<std::size_t> changed_after;
+    int change_line = 0;
+    while (in.next_is(go_to) || (in.next_is(snslct) && !sensors.empty())) {
+      if (in.next_is(go_to)) {
+        read_move();
+        continue;
+      }
+      const std::string label = in.expect(snslct, "SNSLCT/S(label)")[1];
+      change_line = in.line();
+      if (!sensors.count(label)) fail(name, change_line, "SNSLCT selects a sensor that was not defined");
+      if (changed_after || sensors.at(label) == *tip) fail(name, change_line, "SNSLCT does not change the tip here");
+      changed_after = moves.size();
+      tip = sensors.at(label);
+    }
+    if (!in.next_is(feature)) {
+      if (changed_after) fail(name, change_line, "SNSLCT with no point after it");
+      break;
+    }
+    if (changed_after && *changed_after != (moves.size() < 2 ? 0u : 1u))
+      fail(name, change_line, "a tip change belongs after the first move of a point with two or more moves, else before them");
     const DmisStatement& fs = in.take("a feature");
     const std::optional<DmisPointFeature> f = parse_dmis_point_feature(fs, name, 1.0);
     if (!f || f->actual) fail(name, fs.line, "expected a nominal point feature F(label)=FEAT/POINT,...");
@@ -351,6 +394,7 @@ ProbeProgram parse_dmis_program(const std::string& text, const std::string& name
     step.point.order = static_cast<int>(program.steps.size()) + 1;
     step.point.xyz = f->xyz;
     step.point.ijk = f->ijk;
+    step.point.tip = tip;
     step.moves_before = std::move(moves);
     moves.clear();
     program.steps.push_back(std::move(step));

@@ -142,9 +142,19 @@ std::string dmis_program_text(const ProbeProgram& program) {
   if (!program.revision.empty()) line("PR(REV)=PARTRV/'" + program.revision + "'");
   line("PL(PROGRAM)=PLANID/'" + program.name + "'");
   line("PRCOMP/ON");
-  line("S(" + probe + ")=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + fixed_number(program.head_length, kProgramDecimals) +
-       "," + fixed_number(program.probe.diameter, kProgramDecimals));
-  line("SNSLCT/S(" + probe + ")");
+  if (program.tips.empty()) {
+    line("S(" + probe + ")=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1," + fixed_number(program.head_length, kProgramDecimals) +
+         "," + fixed_number(program.probe.diameter, kProgramDecimals));
+    line("SNSLCT/S(" + probe + ")");
+  } else {
+    // One sensor per tip: its A and B, the stylus straight along the probe
+    // body (0,0,-1 in the head's frame), the head-to-ball length.
+    for (const TipAngles& t : program.tips)
+      line("S(" + dmis_label(tip_sensor_name(program, t)) + ")=SNSDEF/PROBE,INDEX,POL," + angle_text(t.a) + "," +
+           angle_text(t.b) + ",0,0,-1," + fixed_number(program.head_length, kProgramDecimals) + "," +
+           fixed_number(program.probe.diameter, kProgramDecimals));
+    line("SNSLCT/S(" + dmis_label(tip_sensor_name(program, *program.start_tip)) + ")");
+  }
   line("FEDRAT/POSVEL,MMPS," + fixed_number(program.move_speed, kProgramDecimals));
   line("FEDRAT/MESVEL,MMPS," + fixed_number(program.measure_speed, kProgramDecimals));
   line("SNSET/APPRCH," + fixed_number(program.approach, kProgramDecimals));
@@ -158,13 +168,23 @@ std::string dmis_program_text(const ProbeProgram& program) {
   line("MODE/PROG,MAN");
   if (program.alignment) write_alignment(program, line);
   const std::string tolerance_output = program.tolerance ? ",TA(PROFILE)" : "";
+  std::optional<TipAngles> tip = program.start_tip;
   for (const ProgramStep& step : program.steps) {
     const PlannedPoint& p = step.point;
     const std::string label = dmis_label(p.id);
     std::string info = "$$ " + label + ": order " + std::to_string(p.order) + ", face " + std::to_string(p.face_index);
     if (p.region) info += ", region " + std::to_string(*p.region);
+    if (p.tip) info += ", tip " + tip_name(*p.tip);
     line(info);
-    for (const Eigen::Vector3d& m : step.moves_before) line("GOTO/" + xyz_text(m));
+    // A tip change: after the rise to the clearance plane (probe_program.hpp).
+    const bool change = p.tip && p.tip != tip;
+    const std::string select = change ? "SNSLCT/S(" + dmis_label(tip_sensor_name(program, *p.tip)) + ")" : "";
+    if (change && step.moves_before.size() < 2) line(select);
+    for (std::size_t k = 0; k < step.moves_before.size(); ++k) {
+      line("GOTO/" + xyz_text(step.moves_before[k]));
+      if (change && k == 0 && step.moves_before.size() >= 2) line(select);
+    }
+    tip = p.tip;
     line("F(" + label + ")=FEAT/POINT,CART," + xyz_text(p.xyz) + "," + ijk_text(p.ijk));
     line("MEAS/POINT,F(" + label + "),1");
     line("PTMEAS/CART," + xyz_text(p.xyz) + "," + ijk_text(p.ijk));

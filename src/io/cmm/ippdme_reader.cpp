@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <regex>
 
 #include "base/error.hpp"
@@ -122,6 +123,9 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
   int expected_tag = 1;
   long commands = 0;  // commands read so far, this one included
   bool aligned = false;  // the alignment points are behind us
+  TipAngles tip;                              // selected, with an indexable head
+  long changed_after = -1;                    // moves read when the tip changed before this point, -1: none
+  int change_line = 0;
   std::size_t k = 0;
   std::vector<Eigen::Vector3d> moves;
   for (; k < lines.size() && lines[k].text != ":"; k += 2) {
@@ -152,16 +156,34 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
       // The end of the alignment: what was measured so far aligns the part.
       if (aligned || program.steps.empty()) fail(name, n, "SetCoordSystem(PartCsy) again without alignment points before it");
       aligned = true;
+      if (changed_after >= 0) fail(name, change_line, "ChangeTool with no point after it");
       program.alignment_steps = std::move(program.steps);
       program.steps.clear();
+      // The alignment is measured with the start tip, not as a tip's step.
+      for (ProgramStep& step : program.alignment_steps) step.point.tip.reset();
       program.alignment_final_moves = std::move(moves);
       moves.clear();
     } else if (cmd == "SetCoordSystem(PartCsy)") {
       require(Stage::csy, "SetCoordSystem");
       stage = Stage::tool;
+    } else if (std::regex_match(cmd, a, change_tool) && stage == Stage::body) {
+      // A tip change of an indexable head (probe_program.hpp).
+      const std::optional<TipSensor> t = split_tip_sensor(a[1]);
+      if (!program.start_tip || !t || t->base != program.probe.name)
+        fail(name, n, "ChangeTool may only change to another tip of the same probe (" + program.probe.name + "_A..B..)");
+      if (changed_after >= 0 || t->tip == tip) fail(name, n, "ChangeTool does not change the tip here");
+      changed_after = static_cast<long>(moves.size());
+      change_line = n;
+      tip = t->tip;
+      if (std::find(program.tips.begin(), program.tips.end(), tip) == program.tips.end()) program.tips.push_back(tip);
     } else if (std::regex_match(cmd, a, change_tool)) {
       require(Stage::tool, "ChangeTool");
       program.probe.name = a[1];
+      if (const std::optional<TipSensor> t = split_tip_sensor(a[1])) {
+        program.probe.name = t->base;
+        program.start_tip = tip = t->tip;
+        program.tips.push_back(tip);
+      }
       stage = Stage::approach;
     } else if (std::regex_match(cmd, a, set_prop)) {
       const std::string key = a[1];
@@ -192,6 +214,10 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
       step.command = commands;
       step.point.xyz = xyz(a, 1, name, n);
       step.point.ijk = ijk.normalized();
+      if (program.start_tip) step.point.tip = tip;
+      if (changed_after >= 0 && changed_after != (moves.size() < 2 ? 0 : 1))
+        fail(name, change_line, "a tip change belongs after the first move of a point with two or more moves, else before them");
+      changed_after = -1;
       step.moves_before = std::move(moves);
       moves.clear();
       program.steps.push_back(std::move(step));
@@ -206,6 +232,7 @@ ProbeProgram parse_ippdme_program(const std::string& text, const std::string& na
   if (k >= lines.size()) fail(name, static_cast<int>(lines.size()), "missing the closing `:` line");
   if (k + 2 < lines.size() || (k + 1 < lines.size() && lines[k + 1].text != ":"))
     fail(name, lines[k].number + 1, "text after the closing `:` line");
+  if (changed_after >= 0) fail(name, change_line, "ChangeTool with no point after it");
   program.final_moves = std::move(moves);
   if (program.steps.empty()) throw InputError(name + ": the program measures no point");
   return program;

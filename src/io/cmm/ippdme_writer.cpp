@@ -38,15 +38,26 @@ std::string ippdme_program_text(const ProbeProgram& program) {
   file.command("StartSession()");
   file.command("Home()");
   file.command("SetCoordSystem(PartCsy)");
-  file.command("ChangeTool(\"" + program.probe.name + "\")");
+  file.command("ChangeTool(\"" +
+               (program.start_tip ? tip_sensor_name(program, *program.start_tip) : program.probe.name) + "\")");
   file.command("SetProp(Tool.PtMeasPar.Approach(" + fixed_number(program.approach, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Retract(" + fixed_number(program.retract, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Search(" + fixed_number(program.search, kProgramDecimals) + "))");
   file.command("SetProp(Tool.GoToPar.Speed(" + fixed_number(program.move_speed, kProgramDecimals) + "))");
   file.command("SetProp(Tool.PtMeasPar.Speed(" + fixed_number(program.measure_speed, kProgramDecimals) + "))");
   file.command("OnPtMeasReport(X(), Y(), Z(), IJK())");
+  std::optional<TipAngles> tip = program.start_tip;
   auto measure = [&](const ProgramStep& step) {
-    for (const Eigen::Vector3d& m : step.moves_before) file.command("GoTo(" + position(m) + ")");
+    // A tip change: after the rise to the clearance plane (probe_program.hpp).
+    const std::optional<TipAngles>& want = step.point.tip;
+    const bool change = want && want != tip;
+    const std::string select = change ? "ChangeTool(\"" + tip_sensor_name(program, *want) + "\")" : "";
+    if (change && step.moves_before.size() < 2) file.command(select);
+    for (std::size_t k = 0; k < step.moves_before.size(); ++k) {
+      file.command("GoTo(" + position(step.moves_before[k]) + ")");
+      if (change && k == 0 && step.moves_before.size() >= 2) file.command(select);
+    }
+    if (want) tip = want;
     const Eigen::Vector3d& n = step.point.ijk;
     file.command("PtMeas(" + position(step.point.xyz) + ", IJK(" + fixed_number(n.x(), kDirectionDecimals) + ", " +
                  fixed_number(n.y(), kDirectionDecimals) + ", " + fixed_number(n.z(), kDirectionDecimals) + "))");

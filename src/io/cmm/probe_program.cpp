@@ -87,6 +87,10 @@ void validate(const ProgramSettings& s, double stylus_length) {
   }
 }
 
+std::string tip_sensor_name(const ProbeProgram& program, const TipAngles& tip) {
+  return program.probe.name + "_" + tip_name(tip);
+}
+
 void check_program(const ProbeProgram& program, const std::string& format) {
   const std::string what = format + " program";
   if (!is_name(program.name))
@@ -116,6 +120,19 @@ void check_program(const ProbeProgram& program, const std::string& format) {
   positive(program.search, "search distance");
   positive(program.move_speed, "move speed");
   positive(program.measure_speed, "measuring speed");
+  if (program.tips.empty() != !program.start_tip)
+    throw InputError(what + ": a program with tips needs its start tip, and only such a program has one");
+  std::set<std::string> tip_names;
+  for (const TipAngles& t : program.tips) {
+    if (!std::isfinite(t.a) || !std::isfinite(t.b)) throw InputError(what + ": a tip angle is not a number");
+    if (!tip_names.insert(tip_name(t)).second) throw InputError(what + ": tip " + tip_name(t) + " is defined twice");
+  }
+  if (program.start_tip && !tip_names.count(tip_name(*program.start_tip)))
+    throw InputError(what + ": the start tip is not among the program's tips");
+  for (const ProgramStep& step : program.steps)
+    if (step.point.tip ? !tip_names.count(tip_name(*step.point.tip)) : !program.tips.empty())
+      throw InputError(what + ": point " + step.point.id + (step.point.tip ? " has a tip the program does not define"
+                                                                           : " has no tip in a program with tips"));
   std::set<std::string> labels;
   if (program.alignment) {
     const PartAlignment& a = *program.alignment;

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "io/cmm/probe_head.hpp"
 #include "io/plan_file.hpp"
 
 namespace furrow {
@@ -91,7 +92,21 @@ struct ProbeProgram {
   std::vector<Eigen::Vector3d> alignment_final_moves;
   std::vector<ProgramStep> steps;
   std::vector<Eigen::Vector3d> final_moves;
+  // Indexable head (docs/cmm.md "Indexable heads"): the tips the program
+  // defines, in order of first use, and the one selected at the start (it
+  // measures the alignment). Empty / unset for the fixed vertical stylus;
+  // then no step has a tip, else every step has one of these. A step whose
+  // tip differs from the one before is preceded by the tip change: after
+  // its first move when it has two or more (the rise to the clearance
+  // plane), else before its moves (on the clearance plane, where the
+  // alignment or the start left the probe). DMIS sensor and I++ tool of a
+  // tip: the probe name, '_', tip_name() (PROBE1_A30B90, Probe1_A30B90).
+  std::vector<TipAngles> tips;
+  std::optional<TipAngles> start_tip;
 };
+
+// The DMIS sensor label / I++ tool name of a tip of `program`'s probe.
+std::string tip_sensor_name(const ProbeProgram& program, const TipAngles& tip);
 
 // Fixed-point text with `decimals` digits; "-0.000" is written "0.000".
 std::string fixed_number(double value, int decimals);
