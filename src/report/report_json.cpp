@@ -113,6 +113,25 @@ json alignment_json(const ComparisonDocument& doc) {
     const double median = u.size() % 2 ? u[u.size() / 2] : 0.5 * (u[u.size() / 2 - 1] + u[u.size() / 2]);
     j["point_uncertainty"] = {{"min", num(u.front(), "u")}, {"median", num(median, "u")}, {"max", num(u.back(), "u")}};
   }
+  // How the points reached the part frame; with the CMM's or a datum frame
+  // the best-fit profile of the same points beside it (form alone), as the
+  // HTML report shows them (docs/registration.md "Alignments").
+  const ComparisonDocument::Alignment& a = doc.alignment;
+  j["method"] = a.method;
+  if (a.method != "bestfit") {
+    j["note"] = a.note;
+    json datums = json::array();
+    for (const auto& d : a.datums)
+      datums.push_back({{"label", d.label},
+                        {"kind", d.kind},
+                        {"points", d.points},
+                        {"origin", jf::vector_json(d.origin)},
+                        {"direction", jf::vector_json(d.direction)},
+                        {"form_error", num(d.form_error, "datum form error")}});
+    j["datums"] = std::move(datums);
+    j["bestfit_profile"] = a.bestfit_profile ? num(*a.bestfit_profile, "best-fit profile") : json(nullptr);
+    j["bestfit_status"] = a.bestfit_status;
+  }
   return j;
 }
 

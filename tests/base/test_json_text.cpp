@@ -81,7 +81,7 @@ TEST_CASE("json text: numbers are nlohmann's text, byte for byte, and read back 
   CHECK_THROWS_AS(json_text::append_number(out, HUGE_VAL, "x"), std::logic_error);
 }
 
-TEST_CASE("json text: strings are escaped as dump() escapes them; invalid UTF-8 throws as dump() does") {
+TEST_CASE("json text: strings are escaped as dump() escapes them, and invalid UTF-8 throws as dump() does") {
   for (const std::string& s : hostile_strings()) {
     std::string out;
     json_text::append_string(out, s);

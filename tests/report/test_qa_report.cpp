@@ -286,7 +286,7 @@ TEST_CASE("an input inside the output folder is refused before the folder is rep
   CHECK_NOTHROW(check_inputs_outside(dir, generated));
 }
 
-TEST_CASE("report.html shows a datum frame's profile beside the best fit's, and each datum's form") {
+TEST_CASE("report.html and report.json show a datum frame's profile beside the best fit's, and each datum's form") {
   const test::ReportFixture& f = fixture();
   ComparisonDocument doc = f.doc;
   doc.alignment.method = "datums";
@@ -308,4 +308,29 @@ TEST_CASE("report.html shows a datum frame's profile beside the best fit's, and 
   // A best fit says nothing of it.
   const std::string plain = file_named(make_report(f.doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.html").bytes;
   CHECK(plain.find("best fit (form)") == std::string::npos);
+
+  // report.json carries the same: the method, each datum, the best-fit profile.
+  a.origin = Eigen::Vector3d(1.5, -2, 0.25);
+  a.direction = Eigen::Vector3d(0, 0.6, 0.8);
+  doc.alignment.datums = {a};
+  const nlohmann::json j = nlohmann::json::parse(
+      file_named(make_report(doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.json").bytes);
+  const nlohmann::json& al = j.at("alignment");
+  CHECK(al.at("method") == "datums");
+  CHECK(al.at("note") == doc.alignment.note);
+  CHECK(al.at("bestfit_profile").get<double>() == 0.01234);
+  REQUIRE(al.at("datums").size() == 1);
+  const nlohmann::json& d = al.at("datums")[0];
+  CHECK(d.at("label") == "A");
+  CHECK(d.at("kind") == "plane");
+  CHECK(d.at("points") == nlohmann::json({"A1", "A2", "A3"}));
+  CHECK(d.at("form_error").get<double>() == 0.0045);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(d.at("origin")[k].get<double>() == a.origin[k]);
+    CHECK(d.at("direction")[k].get<double>() == a.direction[k]);
+  }
+  const nlohmann::json best = nlohmann::json::parse(
+      file_named(make_report(f.doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.json").bytes);
+  CHECK(best.at("alignment").at("method") == "bestfit");
+  CHECK_FALSE(best.at("alignment").contains("bestfit_profile"));
 }

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
-#include "base/scalar_search.hpp"
+#include "machining/prediction/uv_refine.hpp"
 
 namespace furrow {
 
@@ -89,24 +89,9 @@ ErrorExtremum refine_error_extremum(const Part& part, const ZMap& zmap, std::siz
   Eigen::Vector2d uv = start;
   double best = cost(uv);
   if (!std::isfinite(best)) return result;
-  for (int round = 0; round < options.refine_rounds; ++round) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const double half = axis == 0 ? du : dv;
-      const double lo = std::max(axis == 0 ? dom.u0 : dom.v0, uv[axis] - half);
-      const double hi = std::min(axis == 0 ? dom.u1 : dom.v1, uv[axis] + half);
-      Eigen::Vector2d trial = uv;
-      const ScalarSearchResult r = minimize_unimodal(
-          [&](double t) {
-            trial[axis] = t;
-            return cost(trial);
-          },
-          lo, hi, {half * 1e-5, 60});
-      if (r.value < best) {
-        best = r.value;
-        uv[axis] = r.x;
-      }
-    }
-  }
+  UvRefineOptions refine;
+  refine.rounds = options.refine_rounds;
+  best = refine_uv_by_axes(cost, dom, Eigen::Vector2d(du, dv), best, uv, refine);
   result.found = true;
   result.error = -sign * best;
   result.at = surface_point(part, static_cast<int>(face), uv);

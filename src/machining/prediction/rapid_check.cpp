@@ -9,6 +9,7 @@
 #include "base/scalar_search.hpp"
 #include "machining/cutter/vertical_projection.hpp"
 #include "machining/prediction/error_map.hpp"
+#include "machining/prediction/uv_refine.hpp"
 #include "machining/prediction/swept_envelope.hpp"
 
 namespace furrow {
@@ -135,26 +136,12 @@ RapidGouge part_check(const Part& part, const std::vector<FaceSamples>& faces, c
     return std::isfinite(d) ? -d : kInf;
   };
   double value = cost(uv);
-  for (int round = 0; round < options.refine_rounds; ++round) {
-    const double before = value;
-    for (int axis = 0; axis < 2; ++axis) {
-      const double half = best_step[axis];
-      const double lo = std::max(axis == 0 ? dom.u0 : dom.v0, uv[axis] - half);
-      const double hi = std::min(axis == 0 ? dom.u1 : dom.v1, uv[axis] + half);
-      Eigen::Vector2d trial = uv;
-      const ScalarSearchResult r = minimize_unimodal(
-          [&](double t) {
-            trial[axis] = t;
-            return cost(trial);
-          },
-          lo, hi, {half * 1e-6, 80});
-      if (r.value < value) {
-        value = r.value;
-        uv[axis] = r.x;
-      }
-    }
-    if (!(before - value > 1e-12)) break;
-  }
+  UvRefineOptions refine;
+  refine.rounds = options.refine_rounds;
+  refine.relative_tolerance = 1e-6;
+  refine.max_iterations = 80;
+  refine.stall = 1e-12;
+  value = refine_uv_by_axes(cost, dom, best_step, value, uv, refine);
   const SurfacePoint at = surface_point(part, best_face, uv);
   best.depth = -value;
   best.face = best_face;

@@ -62,7 +62,7 @@ QifDocumentData tricky(const std::optional<std::string>& time) {
 
 }  // namespace
 
-TEST_CASE("qif identity: QPIds hash the placeholder text; only QPId and time elements are filled in") {
+TEST_CASE("qif identity: QPIds hash the placeholder text, and only QPId and time elements are filled in") {
   for (const std::optional<std::string>& time :
        {std::optional<std::string>("2024-01-01T00:00:00Z"), std::optional<std::string>("a time longer than its "
                                                                                           "placeholder <&>"),
