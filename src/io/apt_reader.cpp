@@ -10,6 +10,7 @@
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
+#include "base/numbers.hpp"
 #include "base/text_fields.hpp"
 #include "io/apt_statements.hpp"
 #include "io/gcode_arc.hpp"
@@ -19,7 +20,6 @@ namespace furrow {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A direction component this small is zero: CAM systems write unit vectors
 // with 6-7 decimals, so a vertical axis reads 0.0000000 exactly.
 constexpr double kAxisTolerance = 1e-6;

@@ -7,12 +7,11 @@
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // In-plane axes (u, v) and the normal w, ordered so that u x v = w: then
 // counter-clockwise in (u, v) is counter-clockwise seen from +w.

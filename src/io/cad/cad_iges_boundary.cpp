@@ -20,6 +20,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "base/numbers.hpp"
+
 namespace furrow::cad {
 
 namespace {
@@ -71,7 +73,7 @@ bool sample_parameter_curve(const Handle(IGESData_IGESEntity)& curve, std::vecto
     const gp_XY c = arc->Center().XY(), a = arc->StartPoint().XY() - c, b = arc->EndPoint().XY() - c;
     const double a0 = std::atan2(a.Y(), a.X());
     double a1 = std::atan2(b.Y(), b.X());
-    while (a1 <= a0) a1 += 2 * M_PI;
+    while (a1 <= a0) a1 += 2 * kPi;
     const double radius = a.Modulus();
     for (int k = 0; k <= kSamples; ++k) {
       const double angle = a0 + (a1 - a0) * k / kSamples;

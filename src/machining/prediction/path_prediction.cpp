@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -159,7 +160,7 @@ Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPre
     rec.status = to_string(l.check.gouge.status);
     rec.max_excess = l.check.gouge.max_excess;
     for (const AngularRange& a : l.check.gouge.ranges)
-      rec.directions_deg.emplace_back(a.start * 180 / M_PI, a.width * 180 / M_PI);
+      rec.directions_deg.emplace_back(degrees(a.start), degrees(a.width));
     p.local_gouges.push_back(rec);
   }
   // Written only when there is something to say (docs/formats.md
