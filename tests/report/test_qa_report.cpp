@@ -5,11 +5,16 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
 #include "base/error.hpp"
 #include "report/points_csv.hpp"
+#include "report/report_figures.hpp"
+#include "report/report_html.hpp"
+#include "report/report_json.hpp"
+#include "report/report_qif.hpp"
 #include "report/qa_report.hpp"
 #include "report/verdict.hpp"
 #include "report_fixture.hpp"
@@ -210,6 +215,37 @@ TEST_CASE("report.json holds the document's numbers, and only the timestamp and 
   CHECK(ja["gouges"].is_null());
   CHECK(ja["prediction"].is_null());
   CHECK(ja["inputs"][0]["sha256"] == "44136fa355b3678a1146ad16f7e8649e94fb4fc21fe77e8310c060f61caaff8a");  // sha256("{}")
+}
+
+TEST_CASE("the report folder is the same bytes whether its figures and files are drawn on one thread or several") {
+  // make_report draws independent figures at once and writes the four
+  // documents two at a time; the oracle is every piece made strictly one
+  // after the other on one thread.
+  const test::ReportFixture& f = fixture();
+  const ReportContext c = context("2024-01-01T00:00:00Z");
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const std::vector<ReportFigure> figures = make_report_figures(f.doc, f.part, nullptr);
+  omp_set_num_threads(4);
+  const std::vector<FolderFile> parallel = make_report(f.doc, f.part, nullptr, c);
+  omp_set_num_threads(threads);
+  const ReportVerdict verdict = report_verdict(f.doc);
+  std::vector<FolderFile> serial = {
+      {"report.html", report_html(f.doc, verdict, nullptr, c, figures)},
+      {"report.json", report_json_text(f.doc, verdict, nullptr, c, figures)},
+      {"points.csv", points_csv_text(f.doc)},
+      {"results.qif", comparison_to_qif(f.doc, c.inputs, c.generated, c.record)}};
+  for (const ReportFigure& fig : figures) {
+    serial.push_back({fig.file, std::string(fig.png.begin(), fig.png.end())});
+    if (!fig.svg.empty()) serial.push_back({fig.svg_file(), fig.svg});
+  }
+  REQUIRE(serial.size() == parallel.size());
+  CHECK(serial.size() >= 8);  // four documents and at least four figure files
+  for (std::size_t k = 0; k < serial.size(); ++k) {
+    CAPTURE(serial[k].path);
+    CHECK(serial[k].path == parallel[k].path);
+    CHECK(serial[k].bytes == parallel[k].bytes);
+  }
 }
 
 TEST_CASE("report.html is self-contained: every figure is inline SVG or an embedded PNG, the same as its file") {
