@@ -3,6 +3,7 @@
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "partition/face_grid.hpp"
 
@@ -88,166 +89,125 @@ json region_json(const Region& r) {
 
 // ------------------------------------------------------------------ reading
 
-// A member and its path, so every read names the field it came from.
-struct Field {
-  const json& value;
-  std::string where;
-};
-
-Field get(const json& object, const std::string& key, const std::string& where) {
-  return {jf::member(object, key, where), jf::child(where, key)};
-}
-
-double number_at(const json& o, const std::string& key, const std::string& where) {
-  const Field f = get(o, key, where);
-  return jf::number(f.value, f.where);
-}
-
-double non_negative_at(const json& o, const std::string& key, const std::string& where) {
-  const Field f = get(o, key, where);
-  return jf::non_negative_number(f.value, f.where);
-}
-
-int count_at(const json& o, const std::string& key, const std::string& where, int min_value) {
-  const Field f = get(o, key, where);
-  const int n = jf::integer(f.value, f.where);
-  if (n < min_value)
-    throw InputError(f.where + ": must be at least " + std::to_string(min_value) + ", got " +
-                     std::to_string(n));
-  return n;
-}
-
-std::pair<double, double> interval(const json& v, const std::string& where) {
-  const Eigen::Vector2d x = jf::vector2(v, where);
-  if (!(x[0] < x[1])) throw InputError(where + ": expected [low, high] with low < high");
+std::pair<double, double> interval(const JsonCursor& o, const std::string& key) {
+  const Eigen::Vector2d x = o.vector2(key);
+  if (!(x[0] < x[1])) throw InputError(o.path(key) + ": expected [low, high] with low < high");
   return {x[0], x[1]};
 }
 
-ValueStats stats_at(const json& o, const std::string& key, const std::string& where) {
-  const Field f = get(o, key, where);
-  jf::object(f.value, f.where);
-  return {number_at(f.value, "mean", f.where), number_at(f.value, "min", f.where),
-          number_at(f.value, "max", f.where)};
+ValueStats stats_at(const JsonCursor& o, const std::string& key) {
+  const JsonCursor s = o.at(key);
+  return {s.number("mean"), s.number("min"), s.number("max")};
 }
 
-template <class Box, class Vector, class Read>
-Box box_at(const json& o, const std::string& key, const std::string& where, Read read) {
-  const Field f = get(o, key, where);
-  const Field lo = get(f.value, "min", f.where), hi = get(f.value, "max", f.where);
-  const Vector a = read(lo.value, lo.where), b = read(hi.value, hi.where);
-  if (!(a.array() <= b.array()).all()) throw InputError(f.where + ": min exceeds max");
-  return Box(a, b);
+Eigen::AlignedBox2d box2_at(const JsonCursor& o, const std::string& key) {
+  const JsonCursor b = o.at(key);
+  const Eigen::Vector2d lo = b.vector2("min"), hi = b.vector2("max");
+  if (!(lo.array() <= hi.array()).all()) throw InputError(b.where() + ": min exceeds max");
+  return {lo, hi};
+}
+
+Eigen::AlignedBox3d box3_at(const JsonCursor& o, const std::string& key) {
+  const JsonCursor b = o.at(key);
+  const Eigen::Vector3d lo = b.vector3("min"), hi = b.vector3("max");
+  if (!(lo.array() <= hi.array()).all()) throw InputError(b.where() + ": min exceeds max");
+  return {lo, hi};
 }
 
 RegionFace parse_face(const json& j, const std::string& where) {
-  jf::object(j, where);
+  const JsonCursor o(j, where);
   RegionFace f;
-  f.name = jf::string(get(j, "name", where).value, jf::child(where, "name"));
-  f.fingerprint = jf::string(get(j, "fingerprint", where).value, jf::child(where, "fingerprint"));
-  const Field grid = get(j, "grid", where);
-  const std::vector<double> g = jf::numbers(grid.value, grid.where);
+  f.name = o.string("name");
+  f.fingerprint = o.string("fingerprint");
+  const std::vector<double> g = o.numbers("grid");
+  const std::string grid = o.path("grid");
   if (g.size() != 2 || g[0] < 1 || g[1] < 1 || g[0] != std::floor(g[0]) || g[1] != std::floor(g[1]))
-    throw InputError(grid.where + ": expected two cell counts [nu, nv], each at least 1");
+    throw InputError(grid + ": expected two cell counts [nu, nv], each at least 1");
   // The same bounds as a partition's grid (face_grid.hpp): a file can hold no
   // finer grid, and a count beyond int would make the conversion below
   // undefined behaviour (UBSan in fuzz_regions_json, docs/testing.md).
   if (g[0] > kMaxCellsPerDirection || g[1] > kMaxCellsPerDirection || g[0] * g[1] > kMaxCellsPerFace)
-    throw InputError(grid.where + ": " + grid.value.dump() + " is finer than a partition makes (at most " + std::to_string(kMaxCellsPerDirection) +
-                     " per direction and " + std::to_string(kMaxCellsPerFace) + " cells per face)");
+    throw InputError(grid + ": " + o.raw("grid").dump() + " is finer than a partition makes (at most " +
+                     std::to_string(kMaxCellsPerDirection) + " per direction and " +
+                     std::to_string(kMaxCellsPerFace) + " cells per face)");
   f.nu = static_cast<int>(g[0]);
   f.nv = static_cast<int>(g[1]);
-  const Field dom = get(j, "domain", where);
-  const Field du = get(dom.value, "u", dom.where), dv = get(dom.value, "v", dom.where);
-  std::tie(f.domain.u0, f.domain.u1) = interval(du.value, du.where);
-  std::tie(f.domain.v0, f.domain.v1) = interval(dv.value, dv.where);
-  f.eps = non_negative_at(j, "eps", where);
-  const Field source = get(j, "eps_source", where);
-  const std::string s = jf::string(source.value, source.where);
+  const JsonCursor domain = o.at("domain");
+  std::tie(f.domain.u0, f.domain.u1) = interval(domain, "u");
+  std::tie(f.domain.v0, f.domain.v1) = interval(domain, "v");
+  f.eps = o.non_negative("eps");
+  const std::string s = o.string("eps_source");
   if (s != "option" && s != "default")
-    throw InputError(source.where + ": expected \"option\" or \"default\", got " + quote_field(s));
+    throw InputError(o.path("eps_source") + ": expected \"option\" or \"default\", got " + quote_field(s));
   f.eps_from_user = s == "option";
-  f.curvature_scale = non_negative_at(j, "curvature_scale", where);
-  f.min_area = non_negative_at(j, "min_area_mm2", where);
-  f.area = non_negative_at(j, "area_mm2", where);
-  const Field cells = get(j, "cells", where);
-  f.valid_cells = count_at(cells.value, "valid", cells.where, 0);
-  f.trimmed_cells = count_at(cells.value, "trimmed", cells.where, 0);
-  f.degenerate_cells = count_at(cells.value, "degenerate", cells.where, 0);
-  const Field classes = get(j, "class_area_mm2", where);
+  f.curvature_scale = o.non_negative("curvature_scale");
+  f.min_area = o.non_negative("min_area_mm2");
+  f.area = o.non_negative("area_mm2");
+  const JsonCursor cells = o.at("cells");
+  f.valid_cells = cells.integer("valid", 0);
+  f.trimmed_cells = cells.integer("trimmed", 0);
+  f.degenerate_cells = cells.integer("degenerate", 0);
+  const JsonCursor classes = o.at("class_area_mm2");
   for (int c = 0; c < kCurvatureClassCount; ++c)
-    f.class_area[c] = non_negative_at(classes.value, to_string(static_cast<CurvatureClass>(c)),
-                                      classes.where);
-  const Field ids = get(j, "regions", where);
-  jf::array(ids.value, ids.where);
-  for (std::size_t k = 0; k < ids.value.size(); ++k)
-    f.regions.push_back(jf::integer(ids.value[k], jf::child(ids.where, k)));
+    f.class_area[c] = classes.non_negative(to_string(static_cast<CurvatureClass>(c)));
+  const json& ids = o.array("regions");
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    f.regions.push_back(jf::integer(ids[k], jf::child(o.path("regions"), k)));
   return f;
 }
 
 BorderLoop parse_loop(const json& j, const std::string& where) {
-  jf::object(j, where);
+  const JsonCursor o(j, where);
   BorderLoop loop;
-  const Field kind = get(j, "kind", where);
-  const std::string k = jf::string(kind.value, kind.where);
+  const std::string k = o.string("kind");
   if (k != "outer" && k != "hole")
-    throw InputError(kind.where + ": expected \"outer\" or \"hole\", got " + quote_field(k));
+    throw InputError(o.path("kind") + ": expected \"outer\" or \"hole\", got " + quote_field(k));
   loop.hole = k == "hole";
-  const Field uv = get(j, "uv", where), xyz = get(j, "xyz", where);
-  jf::array(uv.value, uv.where);
-  jf::array(xyz.value, xyz.where);
-  if (uv.value.size() < 3)
-    throw InputError(uv.where + ": a border loop needs at least 3 vertices, got " +
-                     std::to_string(uv.value.size()));
-  if (xyz.value.size() != uv.value.size())
-    throw InputError(xyz.where + ": " + std::to_string(xyz.value.size()) +
-                     " points, but uv has " + std::to_string(uv.value.size()));
-  for (std::size_t p = 0; p < uv.value.size(); ++p) {
-    loop.uv.push_back(jf::vector2(uv.value[p], jf::child(uv.where, p)));
-    loop.xyz.push_back(jf::vector3(xyz.value[p], jf::child(xyz.where, p)));
+  const json& uv = o.array("uv");
+  const json& xyz = o.array("xyz");
+  if (uv.size() < 3)
+    throw InputError(o.path("uv") + ": a border loop needs at least 3 vertices, got " + std::to_string(uv.size()));
+  if (xyz.size() != uv.size())
+    throw InputError(o.path("xyz") + ": " + std::to_string(xyz.size()) + " points, but uv has " +
+                     std::to_string(uv.size()));
+  for (std::size_t p = 0; p < uv.size(); ++p) {
+    loop.uv.push_back(jf::vector2(uv[p], jf::child(o.path("uv"), p)));
+    loop.xyz.push_back(jf::vector3(xyz[p], jf::child(o.path("xyz"), p)));
   }
   return loop;
 }
 
 Region parse_region(const json& j, const std::string& where) {
-  jf::object(j, where);
+  const JsonCursor o(j, where);
   Region r;
-  r.id = count_at(j, "id", where, 0);
-  r.face = count_at(j, "face", where, 0);
-  const Field cls = get(j, "class", where);
-  const std::string c = jf::string(cls.value, cls.where);
+  r.id = o.integer("id", 0);
+  r.face = o.integer("face", 0);
+  const std::string c = o.string("class");
   if (!parse_curvature_class(c, r.curvature_class))
-    throw InputError(cls.where + ": expected planar, convex, concave or saddle, got " + quote_field(c));
-  r.area = non_negative_at(j, "area_mm2", where);
-  r.absorbed_area = non_negative_at(j, "absorbed_area_mm2", where);
-  r.cells = count_at(j, "cells", where, 1);
-  r.merged_components = count_at(j, "merged_components", where, 1);
-  const auto read2 = [](const json& v, const std::string& w) { return jf::vector2(v, w); };
-  const auto read3 = [](const json& v, const std::string& w) { return jf::vector3(v, w); };
-  r.uv_box = box_at<Eigen::AlignedBox2d, Eigen::Vector2d>(j, "uv_box", where, read2);
-  r.xyz_box = box_at<Eigen::AlignedBox3d, Eigen::Vector3d>(j, "xyz_box", where, read3);
-  const Field centroid = get(j, "centroid", where);
-  r.centroid = jf::vector3(centroid.value, centroid.where);
-  const Field inner = get(j, "interior_point", where);
-  const Field iuv = get(inner.value, "uv", inner.where), ixyz = get(inner.value, "xyz", inner.where);
-  r.interior_uv = jf::vector2(iuv.value, iuv.where);
-  r.interior_xyz = jf::vector3(ixyz.value, ixyz.where);
-  r.K = stats_at(j, "K", where);
-  r.H = stats_at(j, "H", where);
-  r.k1 = stats_at(j, "k1", where);
-  r.k2 = stats_at(j, "k2", where);
-  const Field neighbours = get(j, "neighbours", where);
-  jf::array(neighbours.value, neighbours.where);
-  for (std::size_t k = 0; k < neighbours.value.size(); ++k) {
-    const std::string w = jf::child(neighbours.where, k);
-    r.neighbours.push_back({count_at(neighbours.value[k], "id", w, 0),
-                            non_negative_at(neighbours.value[k], "border_mm", w)});
+    throw InputError(o.path("class") + ": expected planar, convex, concave or saddle, got " + quote_field(c));
+  r.area = o.non_negative("area_mm2");
+  r.absorbed_area = o.non_negative("absorbed_area_mm2");
+  r.cells = o.integer("cells", 1);
+  r.merged_components = o.integer("merged_components", 1);
+  r.uv_box = box2_at(o, "uv_box");
+  r.xyz_box = box3_at(o, "xyz_box");
+  r.centroid = o.vector3("centroid");
+  const JsonCursor inner = o.at("interior_point");
+  r.interior_uv = inner.vector2("uv");
+  r.interior_xyz = inner.vector3("xyz");
+  r.K = stats_at(o, "K");
+  r.H = stats_at(o, "H");
+  r.k1 = stats_at(o, "k1");
+  r.k2 = stats_at(o, "k2");
+  const json& neighbours = o.array("neighbours");
+  for (std::size_t k = 0; k < neighbours.size(); ++k) {
+    const JsonCursor n(neighbours[k], jf::child(o.path("neighbours"), k));
+    r.neighbours.push_back({n.integer("id", 0), n.non_negative("border_mm")});
   }
-  const Field border = get(j, "border", where);
-  jf::array(border.value, border.where);
-  if (border.value.empty()) throw InputError(border.where + ": a region needs a border loop");
+  const json& border = o.array("border");
+  if (border.empty()) throw InputError(o.path("border") + ": a region needs a border loop");
   std::vector<BorderLoop> loops;
-  for (std::size_t k = 0; k < border.value.size(); ++k)
-    loops.push_back(parse_loop(border.value[k], jf::child(border.where, k)));
+  for (std::size_t k = 0; k < border.size(); ++k) loops.push_back(parse_loop(border[k], jf::child(o.path("border"), k)));
   r.set_border(std::move(loops));
   return r;
 }
@@ -315,32 +275,25 @@ RegionMap read_regions(const std::string& path) {
 
 RegionMap parse_regions_json(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  const std::string root = name + ":";
-  jf::object(doc, root);
-  const Field format = get(doc, "format", root);
-  if (!format.value.is_string() || format.value.get<std::string>() != kRegionsFormat)
-    throw InputError(format.where + ": expected " + quote_field(kRegionsFormat) + " (is this a regions file from furrow partition?)");
-  const Field version = get(doc, "version", root);
-  if (jf::integer(version.value, version.where) != kRegionsVersion)
-    throw InputError(version.where + ": version " + version.value.dump() +
-                     " is not supported (this furrow reads version " +
-                     std::to_string(kRegionsVersion) + ")");
-  const Field units = get(doc, "units", root);
-  if (jf::string(units.value, units.where) != "mm")
-    throw InputError(units.where + ": regions files are in \"mm\"");
+  const JsonCursor root(doc, name + ":");
+  const json& format = root.raw("format");
+  if (!format.is_string() || format.get<std::string>() != kRegionsFormat)
+    throw InputError(root.path("format") + ": expected " + quote_field(kRegionsFormat) +
+                     " (is this a regions file from furrow partition?)");
+  if (root.integer("version") != kRegionsVersion)
+    throw InputError(root.path("version") + ": version " + root.raw("version").dump() +
+                     " is not supported (this furrow reads version " + std::to_string(kRegionsVersion) + ")");
+  if (root.string("units") != "mm") throw InputError(root.path("units") + ": regions files are in \"mm\"");
   RegionMap map;
-  map.source_units = jf::string(get(doc, "source_units", root).value, jf::child(root, "source_units"));
-  map.part_fingerprint =
-      jf::string(get(doc, "part_fingerprint", root).value, jf::child(root, "part_fingerprint"));
-  const Field faces = get(doc, "faces", root);
-  jf::array(faces.value, faces.where);
-  for (std::size_t f = 0; f < faces.value.size(); ++f)
-    map.faces.push_back(parse_face(faces.value[f], jf::child(faces.where, f)));
-  const Field regions = get(doc, "regions", root);
-  jf::array(regions.value, regions.where);
-  for (std::size_t r = 0; r < regions.value.size(); ++r)
-    map.regions.push_back(parse_region(regions.value[r], jf::child(regions.where, r)));
-  check_references(map, root);
+  map.source_units = root.string("source_units");
+  map.part_fingerprint = root.string("part_fingerprint");
+  const json& faces = root.array("faces");
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    map.faces.push_back(parse_face(faces[f], jf::child(root.path("faces"), f)));
+  const json& regions = root.array("regions");
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    map.regions.push_back(parse_region(regions[r], jf::child(root.path("regions"), r)));
+  check_references(map, root.where());
   return map;
 }
 
