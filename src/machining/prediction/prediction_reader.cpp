@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
@@ -30,23 +31,26 @@ std::pair<int, int> count_pair(const json& v, const std::string& where) {
   return {static_cast<int>(count(a[0], jf::child(where, 0))), static_cast<int>(count(a[1], jf::child(where, 1)))};
 }
 
-SurfaceLocation read_location(const json& o, const std::string& where) {
-  jf::object(o, where);
+SurfaceLocation read_location(const JsonCursor& o) {
   SurfaceLocation s;
-  s.face = jf::string(jf::member(o, "face", where), jf::child(where, "face"));
-  s.uv = jf::vector2(jf::member(o, "uv", where), jf::child(where, "uv"));
-  s.xyz = jf::vector3(jf::member(o, "xyz", where), jf::child(where, "xyz"));
+  s.face = o.string("face");
+  s.uv = o.vector2("uv");
+  s.xyz = o.vector3("xyz");
   return s;
 }
 
-ErrorAt read_error_at(const json& o, const std::string& where) {
+// A nullable member: null when no sample had that error.
+ErrorAt read_error_at(const JsonCursor& parent, const std::string& key) {
   ErrorAt e;
-  if (o.is_null()) return e;
+  if (parent.is_null(key)) return e;
+  const JsonCursor o = parent.at(key);
   e.found = true;
-  e.at = read_location(o, where);
-  e.error = jf::number(jf::member(o, "error", where), jf::child(where, "error"));
+  e.at = read_location(o);
+  e.error = o.number("error");
   return e;
 }
+
+Eigen::AlignedBox3d box3(const JsonCursor& o) { return {o.vector3("min"), o.vector3("max")}; }
 
 ErrorCellStatus status_from_letter(char c, const std::string& where) {
   switch (c) {
@@ -58,26 +62,23 @@ ErrorCellStatus status_from_letter(char c, const std::string& where) {
   throw InputError(where + ": unknown cell status '" + std::string(1, c) + "' (expected R, N, O or M)");
 }
 
-FaceGridRecord read_face(const json& o, const std::string& where) {
-  jf::object(o, where);
+FaceGridRecord read_face(const JsonCursor& o) {
   FaceGridRecord f;
-  f.name = jf::string(jf::member(o, "name", where), jf::child(where, "name"));
-  const std::string wd = jf::child(where, "domain");
-  const json& d = jf::member(o, "domain", where);
-  const Eigen::Vector2d du = jf::vector2(jf::member(d, "u", wd), jf::child(wd, "u"));
-  const Eigen::Vector2d dv = jf::vector2(jf::member(d, "v", wd), jf::child(wd, "v"));
-  if (!(du.y() > du.x()) || !(dv.y() > dv.x())) throw InputError(wd + ": each range must be increasing");
+  f.name = o.string("name");
+  const JsonCursor d = o.at("domain");
+  const Eigen::Vector2d du = d.vector2("u"), dv = d.vector2("v");
+  if (!(du.y() > du.x()) || !(dv.y() > dv.x())) throw InputError(d.where() + ": each range must be increasing");
   f.domain = {du.x(), du.y(), dv.x(), dv.y()};
-  const std::string wc = jf::child(where, "cells");
-  const json& cells = jf::array(jf::member(o, "cells", where), wc);
+  const std::string wc = o.path("cells");
+  const json& cells = o.array("cells");
   if (cells.size() != 2) throw InputError(wc + ": expected [cells_u, cells_v]");
   f.cells_u = jf::integer(cells[0], jf::child(wc, 0));
   f.cells_v = jf::integer(cells[1], jf::child(wc, 1));
   if (f.cells_u < 1 || f.cells_v < 1 || double(f.cells_u) * f.cells_v > 1e8)
     throw InputError(wc + ": cell counts must be between 1 and a sane size");
   const std::size_t n = static_cast<std::size_t>(f.cells_u) * f.cells_v;
-  const std::string ws = jf::child(where, "status");
-  const json& rows = jf::array(jf::member(o, "status", where), ws);
+  const std::string ws = o.path("status");
+  const json& rows = o.array("status");
   if (rows.size() != static_cast<std::size_t>(f.cells_v))
     throw InputError(ws + ": expected " + std::to_string(f.cells_v) + " rows, got " + std::to_string(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -90,8 +91,8 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
   const std::pair<const char*, std::vector<double>*> columns[] = {
       {"mean", &f.mean}, {"max_undercut", &f.max_undercut}, {"max_overcut", &f.max_overcut}};
   for (const auto& [key, values] : columns) {
-    const std::string wk = jf::child(where, key);
-    const json& a = jf::array(jf::member(o, key, where), wk);
+    const std::string wk = o.path(key);
+    const json& a = o.array(key);
     if (a.size() != n)
       throw InputError(wk + ": expected " + std::to_string(n) + " values, got " + std::to_string(a.size()));
     values->assign(n, 0.0);
@@ -105,9 +106,9 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
   }
   // Optional (files written before boundary samples were flagged): 0 each.
   f.boundary.assign(n, 0);
-  if (o.contains("boundary")) {
-    const std::string wb = jf::child(where, "boundary");
-    const json& b = jf::array(o.at("boundary"), wb);
+  if (o.has("boundary")) {
+    const std::string wb = o.path("boundary");
+    const json& b = o.array("boundary");
     if (b.size() != n)
       throw InputError(wb + ": expected " + std::to_string(n) + " values, got " + std::to_string(b.size()));
     for (std::size_t k = 0; k < n; ++k) {
@@ -118,25 +119,24 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
   // Optional (files written before the samples were counted per face). A
   // cell's status says some of its samples have that status, so a status
   // letter without a sample of its kind is a contradiction.
-  if (const json* samples = jf::optional_member(o, "samples", where)) {
-    const std::string wsam = jf::child(where, "samples");
-    jf::object(*samples, wsam);
+  if (o.has("samples")) {
+    const JsonCursor samples = o.at("samples");
     f.has_samples = true;
-    f.samples_reached = count(jf::member(*samples, "reached", wsam), jf::child(wsam, "reached"));
-    f.samples_not_reached = count(jf::member(*samples, "not_reached", wsam), jf::child(wsam, "not_reached"));
-    f.samples_not_machinable = count(jf::member(*samples, "not_machinable", wsam), jf::child(wsam, "not_machinable"));
-    f.samples_outside = count(jf::member(*samples, "outside", wsam), jf::child(wsam, "outside"));
+    f.samples_reached = samples.count("reached");
+    f.samples_not_reached = samples.count("not_reached");
+    f.samples_not_machinable = samples.count("not_machinable");
+    f.samples_outside = samples.count("outside");
     const std::pair<ErrorCellStatus, std::size_t> kinds[] = {{ErrorCellStatus::reached, f.samples_reached},
                                                              {ErrorCellStatus::not_reached, f.samples_not_reached}};
     for (const auto& [kind, number] : kinds)
       for (std::size_t k = 0; k < n; ++k)
         if (f.status[k] == kind && number == 0)
-          throw InputError(jf::child(wsam, kind == ErrorCellStatus::reached ? "reached" : "not_reached") +
+          throw InputError(samples.path(kind == ErrorCellStatus::reached ? "reached" : "not_reached") +
                            ": 0, but cell " + std::to_string(k) + " has status '" + status_letter(kind) + "'");
   }
   for (std::size_t k = 0; k < n; ++k)
     if (f.status[k] == ErrorCellStatus::reached && !(f.max_overcut[k] <= f.mean[k] && f.mean[k] <= f.max_undercut[k]))
-      throw InputError(jf::child(where, "mean") + "[" + std::to_string(k) +
+      throw InputError(o.path("mean") + "[" + std::to_string(k) +
                        "]: the mean lies outside [max_overcut, max_undercut]");
   return f;
 }
@@ -145,190 +145,161 @@ FaceGridRecord read_face(const json& o, const std::string& where) {
 
 Prediction parse_prediction_json(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  const std::string root = name + ":";
-  jf::object(doc, root);
+  const JsonCursor root(doc, name + ":");
   Prediction p;
-  if (jf::string(jf::member(doc, "format", root), jf::child(root, "format")) != "furrow-prediction")
-    throw InputError(jf::child(root, "format") + ": not a furrow prediction");
-  const int version = jf::integer(jf::member(doc, "version", root), jf::child(root, "version"));
+  if (root.string("format") != "furrow-prediction") throw InputError(root.path("format") + ": not a furrow prediction");
+  const int version = root.integer("version");
   if (version != kPredictionFormatVersion)
-    throw InputError(jf::child(root, "version") + ": version " + std::to_string(version) +
+    throw InputError(root.path("version") + ": version " + std::to_string(version) +
                      " is not supported (this furrow reads version " + std::to_string(kPredictionFormatVersion) + ")");
-  if (jf::string(jf::member(doc, "units", root), jf::child(root, "units")) != "mm")
-    throw InputError(jf::child(root, "units") + ": predictions are written in mm");
-  p.part = jf::string(jf::member(doc, "part", root), jf::child(root, "part"));
-  p.toolpath = jf::string(jf::member(doc, "toolpath", root), jf::child(root, "toolpath"));
-  p.tool = parse_tool_json(jf::member(doc, "tool", root).dump(), jf::child(root, "tool"));
-  p.tolerance = jf::positive_number(jf::member(doc, "tolerance", root), jf::child(root, "tolerance"));
-  p.gouge_threshold = jf::non_negative_number(jf::member(doc, "gouge_threshold", root), jf::child(root, "gouge_threshold"));
+  if (root.string("units") != "mm") throw InputError(root.path("units") + ": predictions are written in mm");
+  p.part = root.string("part");
+  p.toolpath = root.string("toolpath");
+  p.tool = parse_tool_json(root.raw("tool").dump(), root.path("tool"));
+  p.tolerance = root.positive("tolerance");
+  p.gouge_threshold = root.non_negative("gouge_threshold");
 
-  const std::string wz = jf::child(root, "zmap");
-  const json& z = jf::object(jf::member(doc, "zmap", root), wz);
-  p.zmap.resolution = jf::positive_number(jf::member(z, "resolution", wz), jf::child(wz, "resolution"));
-  p.zmap.origin = jf::vector2(jf::member(z, "origin", wz), jf::child(wz, "origin"));
-  std::tie(p.zmap.nx, p.zmap.ny) = count_pair(jf::member(z, "nodes", wz), jf::child(wz, "nodes"));
-  p.zmap.moves = count(jf::member(z, "moves", wz), jf::child(wz, "moves"));
-  p.zmap.cut_nodes = count(jf::member(z, "cut_nodes", wz), jf::child(wz, "cut_nodes"));
+  const JsonCursor z = root.at("zmap");
+  p.zmap.resolution = z.positive("resolution");
+  p.zmap.origin = z.vector2("origin");
+  std::tie(p.zmap.nx, p.zmap.ny) = count_pair(z.raw("nodes"), z.path("nodes"));
+  p.zmap.moves = z.count("moves");
+  p.zmap.cut_nodes = z.count("cut_nodes");
 
-  const std::string wsum = jf::child(root, "summary");
-  const json& s = jf::object(jf::member(doc, "summary", root), wsum);
-  auto field = [&](const char* key) -> const json& { return jf::member(s, key, wsum); };
-  auto at = [&](const char* key) { return jf::child(wsum, key); };
+  const JsonCursor s = root.at("summary");
   PredictionSummary& sum = p.summary;
-  sum.max_undercut = read_error_at(field("max_undercut"), at("max_undercut"));
-  sum.max_overcut = read_error_at(field("max_overcut"), at("max_overcut"));
-  sum.steps = count(field("steps"), at("steps"));
-  sum.steps_evaluated = count(field("steps_evaluated"), at("steps_evaluated"));
-  sum.steps_over_tolerance = count(field("steps_over_tolerance"), at("steps_over_tolerance"));
-  sum.max_step_error = jf::number(field("max_step_error"), at("max_step_error"));
-  sum.max_scallop = jf::number(field("max_scallop"), at("max_scallop"));
-  sum.gouge_sites = count(field("gouge_sites"), at("gouge_sites"));
-  sum.local_gouge_points = count(field("local_gouge_points"), at("local_gouge_points"));
-  sum.path_points = count(field("path_points"), at("path_points"));
-  sum.points_without_contact = count(field("points_without_contact"), at("points_without_contact"));
-  sum.points_in_air = count(field("points_in_air"), at("points_in_air"));
-  sum.points_below_surface = count(field("points_below_surface"), at("points_below_surface"));
-  sum.lowest_gap = jf::number(field("lowest_gap"), at("lowest_gap"));
-  const std::string wsam = at("samples");
-  const json& samples = jf::object(field("samples"), wsam);
-  sum.samples_reached = count(jf::member(samples, "reached", wsam), jf::child(wsam, "reached"));
-  sum.samples_not_reached = count(jf::member(samples, "not_reached", wsam), jf::child(wsam, "not_reached"));
-  sum.samples_not_machinable = count(jf::member(samples, "not_machinable", wsam), jf::child(wsam, "not_machinable"));
-  if (samples.contains("boundary"))  // optional: older files have none
-    sum.samples_boundary = count(samples.at("boundary"), jf::child(wsam, "boundary"));
+  sum.max_undercut = read_error_at(s, "max_undercut");
+  sum.max_overcut = read_error_at(s, "max_overcut");
+  sum.steps = s.count("steps");
+  sum.steps_evaluated = s.count("steps_evaluated");
+  sum.steps_over_tolerance = s.count("steps_over_tolerance");
+  sum.max_step_error = s.number("max_step_error");
+  sum.max_scallop = s.number("max_scallop");
+  sum.gouge_sites = s.count("gouge_sites");
+  sum.local_gouge_points = s.count("local_gouge_points");
+  sum.path_points = s.count("path_points");
+  sum.points_without_contact = s.count("points_without_contact");
+  sum.points_in_air = s.count("points_in_air");
+  sum.points_below_surface = s.count("points_below_surface");
+  sum.lowest_gap = s.number("lowest_gap");
+  const JsonCursor samples = s.at("samples");
+  sum.samples_reached = samples.count("reached");
+  sum.samples_not_reached = samples.count("not_reached");
+  sum.samples_not_machinable = samples.count("not_machinable");
+  if (samples.has("boundary")) sum.samples_boundary = samples.count("boundary");  // optional: older files have none
 
-  const std::string wst = jf::child(root, "steps");
-  const json& steps = jf::array(jf::member(doc, "steps", root), wst);
+  const json& steps = root.array("steps");
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const std::string w = jf::child(wst, k);
-    const json& o = jf::object(steps[k], w);
+    const JsonCursor o(steps[k], jf::child(root.path("steps"), k));
     StepRecord r;
-    r.pass = jf::integer(jf::member(o, "pass", w), jf::child(w, "pass"));
-    r.step = jf::integer(jf::member(o, "step", w), jf::child(w, "step"));
-    r.status = jf::string(jf::member(o, "status", w), jf::child(w, "status"));
+    r.pass = o.integer("pass");
+    r.step = o.integer("step");
+    r.status = o.string("status");
     if (r.status == "evaluated") {
-      r.length = jf::non_negative_number(jf::member(o, "length", w), jf::child(w, "length"));
-      r.undercut = read_error_at(jf::member(o, "max_undercut", w), jf::child(w, "max_undercut"));
-      r.overcut = read_error_at(jf::member(o, "max_overcut", w), jf::child(w, "max_overcut"));
-      r.chord_deviation = jf::non_negative_number(jf::member(o, "chord_deviation", w), jf::child(w, "chord_deviation"));
+      r.length = o.non_negative("length");
+      r.undercut = read_error_at(o, "max_undercut");
+      r.overcut = read_error_at(o, "max_overcut");
+      r.chord_deviation = o.non_negative("chord_deviation");
     }
     p.steps.push_back(r);
   }
-  const std::string wsc = jf::child(root, "scallops");
-  const json& scallops = jf::array(jf::member(doc, "scallops", root), wsc);
+  const json& scallops = root.array("scallops");
   for (std::size_t k = 0; k < scallops.size(); ++k) {
-    const std::string w = jf::child(wsc, k);
+    const JsonCursor o(scallops[k], jf::child(root.path("scallops"), k));
     ScallopRecord r;
-    r.at = read_location(scallops[k], w);
-    std::tie(r.pass_a, r.pass_b) = count_pair(jf::member(scallops[k], "passes", w), jf::child(w, "passes"));
-    r.height = jf::number(jf::member(scallops[k], "height", w), jf::child(w, "height"));
+    r.at = read_location(o);
+    std::tie(r.pass_a, r.pass_b) = count_pair(o.raw("passes"), o.path("passes"));
+    r.height = o.number("height");
     p.scallops.push_back(r);
   }
-  const std::string wg = jf::child(root, "gouge_sites");
-  const json& sites = jf::array(jf::member(doc, "gouge_sites", root), wg);
+  const json& sites = root.array("gouge_sites");
   for (std::size_t k = 0; k < sites.size(); ++k) {
-    const std::string w = jf::child(wg, k);
-    const json& o = jf::object(sites[k], w);
+    const JsonCursor o(sites[k], jf::child(root.path("gouge_sites"), k));
     GougeSiteRecord r;
-    r.id = jf::integer(jf::member(o, "id", w), jf::child(w, "id"));
-    r.face = jf::string(jf::member(o, "face", w), jf::child(w, "face"));
-    r.depth = jf::non_negative_number(jf::member(o, "depth", w), jf::child(w, "depth"));
-    r.deepest = read_location(jf::member(o, "deepest", w), jf::child(w, "deepest"));
-    r.area = jf::non_negative_number(jf::member(o, "area_mm2", w), jf::child(w, "area_mm2"));
-    r.samples = jf::integer(jf::member(o, "samples", w), jf::child(w, "samples"));
-    r.centroid = read_location(jf::member(o, "centroid", w), jf::child(w, "centroid"));
-    const std::string wb = jf::child(w, "xyz_box"), wu = jf::child(w, "uv_box");
-    const json& b = jf::object(jf::member(o, "xyz_box", w), wb);
-    const json& u = jf::object(jf::member(o, "uv_box", w), wu);
-    r.box = Eigen::AlignedBox3d(jf::vector3(jf::member(b, "min", wb), jf::child(wb, "min")),
-                                jf::vector3(jf::member(b, "max", wb), jf::child(wb, "max")));
-    r.uv_box = Eigen::AlignedBox2d(jf::vector2(jf::member(u, "min", wu), jf::child(wu, "min")),
-                                   jf::vector2(jf::member(u, "max", wu), jf::child(wu, "max")));
+    r.id = o.integer("id");
+    r.face = o.string("face");
+    r.depth = o.non_negative("depth");
+    r.deepest = read_location(o.at("deepest"));
+    r.area = o.non_negative("area_mm2");
+    r.samples = o.integer("samples");
+    r.centroid = read_location(o.at("centroid"));
+    const JsonCursor b = o.at("xyz_box"), u = o.at("uv_box");
+    r.box = box3(b);
+    r.uv_box = Eigen::AlignedBox2d(u.vector2("min"), u.vector2("max"));
     p.gouge_sites.push_back(r);
   }
-  const std::string wl = jf::child(root, "local_gouges");
-  const json& local = jf::array(jf::member(doc, "local_gouges", root), wl);
+  const json& local = root.array("local_gouges");
   for (std::size_t k = 0; k < local.size(); ++k) {
-    const std::string w = jf::child(wl, k);
+    const JsonCursor o(local[k], jf::child(root.path("local_gouges"), k));
     LocalGougeRecord r;
-    r.at = read_location(local[k], w);
-    r.pass = jf::integer(jf::member(local[k], "pass", w), jf::child(w, "pass"));
-    r.point = jf::integer(jf::member(local[k], "point", w), jf::child(w, "point"));
-    r.line = jf::integer(jf::member(local[k], "line", w), jf::child(w, "line"));
-    r.status = jf::string(jf::member(local[k], "status", w), jf::child(w, "status"));
-    r.max_excess = jf::number(jf::member(local[k], "max_excess", w), jf::child(w, "max_excess"));
-    const std::string wa = jf::child(w, "directions_deg");
-    const json& arcs = jf::array(jf::member(local[k], "directions_deg", w), wa);
-    for (std::size_t a = 0; a < arcs.size(); ++a) r.directions_deg.push_back(jf::vector2(arcs[a], jf::child(wa, a)));
+    r.at = read_location(o);
+    r.pass = o.integer("pass");
+    r.point = o.integer("point");
+    r.line = o.integer("line");
+    r.status = o.string("status");
+    r.max_excess = o.number("max_excess");
+    const json& arcs = o.array("directions_deg");
+    for (std::size_t a = 0; a < arcs.size(); ++a)
+      r.directions_deg.push_back(jf::vector2(arcs[a], jf::child(o.path("directions_deg"), a)));
     p.local_gouges.push_back(r);
   }
-  if (const json* rap = jf::optional_member(doc, "rapids", root)) {
-    const std::string wr = jf::child(root, "rapids");
-    jf::object(*rap, wr);
+  if (root.has("rapids")) {
+    const JsonCursor rap = root.at("rapids");
     p.rapids.written = true;
-    p.rapids.checked = count(jf::member(*rap, "checked", wr), jf::child(wr, "checked"));
-    p.rapids.unchecked = count(jf::member(*rap, "unchecked", wr), jf::child(wr, "unchecked"));
-    const json& stock = jf::member(*rap, "stock", wr);
-    if (!stock.is_null()) {
-      const std::string ws = jf::child(wr, "stock");
-      jf::object(stock, ws);
+    p.rapids.checked = rap.count("checked");
+    p.rapids.unchecked = rap.count("unchecked");
+    if (!rap.is_null("stock")) {
+      const JsonCursor stock = rap.at("stock");
       p.rapids.has_stock = true;
-      p.rapids.stock = Eigen::AlignedBox3d(jf::vector3(jf::member(stock, "min", ws), jf::child(ws, "min")),
-                                           jf::vector3(jf::member(stock, "max", ws), jf::child(ws, "max")));
-      if (p.rapids.stock.isEmpty()) throw InputError(ws + ": min must not exceed max on any axis");
+      p.rapids.stock = box3(stock);
+      if (p.rapids.stock.isEmpty()) throw InputError(stock.where() + ": min must not exceed max on any axis");
     }
-    const std::string wg = jf::child(wr, "gouges");
-    const json& gouges = jf::array(jf::member(*rap, "gouges", wr), wg);
+    const json& gouges = rap.array("gouges");
     for (std::size_t k = 0; k < gouges.size(); ++k) {
-      const std::string w = jf::child(wg, k);
-      const json& o = jf::object(gouges[k], w);
+      const JsonCursor o(gouges[k], jf::child(rap.path("gouges"), k));
       RapidGougeRecord g;
-      g.line = jf::integer(jf::member(o, "line", w), jf::child(w, "line"));
-      g.kind = jf::string(jf::member(o, "kind", w), jf::child(w, "kind"));
+      g.line = o.integer("line");
+      g.kind = o.string("kind");
       if (g.kind != "part" && g.kind != "stock")
-        throw InputError(jf::child(w, "kind") + ": expected \"part\" or \"stock\", got " + quote_field(g.kind));
-      g.depth = jf::number(jf::member(o, "depth", w), jf::child(w, "depth"));
-      if (!(g.depth > 0)) throw InputError(jf::child(w, "depth") + ": must be positive");
-      g.at.xyz = jf::vector3(jf::member(o, "xyz", w), jf::child(w, "xyz"));
+        throw InputError(o.path("kind") + ": expected \"part\" or \"stock\", got " + quote_field(g.kind));
+      g.depth = o.number("depth");
+      if (!(g.depth > 0)) throw InputError(o.path("depth") + ": must be positive");
+      g.at.xyz = o.vector3("xyz");
       if (g.kind == "part") {
-        g.at.face = jf::string(jf::member(o, "face", w), jf::child(w, "face"));
-        g.at.uv = jf::vector2(jf::member(o, "uv", w), jf::child(w, "uv"));
+        g.at.face = o.string("face");
+        g.at.uv = o.vector2("uv");
       }
       p.rapids.gouges.push_back(g);
     }
   }
-  if (const json* reg = jf::optional_member(doc, "regions", root)) {
-    const std::string wr = jf::child(root, "regions");
-    jf::object(*reg, wr);
+  if (root.has("regions")) {
+    const JsonCursor reg = root.at("regions");
     p.has_regions = true;
-    p.regions_file = jf::string(jf::member(*reg, "file", wr), jf::child(wr, "file"));
-    const std::string wb = jf::child(wr, "by_region");
-    const json& list = jf::array(jf::member(*reg, "by_region", wr), wb);
+    p.regions_file = reg.string("file");
+    const json& list = reg.array("by_region");
     for (std::size_t k = 0; k < list.size(); ++k) {
-      const std::string w = jf::child(wb, k);
-      const json& o = jf::object(list[k], w);
+      const JsonCursor o(list[k], jf::child(reg.path("by_region"), k));
       RegionErrorRecord r;
-      r.region = jf::integer(jf::member(o, "region", w), jf::child(w, "region"));
-      r.face = jf::string(jf::member(o, "face", w), jf::child(w, "face"));
-      r.curvature_class = jf::string(jf::member(o, "class", w), jf::child(w, "class"));
-      r.samples = jf::integer(jf::member(o, "samples", w), jf::child(w, "samples"));
-      r.reached = jf::integer(jf::member(o, "reached", w), jf::child(w, "reached"));
-      const json& mean = jf::member(o, "mean", w);
-      if ((r.reached > 0) == mean.is_null())
-        throw InputError(jf::child(w, "mean") + ": expected a number exactly when samples were reached");
-      if (r.reached > 0) r.mean = jf::number(mean, jf::child(w, "mean"));
-      r.max_undercut = read_error_at(jf::member(o, "max_undercut", w), jf::child(w, "max_undercut"));
-      r.max_overcut = read_error_at(jf::member(o, "max_overcut", w), jf::child(w, "max_overcut"));
+      r.region = o.integer("region");
+      r.face = o.string("face");
+      r.curvature_class = o.string("class");
+      r.samples = o.integer("samples");
+      r.reached = o.integer("reached");
+      if ((r.reached > 0) == o.is_null("mean"))
+        throw InputError(o.path("mean") + ": expected a number exactly when samples were reached");
+      if (r.reached > 0) r.mean = o.number("mean");
+      r.max_undercut = read_error_at(o, "max_undercut");
+      r.max_overcut = read_error_at(o, "max_overcut");
       p.regions.push_back(r);
     }
   }
-  const std::string wf = jf::child(root, "faces");
-  const json& faces = jf::array(jf::member(doc, "faces", root), wf);
+  const json& faces = root.array("faces");
   for (std::size_t k = 0; k < faces.size(); ++k) {
-    p.faces.push_back(read_face(faces[k], jf::child(wf, k)));
+    const std::string where = jf::child(root.path("faces"), k);
+    p.faces.push_back(read_face(JsonCursor(faces[k], where)));
     for (std::size_t l = 0; l < k; ++l)
       if (p.faces[l].name == p.faces[k].name)
-        throw InputError(jf::child(jf::child(wf, k), "name") + ": face " + quote_field(p.faces[k].name) + " appears twice");
+        throw InputError(jf::child(where, "name") + ": face " + quote_field(p.faces[k].name) + " appears twice");
   }
   return p;
 }
