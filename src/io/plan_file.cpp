@@ -9,6 +9,7 @@
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 
@@ -46,49 +47,43 @@ Eigen::Vector3d unit(const Eigen::Vector3d& v, const std::string& where) {
   return std::abs(n - 1) > 1e-12 ? Eigen::Vector3d(v / n) : v;
 }
 
-PlannedPoint parse_point(const json& jp, const std::string& where, double scale) {
-  jf::object(jp, where);
-  auto field = [&](const char* key) -> const json& { return jf::member(jp, key, where); };
-  auto at = [&](const char* key) { return jf::child(where, key); };
+PlannedPoint parse_point(const JsonCursor& o, double scale) {
   PlannedPoint p;
-  p.id = jf::string(field("id"), at("id"));
-  check_id(p.id, at("id"));
-  p.order = jf::integer(field("order"), at("order"));
-  if (p.order < 1) throw InputError(at("order") + ": must be at least 1");
-  p.face = jf::string(field("face"), at("face"));
-  const int face_index = jf::integer(field("face_index"), at("face_index"));
-  if (face_index < 0) throw InputError(at("face_index") + ": must not be negative");
+  p.id = o.string("id");
+  check_id(p.id, o.path("id"));
+  p.order = o.integer("order");
+  if (p.order < 1) throw InputError(o.path("order") + ": must be at least 1");
+  p.face = o.string("face");
+  const int face_index = o.integer("face_index");
+  if (face_index < 0) throw InputError(o.path("face_index") + ": must not be negative");
   p.face_index = static_cast<std::size_t>(face_index);
-  if (const json* jr = jf::optional_member(jp, "region", where)) {
-    p.region = jf::integer(*jr, at("region"));
-    if (*p.region < 0) throw InputError(at("region") + ": must not be negative");
+  if (o.has("region")) {
+    p.region = o.integer("region");
+    if (*p.region < 0) throw InputError(o.path("region") + ": must not be negative");
   }
-  p.uv = {jf::number(field("u"), at("u")), jf::number(field("v"), at("v"))};
-  p.xyz = scale * jf::vector3(field("xyz"), at("xyz"));
-  p.ijk = unit(jf::vector3(field("ijk"), at("ijk")), at("ijk"));
-  p.approach = scale * jf::vector3(field("approach"), at("approach"));
-  p.retract = scale * jf::vector3(field("retract"), at("retract"));
-  if (const json* jt = jf::optional_member(jp, "tip", where)) {
-    jf::object(*jt, at("tip"));
-    const std::string tw = at("tip");
-    p.tip = TipAngles{jf::number(jf::member(*jt, "a", tw), jf::child(tw, "a")),
-                      jf::number(jf::member(*jt, "b", tw), jf::child(tw, "b"))};
-    if (p.tip->a < 0 || p.tip->a > 180) throw InputError(jf::child(tw, "a") + ": must be from 0 to 180 degrees");
-    if (std::abs(p.tip->b) > 360) throw InputError(jf::child(tw, "b") + ": must be from -360 to 360 degrees");
+  p.uv = {o.number("u"), o.number("v")};
+  p.xyz = scale * o.vector3("xyz");
+  p.ijk = unit(o.vector3("ijk"), o.path("ijk"));
+  p.approach = scale * o.vector3("approach");
+  p.retract = scale * o.vector3("retract");
+  if (o.has("tip")) {
+    const JsonCursor t = o.at("tip");
+    p.tip = TipAngles{t.number("a"), t.number("b")};
+    if (p.tip->a < 0 || p.tip->a > 180) throw InputError(t.path("a") + ": must be from 0 to 180 degrees");
+    if (std::abs(p.tip->b) > 360) throw InputError(t.path("b") + ": must be from -360 to 360 degrees");
   }
   // After unit conversion (docs/formats.md "Limits").
   for (const char* key : {"xyz", "approach", "retract"}) {
     const Eigen::Vector3d& v = key[0] == 'x' ? p.xyz : key[0] == 'a' ? p.approach : p.retract;
-    for (int a = 0; a < 3; ++a) limits::check_coordinate(v[a], jf::child(at(key), a));
+    for (int a = 0; a < 3; ++a) limits::check_coordinate(v[a], jf::child(o.path(key), a));
   }
   return p;
 }
 
-UncoveredRegion parse_uncovered(const json& ju, const std::string& where) {
-  jf::object(ju, where);
+UncoveredRegion parse_uncovered(const JsonCursor& o) {
   auto count = [&](const char* key) {
-    const int n = jf::integer(jf::member(ju, key, where), jf::child(where, key));
-    if (n < 0) throw InputError(jf::child(where, key) + ": must not be negative");
+    const int n = o.integer(key);
+    if (n < 0) throw InputError(o.path(key) + ": must not be negative");
     return n;
   };
   UncoveredRegion u;
@@ -97,68 +92,66 @@ UncoveredRegion parse_uncovered(const json& ju, const std::string& where) {
   u.planned = count("planned");
   u.required = count("required");
   if (u.required <= u.planned)
-    throw InputError(jf::child(where, "required") + ": " + std::to_string(u.required) +
-                     " is not above planned (" + std::to_string(u.planned) + "): the region is covered");
-  if (const json* jr = jf::optional_member(ju, "reason", where)) u.reason = jf::string(*jr, jf::child(where, "reason"));
+    throw InputError(o.path("required") + ": " + std::to_string(u.required) + " is not above planned (" +
+                     std::to_string(u.planned) + "): the region is covered");
+  if (o.has("reason")) u.reason = o.string("reason");
   return u;
 }
 
-char axis_letter(const json& j, const std::string& where, bool allow_none) {
-  const std::string a = jf::string(j, where);
+char axis_letter(const JsonCursor& o, const std::string& key, bool allow_none) {
+  const std::string a = o.string(key);
   if (a == "X" || a == "Y" || a == "Z") return a[0];
   if (allow_none && a.empty()) return 0;
-  throw InputError(where + ": " + quote_field(a) + " is not an axis (\"X\", \"Y\" or \"Z\")");
+  throw InputError(o.path(key) + ": " + quote_field(a) + " is not an axis (\"X\", \"Y\" or \"Z\")");
 }
 
-std::vector<PlannedPoint> parse_points(const json& j, const std::string& where, double scale) {
+std::vector<PlannedPoint> parse_points(const JsonCursor& o, const std::string& key, double scale) {
   std::vector<PlannedPoint> points;
-  const json& arr = jf::array(j, where);
-  for (std::size_t k = 0; k < arr.size(); ++k) points.push_back(parse_point(arr[k], jf::child(where, k), scale));
+  const json& arr = o.array(key);
+  for (std::size_t k = 0; k < arr.size(); ++k)
+    points.push_back(parse_point(JsonCursor(arr[k], jf::child(o.path(key), k)), scale));
   return points;
 }
 
-PartAlignment parse_alignment(const json& j, const std::string& where, double scale) {
-  jf::object(j, where);
+PartAlignment parse_alignment(const JsonCursor& o, double scale) {
   PartAlignment a;
-  const std::string method = jf::string(jf::member(j, "method", where), jf::child(where, "method"));
+  const std::string method = o.string("method");
   if (method == "datums") a.method = PartAlignment::Method::datums;
   else if (method == "free_form") a.method = PartAlignment::Method::free_form;
-  else throw InputError(jf::child(where, "method") + ": " + quote_field(method) + " is not \"datums\" or \"free_form\"");
-  if (const json* r = jf::optional_member(j, "reason", where)) a.reason = jf::string(*r, jf::child(where, "reason"));
+  else throw InputError(o.path("method") + ": " + quote_field(method) + " is not \"datums\" or \"free_form\"");
+  if (o.has("reason")) a.reason = o.string("reason");
   if (a.method == PartAlignment::Method::datums) {
-    a.origin = scale * jf::vector3(jf::member(j, "origin", where), jf::child(where, "origin"));
-    const std::string dw = jf::child(where, "datums");
-    const json& jd = jf::array(jf::member(j, "datums", where), dw);
-    if (jd.size() != 3) throw InputError(dw + ": a 3-2-1 alignment needs 3 datums, got " + std::to_string(jd.size()));
+    a.origin = scale * o.vector3("origin");
+    const json& jd = o.array("datums");
+    if (jd.size() != 3)
+      throw InputError(o.path("datums") + ": a 3-2-1 alignment needs 3 datums, got " + std::to_string(jd.size()));
     for (std::size_t k = 0; k < jd.size(); ++k) {
-      const std::string w = jf::child(dw, k);
-      jf::object(jd[k], w);
-      auto field = [&](const char* key) -> const json& { return jf::member(jd[k], key, w); };
+      const JsonCursor f(jd[k], jf::child(o.path("datums"), k));
       DatumFeature d;
-      d.label = jf::string(field("label"), jf::child(w, "label"));
-      const std::string kind = jf::string(field("kind"), jf::child(w, "kind"));
+      d.label = f.string("label");
+      const std::string kind = f.string("kind");
       if (kind == "plane") d.kind = DatumFeature::Kind::plane;
       else if (kind == "line") d.kind = DatumFeature::Kind::line;
       else if (kind == "point") d.kind = DatumFeature::Kind::point;
-      else throw InputError(jf::child(w, "kind") + ": " + quote_field(kind) + " is not plane, line or point");
-      d.face = jf::string(field("face"), jf::child(w, "face"));
-      const int fi = jf::integer(field("face_index"), jf::child(w, "face_index"));
-      if (fi < 0) throw InputError(jf::child(w, "face_index") + ": must not be negative");
+      else throw InputError(f.path("kind") + ": " + quote_field(kind) + " is not plane, line or point");
+      d.face = f.string("face");
+      const int fi = f.integer("face_index");
+      if (fi < 0) throw InputError(f.path("face_index") + ": must not be negative");
       d.face_index = static_cast<std::size_t>(fi);
-      d.origin = scale * jf::vector3(field("origin"), jf::child(w, "origin"));
-      d.direction = unit(jf::vector3(field("direction"), jf::child(w, "direction")), jf::child(w, "direction"));
-      d.normal = unit(jf::vector3(field("normal"), jf::child(w, "normal")), jf::child(w, "normal"));
-      d.axis = axis_letter(field("axis"), jf::child(w, "axis"), true);
-      d.origin_axis = axis_letter(field("origin_axis"), jf::child(w, "origin_axis"), false);
-      d.points = parse_points(field("points"), jf::child(w, "points"), scale);
+      d.origin = scale * f.vector3("origin");
+      d.direction = unit(f.vector3("direction"), f.path("direction"));
+      d.normal = unit(f.vector3("normal"), f.path("normal"));
+      d.axis = axis_letter(f, "axis", true);
+      d.origin_axis = axis_letter(f, "origin_axis", false);
+      d.points = parse_points(f, "points", scale);
       const std::size_t need = d.kind == DatumFeature::Kind::plane ? 3 : d.kind == DatumFeature::Kind::line ? 2 : 1;
       if (d.points.size() < need)
-        throw InputError(jf::child(w, "points") + ": a " + kind + " needs at least " + std::to_string(need) + " points");
+        throw InputError(f.path("points") + ": a " + kind + " needs at least " + std::to_string(need) + " points");
       a.datums.push_back(std::move(d));
     }
   } else {
-    a.manual = parse_points(jf::member(j, "manual", where), jf::child(where, "manual"), scale);
-    if (a.manual.size() < 3) throw InputError(jf::child(where, "manual") + ": at least 3 points are needed");
+    a.manual = parse_points(o, "manual", scale);
+    if (a.manual.size() < 3) throw InputError(o.path("manual") + ": at least 3 points are needed");
   }
   return a;
 }
@@ -190,46 +183,39 @@ json alignment_json(const PartAlignment& a) {
   return j;
 }
 
+
 }  // namespace
 
 InspectionPlan parse_plan(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  const std::string root = name + ":";
-  jf::object(doc, root);
-  if (const json* jv = jf::optional_member(doc, "version", root)) {
-    const int version = jf::integer(*jv, jf::child(root, "version"));
+  const JsonCursor root(doc, name + ":");
+  if (root.has("version")) {
+    const int version = root.integer("version");
     if (version != 1)
-      throw InputError(jf::child(root, "version") + ": version " + std::to_string(version) +
+      throw InputError(root.path("version") + ": version " + std::to_string(version) +
                        " is not supported (this Furrow reads version 1)");
   }
-  const double scale =
-      units_to_mm(jf::string(jf::member(doc, "units", root), jf::child(root, "units")),
-                  jf::child(root, "units"));
+  const double scale = units_to_mm(root.string("units"), root.path("units"));
   InspectionPlan plan;
-  if (const json* jpart = jf::optional_member(doc, "part", root))
-    plan.part = jf::string(*jpart, jf::child(root, "part"));
-  const std::string probe_where = jf::child(root, "probe");
-  const json& jprobe = jf::object(jf::member(doc, "probe", root), probe_where);
-  plan.probe.name =
-      jf::string(jf::member(jprobe, "name", probe_where), jf::child(probe_where, "name"));
-  plan.probe.diameter = scale * jf::positive_number(jf::member(jprobe, "diameter", probe_where),
-                                                    jf::child(probe_where, "diameter"));
-  if (plan.probe.diameter < limits::kMinProbeDiameterMm || plan.probe.diameter > limits::kMaxProbeDiameterMm)
-  {
+  if (root.has("part")) plan.part = root.string("part");
+  const JsonCursor probe = root.at("probe");
+  plan.probe.name = probe.string("name");
+  plan.probe.diameter = scale * probe.positive("diameter");
+  if (plan.probe.diameter < limits::kMinProbeDiameterMm || plan.probe.diameter > limits::kMaxProbeDiameterMm) {
     std::ostringstream s;
-    s << jf::child(probe_where, "diameter") << ": " << plan.probe.diameter << " mm is outside the probe range "
+    s << probe.path("diameter") << ": " << plan.probe.diameter << " mm is outside the probe range "
       << limits::kMinProbeDiameterMm << " to " << limits::kMaxProbeDiameterMm << " mm (docs/formats.md \"Limits\")";
     throw InputError(s.str());
   }
 
-  const std::string points_where = jf::child(root, "points");
-  const json& jpoints = jf::array(jf::member(doc, "points", root), points_where);
+  const std::string points_where = root.path("points");
+  const json& jpoints = root.array("points");
   if (jpoints.empty()) throw InputError(points_where + ": the plan has no points");
   std::map<std::string, std::size_t> ids;
   std::map<int, std::size_t> orders;
   for (std::size_t k = 0; k < jpoints.size(); ++k) {
     const std::string where = jf::child(points_where, k);
-    PlannedPoint p = parse_point(jpoints[k], where, scale);
+    PlannedPoint p = parse_point(JsonCursor(jpoints[k], where), scale);
     if (const auto [it, fresh] = ids.emplace(p.id, k); !fresh)
       throw InputError(jf::child(where, "id") + ": duplicate id " + quote_field(p.id) + " (also points[" +
                        std::to_string(it->second) + "])");
@@ -238,18 +224,19 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
                        " (also points[" + std::to_string(it->second) + "])");
     plan.points.push_back(std::move(p));
   }
-  if (const json* ju = jf::optional_member(doc, "uncovered_regions", root)) {
-    const std::string where = jf::child(root, "uncovered_regions");
-    const json& list = jf::array(*ju, where);
+  if (root.has("uncovered_regions")) {
+    const json& list = root.array("uncovered_regions");
     for (std::size_t k = 0; k < list.size(); ++k)
-      plan.uncovered_regions.push_back(parse_uncovered(list[k], jf::child(where, k)));
+      plan.uncovered_regions.push_back(
+          parse_uncovered(JsonCursor(list[k], jf::child(root.path("uncovered_regions"), k))));
   }
-  if (const json* ja = jf::optional_member(doc, "alignment", root)) {
-    const std::string where = jf::child(root, "alignment");
-    plan.alignment = parse_alignment(*ja, where, scale);
+  if (root.has("alignment")) {
+    const JsonCursor alignment = root.at("alignment");
+    plan.alignment = parse_alignment(alignment, scale);
     for (const PlannedPoint& p : plan.alignment->points())
       if (const auto [it, fresh] = ids.emplace(p.id, 0); !fresh)
-        throw InputError(where + ": duplicate id " + quote_field(p.id) + " (ids are unique over points and alignment)");
+        throw InputError(alignment.where() + ": duplicate id " + quote_field(p.id) +
+                         " (ids are unique over points and alignment)");
   }
   return plan;
 }
