@@ -97,6 +97,14 @@ void JsonCursor::boolean(const std::string& key, bool& target) const {
   if (const json* v = find(key)) target = jf::boolean(*v, path(key));
 }
 
+void JsonCursor::only(std::initializer_list<const char*> keys, const std::string& see) const {
+  for (auto it = value_->begin(); it != value_->end(); ++it) {
+    bool known = false;
+    for (const char* k : keys) known = known || it.key() == k;
+    if (!known) throw InputError(path(it.key()) + ": unknown member (see " + see + ")");
+  }
+}
+
 void JsonCursor::finish(const std::string& see) const {
   for (auto it = value_->begin(); it != value_->end(); ++it)
     if (!read_.count(it.key())) throw InputError(path(it.key()) + ": unknown member (see " + see + ")");

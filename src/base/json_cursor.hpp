@@ -26,6 +26,7 @@
 // The cursor refers to the parsed document, which must outlive it.
 // This header exposes nlohmann::json; include it only from .cpp files.
 #include <Eigen/Core>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <string>
@@ -83,6 +84,10 @@ class JsonCursor {
   void integer(const std::string& key, int& target, int min_value) const;
   void boolean(const std::string& key, bool& target) const;
 
+  // Refuses, before anything is read, the first member not in `keys`: for
+  // hand-written files where a misspelt required member should be named as
+  // misspelt rather than reported missing.
+  void only(std::initializer_list<const char*> keys, const std::string& see) const;
   // Marks `key` as known without reading it.
   void skip(const std::string& key) const { read_.insert(key); }
   // Throws InputError for the first member (by name) never read or

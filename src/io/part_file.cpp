@@ -4,6 +4,7 @@
 #include "base/text_fields.hpp"
 #include "base/atomic_file.hpp"
 #include "io/cad/cad_import.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "base/numbers.hpp"
 
@@ -21,47 +22,38 @@ double units_to_mm(const std::string& units, const std::string& where) {
 namespace {
 
 // Optional metadata of a face (analytic_surface.hpp); lengths in the file's units.
-AnalyticSurface parse_analytic(const json& ja, const std::string& where, double scale) {
-  jf::object(ja, where);
+AnalyticSurface parse_analytic(const JsonCursor& o, double scale) {
   AnalyticSurface a;
-  const std::string type = jf::string(jf::member(ja, "type", where), jf::child(where, "type"));
+  const std::string type = o.string("type");
   const auto t = analytic_type_from_string(type);
   if (!t)
-    throw InputError(jf::child(where, "type") + ": " + quote_field(type) +
-                     " is not plane, cylinder, cone, sphere or torus");
+    throw InputError(o.path("type") + ": " + quote_field(type) + " is not plane, cylinder, cone, sphere or torus");
   a.type = *t;
-  a.origin = scale * jf::vector3(jf::member(ja, "origin", where), jf::child(where, "origin"));
-  const Eigen::Vector3d axis = jf::vector3(jf::member(ja, "axis", where), jf::child(where, "axis"));
-  if (!(axis.norm() > 0)) throw InputError(jf::child(where, "axis") + ": the axis must not be zero");
+  a.origin = scale * o.vector3("origin");
+  const Eigen::Vector3d axis = o.vector3("axis");
+  if (!(axis.norm() > 0)) throw InputError(o.path("axis") + ": the axis must not be zero");
   a.axis = axis.normalized();
   const bool round = a.type != AnalyticSurface::Type::plane && a.type != AnalyticSurface::Type::cone;
-  if (round) a.radius = scale * jf::positive_number(jf::member(ja, "radius", where), jf::child(where, "radius"));
-  if (a.type == AnalyticSurface::Type::torus)
-    a.minor_radius =
-        scale * jf::positive_number(jf::member(ja, "minor_radius", where), jf::child(where, "minor_radius"));
+  if (round) a.radius = scale * o.positive("radius");
+  if (a.type == AnalyticSurface::Type::torus) a.minor_radius = scale * o.positive("minor_radius");
   if (a.type == AnalyticSurface::Type::cone) {
-    const std::string at = jf::child(where, "half_angle_deg");
-    const double deg = jf::positive_number(jf::member(ja, "half_angle_deg", where), at);
-    if (!(deg < 90)) throw InputError(at + ": a cone's half angle must be below 90 degrees");
+    const double deg = o.positive("half_angle_deg");
+    if (!(deg < 90)) throw InputError(o.path("half_angle_deg") + ": a cone's half angle must be below 90 degrees");
     a.half_angle = radians(deg);
   }
-  if (const json* jd = jf::optional_member(ja, "deviation_mm", where))
-    a.deviation = jf::non_negative_number(*jd, jf::child(where, "deviation_mm"));
+  if (o.has("deviation_mm")) a.deviation = o.non_negative("deviation_mm");
   return a;
 }
 
-Face parse_face(const json& jface, const std::string& where, double scale) {
-  jf::object(jface, where);
-  std::string name = jf::string(jf::member(jface, "name", where), jf::child(where, "name"));
-  const int degree_u = jf::integer(jf::member(jface, "degree_u", where), jf::child(where, "degree_u"));
-  const int degree_v = jf::integer(jf::member(jface, "degree_v", where), jf::child(where, "degree_v"));
-  std::vector<double> knots_u =
-      jf::numbers(jf::member(jface, "knots_u", where), jf::child(where, "knots_u"));
-  std::vector<double> knots_v =
-      jf::numbers(jf::member(jface, "knots_v", where), jf::child(where, "knots_v"));
+Face parse_face(const JsonCursor& o, double scale) {
+  std::string name = o.string("name");
+  const int degree_u = o.integer("degree_u");
+  const int degree_v = o.integer("degree_v");
+  std::vector<double> knots_u = o.numbers("knots_u");
+  std::vector<double> knots_v = o.numbers("knots_v");
 
-  const std::string cp_where = jf::child(where, "control_points");
-  const json& jnet = jf::array(jf::member(jface, "control_points", where), cp_where);
+  const std::string cp_where = o.path("control_points");
+  const json& jnet = o.array("control_points");
   if (jnet.empty()) throw InputError(cp_where + ": the control net is empty");
   std::vector<std::vector<Eigen::Vector3d>> net(jnet.size());
   for (std::size_t i = 0; i < jnet.size(); ++i) {
@@ -74,41 +66,32 @@ Face parse_face(const json& jface, const std::string& where, double scale) {
   }
 
   std::vector<std::vector<double>> weights;
-  if (const json* jw = jf::optional_member(jface, "weights", where)) {
-    const std::string w_where = jf::child(where, "weights");
-    jf::array(*jw, w_where);
-    for (std::size_t i = 0; i < jw->size(); ++i)
-      weights.push_back(jf::numbers((*jw)[i], jf::child(w_where, i)));
+  if (o.has("weights")) {
+    const json& jw = o.array("weights");
+    for (std::size_t i = 0; i < jw.size(); ++i) weights.push_back(jf::numbers(jw[i], jf::child(o.path("weights"), i)));
   }
 
   Trim trim;
-  if (const json* jt = jf::optional_member(jface, "trim", where)) {
-    const std::string t_where = jf::child(where, "trim");
-    jf::array(*jt, t_where);
+  if (o.has("trim")) {
+    const std::string t_where = o.path("trim");
+    const json& jt = o.array("trim");
     std::vector<UvLoop> loops;
-    for (std::size_t l = 0; l < jt->size(); ++l) {
+    for (std::size_t l = 0; l < jt.size(); ++l) {
       const std::string l_where = jf::child(t_where, l);
-      jf::array((*jt)[l], l_where);
+      const json& jl = jf::array(jt[l], l_where);
       UvLoop loop;
-      for (std::size_t k = 0; k < (*jt)[l].size(); ++k)
-        loop.push_back(jf::vector2((*jt)[l][k], jf::child(l_where, k)));
+      for (std::size_t k = 0; k < jl.size(); ++k) loop.push_back(jf::vector2(jl[k], jf::child(l_where, k)));
       loops.push_back(std::move(loop));
     }
     trim = Trim(std::move(loops), t_where);
   }
 
-  bool reversed = false;
-  if (const json* jr = jf::optional_member(jface, "reversed", where))
-    reversed = jf::boolean(*jr, jf::child(where, "reversed"));
-  std::string source_type;
-  if (const json* js = jf::optional_member(jface, "source_type", where))
-    source_type = jf::string(*js, jf::child(where, "source_type"));
+  const bool reversed = o.has("reversed") && o.boolean("reversed");
+  std::string source_type = o.has("source_type") ? o.string("source_type") : std::string();
 
-  NurbsSurface surface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), net, weights,
-                       where);
+  NurbsSurface surface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), net, weights, o.where());
   Face face(std::move(name), std::move(surface), std::move(trim), reversed, std::move(source_type));
-  if (const json* ja = jf::optional_member(jface, "analytic", where))
-    face.set_analytic(parse_analytic(*ja, jf::child(where, "analytic"), scale));
+  if (o.has("analytic")) face.set_analytic(parse_analytic(o.at("analytic"), scale));
   return face;
 }
 
@@ -116,16 +99,15 @@ Face parse_face(const json& jface, const std::string& where, double scale) {
 
 Part parse_part_json(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  const std::string root = name + ":";
-  jf::object(doc, root);
+  const JsonCursor root(doc, name + ":");
   Part part;
-  part.source_units = jf::string(jf::member(doc, "units", root), jf::child(root, "units"));
-  const double scale = units_to_mm(part.source_units, jf::child(root, "units"));
-  const std::string faces_where = jf::child(root, "faces");
-  const json& jfaces = jf::array(jf::member(doc, "faces", root), faces_where);
+  part.source_units = root.string("units");
+  const double scale = units_to_mm(part.source_units, root.path("units"));
+  const std::string faces_where = root.path("faces");
+  const json& jfaces = root.array("faces");
   if (jfaces.empty()) throw InputError(faces_where + ": the part has no faces");
   for (std::size_t f = 0; f < jfaces.size(); ++f) {
-    Face face = parse_face(jfaces[f], jf::child(faces_where, f), scale);
+    Face face = parse_face(JsonCursor(jfaces[f], jf::child(faces_where, f)), scale);
     if (part.find_face(face.name()))
       throw InputError(jf::child(jf::child(faces_where, f), "name") + ": duplicate face name " +
                        quote_field(face.name()));

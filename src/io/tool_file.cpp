@@ -7,6 +7,7 @@
 #include "base/text_fields.hpp"
 #include "base/limits.hpp"
 #include "base/atomic_file.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
 
@@ -35,27 +36,18 @@ ToolType parse_type(const json& value, const std::string& where) {
 }
 
 ToolSpec parse_tool(const json& jtool, const std::string& where) {
-  jf::object(jtool, where);
-  for (auto it = jtool.begin(); it != jtool.end(); ++it) {
-    const std::string& key = it.key();
-    if (key != "name" && key != "type" && key != "diameter" && key != "corner_radius" &&
-        key != "units")
-      throw InputError(jf::child(where, key) +
-                       ": unknown member (a tool has name, type, diameter, corner_radius, units)");
-  }
-  double scale = 1.0;
-  if (const json* ju = jf::optional_member(jtool, "units", where))
-    scale = units_to_mm(jf::string(*ju, jf::child(where, "units")), jf::child(where, "units"));
+  const JsonCursor o(jtool, where);
+  o.only({"name", "type", "diameter", "corner_radius", "units"}, "docs/formats.md \"Tool JSON\"");
+  const double scale = o.has("units") ? units_to_mm(o.string("units"), o.path("units")) : 1.0;
 
   ToolSpec tool;
-  tool.name = jf::string(jf::member(jtool, "name", where), jf::child(where, "name"));
-  tool.type = parse_type(jf::member(jtool, "type", where), jf::child(where, "type"));
-  const std::string d_where = jf::child(where, "diameter");
-  tool.diameter = scale * jf::positive_number(jf::member(jtool, "diameter", where), d_where);
+  tool.name = o.string("name");
+  tool.type = parse_type(o.raw("type"), o.path("type"));
+  tool.diameter = scale * o.positive("diameter");
   const double radius = 0.5 * tool.diameter;
 
-  const std::string r_where = jf::child(where, "corner_radius");
-  const json* jr = jf::optional_member(jtool, "corner_radius", where);
+  const std::string r_where = o.path("corner_radius");
+  const json* jr = o.has("corner_radius") ? &o.raw("corner_radius") : nullptr;
   if (!jr && tool.type == ToolType::bull)
     throw InputError(r_where + ": missing (a bull-nose tool needs its corner radius)");
   if (jr) {

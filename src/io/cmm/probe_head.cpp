@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "base/numbers.hpp"
 #include "base/text_fields.hpp"
@@ -26,26 +27,20 @@ std::string shortest(double v) {
   return std::string(buf, ptr);
 }
 
-// The keys an object may hold: a misspelt key is an error, not a silent default.
-void only_keys(const json& object, std::initializer_list<const char*> keys, const std::string& where) {
-  for (auto it = object.begin(); it != object.end(); ++it) {
-    bool known = false;
-    for (const char* k : keys) known = known || it.key() == k;
-    if (!known) throw InputError(jf::child(where, it.key()) + ": unknown field");
-  }
-}
+// Where a head file's members are described (every object refuses others:
+// a misspelt key is an error, not a silent default).
+const char* const kSee = "docs/formats.md \"Probe head\"";
 
-IndexAxis parse_axis(const json& j, const std::string& where, double lowest, double highest) {
-  jf::object(j, where);
-  only_keys(j, {"min", "max", "step"}, where);
+IndexAxis parse_axis(const JsonCursor& o, double lowest, double highest) {
+  o.only({"min", "max", "step"}, kSee);
   IndexAxis axis;
-  axis.min = jf::number(jf::member(j, "min", where), jf::child(where, "min"));
-  axis.max = jf::number(jf::member(j, "max", where), jf::child(where, "max"));
-  axis.step = jf::positive_number(jf::member(j, "step", where), jf::child(where, "step"));
+  axis.min = o.number("min");
+  axis.max = o.number("max");
+  axis.step = o.positive("step");
   if (axis.min < lowest || axis.min > highest)
-    throw InputError(jf::child(where, "min") + ": must be from " + shortest(lowest) + " to " + shortest(highest) + " degrees");
+    throw InputError(o.path("min") + ": must be from " + shortest(lowest) + " to " + shortest(highest) + " degrees");
   if (axis.max < axis.min || axis.max > highest)
-    throw InputError(jf::child(where, "max") + ": must be from min to " + shortest(highest) + " degrees");
+    throw InputError(o.path("max") + ": must be from min to " + shortest(highest) + " degrees");
   return axis;
 }
 
@@ -98,66 +93,56 @@ std::string angle_text(double degrees) {
 
 ProbeHead parse_probe_head(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  jf::object(doc, name);
-  only_keys(doc, {"head", "stylus", "extension", "probe_body", "qualified"}, name);
+  const JsonCursor root(doc, name);
+  root.only({"head", "stylus", "extension", "probe_body", "qualified"}, kSee);
   ProbeHead h;
-  auto field = [&](const json& object, const std::string& where, const char* key) {
-    return jf::positive_number(jf::member(object, key, where), jf::child(where, key));
-  };
 
-  const std::string head_at = jf::child(name, "head");
-  const json& jh = jf::object(jf::member(doc, "head", name), head_at);
-  only_keys(jh, {"type", "a", "b", "length", "diameter"}, head_at);
-  if (const json* t = jf::optional_member(jh, "type", head_at)) h.type = jf::string(*t, jf::child(head_at, "type"));
-  h.a = parse_axis(jf::member(jh, "a", head_at), jf::child(head_at, "a"), 0, 180);
-  h.b = parse_axis(jf::member(jh, "b", head_at), jf::child(head_at, "b"), -360, 360);
-  if (const json* l = jf::optional_member(jh, "length", head_at))
-    h.head_length = jf::non_negative_number(*l, jf::child(head_at, "length"));
-  if (h.head_length > 0) h.head_diameter = field(jh, head_at, "diameter");
+  const JsonCursor head = root.at("head");
+  head.only({"type", "a", "b", "length", "diameter"}, kSee);
+  if (head.has("type")) h.type = head.string("type");
+  h.a = parse_axis(head.at("a"), 0, 180);
+  h.b = parse_axis(head.at("b"), -360, 360);
+  if (head.has("length")) h.head_length = head.non_negative("length");
+  if (h.head_length > 0) h.head_diameter = head.positive("diameter");
 
-  const std::string stylus_at = jf::child(name, "stylus");
-  const json& js = jf::object(jf::member(doc, "stylus", name), stylus_at);
-  only_keys(js, {"length", "ball_diameter", "stem_diameter"}, stylus_at);
-  h.stylus_length = field(js, stylus_at, "length");
-  h.ball_diameter = field(js, stylus_at, "ball_diameter");
-  h.stem_diameter = field(js, stylus_at, "stem_diameter");
+  const JsonCursor stylus = root.at("stylus");
+  stylus.only({"length", "ball_diameter", "stem_diameter"}, kSee);
+  h.stylus_length = stylus.positive("length");
+  h.ball_diameter = stylus.positive("ball_diameter");
+  h.stem_diameter = stylus.positive("stem_diameter");
   if (h.stem_diameter > h.ball_diameter)
-    throw InputError(jf::child(stylus_at, "stem_diameter") + ": must not exceed ball_diameter (" +
-                     shortest(h.ball_diameter) + " mm)");
+    throw InputError(stylus.path("stem_diameter") + ": must not exceed ball_diameter (" + shortest(h.ball_diameter) +
+                     " mm)");
   if (!(h.stylus_length > h.ball_diameter / 2))
-    throw InputError(jf::child(stylus_at, "length") + ": must exceed the ball radius");
+    throw InputError(stylus.path("length") + ": must exceed the ball radius");
 
-  if (const json* je = jf::optional_member(doc, "extension", name)) {
-    const std::string at = jf::child(name, "extension");
-    jf::object(*je, at);
-    only_keys(*je, {"length", "diameter"}, at);
-    h.extension_length = jf::non_negative_number(jf::member(*je, "length", at), jf::child(at, "length"));
-    if (h.extension_length > 0) h.extension_diameter = field(*je, at, "diameter");
+  if (root.has("extension")) {
+    const JsonCursor extension = root.at("extension");
+    extension.only({"length", "diameter"}, kSee);
+    h.extension_length = extension.non_negative("length");
+    if (h.extension_length > 0) h.extension_diameter = extension.positive("diameter");
   }
 
-  const std::string body_at = jf::child(name, "probe_body");
-  const json& jb = jf::object(jf::member(doc, "probe_body", name), body_at);
-  only_keys(jb, {"length", "diameter"}, body_at);
-  h.body_length = field(jb, body_at, "length");
-  h.body_diameter = field(jb, body_at, "diameter");
+  const JsonCursor body = root.at("probe_body");
+  body.only({"length", "diameter"}, kSee);
+  h.body_length = body.positive("length");
+  h.body_diameter = body.positive("diameter");
 
-  const std::string q_at = jf::child(name, "qualified");
-  const json& jq = jf::array(jf::member(doc, "qualified", name), q_at);
+  const std::string q_at = root.path("qualified");
+  const json& jq = root.array("qualified");
   if (jq.empty()) throw InputError(q_at + ": at least one qualified tip is needed");
   std::set<std::string> seen;
   for (std::size_t k = 0; k < jq.size(); ++k) {
-    const std::string at = jf::child(q_at, k);
-    jf::object(jq[k], at);
-    only_keys(jq[k], {"a", "b"}, at);
-    TipAngles tip{jf::number(jf::member(jq[k], "a", at), jf::child(at, "a")),
-                  jf::number(jf::member(jq[k], "b", at), jf::child(at, "b"))};
+    const JsonCursor q(jq[k], jf::child(q_at, k));
+    q.only({"a", "b"}, kSee);
+    TipAngles tip{q.number("a"), q.number("b")};
     if (!h.a.on_grid(tip.a))
-      throw InputError(jf::child(at, "a") + ": " + shortest(tip.a) + " is not on the head's A grid " + shortest(h.a.min) +
+      throw InputError(q.path("a") + ": " + shortest(tip.a) + " is not on the head's A grid " + shortest(h.a.min) +
                        " + k * " + shortest(h.a.step) + " up to " + shortest(h.a.max));
     if (!h.b.on_grid(tip.b))
-      throw InputError(jf::child(at, "b") + ": " + shortest(tip.b) + " is not on the head's B grid " + shortest(h.b.min) +
+      throw InputError(q.path("b") + ": " + shortest(tip.b) + " is not on the head's B grid " + shortest(h.b.min) +
                        " + k * " + shortest(h.b.step) + " up to " + shortest(h.b.max));
-    if (!seen.insert(tip_name(tip)).second) throw InputError(at + ": tip " + tip_name(tip) + " is listed twice");
+    if (!seen.insert(tip_name(tip)).second) throw InputError(q.where() + ": tip " + tip_name(tip) + " is listed twice");
     h.qualified.push_back(tip);
   }
   return h;

@@ -104,7 +104,7 @@ TEST_CASE("head.json: every error names the field") {
   CHECK(error_of(with(kHeadJson, R"("stem_diameter": 1)", R"("stem_diameter": 3)")).find("stylus.stem_diameter") !=
         std::string::npos);
   CHECK(error_of(with(kHeadJson, R"("length": 20,)", R"("length": 0.5,)")).find("stylus.length") != std::string::npos);
-  CHECK(error_of(with(kHeadJson, R"("probe_body")", R"("probe_bodi")")).find("probe_bodi: unknown field") !=
+  CHECK(error_of(with(kHeadJson, R"("probe_body")", R"("probe_bodi")")).find("probe_bodi: unknown member (see docs/formats.md \"Probe head\")") !=
         std::string::npos);
   CHECK(error_of(with(kHeadJson, R"({"a": 90, "b": 0})", R"({"a": 0, "b": 0})")).find("listed twice") !=
         std::string::npos);
