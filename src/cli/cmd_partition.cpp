@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
@@ -20,11 +21,6 @@ namespace furrow::cli {
 
 namespace {
 
-std::string number_text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
 
 void print_summary(std::ostream& out, const std::string& path, const PartitionResult& result) {
   const RegionMap& map = result.map;
@@ -65,12 +61,12 @@ int run_partition(Args& args) {
     const auto [nu, nv] = parse_grid(*grid, "grid");
     options.grid = GridSize{nu, nv};
   }
-  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + number_text(*spacing));
+  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + general(*spacing));
   options.spacing = spacing;
-  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + number_text(*eps));
+  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + general(*eps));
   options.eps = eps;
   if (min_area && *min_area < 0)
-    args.fail("--min-area must not be negative, got " + number_text(*min_area));
+    args.fail("--min-area must not be negative, got " + general(*min_area));
   options.min_area = min_area;
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (image_path && lower_extension(*image_path) != ".png")

@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/probe_options.hpp"
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/atomic_file.hpp"
 #include "base/output_set.hpp"
@@ -32,11 +33,6 @@ std::string program_name(const std::string& out) {
   return cmm_program_name(base, "furrow_plan");
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 // The summary to stdout; uncovered regions to stderr as an error, or to
 // stdout when accepted.

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
@@ -21,11 +22,7 @@ namespace furrow::cli {
 
 namespace {
 
-std::string um(double mm) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f um", mm * 1000);
-  return buf;
-}
+std::string um(double mm) { return fixed(mm * 1000, 2) + " um"; }
 
 // Rapid gouges: each one, since a rapid into the part is a crash, not a
 // tolerance question (docs/formats.md "prediction.json", `rapids`).

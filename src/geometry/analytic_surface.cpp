@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/number_text.hpp"
 #include "base/numbers.hpp"
 #include <vector>
 
@@ -207,11 +208,7 @@ std::optional<AnalyticSurface> accept(std::optional<AnalyticSurface> a, const st
 }  // namespace
 
 namespace {
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", std::abs(x) < 1e-12 ? 0.0 : x);
-  return buf;
-}
+std::string number(double x) { return general(std::abs(x) < 1e-12 ? 0.0 : x, 9); }
 std::string vector_text(const Eigen::Vector3d& v) {
   return "(" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + ")";
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
@@ -31,11 +32,7 @@ constexpr double kToolTolerance = 1e-3;  // mm
   throw InputError(name + ":" + std::to_string(line) + ": " + what);
 }
 
-std::string mm_text(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g mm", x);
-  return buf;
-}
+std::string mm_text(double x) { return general(x) + " mm"; }
 
 // The parameters of a statement as numbers; every one must be a finite
 // number ("GOTO/1,,3", "GOTO/1,NAN,3" and 1e999 are refused).

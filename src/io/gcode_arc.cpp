@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
@@ -24,11 +25,7 @@ void plane_axes(ArcPlane plane, int& u, int& v, int& w) {
   u = 0, v = 1, w = 2;
 }
 
-std::string mm(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g mm", x);
-  return buf;
-}
+std::string mm(double x) { return general(x) + " mm"; }
 
 }  // namespace
 

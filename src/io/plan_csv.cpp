@@ -4,15 +4,12 @@
 #include <charconv>
 #include <sstream>
 
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
 
-std::string shortest(double v) {
-  char buf[32];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, ptr);
-}
 
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;

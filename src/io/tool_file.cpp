@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "base/limits.hpp"
@@ -18,12 +19,7 @@ using jf::json;
 
 namespace {
 
-std::string number_text(double x) {
-  std::ostringstream s;
-  s.precision(12);
-  s << x;
-  return s.str();
-}
+std::string number_text(double x) { return general(x, 12); }
 
 constexpr double kBallRadiusRelativeTolerance = 1e-9;
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/numbers.hpp"
 #include "base/text_fields.hpp"
@@ -130,12 +131,8 @@ char horizontal_axis(const Eigen::Vector3d& n) {
 
 bool faces_up(const Eigen::Vector3d& n) { return std::abs(n.z() - 1) < kAxisTolerance; }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << (std::abs(v) < 5e-7 ? 0.0 : v);
-  return s.str();
-}
+// Origins a micrometre off zero are written as 0.
+std::string fmt(double v) { return general(std::abs(v) < 5e-7 ? 0.0 : v); }
 
 struct Builder {
   const Part& part;

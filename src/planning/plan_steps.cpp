@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
@@ -16,11 +17,7 @@ namespace furrow {
 
 namespace {
 
-std::string mm(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  return buf;
-}
+std::string mm(double v) { return fixed(v, 3); }
 
 std::string at_text(const Eigen::Vector3d& p) { return "(" + mm(p.x()) + ", " + mm(p.y()) + ", " + mm(p.z()) + ")"; }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
@@ -12,18 +13,13 @@ namespace furrow {
 
 namespace {
 
-std::string text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 void positive(double v, const char* option) {
-  if (!std::isfinite(v) || !(v > 0)) throw InputError(std::string(option) + " must be a positive number, got " + text(v));
+  if (!std::isfinite(v) || !(v > 0)) throw InputError(std::string(option) + " must be a positive number, got " + general(v));
 }
 
 void non_negative(double v, const char* option) {
-  if (!std::isfinite(v) || v < 0) throw InputError(std::string(option) + " must not be negative, got " + text(v));
+  if (!std::isfinite(v) || v < 0) throw InputError(std::string(option) + " must not be negative, got " + general(v));
 }
 
 }  // namespace
@@ -72,8 +68,8 @@ void validate(const PlannerOptions& o) {
     throw InputError("--gouge-points " + std::to_string(o.gouge_points) + " is more than the limit of " +
                      std::to_string(limits::kMaxPlanPoints) + " points (docs/formats.md \"Limits\")");
   if (o.probe_diameter < limits::kMinProbeDiameterMm || o.probe_diameter > limits::kMaxProbeDiameterMm)
-    throw InputError("--probe-diameter " + text(o.probe_diameter) + " mm is outside the range " +
-                     text(limits::kMinProbeDiameterMm) + " to " + text(limits::kMaxProbeDiameterMm) +
+    throw InputError("--probe-diameter " + general(o.probe_diameter) + " mm is outside the range " +
+                     general(limits::kMinProbeDiameterMm) + " to " + general(limits::kMaxProbeDiameterMm) +
                      " mm (docs/formats.md \"Limits\")");
   if (o.min_per_region < 0) throw InputError("--min-per-region must not be negative");
   if (o.border) non_negative(*o.border, "--border (mm)");
@@ -81,17 +77,17 @@ void validate(const PlannerOptions& o) {
   positive(o.stylus_diameter, "--stylus-diameter (mm)");
   positive(o.stylus_length, "--stylus-length (mm)");
   if (o.stylus_diameter > o.probe_diameter)
-    throw InputError("--stylus-diameter " + text(o.stylus_diameter) + " is larger than --probe-diameter " +
-                     text(o.probe_diameter) + " (the shaft would touch before the ball)");
+    throw InputError("--stylus-diameter " + general(o.stylus_diameter) + " is larger than --probe-diameter " +
+                     general(o.probe_diameter) + " (the shaft would touch before the ball)");
   if (!(o.stylus_length > o.probe_diameter / 2))
-    throw InputError("--stylus-length " + text(o.stylus_length) + " must exceed the ball radius " +
-                     text(o.probe_diameter / 2) + " (it is measured from the ball centre)");
+    throw InputError("--stylus-length " + general(o.stylus_length) + " must exceed the ball radius " +
+                     general(o.probe_diameter / 2) + " (it is measured from the ball centre)");
   positive(o.approach, "--approach (mm)");
   positive(o.retract, "--retract (mm)");
   if (o.search) positive(*o.search, "--search (mm)");
   non_negative(o.clearance, "--clearance (mm)");
   if (!std::isfinite(o.max_tilt_degrees) || !(o.max_tilt_degrees > 0) || o.max_tilt_degrees > 180)
-    throw InputError("--max-tilt must be in (0, 180] degrees, got " + text(o.max_tilt_degrees));
+    throw InputError("--max-tilt must be in (0, 180] degrees, got " + general(o.max_tilt_degrees));
   positive(o.motion.move_speed, "--move-speed (mm/s)");
   positive(o.motion.touch_speed, "--touch-speed (mm/s)");
   positive(o.motion.acceleration, "--acceleration (mm/s^2)");

@@ -8,16 +8,13 @@
 #include "report/html.hpp"
 #include "report/point_table.hpp"
 
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
 
-std::string um(double mm) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%+.1f", mm * 1000);
-  std::string s = buf;
-  return s == "+0.0" || s == "-0.0" ? "0.0" : s;
-}
+std::string um(double mm) { return signed_fixed(mm * 1000, 1); }
 
 }  // namespace
 

@@ -7,6 +7,8 @@
 
 #include "render/chart.hpp"
 
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
@@ -60,13 +62,7 @@ double scale_range(const std::vector<MapPoint>& points, const ToleranceLimits& t
 }
 
 // Micrometres with a sign and one decimal ("+61.3"), as in the report's tables.
-std::string signed_um(double mm) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%+.1f", mm * 1000.0);
-  std::string s = buf;
-  if (s == "-0.0" || s == "+0.0") s = "0.0";
-  return s;
-}
+std::string signed_um(double mm) { return signed_fixed(mm * 1000.0, 1); }
 
 // Labels of the out-of-tolerance points, largest |value| first, at most
 // kMaxMapLabels; the rest are counted in a note under the title.

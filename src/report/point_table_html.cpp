@@ -8,30 +8,17 @@
 #include "report/html.hpp"
 #include "report/point_table.hpp"
 
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
 
 using html::escape;
 
-// Exact value for sorting (shortest round-trip text).
-std::string exact(double v) {
-  char buf[32];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  if (ec != std::errc()) throw std::logic_error("point table: number not representable");
-  return std::string(buf, ptr);
-}
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s = s.substr(1);  // no "-0.0000"
-  return s;
-}
-
+// The exact value (shortest round-trip text) for sorting, the rounded one shown.
 std::string number_cell(double v, int decimals) {
-  return "<td data-v=\"" + exact(v) + "\">" + fixed(v, decimals) + "</td>";
+  return "<td data-v=\"" + shortest(v) + "\">" + fixed(v, decimals) + "</td>";
 }
 
 // The rows the page shows (indices into the table, in measurement order).

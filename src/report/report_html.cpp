@@ -8,6 +8,7 @@
 #include "report/inspection_record_html.hpp"
 #include "report/point_table_html.hpp"
 #include "report/print_style.hpp"
+#include "base/number_text.hpp"
 #include "base/numbers.hpp"
 
 namespace furrow {
@@ -17,18 +18,8 @@ namespace {
 using html::escape;
 using html::TableRow;
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find_first_not_of("-0.") == std::string::npos) s = s.substr(s[0] == '-' ? 1 : 0);  // no "-0.0"
-  return s;
-}
 // Micrometres with one decimal and a sign, e.g. "-118.4".
-std::string um(double mm) {
-  const std::string s = fixed(mm * 1000, 1);
-  return (mm > 0 && s != "0.0" ? "+" : "") + s;
-}
+std::string um(double mm) { return signed_fixed(mm * 1000, 1); }
 std::string um_or_dash(const std::optional<double>& mm) { return mm ? um(*mm) : "&ndash;"; }
 std::string count(std::size_t n) { return std::to_string(n); }
 

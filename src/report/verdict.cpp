@@ -2,15 +2,13 @@
 
 #include <cstdio>
 
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
 
-std::string um(double mm) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f um", mm * 1000);
-  return buf;
-}
+std::string um(double mm) { return fixed(mm * 1000, 1) + " um"; }
 
 }  // namespace
 

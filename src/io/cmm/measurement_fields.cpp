@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
@@ -93,10 +94,8 @@ void check_unique_ids(const MeasurementSet& set, const std::string& name) {
 }
 
 std::string shortest(double v) {
-  char buf[64];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  if (ec != std::errc() || !std::isfinite(v)) throw std::logic_error("measurement writer: a non-finite coordinate");
-  return std::string(buf, ptr);
+  if (!std::isfinite(v)) throw std::logic_error("measurement writer: a non-finite coordinate");
+  return ::furrow::shortest(v);
 }
 
 }  // namespace furrow::measurement_fields

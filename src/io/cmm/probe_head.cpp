@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
@@ -21,11 +22,6 @@ using jf::json;
 
 namespace {
 
-std::string shortest(double v) {
-  char buf[32];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, ptr);
-}
 
 // Where a head file's members are described (every object refuses others:
 // a misspelt key is an error, not a silent default).

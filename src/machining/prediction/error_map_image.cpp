@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/number_text.hpp"
 #include "base/atomic_file.hpp"
 #include "render/plot_canvas.hpp"
 
@@ -51,12 +52,10 @@ cv::Mat face_image(const FaceErrorMap& m, double aspect, const ErrorImageOptions
   return img;
 }
 
+// Legend labels: the zero as "0".
 std::string micrometres(double mm) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%+.1f", mm * 1000);
-  std::string s = buf;
-  if (s == "+0.0" || s == "-0.0") s = "0";
-  return s;
+  const std::string s = signed_fixed(mm * 1000, 1);
+  return s == "0.0" ? "0" : s;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 
 namespace furrow {
@@ -16,12 +17,7 @@ std::string at_line(const Toolpath& path, const ToolpathPoint& p) {
   return path.source + ":" + std::to_string(p.line);
 }
 
-std::string mm(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+std::string mm(double x) { return general(x); }
 
 // A contact point of a CSV: its place on the part, validated.
 PathPoint locate_contact(const Part& part, const Cutter& cutter, const Toolpath& path, const ToolpathPoint& p,
