@@ -169,18 +169,44 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
     centre /= static_cast<double>(c.net.size());
     const Eigen::Vector2d radial = centre.head<2>() - xy;
     const double rho = radial.norm();
-    if (rho < hold) {
-      const double slope = cutter_.slope_at(rho);
-      if (std::isfinite(slope)) {
-        const Eigen::Vector2d e = rho > 0 ? Eigen::Vector2d(radial / rho) : Eigen::Vector2d::Zero();
-        double top = -std::numeric_limits<double>::infinity();
-        for (const Eigen::Vector4d& h : c.net) {
-          const Eigen::Vector3d p = project(h) - centre;
-          top = std::max(top, p.z() - slope * e.dot(p.head<2>()));
-        }
-        bound = std::min(bound, centre.z() - cutter_.height_at(rho) + top);
-      }
+    if (!(rho > 0)) return bound;
+    // Tangent bound of psi = z - Hx(rho) + lambda (hold - rho) >= phi on the
+    // disc (the header), Hx the envelope up to rho1 continued by its tangent
+    // line (convex, finite, below the envelope).
+    const double rho1 = std::min(rho, R - 1e-3 * std::max(cutter_.corner_radius(), 1e-3 * R));
+    const double slope = cutter_.slope_at(rho1);
+    const double envelope = cutter_.height_at(rho1) + slope * std::max(0.0, rho - rho1);
+    const Eigen::Vector2d e = radial / rho;
+    // Over the net: psi's linearization at the centroid is a_i + b_i lambda.
+    double a[64], b[64];
+    const std::size_t n = std::min<std::size_t>(c.net.size(), 64);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d p = project(c.net[i]) - centre;
+      const double out = e.dot(p.head<2>());
+      a[i] = p.z() - slope * out;
+      b[i] = (hold - rho) - out;
     }
+    // min over lambda >= 0 of max_i (a_i + b_i lambda), a convex polyline:
+    // walk right along it from 0 while it descends.
+    double lambda = 0, best_value = 0;
+    for (int step = 0; step <= static_cast<int>(n); ++step) {
+      std::size_t top = 0;
+      for (std::size_t i = 1; i < n; ++i) {
+        const double vi = a[i] + b[i] * lambda, vt = a[top] + b[top] * lambda;
+        if (vi > vt || (vi == vt && b[i] > b[top])) top = i;
+      }
+      best_value = a[top] + b[top] * lambda;
+      if (b[top] >= 0) break;
+      double next = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < n; ++j)
+        if (b[j] > b[top]) {
+          const double at = (a[top] - a[j]) / (b[j] - b[top]);
+          if (at > lambda && at < next) next = at;
+        }
+      if (!std::isfinite(next)) break;  // cannot happen with an edge ahead; kept for safety
+      lambda = next;
+    }
+    bound = std::min(bound, centre.z() - envelope + best_value);
     return bound;
   };
 

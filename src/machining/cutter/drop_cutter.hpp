@@ -21,13 +21,23 @@
 // Hence over a cell, phi <= min of
 //   box bound      zmax(hull box) - height_at(min xy distance axis-to-box)
 //                  (H is non-decreasing with the distance), and
-//   tangent bound  phi(c) + max_i grad phi(c) . (P_i - c), c the centroid of
-//                  the cell's control points, P_i those points (a concave
-//                  function lies below its tangent plane; a linear function
-//                  is largest over a hull at a vertex). Its slack shrinks with
-//                  the square of the cell size, so a cell next to the contact
-//                  where the cutter is tangent to the part is settled after a
-//                  few halvings; the box bound's slack shrinks only linearly.
+//   tangent bound  psi(c) + max_i grad psi(c) . (P_i - c), c the centroid of
+//                  the cell's control points, P_i those points, for
+//                  psi = z - H~(rho) + lambda (R' - rho), any lambda >= 0:
+//                  H~ is the envelope continued beyond some rho1 < R by its
+//                  tangent line (convex, finite, never above the envelope)
+//                  and R' the radius that holds the cutter (below), so
+//                  psi >= phi under the cutter and psi is concave: it lies
+//                  below its tangent plane, and a linear function is largest
+//                  over a hull at a vertex. The bound is a convex polyline in
+//                  lambda, minimised exactly. lambda = 0 is the plain tangent
+//                  bound; lambda > 0 (a Lagrange multiplier of rho <= R')
+//                  handles the rim, where a flat end mill rests on a sloping
+//                  face and the envelope is a vertical step. The slack
+//                  shrinks with the square of the cell size, so the cells
+//                  next to the contact, where the cutter touches the part,
+//                  are settled after a few halvings; the box bound's slack
+//                  shrinks only linearly.
 // Lower bounds are phi at the cells' corners (surface points) kept by the
 // face's trim. Cells whose upper bound is not above the best lower bound by
 // more than `height_tolerance` are dropped, the others halved (best first),
