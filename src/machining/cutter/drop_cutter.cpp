@@ -138,12 +138,15 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
     return std::hypot(dx, dy);
   };
   double best = known;
+  // Per-cell scratch, reused: the projected control points and the bound's lines.
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<double> a, b;
   // Lower bound from the cell's corners (surface points, when the trim keeps them).
   auto corners = [&](const Cell& c) {
     const Face& face = part_.faces[c.face];
     const int corner_index[4][2] = {{0, 0}, {c.p, 0}, {0, c.q}, {c.p, c.q}};
     for (const auto& ij : corner_index) {
-      const Eigen::Vector3d p = project(c.net[ij[0] * (c.q + 1) + ij[1]]);
+      const Eigen::Vector3d& p = pts[ij[0] * (c.q + 1) + ij[1]];
       const double rho = (p.head<2>() - xy).norm();
       if (!(rho < hold)) continue;
       const double phi = p.z() - cutter_.height_at(rho);
@@ -159,14 +162,15 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
     }
   };
   // Upper bound of phi over the cell (the header), -infinity when out of reach.
-  auto upper = [&](const Cell& c) {
-    const Eigen::AlignedBox3d box = hull_box(c);
+  auto upper = [&]() {
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& p : pts) box.extend(p);
     const double d = box_distance(box);
     if (!(d < hold)) return -std::numeric_limits<double>::infinity();
     double bound = box.max().z() - cutter_.height_at(d);
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const Eigen::Vector4d& h : c.net) centre += project(h);
-    centre /= static_cast<double>(c.net.size());
+    for (const Eigen::Vector3d& p : pts) centre += p;
+    centre /= static_cast<double>(pts.size());
     const Eigen::Vector2d radial = centre.head<2>() - xy;
     const double rho = radial.norm();
     if (!(rho > 0)) return bound;
@@ -178,10 +182,11 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
     const double envelope = cutter_.height_at(rho1) + slope * std::max(0.0, rho - rho1);
     const Eigen::Vector2d e = radial / rho;
     // Over the net: psi's linearization at the centroid is a_i + b_i lambda.
-    double a[64], b[64];
-    const std::size_t n = std::min<std::size_t>(c.net.size(), 64);
+    const std::size_t n = pts.size();
+    a.resize(n);
+    b.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d p = project(c.net[i]) - centre;
+      const Eigen::Vector3d p = pts[i] - centre;
       const double out = e.dot(p.head<2>());
       a[i] = p.z() - slope * out;
       b[i] = (hold - rho) - out;
@@ -215,8 +220,10 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
   std::priority_queue<Entry> open;
   auto consider = [&](Cell&& c) {
     ++result.cells;
+    pts.resize(c.net.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = project(c.net[i]);
     corners(c);
-    const double ub = upper(c);
+    const double ub = upper();
     if (!(ub > best + options_.height_tolerance)) return;
     pool.push_back(std::move(c));
     open.push({ub, pool.size() - 1});
