@@ -8,7 +8,7 @@
 // of that run (all threads; on a machine shared with other jobs the wall
 // clock overstates the work), the interference searches run and the peak
 // RSS; then whether both agree on every per-site result and how many
-// per-tool verdicts differ.
+// per-tool verdicts differ (none expected: docs/tool_selection.md).
 // Prints figures; it does not pass or fail.
 //   usage: bench_select_tool [--fast-only]
 #include <omp.h>
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
   const Run exhaustive = run(part, library, sites, false);
   print("exhaustive", exhaustive);
   std::printf("shared / exhaustive: %.1fx faster (wall), %.1fx less CPU; per-site results %s; "
-              "%zu of %zu tool verdicts differ (the exhaustive search's misses in a container)\n",
+              "%zu of %zu tool verdicts differ\n",
               exhaustive.wall / shared.wall, exhaustive.cpu / shared.cpu,
               same_sites(shared.selection, exhaustive.selection) ? "identical" : "DIFFER",
               differing_verdicts(shared.selection, exhaustive.selection), shared.selection.verdicts.size());

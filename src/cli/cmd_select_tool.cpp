@@ -24,12 +24,14 @@ int run_select_tool(Args& args) {
   const auto out_path = args.option("out");
   const double tolerance = args.non_negative_or("tolerance", GougeOptions().curvature_tolerance);
   const bool local_only = args.flag("local-only");
-  const bool share_interference = args.flag("share-interference");
+  const bool share_flag = args.flag("share-interference");
+  const bool no_share = args.flag("no-share-interference");
   const std::string units = args.option_or("units", "mm");
   const double max_distance = args.positive_or("max-distance", PointSiteOptions().max_distance);
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
   if (points_path && grid_option) args.fail("give either --points or --grid, not both");
+  if (share_flag && no_share) args.fail("give either --share-interference or --no-share-interference, not both");
   const long grid = grid_option.value_or(30);
   if (grid < 2 || grid > kMaxGrid)
     args.fail("--grid must be between 2 and " + std::to_string(kMaxGrid) + ", got " + std::to_string(grid));
@@ -52,7 +54,7 @@ int run_select_tool(Args& args) {
   ToolSelectionOptions options;
   options.scan.gouge.curvature_tolerance = tolerance;
   options.check_interference = !local_only;
-  options.share_interference = share_interference;
+  options.share_interference = !no_share;
   const bool show_progress = ::isatty(2) && sites.size() * library.size() > 20000;
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (show_progress) std::cerr << "\rselect-tool: " << (100 * done / total) << "%" << std::flush;
@@ -76,7 +78,7 @@ const Command kSelectToolCommand = {
     "select-tool", "largest gouge-free tool of a library, per point and for the surface",
     "usage: furrow select-tool PART --library tools.json [--points cc.csv | --grid N]\n"
     "                          [--out FILE] [--tolerance K] [--local-only]\n"
-    "                          [--share-interference]\n"
+    "                          [--no-share-interference]\n"
     "                          [--units mm|inch] [--max-distance D]\n"
     "\n"
     "Checks every tool of the library (a JSON array of tools, docs/formats.md) at the\n"
@@ -93,10 +95,11 @@ const Command kSelectToolCommand = {
     "  --out FILE        the selection as JSON (a summary is always printed)\n"
     "  --tolerance K     curvature excess that counts as a gouge, 1/mm (default 1e-6)\n"
     "  --local-only      skip the interference check away from the contact\n"
-    "  --share-interference  a tool inside a clear tool (no wider flat bottom, no\n"
-    "                    larger corner) is clear without its own interference\n"
-    "                    search: several times faster, the same per-point picks;\n"
-    "                    per-tool counts may be lower (docs/tool_selection.md)\n"
+    "  --no-share-interference  search for every tool; by default a tool inside a\n"
+    "                    clear tool (no wider flat bottom, no larger corner) is\n"
+    "                    clear without its own interference search: several times\n"
+    "                    faster, the same results (docs/tool_selection.md);\n"
+    "                    --share-interference, the default, is accepted too\n"
     "  --units U         units of the --points file: mm (default) or inch\n"
     "  --max-distance D  how far a contact point may lie from the part, mm (default 0.01)\n"
     "\n"

@@ -95,7 +95,7 @@ int damped_newton(const Face& face, Eigen::Vector2d& uv, int max_iterations, Res
 
 TipContactFinder::TipContactFinder(const Part& part, const Cutter& cutter,
                                    const TipContactOptions& options)
-    : part_(part), cutter_(cutter), options_(options) {
+    : part_(part), cutter_(cutter), options_(options), drop_(part, cutter, options.bound) {
   const int n = std::max(2, options.seed_grid);
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
     const FaceSeedGrid grid = make_face_seeds(part.faces[f], n);
@@ -160,7 +160,8 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     const double rho = std::sqrt(rho2);
     if (seed.corner && rho <= R) highest.push_back({cutter_.height_at(rho) - seed.point.z(), k});
   }
-  if (!under) return result;  // nothing under the cutter at all
+  // Nothing near the cutter: no Newton starts (the bounded search below still looks).
+  if (!under) nearest.clear();
   // The best few of a list, skipping seeds next to one already taken (they
   // would converge to the same contact).
   auto pick = [&](std::vector<std::pair<double, std::size_t>>& list, std::vector<std::size_t>& out) {
@@ -201,11 +202,9 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     found.push_back(c);
   };
 
-  // Corner contacts.
-  for (const std::size_t start : starts) {
-    const Seed& seed = seeds_[start];
-    const Face& face = part_.faces[seed.face];
-    Eigen::Vector2d uv = seed.uv;
+  // Corner contacts: Newton from (face, uv); false when it stalls or runs off the face.
+  auto corner_from = [&](std::size_t face_index, Eigen::Vector2d uv) {
+    const Face& face = part_.faces[face_index];
     auto residual = [&](const Eigen::Vector2d& p, Evaluation& ev, Eigen::Vector2d& F) {
       ev = evaluate(face, p);
       if (ev.g.degenerate || !(ev.g.normal.z() > 0)) return false;
@@ -236,10 +235,12 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
     const int iterations = damped_newton(face, uv, options_.max_iterations, residual, jacobian, done);
     if (iterations < 0) {
       result.failed_starts += iterations == -1;
-      continue;
+      return false;
     }
-    keep(seed.face, uv, evaluate(face, uv), ContactKind::corner, iterations);
-  }
+    keep(face_index, uv, evaluate(face, uv), ContactKind::corner, iterations);
+    return true;
+  };
+  for (const std::size_t start : starts) corner_from(seeds_[start].face, seeds_[start].uv);
 
   // Flat-bottom contacts: horizontal tangent planes under the bottom disc.
   if (rho0 > 0) {
@@ -333,6 +334,38 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
         duplicate |= (other.point - contact.point).norm() <= options_.duplicate_distance &&
                      std::abs(other.tip_z - contact.tip_z) <= options_.duplicate_distance;
       if (!duplicate) found.push_back(contact);
+    }
+  }
+
+  // The bounded search (drop_cutter.hpp): proves that nothing rests the
+  // cutter higher than the best contact so far, or finds the point that
+  // does; a corner Newton from there polishes it to its tangency, else (an
+  // edge or trim point, a flat bottom, a stalled start) the point itself is
+  // kept with its exact height.
+  double known = -std::numeric_limits<double>::infinity();
+  for (const TipContact& c : found) known = std::max(known, c.tip_z);
+  const DropCutterResult bound = drop_.drop(txy, known);
+  result.cells = bound.cells;
+  result.complete = bound.complete;
+  result.unresolved = bound.unresolved;
+  if (bound.any && bound.tip_z > known) {
+    const Face& face = part_.faces[bound.face];
+    const std::size_t before = found.size();
+    const bool interior = !on_domain_edge(face.domain(), bound.uv);
+    if (interior) corner_from(bound.face, bound.uv);
+    double polished = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = before; k < found.size(); ++k) polished = std::max(polished, found[k].tip_z);
+    if (!(polished >= bound.tip_z)) {
+      const DifferentialGeometry geom = face.geometry(bound.uv.x(), bound.uv.y());
+      TipContact c;
+      c.face = bound.face;
+      c.uv = bound.uv;
+      c.point = bound.point;
+      c.normal = geom.normal;
+      const double rho = (bound.point.head<2>() - txy).norm();
+      c.kind = !interior ? ContactKind::edge : rho <= rho0 ? ContactKind::flat_bottom : ContactKind::corner;
+      c.tip_z = bound.tip_z;
+      found.push_back(c);
     }
   }
 

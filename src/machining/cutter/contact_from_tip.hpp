@@ -37,8 +37,20 @@
 // cap inside a face are counted as failed (a start that runs off the face's
 // edge is not: its tangency is not on this face); with no contact and a
 // failed start the status is not_converged.
-// Trim curves are not treated as edges: a cutter resting on a trim curve is
-// not reported.
+// The seeded search alone can miss where the cutter rests (a narrow rise
+// between seeds under a wide cutter). So every query then runs the bounded
+// drop cutter of drop_cutter.hpp with the best height found as its start:
+// it either proves that no part point rests the cutter higher (within its
+// height_tolerance) or returns the point that does, which is polished by a
+// corner Newton start from there (kept as it is when that converges lower:
+// an edge, a trim curve, a flat bottom). So contacts[0].tip_z is the rest
+// height within `bound.height_tolerance` whenever `complete` (points within
+// `bound.radial_tolerance` of the shank radius graze: drop_cutter.hpp);
+// hitting the bounded search's cell cap clears `complete` and sets
+// `unresolved`, a height the cutter cannot rest above.
+// The Newton searches do not treat trim curves as edges; the bounded search
+// finds a cutter resting on one as a point kept by the trim, within its
+// tolerance (listed as a corner or flat_bottom contact at that point).
 // Side contacts (a vertical wall, n_z = 0 within the location options'
 // vertical_tolerance: cutter_location.hpp) are not listed: the cutter's
 // side there is vertical, so lowering the cutter slides it along the wall
@@ -50,11 +62,13 @@
 // cutter_location() rests on whatever else lies under it, or on nothing
 // (no_contact): it does not cut into the wall it touches.
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "geometry/part.hpp"
 #include "machining/cutter/cutter.hpp"
 #include "machining/cutter/cutter_location.hpp"
+#include "machining/cutter/drop_cutter.hpp"
 #include "machining/cutter/face_seeds.hpp"
 
 namespace furrow {
@@ -72,6 +86,7 @@ struct TipContactOptions {
   // parameter range (or after 200 steps).
   double edge_tolerance = 1e-13;
   CutterLocationOptions location;
+  DropCutterOptions bound;  // the bounded search run after the Newton starts
 };
 
 enum class ContactKind : unsigned char { corner, flat_bottom, edge };
@@ -100,6 +115,11 @@ struct TipContactResult {
   double gap = 0;                    // tip.z - contacts[0].tip_z [mm]; 0 if none
   int starts = 0;                    // Newton starts tried
   int failed_starts = 0;             // of which stalled or hit the cap inside a face
+  int cells = 0;                     // cells bounded by the bounded search
+  // False when the bounded search hit its cell cap: a higher rest than
+  // contacts[0] is then possible, up to `unresolved` [mm] (-infinity when complete).
+  bool complete = true;
+  double unresolved = -std::numeric_limits<double>::infinity();
 };
 
 class TipContactFinder {
@@ -131,6 +151,7 @@ class TipContactFinder {
   };
   std::vector<Edge> edges_;
   double seed_spacing_ = 0;  // largest distance between neighbouring seeds [mm]
+  DropCutter drop_;
 };
 
 }  // namespace furrow

@@ -22,7 +22,11 @@ double interference_depth(const Cutter& cutter, const TipContactFinder& finder,
   placed.horizontal_side = g.cutter.toward_axis;
   const CutterLocation loc = cutter_location(cutter, point, g.cutter.normal, placed);
   const TipContactResult r = finder.find(loc.tip);
-  return r.status == TipContactStatus::found ? -r.gap : 0.0;
+  double depth = r.status == TipContactStatus::found ? -r.gap : 0.0;
+  // The bounded search gave up: count the cutter as resting as high as it
+  // may (a clear verdict is passed on to nested tools, so it must be proven).
+  if (!r.complete) depth = std::max(depth, r.unresolved - loc.tip.z());
+  return depth;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 // pick is the first gouge-free tool in that order, the whole-surface pick the
 // first tool with no gouging site.
 //
-// Shared interference verdicts (docs/tool_selection.md), off by default:
+// Shared interference verdicts (docs/tool_selection.md), on by default:
 // the local check is cheap, the interference search (a drop-cutter query,
 // contact_from_tip.hpp) is not. Two end mills located at the same contact
 // point with the same normal and axis side nest when the inner one has
@@ -22,10 +22,13 @@
 // are visited largest first, so every container comes first). Every per-site
 // result (pick, needed curvature, interference depth) is then the same as
 // with every search run: up to a site's pick nothing is skipped, and a site
-// without a tool had no clear container. Per-tool counts can be lower: the
-// search is a seeded Newton method that now and then misses where a larger
-// tool rests (the smaller tool's own search finds it), and the shared path
-// carries such a miss down to the tools inside. That is why it is opt-in.
+// without a tool had no clear container. Per-tool verdicts agree too as far
+// as the search is exact: it ends in a bounded drop cutter
+// (drop_cutter.hpp) that proves a clear verdict to within its height
+// tolerance, and a search that hits its cell cap counts the cutter as
+// resting as high as it may (never clear on a guess). A verdict can differ
+// only where a container's depth lies within that tolerance above
+// interference_tolerance.
 #include <Eigen/Core>
 #include <functional>
 #include <vector>
@@ -53,9 +56,9 @@ struct ToolSelectionOptions {
   double interference_tolerance = 1e-6;
   TipContactOptions contact;
   // Take a tool's interference verdict from a clear tool containing it
-  // (above): several times faster; the same per-site results, per-tool
-  // counts at most as large. False: every tool's own search.
-  bool share_interference = false;
+  // (above): several times faster, the same results. False: every tool's
+  // own search.
+  bool share_interference = true;
 };
 
 // Whether `inner`, located at any contact point with the same normal and
