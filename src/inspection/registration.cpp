@@ -73,6 +73,9 @@ constexpr double kExactlyFree = 1e-8;
 // surface's own free motions from those the points leave free.
 constexpr int kObservabilityGrid = 24;
 
+// Rounds of settling the held directions and re-fitting the others.
+constexpr int kSettleRounds = 20;
+
 std::string number(double v) {
   std::ostringstream s;
   s.precision(3);
@@ -92,7 +95,11 @@ struct Workspace {
   const RegistrationOptions& options;
   SurfaceFit& fit;
   std::vector<ClosestPoint> feet;
-  std::vector<OutlierReason> geometric;  // beyond_edge / no_foot_point per projection
+  std::vector<OutlierReason> geometric;  // no_foot_point per projection
+  // Foot on a boundary, point more than edge_tolerance beside the surface:
+  // still in the fit (its bounded distance is its residual); only the
+  // classification after convergence and the start's observability use it.
+  std::vector<bool> beyond;
   std::vector<bool> excluded;            // left out of the fit by the outlier rule
   bool projected_once = false;
 
@@ -104,16 +111,18 @@ struct Workspace {
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d x = fit.moved(i);
       feet[i] = projected_once ? finder.project(x, feet[i]) : finder.project(x);
-      OutlierReason reason = OutlierReason::none;
-      if (!feet[i].converged)
-        reason = OutlierReason::no_foot_point;
-      else if (feet[i].location != FootLocation::interior &&
-               sideways(x, feet[i]) > options.edge_tolerance)
-        reason = OutlierReason::beyond_edge;
-      geometric[i] = reason;
-      fit.set_foot(i, feet[i].point, feet[i].normal, reason == OutlierReason::none && !excluded[i]);
+      const bool found = feet[i].converged;
+      const bool boundary = found && feet[i].location != FootLocation::interior;
+      geometric[i] = found ? OutlierReason::none : OutlierReason::no_foot_point;
+      beyond[i] = boundary && sideways(x, feet[i]) > options.edge_tolerance;
+      fit.set_foot(i, feet[i].point, feet[i].normal, found && !excluded[i], boundary);
     }
     projected_once = true;
+  }
+  // On the part in the sense of the start's analysis: a foot, not beyond an
+  // edge, not excluded.
+  bool on_part(std::size_t i) const {
+    return geometric[i] == OutlierReason::none && !beyond[i] && !excluded[i];
   }
 };
 
@@ -138,8 +147,10 @@ double motion(const Eigen::Matrix<double, 6, 1>& a, const Eigen::Matrix<double, 
 // The held weak directions (`held`: origin motions, columns) moved so that
 // the points whose foot lies on a face or trim boundary come back onto the
 // bounded face: for those the whole offset from the probe-compensated foot,
-// x - (f + r n), is the residual (their true distance to the bounded
-// surface, sideways part included), for the others the signed deviation.
+// x - (f + r n), is the residual (sideways part included: it brings them
+// back in proportion to how far off they are, where the fit's bounded
+// distance of a ball beside the edge grows only with the square of it), for
+// the others the signed deviation.
 // Linear least squares in the held directions only, re-projected until no
 // point moves more than `tolerance`. The held motions are those the surface
 // does not see, so only the edges decide them; without this the coarse
@@ -263,6 +274,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
                fit,
                std::vector<ClosestPoint>(n),
                std::vector<OutlierReason>(n, OutlierReason::none),
+               std::vector<bool>(n, false),
                std::vector<bool>(n, false)};
 
   ws.project();
@@ -272,7 +284,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   enum class Holding { none, all, exact_only } holding = Holding::none;
   auto points_in_fit = [&](std::vector<Eigen::Vector3d>& x, std::vector<Eigen::Vector3d>& normal) {
     for (std::size_t i = 0; i < n; ++i)
-      if (ws.geometric[i] == OutlierReason::none && !ws.excluded[i]) {
+      if (ws.on_part(i)) {
         x.push_back(fit.moved(i));
         normal.push_back(ws.feet[i].normal);
       }
@@ -305,7 +317,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   {
     std::vector<double> d;
     for (std::size_t i = 0; i < n; ++i)
-      if (ws.geometric[i] == OutlierReason::none) d.push_back(fit.residual(i));
+      if (ws.geometric[i] == OutlierReason::none && !ws.beyond[i]) d.push_back(fit.residual(i));
     result.rms_before = rms(d);
   }
   std::vector<OutlierReason> verdict(n, OutlierReason::none);
@@ -313,10 +325,17 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   const OutlierRule rule{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours,
                          options.neighbour_radius};
   std::string solver_message;
+  // The points the fit uses: every point with a foot that the outlier rule
+  // has not excluded - edges do not take any out.
   auto active_count = [&] {
     std::size_t active = 0;
     for (std::size_t i = 0; i < n; ++i) active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
     return active;
+  };
+  auto on_part_count = [&] {
+    std::size_t on = 0;
+    for (std::size_t i = 0; i < n; ++i) on += ws.on_part(i);
+    return on;
   };
   // Outer iterations until the motion stops (result.converged), the solver
   // fails or too few points are left on the part.
@@ -327,8 +346,9 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
       note("fit " + label + "." + std::to_string(outer));
       const Eigen::Matrix<double, 6, 1> before = fit.parameters();
       const std::size_t active = active_count();
+      result.fitted_per_iteration.push_back(static_cast<int>(active));
       if (static_cast<int>(active) <= fitted) {
-        too_few = "only " + std::to_string(active) + " points lie on the part after alignment, too few to fit " +
+        too_few = "only " + std::to_string(active) + " points have a foot on the part, too few to fit " +
                   std::to_string(fitted) + " degrees of freedom and check the rest";
         return;
       }
@@ -347,9 +367,15 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     // Points left beyond a face edge by where the start put the held
     // directions: those directions moved to bring them back, then the
     // constrained ones re-fitted, before any point is classified.
-    if (result.converged && too_few.empty() && solver_message.empty() &&
-        settle_on_faces(ws, held_basis, set.probe_radius, reach, options.motion_tolerance))
+    // Edge points stay in the constrained fit, so it can move them off
+    // again: alternate until the settling moves nothing.
+    for (int round = 1; round <= kSettleRounds && result.converged && too_few.empty() && solver_message.empty();
+         ++round) {
+      const Eigen::Matrix<double, 6, 1> before = fit.parameters();
+      if (!settle_on_faces(ws, held_basis, set.probe_radius, reach, options.motion_tolerance)) break;
+      if (motion(before, fit.parameters(), reach) <= options.motion_tolerance) break;
       iterate(std::to_string(pass) + " settled");
+    }
     if (!options.flag_outliers || !solver_message.empty() || !too_few.empty()) break;
     std::vector<Eigen::Vector3d> positions(n);
     std::vector<double> deviation(n);
@@ -371,7 +397,21 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     ws.excluded = excluded;
     fit.set_loss(RobustLoss::none, options.loss_scale);
     for (std::size_t i = 0; i < n; ++i)
-      fit.set_foot(i, ws.feet[i].point, ws.feet[i].normal, usable[i] && !excluded[i]);
+      fit.set_foot(i, ws.feet[i].point, ws.feet[i].normal, usable[i] && !excluded[i],
+                   ws.feet[i].converged && ws.feet[i].location != FootLocation::interior);
+  }
+  // Without outlier flagging every point stays in the fit; the points
+  // beyond an edge are still classified, once, by the same rule.
+  if (!options.flag_outliers && too_few.empty() && solver_message.empty()) {
+    std::vector<Eigen::Vector3d> positions(n);
+    std::vector<double> deviation(n);
+    std::vector<bool> usable(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      positions[i] = ws.feet[i].point;
+      deviation[i] = fit.residual(i);
+      usable[i] = ws.geometric[i] == OutlierReason::none;
+    }
+    numbers = classify_deviations(positions, deviation, usable, rule, verdict);
   }
   // The weak directions the points do see, released: the data decide them
   // now that every point has settled on the part. Kept only if no point
@@ -380,13 +420,24 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   if (release.cols() > 0 && result.converged && too_few.empty() && solver_message.empty()) {
     const Eigen::Matrix<double, 6, 1> held_parameters = fit.parameters();
     const MotionBasis held_basis = fit.motion_basis();
-    const std::size_t held_active = active_count();
+    const std::size_t held_active = on_part_count();
+    // The sum of squared residuals of the points in the fit: more freedom
+    // cannot raise it at a true minimum, so a released fit that ends higher
+    // has wandered (edge points pull the slides a nearly flat panel barely
+    // sees) and is not kept.
+    auto squares = [&] {
+      double sum = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (ws.geometric[i] == OutlierReason::none && !ws.excluded[i]) sum += fit.residual(i) * fit.residual(i);
+      return sum;
+    };
+    const double held_squares = squares();
     const int held_fitted = fitted;
     const int outer_before = result.outer_iterations;
     fit.restrict_motion(release);
     fitted = static_cast<int>(release.cols());
     iterate("released");
-    if (result.converged && active_count() >= held_active) {
+    if (result.converged && on_part_count() >= held_active && squares() <= held_squares * (1 + 1e-9)) {
       holding = Holding::exact_only;
     } else {
       too_few.clear();
@@ -413,14 +464,22 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     p.registered = fit.moved(i);
     p.foot = ws.feet[i];
     p.deviation = fit.residual(i);
+    // Classified once, at the final transform (docs/registration.md
+    // "Points at an edge"): a point the deviation rule flags whose foot is
+    // on a boundary with the point beside the surface is off the part.
+    const bool flagged = options.flag_outliers ? ws.excluded[i]
+                                               : ws.beyond[i] && verdict[i] != OutlierReason::none;
     p.outlier = ws.geometric[i] != OutlierReason::none ? ws.geometric[i]
-                : ws.excluded[i]                       ? verdict[i]
-                                                       : OutlierReason::none;
-    p.in_fit = p.outlier == OutlierReason::none;
+                : !flagged                             ? OutlierReason::none
+                : ws.beyond[i]                         ? OutlierReason::beyond_edge
+                                                       : verdict[i];
+    p.in_fit = ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
     p.evaluated = p.outlier == OutlierReason::none || p.outlier == OutlierReason::large_deviation;
     if (p.outlier == OutlierReason::beyond_edge)
       p.outlier_detail = "foot on the " + std::string(to_string(p.foot.location)) + ", point " +
-                         number(sideways(p.registered, p.foot)) + " mm beside the surface";
+                         number(sideways(p.registered, p.foot)) + " mm beside the surface, " +
+                         number(std::abs(p.deviation)) + " mm from it, |d - median| > " +
+                         number(numbers.limit) + " mm";
     else if (p.outlier == OutlierReason::no_foot_point)
       p.outlier_detail = "closest-point search did not converge";
     else if (p.outlier != OutlierReason::none)

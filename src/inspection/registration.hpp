@@ -9,10 +9,16 @@
 // see degrees_of_freedom.hpp), r a rotation vector about the part origin and
 // t a translation: the six parameters (rx, ry, rz, tx, ty, tz). The residual
 // is the signed deviation
-//     d_i = n_i . (x_i - f_i) - r_probe
-// with f_i the closest point of x_i on the part and n_i the outward normal
-// there (r_probe = 0 for contact points): probe compensation along the
-// nominal normal, re-evaluated with every foot point.
+//     d_i = n_i . (x_i - f_i) - r_probe          (foot inside a face)
+//     d_i = s_i |x_i - f_i| - r_probe            (foot on a face/trim boundary)
+// with f_i the closest point of x_i on the part (trims respected), n_i the
+// outward normal there and s_i = +-1 the side of its tangent plane
+// (r_probe = 0 for contact points): probe compensation along the nominal
+// normal, re-evaluated with every foot point. On a boundary it is the probe
+// centre's true distance to the bounded surface less the radius (the gap
+// between ball and part: a ball touching a face's rim has d = 0); the two
+// agree where a foot crosses the boundary (docs/registration.md "Points at
+// an edge").
 //
 // Solution (defended in docs/registration.md): foot points are re-projected
 // globally (closest_point.hpp) in every outer iteration and held fixed while
@@ -24,12 +30,15 @@
 // with face changes and trim boundaries handled by the projection.
 //
 // Robustness: a Cauchy (default) or Huber loss with a scale from the
-// tolerance carries the first fit; then outliers are flagged and excluded and
-// the fit repeated, by plain least squares on the remaining points (the
-// Gaussian best fit a CMM reports, and the estimator whose covariance is
-// meaningful), until the flagged set is stable. Outliers:
-//   beyond_edge        foot on a face or trim boundary with the point more
-//                      than edge_tolerance beside the surface (not on it);
+// tolerance carries the first fit, every point with a foot in it (edge
+// points too: a projection never drops a point); then outliers are flagged
+// and excluded and the fit repeated, by plain least squares on the remaining
+// points (the Gaussian best fit a CMM reports, and the estimator whose
+// covariance is meaningful), until the flagged set is stable. Outliers,
+// classified after each converged pass at its final position:
+//   beyond_edge        flagged by the deviation rule below, with its foot on a
+//                      face or trim boundary and the point more than
+//                      edge_tolerance beside the surface: off the part;
 //   no_foot_point      the projection did not converge;
 //   blunder            |d - median d| > max(outlier_sigma * robust sigma,
 //                      outlier_floor), and its neighbours do not agree;
@@ -52,8 +61,8 @@
 // moves only along the others - the same fit as with those directions locked
 // by hand, and it cannot slide the part off the measured surface through
 // them. Points the start left beyond a face edge move the held directions
-// (and only them) back onto the face after each fit pass: there the whole
-// offset from the boundary foot is their residual. At the solution the analysis is repeated over the points in the fit
+// (and only them) back onto the face after each fit pass, weighted by the
+// robust loss. At the solution the analysis is repeated over the points in the fit
 // and reported; a direction weak only because of where the points are (a
 // grid over the measured faces would fix it) is `from_points`, which makes
 // the comparison's alignment weakly constrained (comparison.hpp).
@@ -101,7 +110,7 @@ struct RegistrationOptions {
   double motion_tolerance = 1e-10;  // [mm] stop when no point moves more than this
   double outlier_sigma = 5;         // robust sigmas for a large residual
   double outlier_floor = 0.025;     // [mm] smallest |d - median| called large
-  double edge_tolerance = 0.05;     // [mm] sideways offset of a beyond-edge point
+  double edge_tolerance = 0.05;     // [mm] sideways offset that makes a flagged edge point beyond_edge
   int confirm_neighbours = 3;       // agreeing neighbours (of 6) that make a large deviation real
   double neighbour_radius = 10;     // [mm]
   int max_outlier_passes = 4;       // fit / flag rounds
@@ -116,12 +125,12 @@ struct RegistrationOptions {
 struct RegisteredPoint {
   Eigen::Vector3d registered = Eigen::Vector3d::Zero();  // T p, part frame [mm]
   ClosestPoint foot;                                     // of `registered`
-  double deviation = 0;    // d = n.(x - f) - r_probe [mm]; + material left, - removed
+  double deviation = 0;    // d (above; bounded distance on a boundary) [mm]; + material left, - removed
   double uncertainty = 0;  // 1-sigma of d from the transform's covariance [mm]
   OutlierReason outlier = OutlierReason::none;
   std::string outlier_detail;  // numbers behind the decision
   bool in_fit = true;          // took part in the final fit
-  bool evaluated = true;       // counts for the tolerance (false for blunders, edges, no foot)
+  bool evaluated = true;       // counts for the tolerance (false for blunders, beyond_edge, no foot)
 };
 
 struct RegistrationResult {
@@ -134,6 +143,9 @@ struct RegistrationResult {
   int outer_iterations = 0;
   int solver_iterations = 0;
   int outlier_passes = 0;
+  // Points in the fit at each outer iteration, in order: edges never take
+  // one out; it falls only between outlier passes, by the flagged points.
+  std::vector<int> fitted_per_iteration;
   bool converged = false;
   FitOutcome outcome = FitOutcome::not_converged;
   std::string status;                                     // "converged" or why not

@@ -13,9 +13,12 @@ namespace furrow {
 
 namespace {
 
-// Signed point-to-tangent-plane distance minus the probe radius, as a
-// function of the six parameters (rotation vector, translation).
-struct PointToPlane {
+// The residual of one point as a function of the six parameters (rotation
+// vector, translation), its foot held: with e = R y + t - f, n . e - r for a
+// foot inside a face (point to tangent plane) and sign |e| - r for a foot on
+// a face or trim boundary (the probe centre's true distance to the bounded
+// surface less the radius, docs/registration.md "Points at an edge").
+struct BoundedDistance {
   const SurfaceFit::Point* point;
   double probe_radius;
 
@@ -28,9 +31,21 @@ struct PointToPlane {
     const T y[3] = {T(point->y.x()), T(point->y.y()), T(point->y.z())};
     T ry[3];
     ceres::AngleAxisRotatePoint(x, y, ry);
-    T d = T(-probe_radius);
-    for (int k = 0; k < 3; ++k) d += point->normal[k] * (ry[k] + x[3 + k] - point->foot[k]);
-    residual[0] = d;
+    T e[3];
+    for (int k = 0; k < 3; ++k) e[k] = ry[k] + x[3 + k] - point->foot[k];
+    if (point->boundary) {
+      using std::sqrt;
+      const T e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+      // |e| has no derivative at 0; there the point sits on the boundary
+      // and n . e is as good (both vanish).
+      if (e2 > T(1e-24)) {
+        residual[0] = point->sign * sqrt(e2) - probe_radius;
+        return true;
+      }
+    }
+    T along = T(-probe_radius);
+    for (int k = 0; k < 3; ++k) along += point->normal[k] * e[k];
+    residual[0] = along;
     return true;
   }
 };
@@ -113,7 +128,7 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
   impl_->costs.reserve(points_.size());
   for (const Point& p : points_) {
     auto* cost =
-        new ceres::AutoDiffCostFunction<PointToPlane, 1, 6>(new PointToPlane{&p, probe_radius_});
+        new ceres::AutoDiffCostFunction<BoundedDistance, 1, 6>(new BoundedDistance{&p, probe_radius_});
     impl_->costs.push_back(cost);
     impl_->problem->AddResidualBlock(cost, impl_->loss.get(), parameters_.data());
   }
@@ -143,27 +158,46 @@ Eigen::Vector3d SurfaceFit::moved(std::size_t i) const {
 }
 
 void SurfaceFit::set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
-                          bool active) {
-  points_[i].foot = foot;
-  points_[i].normal = normal;
-  points_[i].active = active;
+                          bool active, bool boundary) {
+  Point& p = points_[i];
+  p.foot = foot;
+  p.normal = normal;
+  p.active = active;
+  p.boundary = boundary;
+  // The side of the tangent plane the point is on now: the sign of its
+  // bounded distance, held while the foot is (the squared residual, all the
+  // fit sees, does not depend on it).
+  p.sign = normal.dot(moved(i) - foot) >= 0 ? 1.0 : -1.0;
 }
 
 double SurfaceFit::residual(std::size_t i) const {
-  return points_[i].normal.dot(moved(i) - points_[i].foot) - probe_radius_;
+  Point p = points_[i];
+  p.active = true;
+  const BoundedDistance f{&p, probe_radius_};
+  double r = 0;
+  f(parameters_.data(), &r);
+  return r;
+}
+
+Eigen::Vector3d SurfaceFit::direction(std::size_t i) const {
+  const Point& p = points_[i];
+  if (!p.boundary) return p.normal;
+  const Eigen::Vector3d e = moved(i) - p.foot;
+  return e.squaredNorm() > 1e-24 ? Eigen::Vector3d(p.sign * e.normalized()) : p.normal;
 }
 
 Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
   Eigen::Matrix<double, 1, 6> j;
   if (parameters_.head<3>().isZero()) {
-    // At r = 0: d(R(r) y)/dr = -[y]x, so d(n.(R y))/dr = y x n; d/dt = n.
-    const Point& p = points_[i];
-    j << p.y.cross(p.normal).transpose(), p.normal.transpose();
+    // At r = 0: d(R(r) y)/dr = -[y]x, so d(u.(R y))/dr = y x u; d/dt = u,
+    // with u the residual's direction (direction()).
+    const Eigen::Vector3d u = direction(i);
+    j << points_[i].y.cross(u).transpose(), u.transpose();
     return j * projector_;
   }
   Point p = points_[i];
   p.active = true;
-  ceres::AutoDiffCostFunction<PointToPlane, 1, 6> cost(new PointToPlane{&p, probe_radius_});
+  ceres::AutoDiffCostFunction<BoundedDistance, 1, 6> cost(new BoundedDistance{&p, probe_radius_});
   const double* params[1] = {parameters_.data()};
   double r = 0;
   double* jac[1] = {j.data()};
@@ -208,7 +242,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   for (std::size_t i = 0; i < points_.size(); ++i)
     if (points_[i].active) {
       x.push_back(moved(i));
-      n.push_back(points_[i].normal);
+      n.push_back(direction(i));
     }
   if (basis_.cols() == 0) {
     status = "no degree of freedom left to fit";

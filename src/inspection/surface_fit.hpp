@@ -1,9 +1,23 @@
 #pragma once
 // The inner problem of registration.hpp: with every point's foot point and
 // normal held fixed, find the rigid correction (r, t) minimising
-// sum rho((n_i . (R(r) y_i + t - f_i) - r_probe)^2) with Ceres, some of the
-// six parameters possibly locked; and the covariance of (r, t) at the
-// optimum with ceres::Covariance.
+// sum rho(d_i^2) with Ceres, some of the six parameters possibly locked; and
+// the covariance of (r, t) at the optimum with ceres::Covariance.
+//
+// The residual d_i, with e_i = R(r) y_i + t - f_i the probe centre's offset
+// from its foot (docs/registration.md "Points at an edge"):
+//   foot inside a face:            d_i = n_i . e_i - r_probe
+//                                  (point to tangent plane)
+//   foot on a face/trim boundary:  d_i = s_i |e_i| - r_probe
+//                                  (the centre's true distance to the
+//                                  bounded surface less the radius: the gap
+//                                  between ball and face; s_i = +-1 the side
+//                                  of the tangent plane at the last set_foot)
+// Both agree where a foot crosses the boundary (e_i is along n_i there), and
+// at a fixed point of the re-projection their gradient is that of the true
+// bounded distance (the foot moves along the face or the edge curve, to
+// first order perpendicular to e_i). The sign flips, and d_i jumps by
+// 2 r_probe, only for a centre in the tangent plane beside the edge.
 //
 // One Ceres problem lives for the whole registration: the residual blocks
 // read the feet from this object, so the outer loop only updates them
@@ -33,6 +47,8 @@ class SurfaceFit {
     Eigen::Vector3d foot = Eigen::Vector3d::Zero();
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     bool active = false;
+    bool boundary = false;  // foot on a face or trim boundary: d = sign |e|
+    double sign = 1;        // side of the tangent plane (boundary feet)
   };
 
   SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius, const DegreesOfFreedom& dof,
@@ -47,10 +63,15 @@ class SurfaceFit {
   void set_parameters(const Eigen::Matrix<double, 6, 1>& p) { parameters_ = p; }
   // R(r) y_i + t with the current parameters.
   Eigen::Vector3d moved(std::size_t i) const;
+  // `boundary`: the foot lies on a face or trim boundary (the residual is
+  // then the distance to the compensated foot, see above).
   void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
-                bool active);
-  // Signed residual n . (moved - foot) - r_probe of point i (active or not).
+                bool active, bool boundary = false);
+  // Signed residual d_i of point i (active or not) [mm].
   double residual(std::size_t i) const;
+  // Unit gradient of d_i with respect to the moved point: n_i inside a face,
+  // s_i e_i / |e_i| on a boundary.
+  Eigen::Vector3d direction(std::size_t i) const;
   // d(residual_i) / d(rx, ry, rz, tx, ty, tz) at the current parameters,
   // projected onto the allowed motions (zero in locked components).
   Eigen::Matrix<double, 1, 6> jacobian(std::size_t i) const;
