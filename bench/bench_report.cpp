@@ -66,7 +66,7 @@ double median(std::vector<double> v) {
 
 double field(const Eigen::Vector2d& uv) {
   double e = 0.008 * std::sin(2 * M_PI * uv.x()) * std::cos(M_PI * uv.y());
-  for (const Eigen::Vector2d c : {Eigen::Vector2d(0.3, 0.4), Eigen::Vector2d(0.7, 0.6)}) {
+  for (const Eigen::Vector2d& c : {Eigen::Vector2d(0.3, 0.4), Eigen::Vector2d(0.7, 0.6)}) {
     const double rho = (uv - c).norm() / 0.05;
     if (rho < 1) e -= 0.02 * (1 + std::cos(M_PI * rho));
   }

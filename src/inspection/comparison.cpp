@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "inspection/fixed_alignment.hpp"
 
@@ -49,11 +50,7 @@ AlignMethod parse_align_method(const std::string& text, const std::string& where
 
 namespace {
 
-std::string micrometres(double mm) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f um", mm * 1000);
-  return buf;
-}
+std::string micrometres(double mm) { return fixed(mm * 1000, 1) + " um"; }
 
 // What was not shown to be good (the header's INCONCLUSIVE rules).
 std::vector<InconclusiveReason> open_questions(const Comparison& c) {

@@ -15,7 +15,6 @@ using jf::json;
 
 namespace {
 
-using Node = verification_json::FieldReader;
 
 template <int Rows, int Cols>
 Eigen::Matrix<double, Rows, Cols> matrix(const json& value, const std::string& where) {
@@ -33,7 +32,7 @@ Eigen::Matrix<double, Rows, Cols> matrix(const json& value, const std::string& w
   return m;
 }
 
-DeviationStatistics read_statistics(const Node& n) {
+DeviationStatistics read_statistics(const JsonCursor& n) {
   DeviationStatistics s;
   s.count = n.count("count");
   s.mean = n.number("mean");
@@ -43,7 +42,7 @@ DeviationStatistics read_statistics(const Node& n) {
   return s;
 }
 
-ComparisonDocument::Options read_options(const Node& n) {
+ComparisonDocument::Options read_options(const JsonCursor& n) {
   ComparisonDocument::Options o;
   o.tolerance = ToleranceZone::make(n.number("tolerance"), n.number("outside"), n.path("tolerance"));
   o.disposition = o.tolerance.disposition();
@@ -68,13 +67,13 @@ ComparisonDocument::Options read_options(const Node& n) {
   return o;
 }
 
-ComparisonDocument::Registration read_registration(const Node& n) {
+ComparisonDocument::Registration read_registration(const JsonCursor& n) {
   ComparisonDocument::Registration r;
   r.transform = matrix<4, 4>(n.raw("transform"), n.path("transform"));
-  const Node placement = n.at("placement");
+  const JsonCursor placement = n.at("placement");
   r.placement_rotation_deg = placement.vector3("rotation_deg");
   r.placement_translation = placement.vector3("translation");
-  const Node coarse = n.at("coarse");
+  const JsonCursor coarse = n.at("coarse");
   r.coarse_method = coarse.string("method");
   r.coarse_matched_ids = coarse.integer("matched_ids");
   r.coarse_candidates = coarse.integer("candidates");
@@ -99,7 +98,7 @@ ComparisonDocument::Registration read_registration(const Node& n) {
     if (r.fitted_dof < 0 || r.fitted_dof > 6) throw InputError(n.path("fitted_dof") + ": must lie in 0..6");
     const json& list = n.array("weak_directions");
     for (std::size_t k = 0; k < list.size(); ++k) {
-      const Node w(list[k], jf::child(n.path("weak_directions"), k));
+      const JsonCursor w(list[k], jf::child(n.path("weak_directions"), k));
       ComparisonDocument::Registration::WeakDirection d;
       d.text = w.string("text");
       const std::string kind = w.string("kind");
@@ -108,7 +107,7 @@ ComparisonDocument::Registration read_registration(const Node& n) {
       d.translation = kind == "translation";
       d.direction = w.vector3("direction");
       d.ratio = w.non_negative("ratio");
-      d.sigma = w.optional_number("sigma");
+      d.sigma = w.nullable_number("sigma");
       d.held = w.boolean("held");
       d.from_points = w.boolean("from_points");
       if (!d.translation) {
@@ -122,7 +121,7 @@ ComparisonDocument::Registration read_registration(const Node& n) {
   return r;
 }
 
-ComparisonDocument::Alignment read_alignment(const Node& n) {
+ComparisonDocument::Alignment read_alignment(const JsonCursor& n) {
   ComparisonDocument::Alignment a;
   a.method = n.string("method");
   if (a.method != "bestfit" && a.method != "cmm" && a.method != "datums")
@@ -132,7 +131,7 @@ ComparisonDocument::Alignment read_alignment(const Node& n) {
   a.note = n.string("note");
   const json& list = n.array("datums");
   for (std::size_t k = 0; k < list.size(); ++k) {
-    const Node d(list[k], jf::child(n.path("datums"), k));
+    const JsonCursor d(list[k], jf::child(n.path("datums"), k));
     ComparisonDocument::Alignment::Datum x;
     x.label = d.string("label");
     x.kind = d.string("kind");
@@ -146,13 +145,13 @@ ComparisonDocument::Alignment read_alignment(const Node& n) {
     x.form_error = d.non_negative("form_error");
     a.datums.push_back(x);
   }
-  const Node b = n.at("bestfit");
+  const JsonCursor b = n.at("bestfit");
   a.bestfit_profile = b.non_negative("profile");
   a.bestfit_status = b.string("status");
   return a;
 }
 
-ComparisonDocument::Point read_point(const Node& n) {
+ComparisonDocument::Point read_point(const JsonCursor& n) {
   ComparisonDocument::Point p;
   p.id = n.string("id");
   p.measured = n.vector3("measured");
@@ -165,7 +164,7 @@ ComparisonDocument::Point read_point(const Node& n) {
   p.normal = n.vector3("normal");
   p.foot_location = n.string("foot_location");
   p.deviation = n.number("deviation");
-  p.uncertainty = n.optional_number("uncertainty");
+  p.uncertainty = n.nullable_number("uncertainty");
   p.evaluated = n.boolean("evaluated");
   if (!n.is_null("in_tolerance")) p.in_tolerance = n.boolean("in_tolerance");
   if (p.evaluated != p.in_tolerance.has_value())
@@ -173,7 +172,7 @@ ComparisonDocument::Point read_point(const Node& n) {
                                                            : ": must be null for a point not evaluated"));
   p.in_fit = n.boolean("in_fit");
   if (!n.is_null("outlier")) {
-    const Node o = n.at("outlier");
+    const JsonCursor o = n.at("outlier");
     p.outlier = o.string("reason");
     p.outlier_detail = o.string("detail");
   }
@@ -182,7 +181,7 @@ ComparisonDocument::Point read_point(const Node& n) {
   return p;
 }
 
-ComparisonSummary read_summary(const Node& n) {
+ComparisonSummary read_summary(const JsonCursor& n) {
   ComparisonSummary s;
   s.points = n.count("points");
   s.in_fit = n.count("in_fit");
@@ -210,7 +209,7 @@ ComparisonSummary read_summary(const Node& n) {
   if (n.has("inconclusive")) {
     const json& list = n.array("inconclusive");
     for (std::size_t k = 0; k < list.size(); ++k) {
-      const Node r(list[k], jf::child(n.path("inconclusive"), k));
+      const JsonCursor r(list[k], jf::child(n.path("inconclusive"), k));
       s.inconclusive.push_back({r.string("kind"), r.string("subject"), r.string("text")});
     }
   }
@@ -223,7 +222,7 @@ ComparisonSummary read_summary(const Node& n) {
 
 ComparisonDocument parse_comparison(const std::string& text, const std::string& name) {
   const json doc = jf::parse_text(text, name);
-  const Node root(doc, name + ":");
+  const JsonCursor root(doc, name + ":");
   ComparisonDocument d;
   d.version = root.integer("version");
   if (d.version != kComparisonFormatVersion)
@@ -237,13 +236,13 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   if (root.has("measurement_files")) {
     const json& files = root.array("measurement_files");
     for (std::size_t k = 0; k < files.size(); ++k) {
-      const Node f(files[k], jf::child(root.path("measurement_files"), k));
+      const JsonCursor f(files[k], jf::child(root.path("measurement_files"), k));
       d.sources.measurement_files.push_back(
           {f.string("path"), f.count("points"), f.has("sha256") ? f.string("sha256") : std::string()});
     }
   }
   const std::size_t file_count = d.sources.measurement_files.size();
-  auto file_index = [&](const Node& n, const std::string& key) {
+  auto file_index = [&](const JsonCursor& n, const std::string& key) {
     const std::size_t f = n.count(key);
     if (f >= file_count)
       throw InputError(n.path(key) + ": file " + std::to_string(f) + " but measurement_files lists " +
@@ -253,24 +252,24 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   if (root.has("replaced")) {
     const json& replaced = root.array("replaced");
     for (std::size_t k = 0; k < replaced.size(); ++k) {
-      const Node r(replaced[k], jf::child(root.path("replaced"), k));
+      const JsonCursor r(replaced[k], jf::child(root.path("replaced"), k));
       d.sources.replaced.push_back({r.string("id"), file_index(r, "file"), file_index(r, "by_file"), r.vector3("was")});
     }
   }
-  d.sources.plan = root.optional_string("plan");
-  d.sources.regions = root.optional_string("regions_file");
-  d.sources.prediction = root.optional_string("prediction_file");
+  d.sources.plan = root.nullable_string("plan");
+  d.sources.regions = root.nullable_string("regions_file");
+  d.sources.prediction = root.nullable_string("prediction_file");
   d.options = read_options(root.at("options"));
   d.registration = read_registration(root.at("registration"));
   if (root.has("alignment")) d.alignment = read_alignment(root.at("alignment"));
 
   d.summary = read_summary(root.at("summary"));
-  const Node reasons = root.at("summary").at("outlier_reasons");
-  for (auto it = reasons.value.begin(); it != reasons.value.end(); ++it)
+  const JsonCursor reasons = root.at("summary").at("outlier_reasons");
+  for (auto it = reasons.value().begin(); it != reasons.value().end(); ++it)
     d.registration.outliers[it.key()] = reasons.count(it.key());
   const json& regions = root.array("regions");
   for (std::size_t k = 0; k < regions.size(); ++k) {
-    const Node r(regions[k], jf::child(root.path("regions"), k));
+    const JsonCursor r(regions[k], jf::child(root.path("regions"), k));
     RegionStatistics rs;
     rs.region = r.integer("region");
     rs.deviations = read_statistics(r);
@@ -282,7 +281,7 @@ ComparisonDocument parse_comparison(const std::string& text, const std::string& 
   d.points.reserve(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::string where = jf::child(root.path("points"), k);
-    const Node point(points[k], where);
+    const JsonCursor point(points[k], where);
     d.points.push_back(read_point(point));
     if (point.has("file")) d.points.back().file = file_index(point, "file");
     if (!d.points_by_id.emplace(d.points.back().id, k).second)

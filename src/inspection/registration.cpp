@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "inspection/outlier_detection.hpp"
 #include "inspection/surface_sampling.hpp"
@@ -76,12 +77,7 @@ constexpr int kObservabilityGrid = 24;
 // Rounds of settling the held directions and re-fitting the others.
 constexpr int kSettleRounds = 20;
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
+std::string number(double v) { return general(v, 3); }
 
 // Sideways distance of q from the surface at a boundary foot point [mm].
 double sideways(const Eigen::Vector3d& q, const ClosestPoint& c) {

@@ -6,35 +6,6 @@ namespace furrow::verification_json {
 
 namespace jf = json_fields;
 
-FieldReader::FieldReader(const json& v, std::string w) : value(v), where(std::move(w)) {
-  jf::object(value, where);
-}
-FieldReader FieldReader::at(const std::string& key) const { return {raw(key), path(key)}; }
-const json& FieldReader::raw(const std::string& key) const { return jf::member(value, key, where); }
-std::string FieldReader::path(const std::string& key) const { return jf::child(where, key); }
-double FieldReader::number(const std::string& key) const { return jf::number(raw(key), path(key)); }
-double FieldReader::non_negative(const std::string& key) const {
-  return jf::non_negative_number(raw(key), path(key));
-}
-int FieldReader::integer(const std::string& key) const { return jf::integer(raw(key), path(key)); }
-std::size_t FieldReader::count(const std::string& key) const {
-  const int n = integer(key);
-  if (n < 0) throw InputError(path(key) + ": must not be negative, got " + std::to_string(n));
-  return static_cast<std::size_t>(n);
-}
-bool FieldReader::boolean(const std::string& key) const { return jf::boolean(raw(key), path(key)); }
-std::string FieldReader::string(const std::string& key) const { return jf::string(raw(key), path(key)); }
-std::string FieldReader::optional_string(const std::string& key) const {
-  return is_null(key) ? "" : string(key);
-}
-std::optional<double> FieldReader::optional_number(const std::string& key) const {
-  if (is_null(key)) return std::nullopt;
-  return number(key);
-}
-Eigen::Vector2d FieldReader::vector2(const std::string& key) const { return jf::vector2(raw(key), path(key)); }
-Eigen::Vector3d FieldReader::vector3(const std::string& key) const { return jf::vector3(raw(key), path(key)); }
-const json& FieldReader::array(const std::string& key) const { return jf::array(raw(key), path(key)); }
-
 namespace {
 
 json optional_json(const std::optional<double>& x, const char* what) {
@@ -45,13 +16,13 @@ json box_json(const Eigen::AlignedBox2d& b) {
   return {{"min", jf::vector_json(Eigen::Vector2d(b.min()))}, {"max", jf::vector_json(Eigen::Vector2d(b.max()))}};
 }
 
-Eigen::AlignedBox2d read_box(const FieldReader& n) {
+Eigen::AlignedBox2d read_box(const JsonCursor& n) {
   const Eigen::Vector2d lo = n.vector2("min"), hi = n.vector2("max");
-  if ((hi.array() < lo.array()).any()) throw InputError(n.where + ": max lies below min");
+  if ((hi.array() < lo.array()).any()) throw InputError(n.where() + ": max lies below min");
   return Eigen::AlignedBox2d(lo, hi);
 }
 
-std::size_t point_index(const FieldReader& n, const std::string& key, const json& id,
+std::size_t point_index(const JsonCursor& n, const std::string& key, const json& id,
                         const std::map<std::string, std::size_t>& index_of) {
   const std::string text = jf::string(id, n.path(key));
   const auto it = index_of.find(text);
@@ -59,7 +30,7 @@ std::size_t point_index(const FieldReader& n, const std::string& key, const json
   return it->second;
 }
 
-std::vector<std::size_t> point_indices(const FieldReader& n, const std::string& key,
+std::vector<std::size_t> point_indices(const JsonCursor& n, const std::string& key,
                                        const std::map<std::string, std::size_t>& index_of) {
   std::vector<std::size_t> out;
   const json& ids = n.array(key);
@@ -88,7 +59,7 @@ json statistics_json(const ResidualStatistics& s) {
           {"verdict", to_string(s.verdict)}};
 }
 
-ResidualStatistics read_statistics(const FieldReader& n) {
+ResidualStatistics read_statistics(const JsonCursor& n) {
   ResidualStatistics s;
   s.count = n.count("count");
   s.mean_predicted = n.number("mean_predicted");
@@ -97,7 +68,7 @@ ResidualStatistics read_statistics(const FieldReader& n) {
   s.sigma = n.non_negative("residual_sigma");
   s.rms = n.non_negative("residual_rms");
   s.max_abs = n.non_negative("residual_max_abs");
-  s.correlation = n.optional_number("correlation");
+  s.correlation = n.nullable_number("correlation");
   s.normalised_rms = n.non_negative("normalised_rms");
   s.within_share = n.non_negative("within_share");
   s.verdict = parse_prediction_verdict(n.string("verdict"), n.path("verdict"));
@@ -133,7 +104,7 @@ json options_json(const GougeConfirmationOptions& o) {
           {"overcut_cluster_distance", jf::finite(o.overcut_cluster_distance, "overcut cluster distance")}};
 }
 
-PredictionComparisonOptions read_prediction_options(const FieldReader& n) {
+PredictionComparisonOptions read_prediction_options(const JsonCursor& n) {
   PredictionComparisonOptions o;
   o.probe_sigma = n.non_negative("probe_sigma");
   o.align = n.boolean("align");
@@ -145,7 +116,7 @@ PredictionComparisonOptions read_prediction_options(const FieldReader& n) {
   return o;
 }
 
-GougeConfirmationOptions read_gouge_options(const FieldReader& n) {
+GougeConfirmationOptions read_gouge_options(const JsonCursor& n) {
   GougeConfirmationOptions o;
   o.overcut_sigmas = n.non_negative("overcut_sigmas");
   o.tolerance_fraction = n.non_negative("tolerance_fraction");
@@ -168,7 +139,7 @@ json point_prediction_json(const PointPrediction& p) {
   return j;
 }
 
-PointPrediction read_point_prediction(const FieldReader& n) {
+PointPrediction read_point_prediction(const JsonCursor& n) {
   PointPrediction p;
   const std::string status = n.string("status");
   p.face_predicted = status != "face_not_predicted";
@@ -213,9 +184,9 @@ json prediction_comparison_json(const PredictionComparison& c) {
             {"not_machinable", c.uncompared.not_machinable}}}};
 }
 
-PredictionComparison read_prediction_comparison(const FieldReader& n) {
+PredictionComparison read_prediction_comparison(const JsonCursor& n) {
   PredictionComparison c;
-  const FieldReader a = n.at("alignment");
+  const JsonCursor a = n.at("alignment");
   c.alignment.applied = a.boolean("applied");
   c.alignment.status = a.string("status");
   const std::vector<double> p = jf::numbers(a.raw("parameters"), a.path("parameters"));
@@ -228,10 +199,10 @@ PredictionComparison read_prediction_comparison(const FieldReader& n) {
   c.overall = read_statistics(n.at("overall"));
   const json& regions = n.array("regions");
   for (std::size_t k = 0; k < regions.size(); ++k) {
-    const FieldReader r(regions[k], jf::child(n.path("regions"), k));
+    const JsonCursor r(regions[k], jf::child(n.path("regions"), k));
     c.regions.push_back({r.integer("region"), read_statistics(r)});
   }
-  const FieldReader u = n.at("uncompared");
+  const JsonCursor u = n.at("uncompared");
   c.uncompared.face_not_predicted = u.count("face_not_predicted");
   c.uncompared.not_reached = u.count("not_reached");
   c.uncompared.outside = u.count("outside");
@@ -282,12 +253,12 @@ json unexplained_json(const GougeConfirmation& g, const std::vector<std::string>
   return clusters;
 }
 
-GougeConfirmation read_gouge_confirmation(const FieldReader& root,
+GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
                                           const std::map<std::string, std::size_t>& index_of) {
   GougeConfirmation g;
   const json& sites = root.array("gouge_sites");
   for (std::size_t k = 0; k < sites.size(); ++k) {
-    const FieldReader n(sites[k], jf::child(root.path("gouge_sites"), k));
+    const JsonCursor n(sites[k], jf::child(root.path("gouge_sites"), k));
     GougeSiteCheck s;
     s.id = n.string("id");
     s.source = parse_gouge_site_source(n.string("source"), n.path("source"));
@@ -296,24 +267,24 @@ GougeConfirmation read_gouge_confirmation(const FieldReader& root,
     s.uv_box = read_box(n.at("uv_box"));
     s.search_box = read_box(n.at("search_box"));
     s.centroid = n.vector3("centroid");
-    s.predicted_depth = n.optional_number("predicted_depth");
+    s.predicted_depth = n.nullable_number("predicted_depth");
     s.contacts = n.count("contacts");
     s.status = parse_gouge_site_status(n.string("status"), n.path("status"));
     s.points = point_indices(n, "points", index_of);
     if (!n.is_null("deepest")) s.deepest = point_index(n, "deepest", n.raw("deepest"), index_of);
-    s.measured_depth = n.optional_number("measured_depth");
-    s.uncertainty = n.optional_number("uncertainty");
-    s.threshold = n.optional_number("threshold");
-    s.predicted_error = n.optional_number("predicted_error");
+    s.measured_depth = n.nullable_number("measured_depth");
+    s.uncertainty = n.nullable_number("uncertainty");
+    s.threshold = n.nullable_number("threshold");
+    s.predicted_error = n.nullable_number("predicted_error");
     if (!n.is_null("depth_consistent")) s.depth_consistent = n.boolean("depth_consistent");
     if ((s.status == GougeSiteStatus::not_measured) != s.points.empty() ||
         s.deepest.has_value() == s.points.empty() || s.measured_depth.has_value() == s.points.empty())
-      throw InputError(n.where + ": a site is NOT MEASURED exactly when it has no points, and then has no deepest point or depth");
+      throw InputError(n.where() + ": a site is NOT MEASURED exactly when it has no points, and then has no deepest point or depth");
     g.sites.push_back(std::move(s));
   }
   const json& unexplained = root.array("unexplained");
   for (std::size_t k = 0; k < unexplained.size(); ++k) {
-    const FieldReader n(unexplained[k], jf::child(root.path("unexplained"), k));
+    const JsonCursor n(unexplained[k], jf::child(root.path("unexplained"), k));
     OvercutCluster u;
     u.id = n.string("id");
     u.points = point_indices(n, "points", index_of);

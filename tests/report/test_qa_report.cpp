@@ -335,7 +335,7 @@ TEST_CASE("report.html and report.json show a datum frame's profile beside the b
   a.form_error = 0.0045;
   doc.alignment.datums = {a};
   const std::string html = file_named(make_report(doc, f.part, nullptr, context("2024-01-01T00:00:00Z")), "report.html").bytes;
-  char frame[64];
+  char frame[512];
   std::snprintf(frame, sizeof frame, "%.1f &micro;m in the datum frame (form + location); 12.3 &micro;m best fit (form)",
                 doc.summary.profile * 1000);
   CHECK(html.find(frame) != std::string::npos);

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/numbers.hpp"
 
@@ -9,12 +10,7 @@ namespace furrow {
 
 namespace {
 
-std::string text(double x) {
-  std::ostringstream s;
-  s.precision(12);
-  s << x;
-  return s.str();
-}
+std::string text(double x) { return general(x, 12); }
 
 }  // namespace
 
