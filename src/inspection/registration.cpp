@@ -320,6 +320,22 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   OutlierVerdict numbers;
   const OutlierRule rule{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours,
                          options.neighbour_radius};
+  // The outlier rule on the current fit, into `verdict`; `usable` says which
+  // points it judged (those with a foot point on the part).
+  const auto classify = [&](std::vector<bool>& usable) {
+    std::vector<Eigen::Vector3d> positions(n);
+    std::vector<double> deviation(n);
+    usable.assign(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+      // Neighbours on the surface: at the foot points, not the measured
+      // points - blunders off the same side of a dense scan are closer to
+      // each other than to the surface and would vouch for each other.
+      positions[i] = ws.feet[i].point;
+      deviation[i] = fit.residual(i);
+      usable[i] = ws.geometric[i] == OutlierReason::none;
+    }
+    return classify_deviations(positions, deviation, usable, rule, verdict);
+  };
   std::string solver_message;
   // The points the fit uses: every point with a foot that the outlier rule
   // has not excluded - edges do not take any out.
@@ -373,18 +389,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
       iterate(std::to_string(pass) + " settled");
     }
     if (!options.flag_outliers || !solver_message.empty() || !too_few.empty()) break;
-    std::vector<Eigen::Vector3d> positions(n);
-    std::vector<double> deviation(n);
-    std::vector<bool> usable(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      // Neighbours on the surface: at the foot points, not the measured
-      // points - blunders off the same side of a dense scan are closer to
-      // each other than to the surface and would vouch for each other.
-      positions[i] = ws.feet[i].point;
-      deviation[i] = fit.residual(i);
-      usable[i] = ws.geometric[i] == OutlierReason::none;
-    }
-    numbers = classify_deviations(positions, deviation, usable, rule, verdict);
+    std::vector<bool> usable;
+    numbers = classify(usable);
     std::vector<bool> excluded(n);
     for (std::size_t i = 0; i < n; ++i)
       excluded[i] = usable[i] && verdict[i] != OutlierReason::none;
@@ -399,15 +405,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   // Without outlier flagging every point stays in the fit; the points
   // beyond an edge are still classified, once, by the same rule.
   if (!options.flag_outliers && too_few.empty() && solver_message.empty()) {
-    std::vector<Eigen::Vector3d> positions(n);
-    std::vector<double> deviation(n);
-    std::vector<bool> usable(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      positions[i] = ws.feet[i].point;
-      deviation[i] = fit.residual(i);
-      usable[i] = ws.geometric[i] == OutlierReason::none;
-    }
-    numbers = classify_deviations(positions, deviation, usable, rule, verdict);
+    std::vector<bool> usable;
+    numbers = classify(usable);
   }
   // The weak directions the points do see, released: the data decide them
   // now that every point has settled on the part. Kept only if no point
