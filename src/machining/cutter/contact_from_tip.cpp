@@ -1,5 +1,6 @@
 #include "machining/cutter/contact_from_tip.hpp"
 
+#include "base/scalar_search.hpp"
 #include "geometry/domain_sides.hpp"
 
 #include <Eigen/Dense>
@@ -276,7 +277,8 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
 
   // Edge contacts: along each side, the local maxima (among its samples under
   // the cutter) of how far the side sticks up into the lowered cutter,
-  // refined by golden-section search between the neighbouring samples.
+  // refined by a bracketed search (base/scalar_search.hpp) between the
+  // neighbouring samples.
   // Where an edge holds the cutter: under it, except at rho = R within
   // rounding of the distance, where the vertical side (or, for a flat end
   // mill, the rim tangent to the edge) only grazes it (the header). An edge
@@ -305,19 +307,13 @@ TipContactResult TipContactFinder::find(const Eigen::Vector3d& tip) const {
       const double left = k > 0 ? value[k - 1] : -std::numeric_limits<double>::infinity();
       const double right = k + 1 < smp.size() ? value[k + 1] : -std::numeric_limits<double>::infinity();
       if (!std::isfinite(value[k]) || value[k] < left || value[k] <= right) continue;
-      double a = smp[k > 0 ? k - 1 : k].t, b = smp[k + 1 < smp.size() ? k + 1 : k].t;
-      const double stop = options_.edge_tolerance * std::abs(smp.back().t - smp.front().t);
-      const double g = 0.5 * (std::sqrt(5.0) - 1);
-      double c = b - g * (b - a), d = a + g * (b - a), fc = rise(c), fd = rise(d);
-      for (int it = 0; it < 200 && std::abs(b - a) > stop; ++it) {
-        if (fc >= fd) {
-          b = d, d = c, fd = fc, c = b - g * (b - a), fc = rise(c);
-        } else {
-          a = c, c = d, fc = fd, d = a + g * (b - a), fd = rise(d);
-        }
-      }
+      const double a = smp[k > 0 ? k - 1 : k].t, b = smp[k + 1 < smp.size() ? k + 1 : k].t;
+      ScalarSearchOptions search;
+      search.tolerance = options_.edge_tolerance * std::abs(smp.back().t - smp.front().t);
+      const ScalarSearchResult peak = minimize_unimodal([&](double t) { return -rise(t); }, std::min(a, b),
+                                                        std::max(a, b), search);
       // The sample itself may be the maximum (an end of the side).
-      double t = fc >= fd ? c : d, best = std::max(fc, fd);
+      double t = peak.x, best = -peak.value;
       if (value[k] > best) t = smp[k].t, best = value[k];
       const Eigen::Vector2d uv = side_uv(face.domain(), edge.side, t);
       if (!face.contains(uv.x(), uv.y())) continue;

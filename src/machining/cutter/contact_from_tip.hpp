@@ -15,8 +15,8 @@
 //   edge         the cutter sits on a side of a face's parameter rectangle
 //                (the rim of a pocket, the far wall of a narrow trough): the
 //                highest point of the side curve relative to the cutter's
-//                lower envelope, found by golden-section search between
-//                side samples.
+//                lower envelope, found by a bracketed 1D search
+//                (base/scalar_search.hpp) between side samples.
 // Each contact implies a tip height `tip_z` (the cutter lowered at that xy
 // until it touches there). Lowered from above, the cutter rests on the
 // highest of them, so contacts are sorted by tip_z, highest first, and
@@ -82,8 +82,8 @@ struct TipContactOptions {
   // Samples per face side for edge contacts: an edge is seen where one of
   // its samples lies under the cutter (so keep the spacing below the radius).
   int edge_samples = 129;
-  // Golden-section search on a side stops below this fraction of its
-  // parameter range (or after 200 steps).
+  // The search along a side stops below this fraction of its parameter
+  // range (or after scalar_search's 200 iterations).
   double edge_tolerance = 1e-13;
   CutterLocationOptions location;
   DropCutterOptions bound;  // the bounded search run after the Newton starts
