@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "geometry/bspline_basis.hpp"
+#include "geometry/rational_derivatives.hpp"
 #include "base/error.hpp"
 #include "base/limits.hpp"
 
@@ -108,38 +109,6 @@ Eigen::AlignedBox3d NurbsSurface::control_box() const {
 
 Eigen::Vector3d NurbsSurface::point(double u, double v) const { return evaluate(u, v, 0).S; }
 
-namespace {
-
-// Homogeneous sums A_ab = d^(a+b) A / du^a dv^b for a + b <= Order, with the
-// order fixed at compile time so the inner loops carry no branches.
-template <int Order>
-void homogeneous_sums(const Eigen::Vector4d* net, int stride, int p, int q,
-                      const double Nu[3][kMaxDegree + 1], const double Nv[3][kMaxDegree + 1],
-                      Eigen::Vector4d A[6]) {
-  for (int k = 0; k < 6; ++k) A[k].setZero();
-  for (int i = 0; i <= p; ++i) {
-    const Eigen::Vector4d* row = net + i * stride;
-    Eigen::Vector4d T0 = Eigen::Vector4d::Zero(), T1 = T0, T2 = T0;
-    for (int j = 0; j <= q; ++j) {
-      T0 += Nv[0][j] * row[j];
-      if constexpr (Order >= 1) T1 += Nv[1][j] * row[j];
-      if constexpr (Order >= 2) T2 += Nv[2][j] * row[j];
-    }
-    A[0] += Nu[0][i] * T0;
-    if constexpr (Order >= 1) {
-      A[1] += Nu[1][i] * T0;  // u
-      A[2] += Nu[0][i] * T1;  // v
-    }
-    if constexpr (Order >= 2) {
-      A[3] += Nu[2][i] * T0;  // uu
-      A[4] += Nu[1][i] * T1;  // uv
-      A[5] += Nu[0][i] * T2;  // vv
-    }
-  }
-}
-
-}  // namespace
-
 SurfaceDerivatives NurbsSurface::evaluate(double u, double v, int order) const {
   order = std::clamp(order, 0, 2);
   const int p = degree_u_, q = degree_v_;
@@ -152,22 +121,8 @@ SurfaceDerivatives NurbsSurface::evaluate(double u, double v, int order) const {
 
   Eigen::Vector4d A[6];
   const Eigen::Vector4d* net = &homogeneous_[index(su - p, sv - q)];
-  if (order == 0) homogeneous_sums<0>(net, num_v_, p, q, Nu, Nv, A);
-  if (order == 1) homogeneous_sums<1>(net, num_v_, p, q, Nu, Nv, A);
-  if (order == 2) homogeneous_sums<2>(net, num_v_, p, q, Nu, Nv, A);
-
-  SurfaceDerivatives d;
-  const double inv_w = 1.0 / A[0].w();
-  d.S = A[0].head<3>() * inv_w;
-  if (order < 1) return d;
-  // Quotient rule on A = w S, differentiated term by term (P&T eq. 4.20).
-  d.Su = (A[1].head<3>() - A[1].w() * d.S) * inv_w;
-  d.Sv = (A[2].head<3>() - A[2].w() * d.S) * inv_w;
-  if (order < 2) return d;
-  d.Suu = (A[3].head<3>() - 2.0 * A[1].w() * d.Su - A[3].w() * d.S) * inv_w;
-  d.Suv = (A[4].head<3>() - A[1].w() * d.Sv - A[2].w() * d.Su - A[4].w() * d.S) * inv_w;
-  d.Svv = (A[5].head<3>() - 2.0 * A[2].w() * d.Sv - A[5].w() * d.S) * inv_w;
-  return d;
+  homogeneous_sums(order, net, num_v_, p, q, Nu, Nv, A);
+  return quotient_rule(A, order);
 }
 
 }  // namespace furrow
