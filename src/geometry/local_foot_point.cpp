@@ -36,6 +36,18 @@ std::pair<double, Vec<N>> lowest_eigen(const Mat<N>& m) {
   }
 }
 
+// The smallest eigenvalue alone, in closed form: the common case (a positive
+// definite Hessian) needs nothing else.
+template <int N>
+double lowest_eigenvalue(const Mat<N>& m) {
+  if constexpr (N == 1) {
+    return m(0, 0);
+  } else {
+    const double half_trace = 0.5 * (m(0, 0) + m(1, 1)), half_gap = 0.5 * (m(0, 0) - m(1, 1));
+    return half_trace - std::sqrt(half_gap * half_gap + m(0, 1) * m(0, 1));
+  }
+}
+
 // Newton direction on the free parameters (zero on the held ones, which are
 // masked out with a unit row and column). Uses the full Hessian where it is
 // positive definite, the shifted Hessian where it is indefinite and
@@ -59,8 +71,8 @@ Vec<N> descent_direction(Mat<N> H, Mat<N> JtJ, Vec<N> g, const std::array<bool, 
     H(i, i) = JtJ(i, i) = scale;
     g(i) = 0;
   }
+  if (lowest_eigenvalue<N>(H) > 1e-10 * scale) return H.inverse() * (-g);  // closed form for N <= 2
   const auto [lambda_min, lowest] = lowest_eigen<N>(H);
-  if (lambda_min > 1e-10 * scale) return H.inverse() * (-g);  // closed form for N <= 2
   // Not positive definite (q beyond a centre of curvature): shift the
   // Hessian until its lowest eigenvalue is 1e-3 of the scale (Hessian
   // modification, Nocedal & Wright 3.4). Gauss-Newton would ignore the
@@ -200,9 +212,13 @@ Vec<N> projected_newton(const Evaluate& evaluate, const PointAt& point_at, const
 
 }  // namespace
 
-LocalFoot foot_point_in_box(const NurbsSurface& surface, const Eigen::Vector3d& q,
-                            const Eigen::Vector2d& seed, const Eigen::Vector2d& lo,
-                            const Eigen::Vector2d& hi, const ClosestPointOptions& options) {
+namespace {
+
+// The box solve over anything with NurbsSurface's evaluate(u, v, order).
+template <class Surface>
+LocalFoot box_solve(const Surface& surface, const Eigen::Vector3d& q, const Eigen::Vector2d& seed,
+                    const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                    const ClosestPointOptions& options) {
   auto evaluate = [&](const Vec<2>& x) {
     const SurfaceDerivatives d = surface.evaluate(x(0), x(1), 2);
     Jet<2> jet;
@@ -215,6 +231,20 @@ LocalFoot foot_point_in_box(const NurbsSurface& surface, const Eigen::Vector3d& 
   LocalFoot out;
   out.uv = projected_newton<2>(evaluate, point_at, q, seed, lo, hi, options, out);
   return out;
+}
+
+}  // namespace
+
+LocalFoot foot_point_in_box(const NurbsSurface& surface, const Eigen::Vector3d& q,
+                            const Eigen::Vector2d& seed, const Eigen::Vector2d& lo,
+                            const Eigen::Vector2d& hi, const ClosestPointOptions& options) {
+  return box_solve(surface, q, seed, lo, hi, options);
+}
+
+LocalFoot foot_point_in_box(const BezierPatch& patch, const Eigen::Vector3d& q,
+                            const Eigen::Vector2d& seed, const Eigen::Vector2d& lo,
+                            const Eigen::Vector2d& hi, const ClosestPointOptions& options) {
+  return box_solve(patch, q, seed, lo, hi, options);
 }
 
 LocalFoot foot_point_on_segment(const NurbsSurface& surface, const Eigen::Vector3d& q,

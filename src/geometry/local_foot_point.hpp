@@ -19,6 +19,7 @@
 // Units: millimetres; parameters in the surface's own (u,v).
 #include <Eigen/Core>
 
+#include "geometry/bezier_patch.hpp"
 #include "geometry/closest_point.hpp"
 #include "geometry/nurbs_surface.hpp"
 
@@ -39,6 +40,12 @@ struct LocalFoot {
 // `seed` (clamped into the box). Uses max_newton_iterations,
 // max_line_search_halvings, step_tolerance and stall_tolerance of `options`.
 LocalFoot foot_point_in_box(const NurbsSurface& surface, const Eigen::Vector3d& q,
+                            const Eigen::Vector2d& seed, const Eigen::Vector2d& lo,
+                            const Eigen::Vector2d& hi, const ClosestPointOptions& options);
+
+// The same over a Bezier piece (the box must lie within the patch's box):
+// the numbers of the B-spline surface it was cut from, evaluated faster.
+LocalFoot foot_point_in_box(const BezierPatch& patch, const Eigen::Vector3d& q,
                             const Eigen::Vector2d& seed, const Eigen::Vector2d& lo,
                             const Eigen::Vector2d& hi, const ClosestPointOptions& options);
 
