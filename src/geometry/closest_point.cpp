@@ -95,8 +95,10 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
   c.face = cell.face;
   c.cell_lo = cell.lo;
   c.cell_hi = cell.hi;
+  const BezierPatch* patch = grid.patch(static_cast<std::size_t>(&cell - grid.cells().data()));
   const LocalFoot in_box_foot =
-      foot_point_in_box(face.surface(), q, start, cell.lo, cell.hi, options);
+      patch ? foot_point_in_box(*patch, q, start, cell.lo, cell.hi, options)
+            : foot_point_in_box(face.surface(), q, start, cell.lo, cell.hi, options);
   if (!cell.cut_by_trim || face.trim().contains(in_box_foot.uv)) {
     c.squared_distance = in_box_foot.squared_distance;
     c.uv = in_box_foot.uv;
@@ -170,6 +172,15 @@ ClosestPoint ClosestPointFinder::project(const Eigen::Vector3d& q, const Closest
   return search(q, &hint);
 }
 
+std::vector<ClosestPoint> ClosestPointFinder::project_in_order(
+    const std::vector<Eigen::Vector3d>& points) const {
+  std::vector<ClosestPoint> feet;
+  feet.reserve(points.size());
+  for (const Eigen::Vector3d& q : points)
+    feet.push_back(feet.empty() ? search(q, nullptr) : search(q, &feet.back()));
+  return feet;
+}
+
 std::optional<ClosestPoint> ClosestPointFinder::project_to_other_faces(const Eigen::Vector3d& q,
                                                                       std::size_t face) const {
   const ClosestPoint foot = search(q, nullptr, face);
@@ -194,24 +205,35 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   }
 
   // Depth-first branch and bound over the box tree, nearer child first.
-  // Squared distances to boxes: no square roots on the way down.
-  std::int32_t stack[128];
+  // Squared distances to boxes, computed once when a node is pushed: no
+  // square roots on the way down.
+  struct Pending {
+    std::int32_t node;
+    double squared_distance;
+  };
+  Pending stack[128];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, nodes[0].box.squaredExteriorDistance(q)};
   while (top > 0) {
-    const SeedNode& node = nodes[stack[--top]];
-    if (node.box.squaredExteriorDistance(q) >= best.squared_distance) continue;
+    const Pending pending = stack[--top];
+    if (pending.squared_distance >= best.squared_distance) continue;
+    const SeedNode& node = nodes[pending.node];
     if (node.left < 0) {
-      // Cells of the leaf nearest first (at most four).
+      // Cells of the leaf nearest first (at most four); cells that cannot
+      // hold an orthogonal foot are left out at once.
       std::pair<double, std::uint32_t> order[4];
-      const std::uint32_t n = node.count;
-      for (std::uint32_t k = 0; k < n; ++k)
-        order[k] = {cells[node.first + k].lower_bound(q), node.first + k};
-      std::sort(order, order + n);
+      std::uint32_t n = 0;
+      for (std::uint32_t k = 0; k < node.count; ++k) {
+        const std::uint32_t index = node.first + k;
+        if (static_cast<int>(index) == hint_cell || cells[index].face == excluded) continue;
+        const double bound = cells[index].screen(q);
+        if (!(bound * bound < best.squared_distance)) continue;
+        std::uint32_t at = n++;  // insertion sort: at most four entries
+        for (; at > 0 && order[at - 1].first > bound; --at) order[at] = order[at - 1];
+        order[at] = {bound, index};
+      }
       for (std::uint32_t k = 0; k < n; ++k) {
-        if (static_cast<int>(order[k].second) == hint_cell) continue;
-        if (cells[order[k].second].face == excluded) continue;
-        if (order[k].first >= std::sqrt(best.squared_distance)) break;
+        if (order[k].first * order[k].first >= best.squared_distance) break;
         solve_cell(*part_, grid, cells[order[k].second], q, nullptr, options_, best);
         ++examined;
       }
@@ -220,10 +242,10 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     const double bl = nodes[node.left].box.squaredExteriorDistance(q);
     const double br = nodes[node.right].box.squaredExteriorDistance(q);
     const bool left_first = bl <= br;
-    const std::int32_t near = left_first ? node.left : node.right;
-    const std::int32_t far = left_first ? node.right : node.left;
-    if (std::max(bl, br) < best.squared_distance) stack[top++] = far;
-    if (std::min(bl, br) < best.squared_distance) stack[top++] = near;
+    if (std::max(bl, br) < best.squared_distance)
+      stack[top++] = left_first ? Pending{node.right, br} : Pending{node.left, bl};
+    if (std::min(bl, br) < best.squared_distance)
+      stack[top++] = left_first ? Pending{node.left, bl} : Pending{node.right, br};
   }
 
   if (!std::isfinite(best.squared_distance)) {  // every cell was excluded

@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "geometry/part.hpp"
 
@@ -106,6 +107,13 @@ class ClosestPointFinder {
   // cell is solved first, which tightens the bound at once. The result is
   // still the global minimum; a bad hint only costs time.
   ClosestPoint project(const Eigen::Vector3d& q, const ClosestPoint& hint) const;
+
+  // Feet of `points` in their order, each search hinted by the foot of the
+  // point before: measured points usually come in scan or probe-path order,
+  // so the previous foot is a near-perfect first bound. Every answer is
+  // still the global minimum (equal to project(q) within the solver's
+  // tolerance); a jump between distant points only costs one cell solve.
+  std::vector<ClosestPoint> project_in_order(const std::vector<Eigen::Vector3d>& points) const;
 
   // Global closest point over every face except `face`: what touches a
   // point of that face from elsewhere (a neighbouring face across an edge).

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -62,11 +64,40 @@ Eigen::Matrix3d tangent_frame(const SurfaceDerivatives& d) {
 
 }  // namespace
 
+namespace {
+
+// The cone test of SeedCell::may_hold_foot on q in the box's frame.
+bool in_cone_reach(const Eigen::Vector3d& local, const Eigen::Vector3d& half_extent, double cone_tan) {
+  if (!(cone_tan >= 0)) return true;
+  // A foot p in the box has q - p within the cone's angle alpha of +-axis
+  // (the box's third axis), so q's sideways distance from the box is at
+  // most tan(alpha) times the largest height of q over a point of the box.
+  const double dx = std::max(std::abs(local.x()) - half_extent.x(), 0.0);
+  const double dy = std::max(std::abs(local.y()) - half_extent.y(), 0.0);
+  const double height = std::abs(local.z()) + half_extent.z();
+  const double sideways = std::sqrt(dx * dx + dy * dy);
+  return sideways <= cone_tan * height * (1 + 1e-12) + 1e-12 * (1 + height);
+}
+
+}  // namespace
+
+bool SeedCell::may_hold_foot(const Eigen::Vector3d& q) const {
+  return in_cone_reach(axes * (q - centre), half_extent, cone_tan);
+}
+
 double SeedCell::lower_bound(const Eigen::Vector3d& q) const {
   const Eigen::Vector3d d = q - centre;
   const double sphere = d.norm() - radius;
   const Eigen::Vector3d excess = ((axes * d).cwiseAbs() - half_extent).cwiseMax(0.0);
   return std::max(sphere, excess.norm());
+}
+
+double SeedCell::screen(const Eigen::Vector3d& q) const {
+  const Eigen::Vector3d d = q - centre;
+  const Eigen::Vector3d local = axes * d;
+  if (!in_cone_reach(local, half_extent, cone_tan)) return std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d excess = (local.cwiseAbs() - half_extent).cwiseMax(0.0);
+  return std::max(d.norm() - radius, excess.norm());
 }
 
 std::vector<double> seed_breaks(const std::vector<double>& knots, double lo, double hi,
@@ -111,6 +142,9 @@ SeedGrid::SeedGrid(const Part& part, const ClosestPointOptions& options) {
   for (FaceCells& fc : faces_)
     for (std::int32_t& i : fc.index)
       if (i >= 0) i = new_index[i];
+  patches_.reserve(cells_.size());
+  for (const SeedCell& cell : cells_)
+    patches_.push_back(BezierPatch::within_span(part.faces[cell.face].surface(), cell.lo, cell.hi));
 }
 
 void SeedGrid::add_face(const Part& part, std::size_t face_index,
@@ -151,8 +185,10 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       }
 
       // Sub-samples: bounding sphere and the five seed samples.
-      Eigen::Vector3d pts[kSub + 1][kSub + 1];
+      Eigen::Vector3d pts[kSub + 1][kSub + 1], normals[kSub + 1][kSub + 1];
       double max_uu = 0, max_uv = 0, max_vv = 0;
+      double max_nu = 0, max_nv = 0;  // bounds on |dn/du|, |dn/dv|
+      bool regular = true;
       Eigen::AlignedBox3d box;
       const Eigen::Vector2d h = (cell.hi - cell.lo) / kSub;
       for (int a = 0; a <= kSub; ++a)
@@ -164,6 +200,14 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
           max_uu = std::max(max_uu, d.Suu.norm());
           max_uv = std::max(max_uv, d.Suv.norm());
           max_vv = std::max(max_vv, d.Svv.norm());
+          const Eigen::Vector3d n = d.Su.cross(d.Sv);
+          const double area = n.norm();
+          regular = regular && area > kDegenerateRelativeTolerance * d.Su.norm() * d.Sv.norm();
+          normals[a][b] = regular ? Eigen::Vector3d(n / area) : Eigen::Vector3d::Zero();
+          if (regular) {
+            max_nu = std::max(max_nu, (d.Suu.cross(d.Sv).norm() + d.Su.cross(d.Suv).norm()) / area);
+            max_nv = std::max(max_nv, (d.Suv.cross(d.Sv).norm() + d.Su.cross(d.Svv).norm()) / area);
+          }
         }
       cell.centre = box.center();
       const SurfaceDerivatives middle = s.evaluate(mid.x(), mid.y(), 1);
@@ -182,6 +226,16 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       const double slack = bulge + 1e-12 * (1 + cell.centre.norm());
       cell.radius = r + slack;
       cell.half_extent = extent.array() + slack;
+      const bool on_domain_edge = i == 0 || j == 0 || i == nu - 1 || j == nv - 1;
+      if (regular && !on_domain_edge && !cell.cut_by_trim) {
+        // The box's third axis is the middle normal: the cone's axis.
+        const Eigen::Vector3d axis = cell.axes.row(2).transpose();
+        double widest = 0;
+        for (auto& row : normals)
+          for (auto& n : row) widest = std::max(widest, std::acos(std::clamp(n.dot(axis), -1.0, 1.0)));
+        const double angle = widest + 2.0 * (h.x() * max_nu + h.y() * max_nv);
+        if (std::isfinite(angle) && angle < radians(80.0)) cell.cone_tan = std::tan(angle);
+      }
       const int corner[5][2] = {{0, 0}, {kSub, 0}, {0, kSub}, {kSub, kSub}, {kSub / 2, kSub / 2}};
       cell.sample_kept = 0;
       for (int k = 0; k < 5; ++k) {

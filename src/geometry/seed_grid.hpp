@@ -15,6 +15,12 @@
 // a lower bound on the distance to its surface; that is what lets the search
 // skip cells safely.
 //
+// Cones of normals (SeedCell::may_hold_foot) are bounded the same way: the
+// angle between the middle normal and the normals at the sub-samples, plus
+// the most the normal can turn between sub-samples, |dn/du| <= (|Suu x Sv| +
+// |Su x Suv|) / |Su x Sv| (and likewise along v) with the sampled maxima
+// doubled.
+//
 // Trims: cells wholly trimmed away are dropped; cells cut by a trim loop keep
 // the loop segments clipped to their box, so the search can minimise along
 // the trim boundary there.
@@ -22,6 +28,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <optional>
+
+#include "geometry/bezier_patch.hpp"
 #include "geometry/closest_point.hpp"
 #include "geometry/part.hpp"
 
@@ -46,8 +55,25 @@ struct SeedCell {
   bool cut_by_trim = false;
   std::uint32_t first_segment = 0, segment_count = 0;  // into SeedGrid::trim_segments()
 
+  // Cone of normals about the oriented box's third axis (the middle
+  // normal): every unit normal of the cell makes an angle of at most
+  // atan(cone_tan) with +-that axis. Negative when the cell is never pruned
+  // by it: it touches the face's domain edge or a trim loop (feet there need
+  // not be orthogonal), has a degenerate normal, or its normals turn by 80
+  // degrees or more.
+  double cone_tan = -1;
+
   // Lower bound on the distance from q to any surface point of the cell.
   double lower_bound(const Eigen::Vector3d& q) const;
+  // False when no point of the cell can be an orthogonal foot of q: q - S
+  // would have to lie along a normal, but q is too far sideways of the
+  // oriented box for any direction in the double cone of normals. A global minimum
+  // inside the face's domain is such a foot (the distance is stationary
+  // there), so a cell for which this is false cannot hold it.
+  bool may_hold_foot(const Eigen::Vector3d& q) const;
+  // Both at once (they share q in the box's frame): lower_bound(q), or
+  // infinity when the cell cannot hold an orthogonal foot of q.
+  double screen(const Eigen::Vector3d& q) const;
 };
 
 // A trim loop segment clipped to one cell, in (u,v).
@@ -70,6 +96,10 @@ class SeedGrid {
   const std::vector<SeedCell>& cells() const { return cells_; }
   const std::vector<SeedNode>& nodes() const { return nodes_; }  // nodes_[0] is the root
   const std::vector<TrimSegment>& trim_segments() const { return segments_; }
+  // The surface over cell k in Bezier form (one polynomial, cheap to
+  // evaluate), or null when the cell crosses a knot (faces with more spans
+  // than max_cells are divided uniformly) and must be evaluated as a NURBS.
+  const BezierPatch* patch(std::size_t k) const { return patches_[k] ? &*patches_[k] : nullptr; }
 
   // Index of the cell of `face` whose box contains (u,v) (clamped to the
   // domain), or -1 when that cell was trimmed away.
@@ -88,6 +118,7 @@ class SeedGrid {
   std::vector<SeedNode> nodes_;
   std::vector<TrimSegment> segments_;
   std::vector<FaceCells> faces_;
+  std::vector<std::optional<BezierPatch>> patches_;  // parallel to cells_
 };
 
 // Cell boundaries along one direction: every knot span cut into equal parts

@@ -255,6 +255,25 @@ TEST_CASE("concave cylinder: points on and near the axis get the true minimum") 
   }
 }
 
+TEST_CASE("full cylinder: points at the seam, across it and near the axis agree with brute force") {
+  // One closed NURBS face: its seam (angle 0 = 2 pi) is a domain edge whose
+  // cells are never pruned, while the cells next to it are.
+  const double R = 25;
+  const Part part = single_face(make_cylinder(R, 40, 0, 2 * M_PI));
+  const ClosestPointFinder finder(part);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> angle(-0.2, 0.2), along(-5, 45), radius(0.02, 60);
+  for (int k = 0; k < 30; ++k) {
+    const double a = k < 3 ? 0.0 : angle(rng), rho = k == 0 ? 1e-7 : radius(rng);
+    const Eigen::Vector3d q(rho * std::cos(a), along(rng), rho * std::sin(a));
+    const ClosestPoint c = finder.project(q);
+    const double y = std::clamp(q.y(), 0.0, 40.0);
+    // The nearest point of the closed tube (its ends are open circles).
+    CHECK(c.distance == doctest::Approx(std::hypot(std::abs(rho - R), q.y() - y)).epsilon(1e-10));
+    check_against_oracle(finder, q);
+  }
+}
+
 TEST_CASE("mould: random points near and far agree with brute force") {
   const Part part = mould();
   const ClosestPointFinder finder(part);
