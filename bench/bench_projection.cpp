@@ -4,10 +4,14 @@
 // from our control net) and the same points (target: >= 10x faster,
 // accuracy no worse). Prints figures; it does not pass or fail.
 //
-// Three point sets: "near" = typical CMM points (a surface point moved up to
-// +-3 mm along its normal), "far" = the same up to +-20 mm, and "box" = uniform in the part's box grown by
-// 10 mm (far points, points beyond the edges, points past the dimple's centre
-// of curvature). Accuracy columns:
+// Four point sets: "near" = typical CMM points (a surface point moved up to
+// +-3 mm along its normal) in random order, "far" = the same up to +-20 mm,
+// "box" = uniform in the part's box grown by 10 mm (far points, points beyond
+// the edges, points past the dimple's centre of curvature), and "scan" = near
+// points in the order a CMM measures them (lines of points 1 mm apart). The
+// "in order" row projects each set as one sequence, each search hinted by
+// the previous foot (ClosestPointFinder::project_in_order): on random order
+// it shows what a useless hint costs, on the scan what a real one saves. Accuracy columns:
 //   tangential  max |component of (q - foot) along the surface| at interior
 //               feet [mm] (0 for an exact foot point);
 //   vs oracle   max (distance - oracle distance) on a 400-point subset, the
@@ -197,14 +201,22 @@ int main() {
   std::uniform_real_distribution<double> unit(0, 1), offset(-3, 3);
   const Eigen::AlignedBox3d box = part.control_box();
   for (const char* set : {"near (+-3 mm along the normal)", "far (+-20 mm along the normal)",
-                          "box (part box grown by 10 mm)"}) {
+                          "box (part box grown by 10 mm)",
+                          "scan (+-3 mm, in measurement order: 100 lines of 200 points)"}) {
     const bool near = set[0] != 'b';
-    const double reach = set[0] == 'n' ? 1.0 : 20.0 / 3.0;  // scales offset (+-3 mm)
+    const bool scan = set[0] == 's';
+    const double reach = set[0] == 'f' ? 20.0 / 3.0 : 1.0;  // scales offset (+-3 mm)
     std::vector<Eigen::Vector3d> pts(count);
     std::vector<Eigen::Vector2d> seeds(count);  // for the seeded rows (see the header comment)
     for (std::size_t k = 0; k < count; ++k) {
       Eigen::Vector3d& q = pts[k];
-      if (near) {
+      if (scan) {  // lines along u, the offset drifting smoothly as a real scan's does
+        const std::size_t line = k / 200, along = k % 200;
+        const double u = (along + 0.5) / 200, v = (line + 0.5) / 100;
+        const DifferentialGeometry g = face.geometry(u, v);
+        q = g.point + 3.0 * std::sin(0.05 * static_cast<double>(along) + 0.7 * line) * g.normal;
+        seeds[k] = Eigen::Vector2d(u, v);
+      } else if (near) {
         const double u = unit(rng), v = unit(rng);
         const DifferentialGeometry g = face.geometry(u, v);
         q = g.point + reach * offset(rng) * g.normal;
@@ -252,6 +264,11 @@ int main() {
         seeded[k] = {c.converged, c.distance, c.uv};
       }
     });
+    std::vector<Foot> in_order(count);
+    const double t_in_order = best_seconds(3, [&] {
+      const std::vector<ClosestPoint> feet = finder.project_in_order(pts);
+      for (std::size_t k = 0; k < count; ++k) in_order[k] = {feet[k].converged, feet[k].distance, feet[k].uv};
+    });
     double t_ours_mt = best_seconds(3, [&] {
 #pragma omp parallel for schedule(dynamic, 256) num_threads(2)
       for (std::size_t k = 0; k < count; ++k) finder.project(pts[k]);
@@ -295,6 +312,8 @@ int main() {
     std::printf("%s\n", set);
     report("furrow ClosestPointFinder", t_ours, count, ours, tree_min, face, pts, oracle);
     report("furrow, seeded (global)", t_seeded, count, seeded, tree_min, face, pts, oracle);
+    report("furrow, in order (previous foot hints)", t_in_order, count, in_order, tree_min, face,
+           pts, oracle);
     report("OCCT ProjectPointOnSurf (Grad)", t_grad, count, grad, ours, face, pts, oracle);
     report("OCCT ProjectPointOnSurf (Tree)", t_tree, count, tree, ours, face, pts, oracle);
     report("OCCT ProjectPointOnSurf (Tree, MIN)", t_tree_min, count, tree_min, ours, face, pts,
