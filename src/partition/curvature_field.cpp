@@ -48,9 +48,6 @@ CurvatureField compute_curvature_field(const Face& face, int nu, int nv) {
           continue;
         }
         s.status = SampleStatus::valid;
-        s.normal = g.normal;
-        s.d1 = g.d1;
-        s.d2 = g.d2;
         s.K = g.K;
         s.H = g.H;
         s.k1 = g.k1;
