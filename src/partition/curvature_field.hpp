@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
+#include "partition/large_block_allocator.hpp"
 #include "partition/classification.hpp"
 
 namespace furrow {
@@ -35,7 +36,9 @@ struct CurvatureSample {
 struct CurvatureField {
   int nu = 0, nv = 0;
   ParameterDomain domain;
-  std::vector<CurvatureSample> samples;  // index i * nv + j (i along u)
+  // index i * nv + j (i along u); huge-page backed when large
+  // (large_block_allocator.hpp).
+  std::vector<CurvatureSample, LargeBlockAllocator<CurvatureSample>> samples;
 
   double du() const { return domain.width_u() / nu; }
   double dv() const { return domain.width_v() / nv; }
