@@ -1,6 +1,6 @@
 // Full curvature partition (field + classes + components + merging +
 // statistics + borders) of examples/parts/mould.json at 1000 x 1000 cells
-// (target < 1 s on the 2-core machine). Prints the total and the
+// (target < 0.3 s on the 2-core machine). Prints the total and the
 // split between curvature evaluation and region work, best of 5 because the
 // machine is shared; writing regions.json is timed separately (not part of
 // the target). Prints figures; it does not pass or fail.

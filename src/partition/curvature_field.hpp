@@ -11,17 +11,19 @@
 #include <vector>
 
 #include "geometry/part.hpp"
+#include "partition/large_block_allocator.hpp"
 #include "partition/classification.hpp"
 
 namespace furrow {
 
 enum class SampleStatus : unsigned char { valid = 0, trimmed = 1, degenerate = 2 };
 
+// Only what classification, merging, statistics and borders read: a field
+// has millions of samples, and their size is most of the field's cost (the
+// memory is written once and read by every later pass). Normals and principal
+// directions are not kept; Face::geometry gives them at any (u, v).
 struct CurvatureSample {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d d1 = Eigen::Vector3d::UnitX();  // principal direction of k1
-  Eigen::Vector3d d2 = Eigen::Vector3d::UnitY();
   double K = 0, H = 0, k1 = 0, k2 = 0;
   double area = 0;  // mm^2 of the cell (0 unless valid)
   // Side lengths of the cell on the surface [mm]: |Su| du and |Sv| dv at the
@@ -34,7 +36,9 @@ struct CurvatureSample {
 struct CurvatureField {
   int nu = 0, nv = 0;
   ParameterDomain domain;
-  std::vector<CurvatureSample> samples;  // index i * nv + j (i along u)
+  // index i * nv + j (i along u); huge-page backed when large
+  // (large_block_allocator.hpp).
+  std::vector<CurvatureSample, LargeBlockAllocator<CurvatureSample>> samples;
 
   double du() const { return domain.width_u() / nu; }
   double dv() const { return domain.width_v() / nv; }

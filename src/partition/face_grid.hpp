@@ -11,7 +11,7 @@
 //
 // Limits are explicit: at least kMinCellsPerDirection cells per direction
 // (a narrow fillet still gets a usable grid), at most kMaxCellsPerDirection
-// and kMaxCellsPerFace (memory: a cell of the field takes about 160 bytes).
+// and kMaxCellsPerFace (memory: a cell of the field takes about 90 bytes).
 // A request beyond them is an InputError naming the face, never a silent clamp.
 #include <vector>
 
