@@ -16,6 +16,8 @@
 #include "inspection/registration.hpp"
 #include "inspection/surface_fit.hpp"
 
+// Ceres brings glog, whose CHECK (abort on failure) replaces doctest's:
+// the checks below are spelled DOCTEST_CHECK.
 using namespace furrow;
 
 namespace {
@@ -116,14 +118,14 @@ TEST_CASE("surface fit: its array of residual blocks solves like one AutoDiffCos
     ceres::Solve(o, &problem, &summary);
     REQUIRE(summary.IsSolutionUsable());
   }
-  CHECK(iterations > 0);
-  CHECK(x.norm() > 1e-3);  // the fit really moved
-  for (int k = 0; k < 6; ++k) CHECK(std::abs(fit.parameters()(k) - x(k)) <= 1e-12 * (1 + std::abs(x(k))));
+  DOCTEST_CHECK(iterations > 0);
+  DOCTEST_CHECK(x.norm() > 1e-3);  // the fit really moved
+  for (int k = 0; k < 6; ++k) DOCTEST_CHECK(std::abs(fit.parameters()(k) - x(k)) <= 1e-12 * (1 + std::abs(x(k))));
   for (std::size_t i = 0; i < n; i += 97) {
     double r = 0;
     const double* params[1] = {x.data()};
     ceres::AutoDiffCostFunction<Reference, 1, 6>(new Reference(reference[i])).Evaluate(params, &r, nullptr);
-    if (reference[i].active) CHECK(std::abs(fit.residual(i) - r) <= 1e-12);
+    if (reference[i].active) DOCTEST_CHECK(std::abs(fit.residual(i) - r) <= 1e-12);
   }
 
   // Covariance: ceres::Covariance of the reference problem at its optimum.
@@ -138,6 +140,6 @@ TEST_CASE("surface fit: its array of residual blocks solves like one AutoDiffCos
   Eigen::Matrix<double, 6, 6, Eigen::RowMajor> expected;
   cov.GetCovarianceBlock(x.data(), x.data(), expected.data());
   const double scale = expected.cwiseAbs().maxCoeff();
-  CHECK(scale > 0);
-  CHECK((*c - Eigen::Matrix<double, 6, 6>(expected)).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+  DOCTEST_CHECK(scale > 0);
+  DOCTEST_CHECK((*c - Eigen::Matrix<double, 6, 6>(expected)).cwiseAbs().maxCoeff() <= 1e-9 * scale);
 }
