@@ -268,7 +268,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   Observability seen;
   {
     // Scoped: a million points' positions and directions are freed before
-    // Ceres builds its own copies of the Jacobian below.
+    // the Jacobian is folded below.
     const std::size_t active = static_cast<std::size_t>(
         std::count_if(points_.begin(), points_.end(), [](const Point& p) { return p.active; }));
     std::vector<Eigen::Vector3d> x, n;
