@@ -10,6 +10,11 @@
 //
 //   ./build/bench_registration          (both sizes, coarse start by plan ids)
 //   ./build/bench_registration --global (also the id-free global search, 10 000)
+//   ./build/bench_registration --side N (only an N x N grid, ids; for
+//        /usr/bin/time -v or valgrind --tool=massif on one size)
+//   ./build/bench_registration --side N --write DIR (no registration: writes
+//        the N x N plan and its simulated measurement to DIR/plan.json and
+//        DIR/measurements.csv, to time and size `furrow compare` on them)
 //   ./build/bench_registration --weak   (the weakly constrained shapes of
 //        docs/registration.md at 1 000, 10 000 and 100 000 points, turned
 //        183 degrees and moved 20 mm, 2 um noise, coarse start by ids;
@@ -17,12 +22,19 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <fstream>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/registration.hpp"
+#include "io/cmm/measurement_csv.hpp"
 #include "io/part_file.hpp"
+#include "io/plan_file.hpp"
 #include "support/weak_shapes.hpp"
 
 using namespace furrow;
@@ -35,7 +47,22 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
+// Peak resident set size of the process so far [MB] (getrusage: kB on Linux).
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+// Current resident set size [MB] (/proc/self/statm, pages), 0 when unknown.
+double current_rss_mb() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return 0;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous, const char* write_dir = nullptr) {
   auto t0 = Clock::now();
   const InspectionPlan plan = grid_plan(finder.part(), nu, nv, {"ball 2 mm", 2});
   SimulationOptions sim;
@@ -46,6 +73,13 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
   sim.anonymous = anonymous;
   const SimulatedMeasurement m = simulate_measurement(plan, sim);
   const double prepare = seconds_since(t0);
+  if (write_dir) {
+    write_plan(plan, std::string(write_dir) + "/plan.json");
+    write_measurements_csv(m.set, std::string(write_dir) + "/measurements.csv");
+    std::printf("wrote %zu points to %s/plan.json and %s/measurements.csv\n", plan.points.size(), write_dir,
+                write_dir);
+    return;
+  }
 
   RegistrationOptions o;
   o.loss_scale = 0.025;
@@ -65,6 +99,7 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
     current = next;
     mark = now;
   };
+  const double rss_before = current_rss_mb();
   t0 = Clock::now();
   const std::clock_t c0 = std::clock();
   const RegistrationResult r = register_measurements(finder, m.set, &plan, o);
@@ -90,6 +125,11 @@ void run(const ClosestPointFinder& finder, int nu, int nv, bool anonymous) {
       displacement, Eigen::AngleAxisd(e.linear()).angle(), 1e3 * r.sigma, flagged, sim.blunders,
       r.covariance ? std::sqrt((*r.covariance)(2, 2)) : NAN,
       r.covariance ? std::sqrt((*r.covariance)(3, 3)) : NAN, prepare);
+  // The process peak includes the plan and the simulated measurement held
+  // by this program; "before" is what they (and earlier runs' freed, but
+  // possibly retained, heap) occupied when the registration started.
+  std::printf("          memory: %.0f MB resident before the registration, process peak %.0f MB\n",
+              rss_before, peak_rss_mb());
 }
 
 // One weakly constrained shape at about `count` points.
@@ -130,6 +170,11 @@ int main(int argc, char** argv) {
   }
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const ClosestPointFinder finder(part);
+  if (argc > 2 && std::strcmp(argv[1], "--side") == 0) {
+    const int side = std::atoi(argv[2]);
+    run(finder, side, side, false, argc > 4 && std::strcmp(argv[3], "--write") == 0 ? argv[4] : nullptr);
+    return 0;
+  }
   std::printf(
       "registration on mould.json, misalignment 10 deg / 20 mm, noise 2 um, 5%% blunders\n");
   run(finder, 100, 100, false);

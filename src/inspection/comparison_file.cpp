@@ -278,18 +278,22 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
   doc["unexplained"] = c.gouges ? verification_json::unexplained_json(*c.gouges, ids) : json(nullptr);
   std::string text = jf::to_text(doc);
 
-  // Splice the points in before the closing brace, one compact line each.
+  // Splice the points in before the closing brace, one compact line each,
+  // appended to the one string returned: a million points' text (hundreds
+  // of MB) is not built apart and then copied into the document.
   const std::size_t close = text.rfind('}');
-  std::string points = ",\n  \"points\": [";
-  for (std::size_t i = 0; i < c.registration.points.size(); ++i) {
-    points += i == 0 ? "\n    " : ",\n    ";
-    points += point_json(c, set, part, sources.merged, i).dump();
-  }
-  points += c.registration.points.empty() ? "]\n" : "\n  ]\n";
   std::size_t end_of_last = close;
   while (end_of_last > 0 && (text[end_of_last - 1] == '\n' || text[end_of_last - 1] == ' '))
     --end_of_last;
-  return text.substr(0, end_of_last) + points + "}\n";
+  text.resize(end_of_last);
+  text += ",\n  \"points\": [";
+  for (std::size_t i = 0; i < c.registration.points.size(); ++i) {
+    text += i == 0 ? "\n    " : ",\n    ";
+    text += point_json(c, set, part, sources.merged, i).dump();
+  }
+  text += c.registration.points.empty() ? "]\n" : "\n  ]\n";
+  text += "}\n";
+  return text;
 }
 
 }  // namespace furrow

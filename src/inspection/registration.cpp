@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "base/number_text.hpp"
 #include "base/error.hpp"
@@ -90,7 +91,9 @@ struct Workspace {
   const MeasurementSet& set;
   const RegistrationOptions& options;
   SurfaceFit& fit;
-  std::vector<ClosestPoint> feet;
+  // The feet live in the result's points (their `foot`), filled from the
+  // first projection on: one copy of a million feet, not two.
+  std::vector<RegisteredPoint>& points;
   std::vector<OutlierReason> geometric;  // no_foot_point per projection
   // Foot on a boundary, point more than edge_tolerance beside the surface:
   // still in the fit (its bounded distance is its residual); only the
@@ -99,6 +102,9 @@ struct Workspace {
   std::vector<bool> excluded;            // left out of the fit by the outlier rule
   bool projected_once = false;
 
+  ClosestPoint& foot(std::size_t i) { return points[i].foot; }
+  const ClosestPoint& foot(std::size_t i) const { return points[i].foot; }
+
   // Projects every moved point (in parallel, warm-started at its last foot)
   // and hands feet and activity to the fit.
   void project() {
@@ -106,12 +112,13 @@ struct Workspace {
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d x = fit.moved(i);
-      feet[i] = projected_once ? finder.project(x, feet[i]) : finder.project(x);
-      const bool found = feet[i].converged;
-      const bool boundary = found && feet[i].location != FootLocation::interior;
+      ClosestPoint& f = foot(i);
+      f = projected_once ? finder.project(x, f) : finder.project(x);
+      const bool found = f.converged;
+      const bool boundary = found && f.location != FootLocation::interior;
       geometric[i] = found ? OutlierReason::none : OutlierReason::no_foot_point;
-      beyond[i] = boundary && sideways(x, feet[i]) > options.edge_tolerance;
-      fit.set_foot(i, feet[i].point, feet[i].normal, found && !excluded[i], boundary);
+      beyond[i] = boundary && sideways(x, f) > options.edge_tolerance;
+      fit.set_foot(i, f.point, f.normal, found && !excluded[i], boundary);
     }
     projected_once = true;
   }
@@ -164,7 +171,7 @@ bool settle_on_faces(Workspace& ws, const MotionBasis& held, double probe_radius
     Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
     std::size_t on_edge = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const ClosestPoint& f = ws.feet[i];
+      const ClosestPoint& f = ws.foot(i);
       if (!f.converged || ws.excluded[i]) continue;
       const Eigen::Vector3d x = ws.fit.moved(i);
       Eigen::Matrix<double, 3, 6> d;  // displacement w x x + t of an origin motion (w, t)
@@ -262,13 +269,15 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     y[i] = result.coarse.transform * set.points[i].xyz;
     reach = std::max(reach, y[i].norm());
   }
-  SurfaceFit fit(y, set.probe_radius, options.dof, options.loss, options.loss_scale,
+  // y is handed over, not copied: the fit keeps the only copy.
+  SurfaceFit fit(std::move(y), set.probe_radius, options.dof, options.loss, options.loss_scale,
                  options.max_solver_iterations);
+  result.points.resize(n);
   Workspace ws{finder,
                set,
                options,
                fit,
-               std::vector<ClosestPoint>(n),
+               result.points,
                std::vector<OutlierReason>(n, OutlierReason::none),
                std::vector<bool>(n, false),
                std::vector<bool>(n, false)};
@@ -282,7 +291,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     for (std::size_t i = 0; i < n; ++i)
       if (ws.on_part(i)) {
         x.push_back(fit.moved(i));
-        normal.push_back(ws.feet[i].normal);
+        normal.push_back(ws.foot(i).normal);
       }
   };
   {
@@ -330,7 +339,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
       // Neighbours on the surface: at the foot points, not the measured
       // points - blunders off the same side of a dense scan are closer to
       // each other than to the surface and would vouch for each other.
-      positions[i] = ws.feet[i].point;
+      positions[i] = ws.foot(i).point;
       deviation[i] = fit.residual(i);
       usable[i] = ws.geometric[i] == OutlierReason::none;
     }
@@ -399,8 +408,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     ws.excluded = excluded;
     fit.set_loss(RobustLoss::none, options.loss_scale);
     for (std::size_t i = 0; i < n; ++i)
-      fit.set_foot(i, ws.feet[i].point, ws.feet[i].normal, usable[i] && !excluded[i],
-                   ws.feet[i].converged && ws.feet[i].location != FootLocation::interior);
+      fit.set_foot(i, ws.foot(i).point, ws.foot(i).normal, usable[i] && !excluded[i],
+                   ws.foot(i).converged && ws.foot(i).location != FootLocation::interior);
   }
   // Without outlier flagging every point stays in the fit; the points
   // beyond an edge are still classified, once, by the same rule.
@@ -451,13 +460,11 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
                   : result.converged        ? "converged"
                                             : "outer iteration limit reached";
 
-  // Results per point at the final transform.
-  result.points.resize(n);
+  // Results per point at the final transform (the feet are there already).
   std::vector<double> in_fit;
   for (std::size_t i = 0; i < n; ++i) {
     RegisteredPoint& p = result.points[i];
     p.registered = fit.moved(i);
-    p.foot = ws.feet[i];
     p.deviation = fit.residual(i);
     // Classified once, at the final transform (docs/registration.md
     // "Points at an edge"): a point the deviation rule flags whose foot is

@@ -47,13 +47,15 @@
 //                      - left out of the fit, yet evaluated against the
 //                      tolerance, never hidden.
 //
-// Uncertainty: the 6x6 covariance of the parameters at the optimum from
-// ceres::Covariance, scaled by the residual variance of the points in the
-// fit (sum d^2 / (n - dof)); with all six DOF free the parameters are
-// re-based on the final transform first, so it is the covariance of a small
-// rigid correction applied in the part frame (rotation about the part
-// origin). Each point's 1-sigma deviation uncertainty is sqrt(J C J^T) with
-// J = d(d_i)/d(parameters): how much the alignment alone could move it.
+// Uncertainty: the 6x6 covariance of the parameters at the optimum,
+// (J^T J)^-1 from the Jacobian's SVD as ceres::Covariance computes it but
+// without holding J (surface_fit.hpp), scaled by the residual variance of
+// the points in the fit (sum d^2 / (n - dof)); with all six DOF free the
+// parameters are re-based on the final transform first, so it is the
+// covariance of a small rigid correction applied in the part frame
+// (rotation about the part origin). Each point's 1-sigma deviation
+// uncertainty is sqrt(J C J^T) with J = d(d_i)/d(parameters): how much the
+// alignment alone could move it.
 //
 // Weakly constrained directions (observability.hpp): after the coarse start
 // the motions that the points on the part barely see (lambda below

@@ -5,8 +5,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 
+#include "base/number_text.hpp"
 #include "inspection/registration.hpp"
 
 namespace furrow {
@@ -87,6 +90,23 @@ class SubspaceManifold : public ceres::Manifold {
   Eigen::MatrixXd left_inverse_;
 };
 
+// One point's residual block: BoundedDistance differentiated exactly as
+// ceres::AutoDiffCostFunction<BoundedDistance, 1, 6> does it (same calls,
+// so the same bits), but without its heap-allocated functor, so that a
+// million of them can live in one array owned by SurfaceFit (the problem
+// does not own them: Ceres would otherwise keep a std::map entry per cost
+// function to count references; docs/registration.md "Memory").
+class PointCost final : public ceres::SizedCostFunction<1, 6> {
+ public:
+  BoundedDistance functor{nullptr, 0};
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    if (!jacobians) return ceres::internal::VariadicEvaluate<ParameterDims>(functor, parameters, residuals);
+    return ceres::internal::AutoDifferentiate<1, ParameterDims>(functor, parameters, num_residuals(), residuals,
+                                                                jacobians);
+  }
+};
+
 ceres::LossFunction* make_loss(RobustLoss loss, double scale) {
   switch (loss) {
     case RobustLoss::none:
@@ -104,8 +124,11 @@ ceres::LossFunction* make_loss(RobustLoss loss, double scale) {
 struct SurfaceFit::Impl {
   // A wrapper, so that the loss can be swapped without rebuilding the problem.
   std::unique_ptr<ceres::LossFunctionWrapper> loss;
+  // One per point, in point order; Ceres holds pointers to them, so the
+  // array is allocated once and never resized. Declared before the problem,
+  // which refers to both, so that it is destroyed after it.
+  std::unique_ptr<PointCost[]> costs;
   std::unique_ptr<ceres::Problem> problem;
-  std::vector<ceres::CostFunction*> costs;  // owned by the problem
 };
 
 SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
@@ -121,16 +144,16 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
                                                              ceres::TAKE_OWNERSHIP);
   ceres::Problem::Options po;
   po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   // One parameter block and well-formed residuals: the per-block checks only
   // cost time (seconds for a million points).
   po.disable_all_safety_checks = true;
   impl_->problem = std::make_unique<ceres::Problem>(po);
-  impl_->costs.reserve(points_.size());
-  for (const Point& p : points_) {
-    auto* cost =
-        new ceres::AutoDiffCostFunction<BoundedDistance, 1, 6>(new BoundedDistance{&p, probe_radius_});
-    impl_->costs.push_back(cost);
-    impl_->problem->AddResidualBlock(cost, impl_->loss.get(), parameters_.data());
+  impl_->costs = std::make_unique<PointCost[]>(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    PointCost& cost = impl_->costs[i];
+    cost.functor = BoundedDistance{&points_[i], probe_radius_};
+    impl_->problem->AddResidualBlock(&cost, impl_->loss.get(), parameters_.data());
   }
   restrict_motion(free_parameter_basis(dof_.free));
 }
@@ -238,36 +261,90 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   // Rank check first (ceres::Covariance would log to stderr and fail): a
   // motion still allowed whose share of displacement along the normals is
   // below 1e-10 of the largest (observability.hpp) is not fixed at all.
-  std::vector<Eigen::Vector3d> x, n;
-  for (std::size_t i = 0; i < points_.size(); ++i)
-    if (points_[i].active) {
-      x.push_back(moved(i));
-      n.push_back(direction(i));
-    }
   if (basis_.cols() == 0) {
     status = "no degree of freedom left to fit";
     return std::nullopt;
   }
-  const Observability seen = analyse_observability(x, n, basis_, 1e-10);
+  Observability seen;
+  {
+    // Scoped: a million points' positions and directions are freed before
+    // the Jacobian is folded below.
+    const std::size_t active = static_cast<std::size_t>(
+        std::count_if(points_.begin(), points_.end(), [](const Point& p) { return p.active; }));
+    std::vector<Eigen::Vector3d> x, n;
+    x.reserve(active);
+    n.reserve(active);
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (points_[i].active) {
+        x.push_back(moved(i));
+        n.push_back(direction(i));
+      }
+    seen = analyse_observability(x, n, basis_, 1e-10);
+  }
   if (!seen.weak.empty()) {
     status = "rank deficient: the measured points do not fix the " + seen.weak.front().describe() +
              "; lock it (--dof) or measure more of the part";
     return std::nullopt;
   }
-  ceres::Covariance::Options o;
-  o.algorithm_type = ceres::DENSE_SVD;
-  o.num_threads = 1;
-  ceres::Covariance cov(o);
-  const double* block = parameters_.data();
-  std::vector<std::pair<const double*, const double*>> blocks = {{block, block}};
-  if (!cov.Compute(blocks, impl_->problem.get())) {
-    status = "ceres::Covariance failed (numerically rank deficient)";
+  // The Jacobian J of the residuals in the tangent space of the allowed
+  // motions, as Ceres' solver sees it (each point's autodiff row, corrected
+  // for the robust loss in force, times the basis when the motion is
+  // restricted), is never held whole: its rows are folded, a few thousand at
+  // a time, into the m x m triangle R of a QR factorisation (J = Q R), so a
+  // million points cost a 4096-row buffer instead of the several dense and
+  // sparse copies of J that ceres::Covariance made (docs/registration.md
+  // "Memory"). The covariance (J^T J)^-1 = (R^T R)^-1 then follows from the
+  // SVD of R as Ceres' DENSE_SVD takes it from the SVD of J (same singular
+  // values and right vectors, the same accuracy: no normal equations).
+  const bool restricted = basis_.cols() < 6;  // a Ceres manifold is set (restrict_motion)
+  const Eigen::Index m = restricted ? basis_.cols() : 6;
+  constexpr Eigen::Index kChunk = 4096;
+  Eigen::MatrixXd stack = Eigen::MatrixXd::Zero(m + kChunk, m);
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(m, m);
+  Eigen::Index rows = 0;
+  const auto fold = [&] {
+    if (rows == 0) return;
+    stack.topRows(m) = r;
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(stack.topRows(m + rows));
+    r = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+    rows = 0;
+  };
+  const double* params[1] = {parameters_.data()};
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (!points_[i].active) continue;  // a zero row
+    double residual = 0;
+    Eigen::Matrix<double, 1, 6> j;
+    double* jac[1] = {j.data()};
+    impl_->costs[i].Evaluate(params, &residual, jac);
+    // Ceres' loss correction of a one-residual block: J sqrt(rho') (1 -
+    // alpha) with alpha = 1 - sqrt(1 + 2 s rho'' / rho'), and alpha = 0
+    // where rho'' <= 0 (Cauchy, Huber) or s = 0.
+    const double sq = residual * residual;
+    double rho[3] = {sq, 1, 0};
+    if (const ceres::LossFunction* loss = impl_->loss.get(); loss) loss->Evaluate(sq, rho);
+    double scale = std::sqrt(rho[1]);
+    if (sq > 0 && rho[2] > 0) scale *= std::sqrt(1 + 2 * sq * rho[2] / rho[1]);
+    if (restricted)
+      stack.row(m + rows) = scale * (j * basis_);
+    else
+      stack.row(m + rows) = scale * j;
+    if (++rows == kChunk) fold();
+  }
+  fold();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(r, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();  // descending
+  // Ceres' default test (min_reciprocal_condition_number 1e-14 on the
+  // eigenvalues of J^T J): every singular value above 1e-7 of the largest.
+  if (!(sv(0) > 0) || sv(m - 1) < 1e-7 * sv(0)) {
+    status = "numerically rank deficient (smallest / largest singular value of the Jacobian " +
+             general(sv(m - 1) / sv(0), 3) + ")";
     return std::nullopt;
   }
-  Eigen::Matrix<double, 6, 6, Eigen::RowMajor> c;
-  cov.GetCovarianceBlock(block, block, c.data());
+  const Eigen::MatrixXd tangent =
+      svd.matrixV() * sv.cwiseProduct(sv).cwiseInverse().asDiagonal() * svd.matrixV().transpose();
   status = "ok";
-  return Eigen::Matrix<double, 6, 6>(c);
+  if (!restricted) return Eigen::Matrix<double, 6, 6>(tangent);
+  return Eigen::Matrix<double, 6, 6>(basis_ * tangent * basis_.transpose());
 }
 
 }  // namespace furrow

@@ -2,7 +2,9 @@
 // The inner problem of registration.hpp: with every point's foot point and
 // normal held fixed, find the rigid correction (r, t) minimising
 // sum rho(d_i^2) with Ceres, some of the six parameters possibly locked; and
-// the covariance of (r, t) at the optimum with ceres::Covariance.
+// the covariance of (r, t) at the optimum, (J^T J)^-1 as ceres::Covariance's
+// dense SVD gives it, from a QR factorisation folded row block by row block
+// so that the Jacobian of a million points is never held whole.
 //
 // The residual d_i, with e_i = R(r) y_i + t - f_i the probe centre's offset
 // from its foot (docs/registration.md "Points at an edge"):
@@ -96,8 +98,11 @@ class SurfaceFit {
   void rebase();
 
   // (J^T J)^-1 of the active residuals at the current parameters (unit
-  // residual variance; the caller scales). nullopt with `status` saying why
-  // (rank deficiency: the surface does not fix every free parameter).
+  // residual variance; the caller scales), J as the solver sees it: loss
+  // corrected, in the allowed motions' tangent space, lifted back to the
+  // six parameters (zero rows and columns outside span(basis)). nullopt
+  // with `status` saying why (rank deficiency: the surface does not fix
+  // every free parameter, or a singular value below 1e-7 of the largest).
   std::optional<Eigen::Matrix<double, 6, 6>> covariance(std::string& status) const;
 
  private:
