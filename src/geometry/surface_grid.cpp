@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "geometry/bspline_basis.hpp"
+#include "geometry/rational_derivatives.hpp"
 
 namespace furrow {
 
@@ -34,23 +35,6 @@ void contract_columns(const Eigen::Vector4d* net, int num_v, int first, int last
   }
 }
 
-// Quotient rule on A = w S, term by term (P&T eq. 4.20), written exactly as in
-// NurbsSurface::evaluate.
-template <int Order>
-void quotient_rule(const Eigen::Vector4d A[6], SurfaceDerivatives& d) {
-  const double inv_w = 1.0 / A[0].w();
-  d.S = A[0].head<3>() * inv_w;
-  if constexpr (Order >= 1) {
-    d.Su = (A[1].head<3>() - A[1].w() * d.S) * inv_w;
-    d.Sv = (A[2].head<3>() - A[2].w() * d.S) * inv_w;
-  }
-  if constexpr (Order >= 2) {
-    d.Suu = (A[3].head<3>() - 2.0 * A[1].w() * d.Su - A[3].w() * d.S) * inv_w;
-    d.Suv = (A[4].head<3>() - A[1].w() * d.Sv - A[2].w() * d.Su - A[4].w() * d.S) * inv_w;
-    d.Svv = (A[5].head<3>() - 2.0 * A[2].w() * d.Sv - A[5].w() * d.S) * inv_w;
-  }
-}
-
 // Every grid point of the row: contract p+1 column sums with the point's u
 // basis. P > 0 fixes the loop length at compile time; P == 0 means "use p".
 template <int P, int Order>
@@ -77,9 +61,7 @@ void contract_points(const Eigen::Vector4d* T, int first, int p, const int* span
         A[5] += Nu0[a] * t[2];
       }
     }
-    SurfaceDerivatives& d = out[i];
-    d = SurfaceDerivatives();
-    quotient_rule<Order>(A, d);
+    out[i] = quotient_rule(A, Order);
   }
 }
 
