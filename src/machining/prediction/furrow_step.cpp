@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "base/scalar_search.hpp"
@@ -49,11 +51,25 @@ Sampled extremum(F&& f, int n, double sign, double chord, const FurrowStepOption
   return best;
 }
 
-}  // namespace
+// The points of a curve evaluated so far, by lambda (exact match): the
+// sampling grid's ends are the contact points evaluated first, and the
+// extremes are evaluated again for their surface points.
+class Remembered {
+ public:
+  explicit Remembered(const SurfaceCurve& curve) : curve_(&curve) {}
+  const SurfacePoint& operator()(double lambda) {
+    const auto found = seen_.find(lambda);
+    if (found != seen_.end()) return found->second;
+    return seen_.emplace(lambda, (*curve_)(lambda)).first->second;
+  }
 
-FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& tip0,
-                                   const Eigen::Vector3d& tip1, const SurfaceCurve& curve,
-                                   const FurrowStepOptions& options) {
+ private:
+  const SurfaceCurve* curve_;  // outlives this
+  std::unordered_map<double, SurfacePoint> seen_;
+};
+
+FurrowStepResult step_error(const Cutter& cutter, const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1,
+                            Remembered& curve, const FurrowStepOptions& options) {
   FurrowStepResult result;
   const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
   if (!p0.valid || !p1.valid || !(p0.normal.z() >= 0) || !(p1.normal.z() >= 0)) return result;
@@ -105,17 +121,38 @@ FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& 
   return result;
 }
 
+}  // namespace
+
+FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& tip0,
+                                   const Eigen::Vector3d& tip1, const SurfaceCurve& curve,
+                                   const FurrowStepOptions& options) {
+  Remembered remembered(curve);
+  return step_error(cutter, tip0, tip1, remembered, options);
+}
+
 FurrowStepResult furrow_step_error(const Cutter& cutter, const SurfaceCurve& curve,
                                    const FurrowStepOptions& options) {
-  const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
+  Remembered remembered(curve);
+  const SurfacePoint p0 = remembered(0.0), p1 = remembered(1.0);
   if (!p0.valid || !p1.valid) return {};
   const CutterLocation a = cutter_location(cutter, p0.point, p0.normal, options.location);
   const CutterLocation b = cutter_location(cutter, p1.point, p1.normal, options.location);
   if (!a.reachable || !b.reachable) return {};
-  return furrow_step_error(cutter, a.tip, b.tip, curve, options);
+  return step_error(cutter, a.tip, b.tip, remembered, options);
 }
 
-ChordDeviation chord_deviation(const SurfaceCurve& curve, const FurrowStepOptions& options) {
+SurfaceCurve remembering_curve(SurfaceCurve curve) {
+  struct Owned {
+    explicit Owned(SurfaceCurve c) : curve(std::move(c)) {}
+    SurfaceCurve curve;
+    Remembered remembered{curve};
+  };
+  auto owned = std::make_shared<Owned>(std::move(curve));
+  return [owned](double lambda) { return owned->remembered(lambda); };
+}
+
+ChordDeviation chord_deviation(const SurfaceCurve& plain, const FurrowStepOptions& options) {
+  Remembered curve(plain);
   ChordDeviation result;
   const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
   if (!p0.valid || !p1.valid) return result;

@@ -69,16 +69,16 @@ EnvelopePoint SweptEnvelope::evaluate(double x, double y) const {
   return result;
 }
 
-void SweptEnvelope::row(double y, double x0, double dx, int n, double* out) const {
+void SweptEnvelope::row(double y, double x0, double dx, int k0, int n, double* out) const {
   if (!ball_ || plunge_) {
-    for (int k = 0; k < n; ++k) out[k] = height_at(x0 + k * dx, y);
+    for (int k = k0; k < k0 + n; ++k) out[k - k0] = height_at(x0 + k * dx, y);
     return;
   }
   const double radius = cutter_->radius(), r2 = radius * radius;
   const double wy = y - from_.y(), bx = x0 - from_.x();
   const double ux = ux_, uy = uy_, travel = travel_, k_rho = dz_over_length_;
   const double base = from_.z() + radius, slope = slope_;
-  for (int k = 0; k < n; ++k) {
+  for (int k = k0; k < k0 + n; ++k) {
     const double wx = bx + k * dx;
     const double t = wx * ux + wy * uy;
     const double delta = wy * ux - wx * uy;
@@ -90,8 +90,45 @@ void SweptEnvelope::row(double y, double x0, double dx, int n, double* out) cons
     const double xc = sigma - t;
     const double rem = rho2 - xc * xc;
     const double z = base + sigma * slope - std::sqrt(rem > 0 ? rem : 0.0);
-    out[k] = (rho2 < 0 || rem < 0) ? kInf : z;
+    out[k - k0] = (rho2 < 0 || rem < 0) ? kInf : z;
   }
+}
+
+double SweptEnvelope::row_lower_bound(double y, double x0, double dx, int ka, int kb) const {
+  if (!ball_ || plunge_ || kb < ka) return -kInf;
+  const double radius = cutter_->radius(), r2 = radius * radius;
+  const double wy = y - from_.y(), bx = x0 - from_.x();
+  // Height and slope along x at node k, as row() computes the height. The
+  // slope is the sphere's at the lowest position (the minimum over the move
+  // has the partial derivative at its minimiser as derivative); false near
+  // the shadow's rim, where the slope is unbounded.
+  auto tangent = [&](int k, double& z, double& g) {
+    const double wx = bx + k * dx;
+    const double t = wx * ux_ + wy * uy_;
+    const double delta = wy * ux_ - wx * uy_;
+    const double rho2 = r2 - delta * delta;
+    if (!(rho2 > 0)) return false;
+    double sigma = t - dz_over_length_ * std::sqrt(rho2);
+    sigma = sigma < 0 ? 0 : (sigma > travel_ ? travel_ : sigma);
+    const double xc = sigma - t;
+    const double rem = rho2 - xc * xc;
+    if (!(rem > 1e-6 * r2)) return false;
+    const double root = std::sqrt(rem);
+    z = from_.z() + radius + sigma * slope_ - root;
+    g = (wx - sigma * ux_) / root;
+    return true;
+  };
+  double za = 0, ga = 0, zb = 0, gb = 0;
+  if (!tangent(ka, za, ga) || !tangent(kb, zb, gb)) return -kInf;
+  // max(La, Lb) over [a, b] (a = 0, b = span): lowest at an end or where
+  // the two lines cross.
+  const double span = (kb - ka) * dx;
+  double bound = std::min(std::max(za, zb - gb * span), std::max(za + ga * span, zb));
+  if (ga < gb) {
+    const double cross = (zb - gb * span - za) / (ga - gb);
+    if (cross > 0 && cross < span) bound = std::min(bound, std::max(za + ga * cross, zb + gb * (cross - span)));
+  }
+  return std::isfinite(bound) ? bound : -kInf;
 }
 
 namespace {
