@@ -4,7 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <unordered_map>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "base/scalar_search.hpp"
@@ -53,19 +54,45 @@ Sampled extremum(F&& f, int n, double sign, double chord, const FurrowStepOption
 
 // The points of a curve evaluated so far, by lambda (exact match): the
 // sampling grid's ends are the contact points evaluated first, and the
-// extremes are evaluated again for their surface points.
+// extremes are evaluated again for their surface points. A small
+// open-addressing table on lambda's bits: a node-based map's allocations
+// cost as much as they saved.
 class Remembered {
  public:
-  explicit Remembered(const SurfaceCurve& curve) : curve_(&curve) {}
-  const SurfacePoint& operator()(double lambda) {
-    const auto found = seen_.find(lambda);
-    if (found != seen_.end()) return found->second;
-    return seen_.emplace(lambda, (*curve_)(lambda)).first->second;
+  explicit Remembered(const SurfaceCurve& curve) : curve_(&curve), slots_(128, -1) { points_.reserve(64); }
+  SurfacePoint operator()(double lambda) {
+    const double key = lambda + 0.0;  // -0 and +0 alike
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &key, sizeof bits);
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t at = (bits * 0x9E3779B97F4A7C15ull) >> 40 & mask;
+    for (; slots_[at] >= 0; at = (at + 1) & mask)
+      if (lambdas_[slots_[at]] == key) return points_[slots_[at]];
+    const SurfacePoint p = (*curve_)(lambda);
+    slots_[at] = static_cast<int>(points_.size());
+    lambdas_.push_back(key);
+    points_.push_back(p);
+    if (2 * points_.size() > slots_.size()) rehash();
+    return p;
   }
 
  private:
+  void rehash() {
+    slots_.assign(2 * slots_.size(), -1);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t k = 0; k < lambdas_.size(); ++k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &lambdas_[k], sizeof bits);
+      std::size_t at = (bits * 0x9E3779B97F4A7C15ull) >> 40 & mask;
+      while (slots_[at] >= 0) at = (at + 1) & mask;
+      slots_[at] = static_cast<int>(k);
+    }
+  }
+
   const SurfaceCurve* curve_;  // outlives this
-  std::unordered_map<double, SurfacePoint> seen_;
+  std::vector<int> slots_;     // index into lambdas_ / points_, -1: empty; size a power of two
+  std::vector<double> lambdas_;
+  std::vector<SurfacePoint> points_;
 };
 
 FurrowStepResult step_error(const Cutter& cutter, const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1,
