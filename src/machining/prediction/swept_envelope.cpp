@@ -94,8 +94,40 @@ void SweptEnvelope::row(double y, double x0, double dx, int k0, int n, double* o
   }
 }
 
+namespace {
+
+// Distance from p to the segment [a, b] in the plane.
+double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double len2 = d.squaredNorm();
+  const double s = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + s * d - p).norm();
+}
+
+// Distance between the segments [a, b] and [c, d] in the plane: 0 when they
+// cross, else the least end-to-segment distance.
+double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d) {
+  auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0;
+  return std::min(std::min(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
+                  std::min(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+}
+
+}  // namespace
+
 double SweptEnvelope::row_lower_bound(double y, double x0, double dx, int ka, int kb) const {
-  if (!ball_ || plunge_ || kb < ka) return -kInf;
+  if (kb < ka) return -kInf;
+  if (!ball_ || plunge_) {
+    // Any cutter: no position is lower than the lower tip, and none is
+    // nearer the piece than the move's projection is, where the profile
+    // (nondecreasing) is lowest.
+    const double gap = segment_distance(Eigen::Vector2d(x0 + ka * dx, y), Eigen::Vector2d(x0 + kb * dx, y),
+                                        from_.head<2>(), to_.head<2>());
+    const double radius = cutter_->radius();
+    return std::min(from_.z(), to_.z()) + cutter_->height_at(std::min(gap, radius));
+  }
   const double radius = cutter_->radius(), r2 = radius * radius;
   const double wy = y - from_.y(), bx = x0 - from_.x();
   // Height and slope along x at node k, as row() computes the height. The

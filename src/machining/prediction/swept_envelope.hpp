@@ -76,11 +76,14 @@ class SweptEnvelope {
   // pieces and must not depend on where a piece starts).
   void row(double y, double x0, double dx, int k0, int n, double* out) const;
   // A lower bound of z_env over the points x0 + k dx, k = ka..kb, of the row
-  // y, all inside the shadow; -infinity when there is none cheaply. For the
-  // ball: the envelope is convex along the row (the header), so it lies
-  // above its tangents at the two ends, and the lowest point of the larger
-  // tangent bounds it from below. The z-map skips a piece of a row where
-  // the bound is above every node's height so far: cheaper than the row.
+  // y, all inside the shadow; -infinity when there is none. For the ball:
+  // the envelope is convex along the row (the header), so it lies above its
+  // tangents at the two ends, and the lowest point of the larger tangent
+  // bounds it from below (-infinity near the shadow's rim, where the slope
+  // is unbounded). Other cutters and plunges: the lower tip plus the
+  // profile at the distance between the piece and the move's projection
+  // (tight for short moves). The z-map skips a piece of a row where the
+  // bound is above every node's height so far: cheaper than the row.
   double row_lower_bound(double y, double x0, double dx, int ka, int kb) const;
 
   // The x interval of the shadow on the row y: false when the row misses it.
