@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "geometry/primitives.hpp"
@@ -202,4 +203,40 @@ TEST_CASE("an inflecting step on the mould has both an undercut and an overcut, 
     CHECK(std::fabs(s.undercut.error - brute.max_error) < 1e-6);
     CHECK(std::fabs(s.overcut.error - brute.min_error) < 1e-6);
   }
+}
+
+TEST_CASE("a remembering curve evaluates each point once and changes no bit of the error or the chord deviation") {
+  const Part part = read_part(example("mould.json"));
+  const VerticalProjector projector(part);
+  const Cutter ball("ball", 3, 3);
+  const SurfacePoint a = projector.project(57.0, 30.0), b = projector.project(69.0, 30.0);
+  REQUIRE(a.valid);
+  REQUIRE(b.valid);
+  const SurfaceCurve plain = vertical_section_curve(projector, a, b);
+  // Counts the projections a curve makes, by lambda.
+  std::map<double, int> calls;
+  const SurfaceCurve counted = [&](double lambda) {
+    ++calls[lambda];
+    return plain(lambda);
+  };
+  const SurfaceCurve remembering = remembering_curve(counted);
+  const FurrowStepResult r = furrow_step_error(ball, remembering), p = furrow_step_error(ball, plain);
+  const ChordDeviation rc = chord_deviation(remembering), pc = chord_deviation(plain);
+  REQUIRE(r.valid);
+  CHECK(r.undercut.error == p.undercut.error);
+  CHECK(r.undercut.lambda == p.undercut.lambda);
+  CHECK(r.overcut.error == p.overcut.error);
+  CHECK(r.overcut.lambda == p.overcut.lambda);
+  CHECK(r.undercut.at.point == p.undercut.at.point);
+  CHECK(r.overcut.at.normal == p.overcut.at.normal);
+  CHECK(r.samples == p.samples);
+  CHECK(rc.deviation == pc.deviation);
+  CHECK(rc.lambda == pc.lambda);
+  // The grid (shared by both predictors) and every refinement point are
+  // projected once; the error samples at least 17 points.
+  int repeated = 0;
+  for (const auto& [lambda, n] : calls) repeated += n > 1;
+  CHECK(repeated == 0);
+  CHECK(calls.size() >= 17);
+  CHECK(calls.count(0.5) == 1);
 }

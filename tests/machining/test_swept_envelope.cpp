@@ -107,3 +107,69 @@ TEST_CASE("swept envelope of a level ball move is the capsule: analytic check") 
   CHECK(env.height_at(12, 1) == doctest::Approx(1 + 4 - std::sqrt(16 - 5.0)).epsilon(1e-14).scale(1));
   CHECK_FALSE(std::isfinite(env.height_at(5, 4.01)));
 }
+
+TEST_CASE("swept envelope: a row in pieces is the whole row bit for bit, and the piece bound is below brute force") {
+  std::mt19937 rng(29);
+  const Cutter ball("ball", 3, 3), bull("bull", 3, 1), flat("flat", 2.5, 0);
+  int bounded = 0, pieces = 0, tight = 0, other_pieces = 0, other_tight = 0;
+  for (int m = 0; m < 120; ++m) {
+    Eigen::Vector3d a = random_point(rng, 6), b = random_point(rng, 6);
+    if (m % 8 == 3) b.z() = a.z();  // level move
+    if (m % 8 == 5) b = a + 0.002 * (b - a);  // a short chord: the generic bound is tight
+    if (m % 8 == 6) b = Eigen::Vector3d(a.x(), a.y(), a.z() + 1);  // plunge
+    const Cutter& cutter = m < 40 ? ball : (m < 80 ? bull : flat);
+    const bool is_ball = m < 40 && m % 8 != 6;
+    const SweptEnvelope env(cutter, a, b);
+    std::uniform_real_distribution<double> uy(env.shadow_box().min().y(), env.shadow_box().max().y());
+    for (int r = 0; r < 10; ++r) {
+      const double y = uy(rng);
+      double xl = 0, xh = 0;
+      if (!env.row_span(y, xl, xh)) continue;
+      const double dx = 0.037;
+      const int n = static_cast<int>(std::floor((xh - xl) / dx)) + 1;
+      std::vector<double> whole(n), piece(n);
+      env.row(y, xl, dx, n, whole.data());
+      for (int k0 = 0; k0 < n; k0 += 7) {
+        const int k1 = std::min(n - 1, k0 + 6);
+        env.row(y, xl, dx, k0, k1 - k0 + 1, piece.data());
+        double lowest = std::numeric_limits<double>::infinity();
+        for (int k = k0; k <= k1; ++k) {
+          CHECK(piece[k - k0] == whole[k]);  // the same bits, wherever the piece starts
+          lowest = std::min(lowest, brute_force_height(cutter, a, b, xl + k * dx, y, 2000));
+        }
+        const double bound = env.row_lower_bound(y, xl, dx, k0, k1);
+        CAPTURE(m);
+        CAPTURE(k0);
+        if (!is_ball) {
+          // The generic bound: always there, below brute force, and within
+          // the piece's own variation for a short chord.
+          REQUIRE(std::isfinite(bound));
+          CHECK(bound <= lowest + 1e-9);
+          if (m % 8 == 5) {
+            ++other_pieces;
+            other_tight += bound >= lowest - 0.05;
+          }
+          continue;
+        }
+        ++pieces;
+        if (!std::isfinite(bound)) {
+          CHECK(bound < 0);  // -infinity: no bound, never +infinity or NaN
+          continue;
+        }
+        ++bounded;
+        // Below the envelope at every node (brute force overestimates the
+        // minimum by sub-nanometres).
+        CHECK(bound <= lowest + 1e-9);
+        // Mostly close to it: the tangents of a smooth convex function over
+        // 7 nodes of 0.037 mm (looser near the rim, where it is steep).
+        tight += bound >= lowest - 0.01;
+      }
+    }
+  }
+  // Most pieces lie away from the shadow's rim, where the tangents exist.
+  CHECK(pieces > 500);
+  CHECK(bounded > pieces / 2);
+  CHECK(tight > bounded * 3 / 4);
+  CHECK(other_pieces > 50);
+  CHECK(other_tight > other_pieces / 2);
+}

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "base/scalar_search.hpp"
@@ -49,11 +52,51 @@ Sampled extremum(F&& f, int n, double sign, double chord, const FurrowStepOption
   return best;
 }
 
-}  // namespace
+// The points of a curve evaluated so far, by lambda (exact match): the
+// sampling grid's ends are the contact points evaluated first, and the
+// extremes are evaluated again for their surface points. A small
+// open-addressing table on lambda's bits: a node-based map's allocations
+// cost as much as they saved.
+class Remembered {
+ public:
+  explicit Remembered(const SurfaceCurve& curve) : curve_(&curve), slots_(128, -1) { points_.reserve(64); }
+  SurfacePoint operator()(double lambda) {
+    const double key = lambda + 0.0;  // -0 and +0 alike
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &key, sizeof bits);
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t at = (bits * 0x9E3779B97F4A7C15ull) >> 40 & mask;
+    for (; slots_[at] >= 0; at = (at + 1) & mask)
+      if (lambdas_[slots_[at]] == key) return points_[slots_[at]];
+    const SurfacePoint p = (*curve_)(lambda);
+    slots_[at] = static_cast<int>(points_.size());
+    lambdas_.push_back(key);
+    points_.push_back(p);
+    if (2 * points_.size() > slots_.size()) rehash();
+    return p;
+  }
 
-FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& tip0,
-                                   const Eigen::Vector3d& tip1, const SurfaceCurve& curve,
-                                   const FurrowStepOptions& options) {
+ private:
+  void rehash() {
+    slots_.assign(2 * slots_.size(), -1);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t k = 0; k < lambdas_.size(); ++k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &lambdas_[k], sizeof bits);
+      std::size_t at = (bits * 0x9E3779B97F4A7C15ull) >> 40 & mask;
+      while (slots_[at] >= 0) at = (at + 1) & mask;
+      slots_[at] = static_cast<int>(k);
+    }
+  }
+
+  const SurfaceCurve* curve_;  // outlives this
+  std::vector<int> slots_;     // index into lambdas_ / points_, -1: empty; size a power of two
+  std::vector<double> lambdas_;
+  std::vector<SurfacePoint> points_;
+};
+
+FurrowStepResult step_error(const Cutter& cutter, const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1,
+                            Remembered& curve, const FurrowStepOptions& options) {
   FurrowStepResult result;
   const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
   if (!p0.valid || !p1.valid || !(p0.normal.z() >= 0) || !(p1.normal.z() >= 0)) return result;
@@ -105,17 +148,38 @@ FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& 
   return result;
 }
 
+}  // namespace
+
+FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& tip0,
+                                   const Eigen::Vector3d& tip1, const SurfaceCurve& curve,
+                                   const FurrowStepOptions& options) {
+  Remembered remembered(curve);
+  return step_error(cutter, tip0, tip1, remembered, options);
+}
+
 FurrowStepResult furrow_step_error(const Cutter& cutter, const SurfaceCurve& curve,
                                    const FurrowStepOptions& options) {
-  const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
+  Remembered remembered(curve);
+  const SurfacePoint p0 = remembered(0.0), p1 = remembered(1.0);
   if (!p0.valid || !p1.valid) return {};
   const CutterLocation a = cutter_location(cutter, p0.point, p0.normal, options.location);
   const CutterLocation b = cutter_location(cutter, p1.point, p1.normal, options.location);
   if (!a.reachable || !b.reachable) return {};
-  return furrow_step_error(cutter, a.tip, b.tip, curve, options);
+  return step_error(cutter, a.tip, b.tip, remembered, options);
 }
 
-ChordDeviation chord_deviation(const SurfaceCurve& curve, const FurrowStepOptions& options) {
+SurfaceCurve remembering_curve(SurfaceCurve curve) {
+  struct Owned {
+    explicit Owned(SurfaceCurve c) : curve(std::move(c)) {}
+    SurfaceCurve curve;
+    Remembered remembered{curve};
+  };
+  auto owned = std::make_shared<Owned>(std::move(curve));
+  return [owned](double lambda) { return owned->remembered(lambda); };
+}
+
+ChordDeviation chord_deviation(const SurfaceCurve& plain, const FurrowStepOptions& options) {
+  Remembered curve(plain);
   ChordDeviation result;
   const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
   if (!p0.valid || !p1.valid) return result;

@@ -73,6 +73,16 @@ FurrowStepResult furrow_step_error(const Cutter& cutter, const Eigen::Vector3d& 
 FurrowStepResult furrow_step_error(const Cutter& cutter, const SurfaceCurve& curve,
                                    const FurrowStepOptions& options = {});
 
+// `curve` that remembers every point it has evaluated and returns the same
+// point again for the same lambda (bit for bit: the curve must be a function
+// of lambda alone, as iso_parametric_curve and vertical_section_curve are).
+// Why: each of the two predictors above and below samples the curve on the
+// same grid (lambda = i / n, n from the chord) and evaluates its extremes
+// again at the end, and a curve point is a surface projection, the bulk of
+// their cost; one step's error and chord deviation share the points through
+// one remembering curve. Not thread-safe: one per step and thread.
+SurfaceCurve remembering_curve(SurfaceCurve curve);
+
 // The chord-deviation estimate for comparison: the largest distance from the
 // curve to the straight segment between its end points (what a CAM system
 // bounds when it ignores the cutter), refined like the errors.

@@ -39,7 +39,9 @@ std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, co
       s.status = StepStatus::no_contact;
     } else {
       s.length = (b.contact.at.point - a.contact.at.point).norm();
-      const SurfaceCurve curve = vertical_section_curve(projector, a.contact.at, b.contact.at);
+      // One remembering curve: the error and the chord deviation sample it
+      // on the same grid.
+      const SurfaceCurve curve = remembering_curve(vertical_section_curve(projector, a.contact.at, b.contact.at));
       s.error = furrow_step_error(cutter, a.tip, b.tip, curve, options);
       s.status = s.error.valid ? StepStatus::evaluated : StepStatus::unreachable;
       if (s.error.valid) s.chord = chord_deviation(curve, options);

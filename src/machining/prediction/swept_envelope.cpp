@@ -69,16 +69,16 @@ EnvelopePoint SweptEnvelope::evaluate(double x, double y) const {
   return result;
 }
 
-void SweptEnvelope::row(double y, double x0, double dx, int n, double* out) const {
+void SweptEnvelope::row(double y, double x0, double dx, int k0, int n, double* out) const {
   if (!ball_ || plunge_) {
-    for (int k = 0; k < n; ++k) out[k] = height_at(x0 + k * dx, y);
+    for (int k = k0; k < k0 + n; ++k) out[k - k0] = height_at(x0 + k * dx, y);
     return;
   }
   const double radius = cutter_->radius(), r2 = radius * radius;
   const double wy = y - from_.y(), bx = x0 - from_.x();
   const double ux = ux_, uy = uy_, travel = travel_, k_rho = dz_over_length_;
   const double base = from_.z() + radius, slope = slope_;
-  for (int k = 0; k < n; ++k) {
+  for (int k = k0; k < k0 + n; ++k) {
     const double wx = bx + k * dx;
     const double t = wx * ux + wy * uy;
     const double delta = wy * ux - wx * uy;
@@ -90,8 +90,77 @@ void SweptEnvelope::row(double y, double x0, double dx, int n, double* out) cons
     const double xc = sigma - t;
     const double rem = rho2 - xc * xc;
     const double z = base + sigma * slope - std::sqrt(rem > 0 ? rem : 0.0);
-    out[k] = (rho2 < 0 || rem < 0) ? kInf : z;
+    out[k - k0] = (rho2 < 0 || rem < 0) ? kInf : z;
   }
+}
+
+namespace {
+
+// Distance from p to the segment [a, b] in the plane.
+double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double len2 = d.squaredNorm();
+  const double s = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + s * d - p).norm();
+}
+
+// Distance between the segments [a, b] and [c, d] in the plane: 0 when they
+// cross, else the least end-to-segment distance.
+double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d) {
+  auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0;
+  return std::min(std::min(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
+                  std::min(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+}
+
+}  // namespace
+
+double SweptEnvelope::row_lower_bound(double y, double x0, double dx, int ka, int kb) const {
+  if (kb < ka) return -kInf;
+  if (!ball_ || plunge_) {
+    // Any cutter: no position is lower than the lower tip, and none is
+    // nearer the piece than the move's projection is, where the profile
+    // (nondecreasing) is lowest.
+    const double gap = segment_distance(Eigen::Vector2d(x0 + ka * dx, y), Eigen::Vector2d(x0 + kb * dx, y),
+                                        from_.head<2>(), to_.head<2>());
+    const double radius = cutter_->radius();
+    return std::min(from_.z(), to_.z()) + cutter_->height_at(std::min(gap, radius));
+  }
+  const double radius = cutter_->radius(), r2 = radius * radius;
+  const double wy = y - from_.y(), bx = x0 - from_.x();
+  // Height and slope along x at node k, as row() computes the height. The
+  // slope is the sphere's at the lowest position (the minimum over the move
+  // has the partial derivative at its minimiser as derivative); false near
+  // the shadow's rim, where the slope is unbounded.
+  auto tangent = [&](int k, double& z, double& g) {
+    const double wx = bx + k * dx;
+    const double t = wx * ux_ + wy * uy_;
+    const double delta = wy * ux_ - wx * uy_;
+    const double rho2 = r2 - delta * delta;
+    if (!(rho2 > 0)) return false;
+    double sigma = t - dz_over_length_ * std::sqrt(rho2);
+    sigma = sigma < 0 ? 0 : (sigma > travel_ ? travel_ : sigma);
+    const double xc = sigma - t;
+    const double rem = rho2 - xc * xc;
+    if (!(rem > 1e-6 * r2)) return false;
+    const double root = std::sqrt(rem);
+    z = from_.z() + radius + sigma * slope_ - root;
+    g = (wx - sigma * ux_) / root;
+    return true;
+  };
+  double za = 0, ga = 0, zb = 0, gb = 0;
+  if (!tangent(ka, za, ga) || !tangent(kb, zb, gb)) return -kInf;
+  // max(La, Lb) over [a, b] (a = 0, b = span): lowest at an end or where
+  // the two lines cross.
+  const double span = (kb - ka) * dx;
+  double bound = std::min(std::max(za, zb - gb * span), std::max(za + ga * span, zb));
+  if (ga < gb) {
+    const double cross = (zb - gb * span - za) / (ga - gb);
+    if (cross > 0 && cross < span) bound = std::min(bound, std::max(za + ga * cross, zb + gb * (cross - span)));
+  }
+  return std::isfinite(bound) ? bound : -kInf;
 }
 
 namespace {

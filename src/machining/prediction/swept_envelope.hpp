@@ -70,7 +70,21 @@ class SweptEnvelope {
 
   // z_env at the n points (x0 + k dx, y), k = 0..n-1, into out[k]: the z-map's
   // inner loop (the ball's closed form runs branch-free, so it vectorises).
-  void row(double y, double x0, double dx, int n, double* out) const;
+  void row(double y, double x0, double dx, int n, double* out) const { row(y, x0, dx, 0, n, out); }
+  // The same for k = k0..k0+n-1 into out[k - k0]; each value is bit for bit
+  // what the whole row from x0 gives at k (the z-map evaluates a row in
+  // pieces and must not depend on where a piece starts).
+  void row(double y, double x0, double dx, int k0, int n, double* out) const;
+  // A lower bound of z_env over the points x0 + k dx, k = ka..kb, of the row
+  // y, all inside the shadow; -infinity when there is none. For the ball:
+  // the envelope is convex along the row (the header), so it lies above its
+  // tangents at the two ends, and the lowest point of the larger tangent
+  // bounds it from below (-infinity near the shadow's rim, where the slope
+  // is unbounded). Other cutters and plunges: the lower tip plus the
+  // profile at the distance between the piece and the move's projection
+  // (tight for short moves). The z-map skips a piece of a row where the
+  // bound is above every node's height so far: cheaper than the row.
+  double row_lower_bound(double y, double x0, double dx, int ka, int kb) const;
 
   // The x interval of the shadow on the row y: false when the row misses it.
   bool row_span(double y, double& x_lo, double& x_hi) const;

@@ -14,6 +14,10 @@ namespace furrow {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Nodes per piece of a row that the sweep bounds before evaluating it.
+constexpr int kPiece = 16;
+// [mm] a piece is skipped only when its bound exceeds every height by more.
+constexpr double kBoundMargin = 1e-7;
 
 }  // namespace
 
@@ -95,12 +99,33 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
 #pragma omp parallel
   {
     std::vector<double> buffer(nx_);
+    struct Visit {
+      double distance;
+      std::size_t move;
+    };
+    std::vector<Visit> order;
 #pragma omp for schedule(dynamic, 1)
     for (int b = 0; b < bands; ++b) {
       const int j0 = b * band, j1 = std::min(ny_, j0 + band) - 1;
+      // The band's moves, nearest to its middle row first. A node keeps the
+      // minimum over moves with the lowest index among equal heights, which
+      // does not depend on the order; visiting the near moves first makes
+      // the heights low early, so that far moves are mostly skipped by their
+      // lower bounds below.
+      const double ym = 0.5 * (y(j0) + y(j1));
+      order.clear();
       for (std::size_t k = 0; k < moves.size(); ++k) {
         const RowRange& r = rows[k];
         if (r.hi < j0 || r.lo > j1) continue;
+        const double ya = moves[k].from.y() - ym, yb = moves[k].to.y() - ym;
+        order.push_back({(ya > 0) != (yb > 0) ? 0.0 : std::min(std::fabs(ya), std::fabs(yb)), k});
+      }
+      std::sort(order.begin(), order.end(), [](const Visit& a, const Visit& c) {
+        return a.distance < c.distance || (a.distance == c.distance && a.move < c.move);
+      });
+      for (const Visit& v : order) {
+        const std::size_t k = v.move;
+        const RowRange& r = rows[k];
         const SweptEnvelope& env = envelopes_[first + k];
         const auto owner = static_cast<std::int32_t>(first + k);
         for (int j = std::max(j0, r.lo); j <= std::min(j1, r.hi); ++j) {
@@ -110,13 +135,23 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
           const int i0 = static_cast<int>(std::max(0.0, std::ceil((xl - x0_) / cell_)));
           const int i1 = static_cast<int>(std::min(double(nx_ - 1), std::floor((xh - x0_) / cell_)));
           if (i1 < i0) continue;
-          env.row(yj, x(i0), cell_, i1 - i0 + 1, buffer.data());
+          const double xs = x(i0);
           double* h = heights_.data() + index(i0, j);
           std::int32_t* o = owners_.data() + index(i0, j);
-          for (int i = 0; i <= i1 - i0; ++i) {
-            if (buffer[i] < h[i]) {
-              h[i] = buffer[i];
-              o[i] = owner;
+          for (int c0 = 0; c0 <= i1 - i0; c0 += kPiece) {
+            const int c1 = std::min(i1 - i0, c0 + kPiece - 1);
+            double highest = -kInf;
+            for (int i = c0; i <= c1; ++i) highest = std::max(highest, h[i]);
+            // The margin covers rounding in the bound (a few ulps of the
+            // heights, far below it).
+            if (env.row_lower_bound(yj, xs, cell_, c0, c1) > highest + kBoundMargin) continue;
+            env.row(yj, xs, cell_, c0, c1 - c0 + 1, buffer.data());
+            for (int i = c0; i <= c1; ++i) {
+              const double z = buffer[i - c0];
+              if (z < h[i] || (z == h[i] && owner < o[i])) {
+                h[i] = z;
+                o[i] = owner;
+              }
             }
           }
         }
