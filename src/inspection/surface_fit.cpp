@@ -210,7 +210,7 @@ Eigen::Vector3d SurfaceFit::direction(std::size_t i) const {
 }
 
 Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
-  Eigen::Matrix<double, 1, 6> j;
+  Eigen::Matrix<double, 1, 6> j = Eigen::Matrix<double, 1, 6>::Zero();
   if (parameters_.head<3>().isZero()) {
     // At r = 0: d(R(r) y)/dr = -[y]x, so d(u.(R y))/dr = y x u; d/dt = u,
     // with u the residual's direction (direction()).
@@ -313,7 +313,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   for (std::size_t i = 0; i < points_.size(); ++i) {
     if (!points_[i].active) continue;  // a zero row
     double residual = 0;
-    Eigen::Matrix<double, 1, 6> j;
+    Eigen::Matrix<double, 1, 6> j = Eigen::Matrix<double, 1, 6>::Zero();
     double* jac[1] = {j.data()};
     impl_->costs[i].Evaluate(params, &residual, jac);
     // Ceres' loss correction of a one-residual block: J sqrt(rho') (1 -

@@ -8,7 +8,11 @@
 namespace furrow {
 
 bool face_normal(const Face& face, double u, double v, Eigen::Vector3d& point, Eigen::Vector3d& normal) {
-  const SurfaceDerivatives d = face.surface().evaluate(u, v, 1);
+  return face_normal(face, face.surface().evaluate(u, v, 1), point, normal);
+}
+
+bool face_normal(const Face& face, const SurfaceDerivatives& d, Eigen::Vector3d& point,
+                 Eigen::Vector3d& normal) {
   point = d.S;
   const Eigen::Vector3d c = d.Su.cross(d.Sv);
   const double len = c.norm();

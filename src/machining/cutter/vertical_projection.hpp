@@ -31,6 +31,9 @@ struct SurfacePoint {
 // Unit normal of a face at (u, v) (Su x Sv, flipped when reversed), without
 // the curvature analysis of Face::geometry. False at degenerate points.
 bool face_normal(const Face& face, double u, double v, Eigen::Vector3d& point, Eigen::Vector3d& normal);
+// The same on derivatives already evaluated at (u, v) (e.g. a SurfaceGrid row).
+bool face_normal(const Face& face, const SurfaceDerivatives& d, Eigen::Vector3d& point,
+                 Eigen::Vector3d& normal);
 SurfacePoint surface_point(const Part& part, int face, const Eigen::Vector2d& uv);
 
 struct VerticalProjectionOptions {

@@ -101,20 +101,6 @@ ErrorExtremum refine_error_extremum(const Part& part, const ZMap& zmap, std::siz
 
 namespace {
 
-// face_normal (machining/cutter/vertical_projection.hpp) on derivatives that
-// are already evaluated: the same point, the same normal and the same
-// degeneracy test, so a grid sample gives what face_normal gives at its (u,v).
-bool grid_face_normal(const Face& face, const SurfaceDerivatives& d, Eigen::Vector3d& point,
-                      Eigen::Vector3d& normal) {
-  point = d.S;
-  const Eigen::Vector3d c = d.Su.cross(d.Sv);
-  const double len = c.norm();
-  const double scale = d.Su.norm() * d.Sv.norm();
-  if (!(len > 1e-12 * scale) || !(len > 0)) return false;
-  normal = (face.reversed() ? -c : c) / len;
-  return true;
-}
-
 void summarise_cells(FaceErrorMap& m) {
   m.cells.assign(static_cast<std::size_t>(m.cells_u) * m.cells_v, ErrorCell{});
   for (int cj = 0; cj < m.cells_v; ++cj)
@@ -204,7 +190,7 @@ ErrorMap compute_error_map(const Part& part, const ZMap& zmap, const ErrorMapOpt
             continue;
           }
           Eigen::Vector3d p, n;
-          if (!grid_face_normal(face, row[static_cast<std::size_t>(i)], p, n) || !(n.z() >= 0)) {
+          if (!face_normal(face, row[static_cast<std::size_t>(i)], p, n) || !(n.z() >= 0)) {
             m.status[k] = ErrorCellStatus::not_machinable;
             continue;
           }
