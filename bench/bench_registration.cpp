@@ -171,8 +171,14 @@ int main(int argc, char** argv) {
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const ClosestPointFinder finder(part);
   if (argc > 2 && std::strcmp(argv[1], "--side") == 0) {
-    const int side = std::atoi(argv[2]);
-    run(finder, side, side, false, argc > 4 && std::strcmp(argv[3], "--write") == 0 ? argv[4] : nullptr);
+    char* end = nullptr;
+    const long side = std::strtol(argv[2], &end, 10);
+    if (end == argv[2] || *end != '\0' || side < 4 || side > 4000) {
+      std::fprintf(stderr, "bench_registration: --side wants a whole number from 4 to 4000, not '%s'\n",
+                   argv[2]);
+      return 2;
+    }
+    run(finder, static_cast<int>(side), static_cast<int>(side), false, argc > 4 && std::strcmp(argv[3], "--write") == 0 ? argv[4] : nullptr);
     return 0;
   }
   std::printf(

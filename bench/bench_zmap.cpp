@@ -101,6 +101,10 @@ void run_case(const Part& part, const Cutter& ball, const Case& c) {
 
 int main(int argc, char** argv) {
   const char* which = argc > 1 ? argv[1] : "all";
+  if (std::strcmp(which, "all") && std::strcmp(which, "default") && std::strcmp(which, "fine")) {
+    std::fprintf(stderr, "bench_zmap: unknown case '%s' (default, fine or all)\n", which);
+    return 2;
+  }
   const Part part = read_part(FURROW_SOURCE_DIR "/examples/parts/mould.json");
   const Cutter ball("BALL-D6", 3, 3);
   const Case cases[] = {{"default", 0.01, 0.005, 0.05, true}, {"fine", 0.001, 0.0005, 0.044, false}};
