@@ -85,13 +85,6 @@ bool SeedCell::may_hold_foot(const Eigen::Vector3d& q) const {
   return in_cone_reach(axes * (q - centre), half_extent, cone_tan);
 }
 
-double SeedCell::lower_bound(const Eigen::Vector3d& q) const {
-  const Eigen::Vector3d d = q - centre;
-  const double sphere = d.norm() - radius;
-  const Eigen::Vector3d excess = ((axes * d).cwiseAbs() - half_extent).cwiseMax(0.0);
-  return std::max(sphere, excess.norm());
-}
-
 double SeedCell::screen(const Eigen::Vector3d& q) const {
   const Eigen::Vector3d d = q - centre;
   const Eigen::Vector3d local = axes * d;

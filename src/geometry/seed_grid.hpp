@@ -63,16 +63,15 @@ struct SeedCell {
   // degrees or more.
   double cone_tan = -1;
 
-  // Lower bound on the distance from q to any surface point of the cell.
-  double lower_bound(const Eigen::Vector3d& q) const;
   // False when no point of the cell can be an orthogonal foot of q: q - S
   // would have to lie along a normal, but q is too far sideways of the
   // oriented box for any direction in the double cone of normals. A global minimum
   // inside the face's domain is such a foot (the distance is stationary
   // there), so a cell for which this is false cannot hold it.
   bool may_hold_foot(const Eigen::Vector3d& q) const;
-  // Both at once (they share q in the box's frame): lower_bound(q), or
-  // infinity when the cell cannot hold an orthogonal foot of q.
+  // A lower bound on the distance from q to any surface point of the cell
+  // (from the sphere and the oriented box), or infinity when the cell cannot
+  // hold an orthogonal foot of q: both tests share q in the box's frame.
   double screen(const Eigen::Vector3d& q) const;
 };
 
