@@ -31,19 +31,20 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// A fresh, empty scratch folder for one test.
+// A fresh, empty scratch folder for one test. ctest -j runs each test case as
+// its own process, and a fixture shared by several cases of one file is built
+// once per process; the pid keeps two of them from writing the same folder.
 inline std::string scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(FURROW_BINARY_DIR) / "test-scratch" / name;
+  const auto dir = std::filesystem::path(FURROW_BINARY_DIR) / "test-scratch" /
+                   (name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
 }
 
 inline CliResult run_furrow(const std::vector<std::string>& args, const std::string& stdin_file = "") {
-  // pid + counter: ctest -j runs test cases as concurrent processes.
   static int counter = 0;
-  const std::string base =
-      scratch_dir("cli-capture-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const std::string base = scratch_dir("cli-capture-" + std::to_string(counter++));
   std::string cmd = shell_quote(FURROW_CLI);
   for (const auto& a : args) cmd += " " + shell_quote(a);
   cmd += " < " + shell_quote(stdin_file.empty() ? "/dev/null" : stdin_file);
