@@ -16,7 +16,7 @@ MACHINING = {"machining/cutter", "machining/gouge", "machining/prediction", "mac
 SIBLINGS = [({"partition"}, MACHINING), ({"planning"}, {"inspection"})]
 # Third-party headers and the only places allowed to include them.
 OWNERS = {
-    r"<(Standard|TopoDS|TopExp|TopAbs|BRep|Geom|GeomAbs|GeomAPI|GeomConvert|gp|STEP|IGES|XSControl|Interface|ShapeFix|ShapeAnalysis|ShapeUpgrade|TColgp|TColStd|Precision|BRepAdaptor|BRepTools|BRepBuilderAPI|BRepGProp|GProp|Message|Extrema|Adaptor)[A-Za-z0-9_]*\.hxx>": ("src/io/cad/",),
+    r"<(Standard|TopoDS|TopExp|TopAbs|BRep|Geom|GeomAbs|GeomAPI|GeomConvert|gp|STEP|IGES|XSControl|Interface|ShapeFix|ShapeAnalysis|ShapeUpgrade|TColgp|TColStd|Precision|BRepAdaptor|BRepTools|BRepBuilderAPI|BRepGProp|GProp|Message|Extrema|Adaptor)[A-Za-z0-9_]*\.hxx>": ("src/io/cad/occt/",),
     r"<pcl/|<nanoflann": ("src/geometry/point_search.",),
     r"<ceres/": ("src/inspection/",),
     r"<png\.h>|<opencv2/imgcodecs": ("src/render/png.",),

@@ -1,13 +1,33 @@
 // Uses only installed public headers: a cylinder of radius 25 built as an
 // exact rational NURBS must show principal curvatures 0 and -1/25 (convex,
-// normal out of the material) at every sampled point; exits 0 when it does.
+// normal out of the material) at every sampled point; and, given a STEP file
+// that holds no shape, import_cad() must reach the installed CAD module and
+// refuse the file for it (an InputError from OpenCASCADE's reading, not a
+// module that could not be found). Exits 0 when both hold.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
+#include "base/error.hpp"
 #include "geometry/differential_geometry.hpp"
 #include "geometry/primitives.hpp"
+#include "io/cad/cad_import.hpp"
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1) {
+    try {
+      furrow::import_cad(argv[1]);
+      std::printf("consumer: %s was imported, but it holds no shape\n", argv[1]);
+      return 1;
+    } catch (const furrow::InputError& e) {
+      const bool read = std::string(e.what()).find("no shape to import") != std::string::npos;
+      std::printf("consumer: the CAD module read %s: %s\n", argv[1], e.what());
+      if (!read) return 1;
+    } catch (const std::exception& e) {
+      std::printf("consumer: the CAD import failed: %s\n", e.what());
+      return 1;
+    }
+  }
   const double radius = 25.0;
   const furrow::NurbsSurface cylinder = furrow::make_cylinder(radius, 40.0, 0.0, 2.0);
   int bad = 0;

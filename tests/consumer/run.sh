@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the build tree into a scratch prefix, then configures, builds and
-# runs tests/consumer against it. Args: BUILD_DIR WORK_DIR.
+# runs tests/consumer against it; the installed CLI and the installed shared
+# library must both find the installed CAD module. Args: BUILD_DIR WORK_DIR.
 set -euo pipefail
 build=$1
 work=$2
@@ -13,4 +14,14 @@ test -f "$work/prefix/share/bash-completion/completions/furrow"
 ls "$work"/prefix/lib*/libfurrow_core.a "$work"/prefix/lib*/libfurrow_core.so >/dev/null
 cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/build" >/dev/null
-"$work/build/consumer"
+step="$here/../bad_inputs/cad/points_only.step"
+# Moved away from the build tree, so nothing there can be found instead.
+mv "$work/prefix" "$work/moved"
+module=$(ls "$work"/moved/lib*/furrow/furrow_cad.so)
+LD_LIBRARY_PATH=$(dirname "$(dirname "$module")") "$work/build/consumer" "$step"
+set +e
+"$work/moved/bin/furrow" import "$step" --out "$work/part.json" 2> "$work/import.err"
+status=$?
+set -e
+grep -q "no shape to import" "$work/import.err" || { cat "$work/import.err"; exit 1; }
+test "$status" -eq 2

@@ -39,9 +39,12 @@
 // out and listed in CadImportResult::skipped instead (the import still fails
 // when nothing is left).
 //
-// This header is free of OpenCASCADE; only the files behind it in src/io/cad/
-// (cad_import.cpp and the steps it calls, cad_reader.hpp and the like)
-// include OpenCASCADE headers (scripts/check-layers.py holds them there).
+// This header is free of OpenCASCADE. The import runs in the CAD module
+// furrow_cad.so (src/io/cad/occt/, the only files that include OpenCASCADE
+// headers), loaded on the first call (docs/architecture.md "Modules loaded on
+// demand"): the file's name, its first bytes and the options are checked
+// before. A module that cannot be found or is of another version is a
+// RuntimeModuleError (base/runtime_module.hpp), not an InputError.
 #include <cstddef>
 #include <functional>
 #include <string>

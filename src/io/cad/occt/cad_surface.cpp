@@ -1,5 +1,5 @@
 // A face's surface as a Furrow NURBS (contract in cad_surface.hpp).
-#include "io/cad/cad_surface.hpp"
+#include "io/cad/occt/cad_surface.hpp"
 
 #include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
@@ -19,7 +19,7 @@
 
 #include <vector>
 
-#include "io/cad/cad_occt_internal.hpp"
+#include "io/cad/occt/cad_occt_internal.hpp"
 
 namespace furrow::cad {
 

@@ -1,5 +1,5 @@
 // Outward orientation of imported faces (contract in cad_orientation.hpp).
-#include "io/cad/cad_orientation.hpp"
+#include "io/cad/occt/cad_orientation.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -23,7 +23,7 @@
 #include <optional>
 #include <unordered_map>
 
-#include "io/cad/cad_occt_internal.hpp"
+#include "io/cad/occt/cad_occt_internal.hpp"
 
 namespace furrow::cad {
 

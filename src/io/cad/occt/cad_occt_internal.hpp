@@ -1,10 +1,10 @@
 #pragma once
-// Shared by the files of CAD import that talk to OpenCASCADE (src/io/cad/
-// only; not part of Furrow's interface, see cad_import.hpp for that).
+// Shared by the files of CAD import that talk to OpenCASCADE (src/io/cad/occt/,
+// the CAD module; not part of Furrow's interface, see cad_import.hpp for that).
 //
-// FaceFailure is how a file below import_cad() says "this face cannot be
+// FaceFailure is how a file below import_with_occt() says "this face cannot be
 // imported, and here is why": the message reads on from "face <name>: ", and
-// import_cad() adds the file and the face (or, with skip_bad_faces, lists the
+// import_with_occt() adds the file and the face (or, with skip_bad_faces, lists the
 // face as skipped). A plain exception type rather than InputError because the
 // code that finds the problem does not know the file or the face's name.
 #include <gp_Pnt.hxx>

@@ -11,8 +11,9 @@
 // misspelt entity type is named as such), for IGES every root (trimmed or
 // bounded surface, solid) without a shape.
 //
-// Failures: InputError naming the file for a file that is missing, not
-// STEP/IGES by name or signature, unreadable, or without data or shapes.
+// Failures: InputError naming the file for a file OpenCASCADE cannot read
+// or that holds no data or shapes (the name and the signature are checked
+// before, by cad_file_format.hpp).
 // OpenCASCADE's Standard_Failure may escape read_file() (the caller reports
 // it against the file). OpenCASCADE's messenger prints while reading; the
 // caller silences it.
@@ -23,21 +24,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "io/cad/cad_iges_boundary.hpp"
+#include "io/cad/occt/cad_iges_boundary.hpp"
+#include "io/cad/cad_file_format.hpp"
 #include "io/cad/cad_import.hpp"
 
 namespace furrow::cad {
-
-enum class Format { step, iges };
-
-// The format a file name says (.step .stp .iges .igs, any case); InputError
-// for any other name.
-Format format_of(const std::string& path);
-
-// Cheap signature check so that a wrong file gets a plain answer instead of
-// whatever OpenCASCADE's parser makes of it; InputError when the file is
-// missing, a folder, unreadable, empty or does not start like `format`.
-void check_signature(const std::string& path, Format format);
 
 // Where a face of the shape comes from in the file.
 struct FaceOrigin {

@@ -38,7 +38,7 @@
 
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/trim.hpp"
-#include "io/cad/cad_iges_boundary.hpp"
+#include "io/cad/occt/cad_iges_boundary.hpp"
 #include "io/cad/cad_import.hpp"
 #include "io/cad/cad_parameter_map.hpp"
 

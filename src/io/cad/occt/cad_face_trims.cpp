@@ -1,6 +1,6 @@
 // A face's trim loops in its surface's parameter plane (contract in
 // cad_face_trims.hpp).
-#include "io/cad/cad_face_trims.hpp"
+#include "io/cad/occt/cad_face_trims.hpp"
 
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/cad/cad_occt_internal.hpp"
+#include "io/cad/occt/cad_occt_internal.hpp"
 #include "io/cad/cad_trim_polygon.hpp"
 
 namespace furrow::cad {

@@ -1,6 +1,6 @@
 // What an IGES file says about a face's outer boundary (contract in
 // cad_iges_boundary.hpp).
-#include "io/cad/cad_iges_boundary.hpp"
+#include "io/cad/occt/cad_iges_boundary.hpp"
 
 #include <IGESData_IGESEntity.hxx>
 #include <IGESGeom_BSplineCurve.hxx>

@@ -17,7 +17,7 @@
 // (u,v); `bounds` is the face's rectangle in it (cad_face_trims.hpp).
 // Failures: FaceFailure (cad_occt_internal.hpp) saying why, for a surface
 // that cannot be converted or checked; OpenCASCADE's Standard_Failure may
-// escape too (import_cad() reports both against the face).
+// escape too (import_with_occt() reports both against the face).
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
