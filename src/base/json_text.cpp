@@ -114,9 +114,6 @@ void append_number(std::string& out, double v, const char* what) {
   out.append(buf, format_double(buf, v));
 }
 
-void append_integer(std::string& out, long long v) { append_int(out, v); }
-void append_unsigned(std::string& out, unsigned long long v) { append_int(out, v); }
-
 void append_string(std::string& out, std::string_view s) {
   if (plain(s)) {
     out += '"';

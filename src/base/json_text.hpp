@@ -33,8 +33,6 @@ using nlohmann::json;
 // Appends `v` as nlohmann::json dumps a double. Non-finite: logic_error
 // naming `what` (Furrow never writes NaN; the caller has a bug).
 void append_number(std::string& out, double v, const char* what);
-void append_integer(std::string& out, long long v);
-void append_unsigned(std::string& out, unsigned long long v);
 // Appends `s` quoted and escaped as nlohmann::json dumps it.
 void append_string(std::string& out, std::string_view s);
 // Appends `v` in to_text's layout, `indent` spaces being the indent of the

@@ -61,11 +61,4 @@ CurvatureField compute_curvature_field(const Face& face, int nu, int nv) {
   return field;
 }
 
-std::vector<double> class_areas(const CurvatureField& field, double eps) {
-  std::vector<double> areas(kCurvatureClassCount, 0.0);
-  for (const CurvatureSample& s : field.samples)
-    if (s.valid()) areas[static_cast<int>(classify_curvature(s.k1, s.k2, eps))] += s.area;
-  return areas;
-}
-
 }  // namespace furrow

@@ -51,8 +51,4 @@ struct CurvatureField {
 // Preconditions: nu, nv >= 1 (InputError otherwise).
 CurvatureField compute_curvature_field(const Face& face, int nu, int nv);
 
-// Area of each curvature class over the valid samples [mm^2], indexed by
-// CurvatureClass.
-std::vector<double> class_areas(const CurvatureField& field, double eps);
-
 }  // namespace furrow

@@ -5,7 +5,6 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "base/atomic_file.hpp"
 #include "partition/face_grid.hpp"
 #include "render/plot_canvas.hpp"
 
@@ -156,11 +155,6 @@ std::vector<unsigned char> region_image_png(const Part& part, const PartitionRes
   draw_legend(canvas, row_top[rows]);
   const std::vector<unsigned char> png = plot::encode_png(canvas);
   return png;
-}
-
-void write_region_image(const std::string& path, const Part& part, const PartitionResult& result) {
-  const std::vector<unsigned char> png = region_image_png(part, result);
-  write_file_atomically(path, std::string(png.begin(), png.end()));
 }
 
 }  // namespace furrow

@@ -20,7 +20,4 @@ namespace furrow {
 // Precondition: `result` was computed for `part`.
 std::vector<unsigned char> region_image_png(const Part& part, const PartitionResult& result);
 
-// Throws InputError when the file cannot be written.
-void write_region_image(const std::string& path, const Part& part, const PartitionResult& result);
-
 }  // namespace furrow

@@ -5,7 +5,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "base/json_fields.hpp"
 
 namespace furrow {
 
@@ -24,10 +23,6 @@ std::string sha256_hex(const std::string& bytes) {
     hex += kHex[digest[i] & 15];
   }
   return hex;
-}
-
-std::string sha256_hex_of_file(const std::string& path) {
-  return sha256_hex(json_fields::read_text(path));
 }
 
 }  // namespace furrow

@@ -8,7 +8,5 @@ namespace furrow {
 
 // Lower-case hex digest of bytes.
 std::string sha256_hex(const std::string& bytes);
-// Digest of a file's content; throws InputError naming the path if unreadable.
-std::string sha256_hex_of_file(const std::string& path);
 
 }  // namespace furrow

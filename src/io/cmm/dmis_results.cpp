@@ -312,12 +312,6 @@ std::vector<DmisStatement> dmis_statements(const std::string& text) {
   return out;
 }
 
-std::optional<double> dmis_units_scale(const DmisStatement& st, const std::string& name) {
-  std::string buffer;
-  compact(st.text, buffer);
-  return units_scale(buffer, name, st.line);
-}
-
 std::optional<DmisPointFeature> parse_dmis_point_feature(const DmisStatement& st, const std::string& name,
                                                          double scale) {
   std::string buffer;

@@ -52,10 +52,6 @@ struct DmisStatement {
 };
 std::vector<DmisStatement> dmis_statements(const std::string& text);
 
-// UNITS/MM or UNITS/INCH: the factor to millimetres; nullopt for another
-// statement; InputError "name:line: ..." for another unit.
-std::optional<double> dmis_units_scale(const DmisStatement& statement, const std::string& name);
-
 // F(label)=FEAT/POINT,CART,x,y,z,i,j,k (a nominal) or FA(label)=... (an
 // actual), coordinates times `scale`, ijk normalised; nullopt for any other
 // statement (other feature types included); InputError "name:line: ..." for

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "base/number_text.hpp"
-#include "base/atomic_file.hpp"
 #include "render/plot_canvas.hpp"
 
 namespace furrow {
@@ -102,11 +101,6 @@ std::string error_map_png(const Part& part, const ErrorMap& map, const ErrorImag
               cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   const std::vector<unsigned char> bytes = plot::encode_png(canvas);
   return std::string(bytes.begin(), bytes.end());
-}
-
-void write_error_map_png(const Part& part, const ErrorMap& map, const std::string& path,
-                         const ErrorImageOptions& options) {
-  write_file_atomically(path, error_map_png(part, map, options));
 }
 
 }  // namespace furrow

@@ -21,8 +21,4 @@ struct ErrorImageOptions {
 // PNG bytes (OpenCV). Deterministic for the same map and options.
 std::string error_map_png(const Part& part, const ErrorMap& map, const ErrorImageOptions& options = {});
 
-// Writes the PNG atomically.
-void write_error_map_png(const Part& part, const ErrorMap& map, const std::string& path,
-                         const ErrorImageOptions& options = {});
-
 }  // namespace furrow
