@@ -4,6 +4,8 @@
 #include <regex>
 #include <sstream>
 
+#include "io/cad/cad_module.hpp"
+
 namespace furrow::cli {
 
 namespace {
@@ -52,7 +54,11 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
          "tolerance, gouge, uncovered)\n.TP\n2\nbad input: a file, option or value to fix; "
          "nothing is written\n.TP\n3\nthe computation did not succeed\n.TP\n4\ninconclusive: nothing failed, but "
          "something was not shown to be good (a suspected blunder outside the zone, an unmeasured predicted gouge, "
-         "a region below its minimum, an undetermined alignment)\n";
+         "a region below its minimum, an undetermined alignment)\n"
+      << ".SH ENVIRONMENT\n.TP\n.B " << cad::kModuleOverride
+      << "\nThe CAD module to load for STEP and IGES files instead of looking for " << cad::kModuleName
+      << ".so next to the program and in the installed module folder (lib/furrow). Without a module that "
+         "can be loaded, a CAD import stops with exit status 3 and names every place looked at.\n";
 }
 
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {
