@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "geometry/point_search.hpp"
 #include "inspection/registration.hpp"
@@ -25,8 +26,14 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
                                    const std::vector<bool>& usable, const OutlierRule& rule,
                                    std::vector<OutlierReason>& reasons) {
   OutlierVerdict v;
+  // Sized exactly: at a million points every spare byte per point is a
+  // megabyte of the registration's peak (docs/registration.md "Memory").
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < deviation.size(); ++i) count += usable[i];
   std::vector<double> d;
   std::vector<std::size_t> index;  // usable point -> original index
+  d.reserve(count);
+  index.reserve(count);
   for (std::size_t i = 0; i < deviation.size(); ++i)
     if (usable[i]) {
       d.push_back(deviation[i]);
@@ -40,17 +47,18 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
   v.limit = std::max(rule.sigmas * v.robust_sigma, rule.floor);
 
   std::vector<bool> large(d.size());
-  bool any = false;
+  std::size_t large_count = 0;
   for (std::size_t k = 0; k < d.size(); ++k) {
     large[k] = spread[k] > v.limit;
-    any = any || large[k];
+    large_count += large[k];
     reasons[index[k]] = OutlierReason::none;
   }
-  if (!any) return v;
+  if (large_count == 0) return v;
+  spread = std::vector<double>();
 
   std::vector<Eigen::Vector3d> evaluated(d.size());
   for (std::size_t k = 0; k < d.size(); ++k) evaluated[k] = positions[index[k]];
-  const PointSearch search(evaluated);
+  const PointSearch search(std::move(evaluated));
   // Agreeing neighbours of each large point: large too, on the same side
   // and alike - within the limit of its value, or within a factor
   // kAlikeRatio of its excess over the median - among its six nearest within
@@ -59,27 +67,30 @@ OutlierVerdict classify_deviations(const std::vector<Eigen::Vector3d>& positions
   // limit alone declared their points blunders one by one. A blunder on or
   // next to a real deviation differs from it by its own unrelated size and
   // mostly stays a blunder.
-  std::vector<std::vector<std::size_t>> agree(d.size());
-  for (std::size_t k = 0; k < d.size(); ++k) {
+  // agree[s]: the s-th large point's agreeing neighbours (large points only).
+  std::vector<std::vector<std::size_t>> agree(large_count);
+  for (std::size_t k = 0, s = 0; k < d.size(); ++k) {
     if (!large[k]) continue;
-    for (const PointNeighbour& near : search.nearest(evaluated[k], 7)) {  // self + 6
+    std::vector<std::size_t>& mine = agree[s++];
+    for (const PointNeighbour& near : search.nearest(positions[index[k]], 7)) {  // self + 6
       const std::size_t j = near.index;
       if (j == k || near.distance > rule.radius || !large[j]) continue;
       const double a = d[j] - v.median, b = d[k] - v.median;
       const bool alike = std::abs(a - b) <= v.limit ||
                          std::max(std::abs(a), std::abs(b)) <= kAlikeRatio * std::min(std::abs(a), std::abs(b));
-      if (a * b > 0 && alike) agree[k].push_back(j);
+      if (a * b > 0 && alike) mine.push_back(j);
     }
   }
   // Cores have `confirm` agreeing neighbours; a large point agreeing with a
   // core belongs to the same real deviation (its rim).
   std::vector<bool> core(d.size(), false);
-  for (std::size_t k = 0; k < d.size(); ++k)
-    core[k] = large[k] && static_cast<int>(agree[k].size()) >= rule.confirm;
-  for (std::size_t k = 0; k < d.size(); ++k) {
+  for (std::size_t k = 0, s = 0; k < d.size(); ++k)
+    if (large[k]) core[k] = static_cast<int>(agree[s++].size()) >= rule.confirm;
+  for (std::size_t k = 0, s = 0; k < d.size(); ++k) {
     if (!large[k]) continue;
+    const std::vector<std::size_t>& mine = agree[s++];
     bool real = core[k];
-    for (std::size_t j : agree[k]) real = real || core[j];
+    for (std::size_t j : mine) real = real || core[j];
     reasons[index[k]] = real ? OutlierReason::large_deviation : OutlierReason::blunder;
   }
   return v;

@@ -218,6 +218,11 @@ double rms(const std::vector<double>& v) {
 Observability observability_at_solution(const Part& part, const std::vector<RegisteredPoint>& points,
                                         const RegistrationOptions& options) {
   std::vector<Eigen::Vector3d> x, normal;
+  // Sized exactly: growing them would double them at a million points.
+  std::size_t count = 0;
+  for (const RegisteredPoint& p : points) count += p.in_fit;
+  x.reserve(count);
+  normal.reserve(count);
   std::vector<bool> measured_face(part.faces.size(), false);
   for (const RegisteredPoint& p : points)
     if (p.in_fit) {
@@ -288,6 +293,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
   MotionBasis held_basis(6, 0);  // the weak directions held (columns)
   enum class Holding { none, all, exact_only } holding = Holding::none;
   auto points_in_fit = [&](std::vector<Eigen::Vector3d>& x, std::vector<Eigen::Vector3d>& normal) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; ++i) count += ws.on_part(i);
+    x.reserve(count);
+    normal.reserve(count);
     for (std::size_t i = 0; i < n; ++i)
       if (ws.on_part(i)) {
         x.push_back(fit.moved(i));
@@ -462,6 +471,7 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
 
   // Results per point at the final transform (the feet are there already).
   std::vector<double> in_fit;
+  in_fit.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     RegisteredPoint& p = result.points[i];
     p.registered = fit.moved(i);

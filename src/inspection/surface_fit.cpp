@@ -234,7 +234,7 @@ void SurfaceFit::set_loss(RobustLoss loss, double loss_scale) {
 
 int SurfaceFit::solve(std::string& message) {
   ceres::Solver::Options o;
-  o.linear_solver_type = ceres::DENSE_QR;
+  o.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   o.max_num_iterations = max_iterations_;
   // The outer loop decides convergence (motion_tolerance) and the iteration
   // cap bounds the work per outer iteration. Ceres' own tolerances must not

@@ -68,10 +68,15 @@ TEST_CASE("simulate-measurement to .csv, .dmo and .res: same coordinates back, s
     deviations.emplace_back();
     for (const auto& p : doc["points"]) deviations.back().push_back(p["deviation"].get<double>());
   }
+  // The same coordinates, but not the same path to the fit: the DMIS file
+  // carries its nominals, so its fit starts from them (4 outer iterations),
+  // while the CSV and .res fits start from the global search (15). Each stops
+  // when a step moves the part by less than the motion tolerance (1e-10 mm),
+  // so they agree to about that, here within 1e-8 mm (10 picometres).
   for (std::size_t f = 1; f < deviations.size(); ++f) {
     REQUIRE(deviations[f].size() == deviations[0].size());
     for (std::size_t k = 0; k < deviations[0].size(); ++k)
-      if (std::abs(deviations[f][k] - deviations[0][k]) > 1e-9)
+      if (std::abs(deviations[f][k] - deviations[0][k]) > 1e-8)
         FAIL_CHECK(names[f] << " point " << k << ": " << deviations[f][k] << " vs " << deviations[0][k]);
   }
 }
