@@ -234,6 +234,8 @@ void SurfaceFit::set_loss(RobustLoss loss, double loss_scale) {
 
 int SurfaceFit::solve(std::string& message) {
   ceres::Solver::Options o;
+  // Six unknowns: each step from the 6x6 normal equations. Dense QR would
+  // copy the million-row Jacobian twice more (docs/registration.md "Memory").
   o.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   o.max_num_iterations = max_iterations_;
   // The outer loop decides convergence (motion_tolerance) and the iteration
