@@ -68,8 +68,11 @@ void* load(const std::string& name, const std::string& override_variable, const 
     }
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
-      const char* why = dlerror();
-      tried += "\n  " + path + ": " + (why ? why : "cannot be loaded");
+      const char* loader = dlerror();
+      // The loader's message starts with the path itself; it is said once.
+      std::string why = loader ? loader : "cannot be loaded";
+      if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
+      tried += "\n  " + path + ": " + why;
       continue;
     }
     using VersionFn = const char* (*)();

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 #include "base/runtime_module.hpp"
 #include "io/cad/cad_module.hpp"
@@ -83,4 +84,19 @@ TEST_CASE("a shared object that is not a Furrow module is refused, not called") 
   const std::string message = message_of("furrow_not_a_module", "FURROW_TEST_MODULE");
   ::unsetenv("FURROW_TEST_MODULE");
   CHECK(message.find(std::string(info.dli_fname) + ": not a Furrow module") != std::string::npos);
+}
+
+TEST_CASE("a file the loader cannot read is named once with the loader's reason") {
+  const std::filesystem::path empty =
+      std::filesystem::path(FURROW_BINARY_DIR) / "test-scratch" / ("empty-module." + std::to_string(::getpid()) + ".so");
+  std::filesystem::create_directories(empty.parent_path());
+  { std::ofstream(empty.string()); }
+  ::setenv("FURROW_TEST_MODULE", empty.c_str(), 1);
+  const std::string message = message_of("furrow_empty_module", "FURROW_TEST_MODULE");
+  ::unsetenv("FURROW_TEST_MODULE");
+  std::filesystem::remove(empty);
+  const std::size_t first = message.find(empty.string());
+  REQUIRE(first != std::string::npos);
+  CHECK(message.find(empty.string(), first + 1) == std::string::npos);
+  CHECK(message.size() > message.find(empty.string() + ": ") + empty.string().size() + 2);  // a reason follows
 }
