@@ -29,7 +29,7 @@ NormalError zmap_error(const ZMap& zmap, const Eigen::Vector3d& point, const Eig
   auto height = [&zmap](double x, double y) { return zmap.height_at(x, y); };
   // Steps of at most one cell of horizontal travel, so the search cannot
   // jump over uncut nodes between passes (normal_error.hpp "max_step").
-  NormalErrorOptions o = options;
+  NormalErrorOptions o = with_height_bounds(options, zmap.lowest_tip(), zmap.shadow_box());
   const double nxy = std::hypot(normal.x(), normal.y());
   if (nxy > 0) {
     const double cell_step = zmap.cell() / nxy;

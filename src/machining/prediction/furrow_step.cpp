@@ -105,13 +105,15 @@ FurrowStepResult step_error(const Cutter& cutter, const Eigen::Vector3d& tip0, c
   result.tip1 = tip1;
   const SweptEnvelope envelope(cutter, tip0, tip1, options.envelope);
   auto height = [&](double x, double y) { return envelope.height_at(x, y); };
+  const NormalErrorOptions normal =
+      with_height_bounds(options.normal, std::min(tip0.z(), tip1.z()), envelope.shadow_box());
   bool all_converged = true;
   // Error at a curve point; `reached` says whether it is defined.
   auto error_at = [&](double lambda, bool& reached) {
     const SurfacePoint p = curve(lambda);
     reached = false;
     if (!p.valid || !(p.normal.z() >= 0)) return 0.0;
-    const NormalError e = normal_error(height, p.point, p.normal, options.normal);
+    const NormalError e = normal_error(height, p.point, p.normal, normal);
     reached = e.reached;
     if (e.reached && !e.converged) all_converged = false;
     return e.error;

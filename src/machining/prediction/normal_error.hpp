@@ -34,7 +34,10 @@
 // found at a jump of H from +infinity (the far side of a gap narrower than
 // a step) is not reached unless a finer scan finds a true crossing first.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "base/scalar_search.hpp"
 
@@ -46,7 +49,42 @@ struct NormalErrorOptions {
   double max_distance = 10;  // search range along the normal [mm]
   double growth = 1.6;       // bracket growth per step
   double max_step = 0;       // [mm] longest step along the normal; 0: no limit (see above)
+  // What the caller knows of H, so that an overcut of any depth is measured
+  // rather than stopped at max_distance: H >= floor everywhere, and
+  // H = +infinity outside `shadow` (an empty box: not known). Going down,
+  // the normal line is past any crossing once it runs below the floor or
+  // out of the shadow, so the search range extends to there.
+  double floor = -std::numeric_limits<double>::infinity();
+  Eigen::AlignedBox2d shadow;
 };
+
+// `options` with the bounds of H set (see NormalErrorOptions::floor).
+inline NormalErrorOptions with_height_bounds(NormalErrorOptions options, double floor,
+                                             const Eigen::AlignedBox2d& shadow) {
+  options.floor = floor;
+  options.shadow = shadow;
+  return options;
+}
+
+// The range of the downward (overcut) search from q along n [mm]: at least
+// max_distance, and far enough that the line has crossed H when the bounds
+// above are known.
+inline double overcut_search_range(const Eigen::Vector3d& q, const Eigen::Vector3d& n,
+                                   const NormalErrorOptions& options) {
+  double range = std::numeric_limits<double>::infinity();
+  if (n.z() > 0 && std::isfinite(options.floor)) range = (q.z() - options.floor) / n.z();
+  const double nxy = std::hypot(n.x(), n.y());
+  if (!options.shadow.isEmpty() && nxy > 0) {
+    double farthest = 0;
+    for (int c = 0; c < 4; ++c)
+      farthest = std::max(farthest, (options.shadow.corner(static_cast<Eigen::AlignedBox2d::CornerType>(c)) -
+                                     q.head<2>()).norm());
+    range = std::min(range, farthest / nxy);
+  }
+  if (!std::isfinite(range)) return options.max_distance;
+  // A margin for rounding: at the bound itself g is exactly 0 or +infinity.
+  return std::max(options.max_distance, range + 1e-9 * (1 + range) + 10 * options.tolerance);
+}
 
 struct NormalError {
   double error = 0;        // [mm], positive = material left, negative = overcut
@@ -74,11 +112,12 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
     return result;
   }
   const double dir = g0 > 0 ? 1.0 : -1.0;
+  const double range = dir > 0 ? options.max_distance : overcut_search_range(q, n, options);
   double step = std::fabs(g0) * std::max(n.z(), 0.05);
   step = std::max(step, 10 * options.tolerance);
   double ta = 0, ga = g0;
   for (;;) {
-    double reach = std::min(step, options.max_distance);
+    double reach = std::min(step, range);
     if (options.max_step > 0) reach = std::min(reach, std::fabs(ta) + options.max_step);
     const double tb = dir * reach;
     const double gb = g(tb);
@@ -124,11 +163,12 @@ NormalError normal_error(const Height& height, const Eigen::Vector3d& q, const E
       }
       return result;
     }
-    if (!std::isfinite(gb) || reach >= options.max_distance) {
+    if (!std::isfinite(gb) || reach >= range) {
       // Going up: the normal left the cut area without meeting the machined
-      // surface. Going down beyond the range: an overcut deeper than it.
+      // surface. Going down beyond the range (only without bounds on H): an
+      // overcut deeper than it, a lower bound, not converged.
       result.reached = dir < 0;
-      result.error = dir < 0 ? -options.max_distance : 0.0;
+      result.error = dir < 0 ? -range : 0.0;
       result.end = tb;
       return result;
     }

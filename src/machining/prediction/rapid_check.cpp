@@ -89,7 +89,9 @@ double depth_at(const Face& face, const SweptEnvelope& env, const Eigen::Vector2
   if (!face_normal(face, uv.x(), uv.y(), p, n) || !(n.z() >= 0)) return -kInf;
   const double h = env.height_at(p.x(), p.y());
   if (!(h < p.z())) return 0;
-  const NormalError e = normal_error([&env](double x, double y) { return env.height_at(x, y); }, p, n, options);
+  const NormalError e =
+      normal_error([&env](double x, double y) { return env.height_at(x, y); }, p, n,
+                   with_height_bounds(options, std::min(env.from().z(), env.to().z()), env.shadow_box()));
   return e.reached && e.error < 0 ? -e.error : 0;
 }
 

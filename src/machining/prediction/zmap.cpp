@@ -89,6 +89,8 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
     moves_.push_back(m);
     envelopes_.emplace_back(cutter, m.from, m.to, options_.envelope);
     const Eigen::AlignedBox2d box = envelopes_.back().shadow_box();
+    shadow_.extend(box);
+    lowest_tip_ = std::min({lowest_tip_, m.from.z(), m.to.z()});
     const double lo = std::ceil((box.min().y() - y0_) / cell_), hi = std::floor((box.max().y() - y0_) / cell_);
     rows.push_back({static_cast<int>(std::clamp(lo, 0.0, double(ny_))),
                     static_cast<int>(std::clamp(hi, -1.0, double(ny_ - 1)))});

@@ -88,6 +88,11 @@ class ZMap {
   std::int32_t node_owner(int i, int j) const { return owners_[index(i, j)]; }
   std::size_t cut_node_count() const;
   const std::vector<ZMapMove>& moves() const { return moves_; }
+  // Bounds of the machined surface, for searches that must know where it
+  // can be (normal_error.hpp floor and shadow): the lowest tip of any move
+  // (+infinity before the first cut), and the box of every move's shadow.
+  double lowest_tip() const { return lowest_tip_; }
+  const Eigen::AlignedBox2d& shadow_box() const { return shadow_; }
 
   // Machined height at any (x, y): the lowest exact envelope of the passes
   // through the moves owning the four surrounding nodes; +infinity when none
@@ -115,6 +120,8 @@ class ZMap {
   std::vector<std::int32_t> owners_;
   std::vector<ZMapMove> moves_;
   std::vector<SweptEnvelope> envelopes_;
+  double lowest_tip_ = std::numeric_limits<double>::infinity();
+  Eigen::AlignedBox2d shadow_;
 };
 
 // The part's xy extent: the box of its faces' control nets (which contains
