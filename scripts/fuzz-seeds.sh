@@ -40,6 +40,7 @@ done
 add part_json "$src"/examples/parts/*.json
 add tool_json "$src"/examples/tools/{ball,bull,flat}_*.json
 add tool_library_json "$src"/examples/tools/library.json
+add tool_table_json "$src"/examples/tools/table.json
 add_cut gcode "$src"/examples/toolpaths/*.nc
 add_cut toolpath_csv "$src"/examples/toolpaths/*.csv
 add job_json "$src"/examples/jobs/*.json

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "base/error.hpp"
 #include "base/json_text.hpp"
@@ -43,8 +45,27 @@ std::string brief(const std::string& detail) {
 
 json parse_text(const std::string& text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail(name, "the file is empty");
+  // A member given twice in one object: the parser would keep the last one
+  // without a word, so a pasted or merged file would lose a value silently.
+  std::vector<std::set<std::string>> members;  // one per open object
+  std::string duplicate;
+  auto check = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: members.emplace_back(); break;
+      case json::parse_event_t::object_end: members.pop_back(); break;
+      case json::parse_event_t::key:
+        if (duplicate.empty() && !members.back().insert(parsed.get<std::string>()).second)
+          duplicate = parsed.get<std::string>();
+        break;
+      default: break;
+    }
+    return true;
+  };
   try {
-    return json::parse(text);
+    json doc = json::parse(text, check);
+    if (!duplicate.empty())
+      fail(name, "member " + quote_field(duplicate) + " is given twice in one object (only one value can be meant)");
+    return doc;
   } catch (const json::parse_error& e) {
     // Turn the byte offset into line and column: what an editor shows.
     const std::size_t byte = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());

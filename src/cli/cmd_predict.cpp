@@ -12,6 +12,7 @@
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
+#include "machining/cutter/path_tools.hpp"
 #include "io/toolpath_file.hpp"
 #include "partition/classification.hpp"
 #include "partition/regions_file.hpp"
@@ -43,7 +44,7 @@ void print_rapids(std::ostream& out, const Prediction& p) {
   const RapidsRecord& r = p.rapids;
   if (r.checked + r.unchecked == 0) return;
   out << "rapids: " << r.checked << " checked against the part" << (r.has_stock ? " and the stock" : "");
-  if (r.unchecked) out << ", " << r.unchecked << " unchecked (not in the part frame: G28, G53, unknown start)";
+  if (r.unchecked) out << ", " << r.unchecked << " unchecked (not in the part frame: G28, G53, M6, unknown start)";
   out << "; rapid gouges: " << r.gouges.size() << "\n";
   for (const RapidGougeRecord& g : r.gouges) {
     char buf[200];
@@ -57,8 +58,18 @@ void print_rapids(std::ostream& out, const Prediction& p) {
 
 void print_summary(std::ostream& out, const Prediction& p) {
   const PredictionSummary& s = p.summary;
-  out << "tool " << p.tool.name << " (" << to_string(p.tool.type) << ", diameter " << p.tool.diameter
-      << " mm), tolerance " << um(p.tolerance) << "\n";
+  if (p.tools.empty()) {
+    out << "tool " << p.tool.name << " (" << to_string(p.tool.type) << ", diameter " << p.tool.diameter
+        << " mm), tolerance " << um(p.tolerance) << "\n";
+  } else {
+    out << "tools (the program changes tools), tolerance " << um(p.tolerance) << ":\n";
+    for (std::size_t k = 0; k < p.tools.size(); ++k) {
+      const ToolSpec& t = p.tools[k].tool;
+      const auto passes = std::count(p.pass_tools.begin(), p.pass_tools.end(), static_cast<int>(k));
+      out << "  T" << p.tools[k].number << " " << t.name << " (" << to_string(t.type) << ", diameter " << t.diameter
+          << " mm): " << passes << (passes == 1 ? " pass" : " passes") << "\n";
+    }
+  }
   out << "path: " << s.path_points << " points, " << s.steps << " moves (" << s.steps_evaluated << " evaluated";
   if (s.points_in_air) out << ", " << s.points_in_air << " points in the air";
   if (s.points_without_contact) out << ", " << s.points_without_contact << " points without contact";
@@ -120,6 +131,7 @@ void print_summary(std::ostream& out, const Prediction& p) {
 
 int run_predict(Args& args) {
   const auto tool_path = args.option("tool");
+  const auto table_path = args.option("tools");
   const std::string toolpath_path = args.required_option("toolpath");
   const std::string out_path = args.required_option("out");
   const auto map_path = args.option("map");
@@ -151,13 +163,22 @@ int run_predict(Args& args) {
   // Only APT CL data names its cutter (CUTTER/): any other path needs --tool,
   // said before any file is read.
   const std::string path_ext = lower_extension(toolpath_path);
-  if (!tool_path && path_ext != ".cl" && path_ext != ".apt" && path_ext != ".cls")
-    args.fail("--tool is required (only an APT CL path, .cl .apt .cls, names its own cutter with CUTTER/)");
+  if (!tool_path && !table_path && path_ext != ".cl" && path_ext != ".apt" && path_ext != ".cls")
+    args.fail("--tool or --tools is required (only an APT CL path, .cl .apt .cls, names its own cutter with CUTTER/)");
+  if (table_path && lower_extension(*table_path) != ".json")
+    args.fail("--tools " + *table_path + ": expected a tool table (.json)");
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (map_path && lower_extension(*map_path) != ".png") args.fail("--map " + *map_path + ": expected a .png file name");
   OutputSet outputs;
   outputs.add_input(part_path, "part");
   if (tool_path) outputs.add_input(*tool_path, "tool");
+  std::optional<std::vector<ToolTableEntry>> table;
+  if (table_path) {
+    outputs.add_input(*table_path, "tool table");
+    table = read_tool_table(*table_path);
+    for (const ToolTableEntry& e : *table)
+      if (!e.file.empty()) outputs.add_input(e.file, "tool");
+  }
   outputs.add_input(toolpath_path, "tool path");
   if (regions) outputs.add_input(*regions, "regions");
   outputs.will_write(out_path);
@@ -171,12 +192,14 @@ int run_predict(Args& args) {
   }
   const Toolpath path = read_toolpath(toolpath_path, read_options);
   // An APT path names its cutter (CUTTER/): it is the tool when --tool is
-  // not given, and a --tool that contradicts it is refused.
-  const Cutter cutter(tool_for_path(tool_path ? std::optional<ToolSpec>(read_tool_file(*tool_path)) : std::nullopt,
-                                    tool_path.value_or(""), path));
+  // not given, and a --tool that contradicts it is refused. A program that
+  // changes tools takes them from the table.
+  const PathTools tools =
+      tools_for_path(path, tool_path ? std::optional<ToolSpec>(read_tool_file(*tool_path)) : std::nullopt,
+                     tool_path.value_or(""), table, table_path.value_or(""));
   TerminalProgress progress;
   const PredictedPath predicted = naming_inputs(part_path + " with " + toolpath_path, [&] {
-    return predict_stage(part, cutter, path, options, {part_path, toolpath_path, regions.value_or("")},
+    return predict_stage(part, tools, path, options, {part_path, toolpath_path, regions.value_or("")},
                          region_map ? &*region_map : nullptr,
                          [&](const std::string& stage, std::size_t done, std::size_t total) {
                            progress.update(stage, done, total);
@@ -197,7 +220,8 @@ int run_predict(Args& args) {
 
 const Command kPredictCommand = {
     "predict", "machining error of a tool path: per step, z-map error map, scallops, gouges",
-    "usage: furrow predict PART [--tool TOOL.json] --toolpath PATH --out PREDICTION.json\n"
+    "usage: furrow predict PART [--tool TOOL.json] [--tools TABLE.json] --toolpath PATH\n"
+    "                      --out PREDICTION.json\n"
     "                      [--map ERRORS.png] [--regions REGIONS.json] [--tolerance MM]\n"
     "                      [--gouge-threshold MM]\n"
     "                      [--resolution MM] [--cell MM] [--map-scale UM] [--units mm|inch]\n"
@@ -223,7 +247,12 @@ const Command kPredictCommand = {
     "face on a (u,v) grid of cells for later stages.\n"
     "\n"
     "  --tool FILE           tool JSON (ball, flat or bull); required unless PATH is\n"
-    "                        APT with a CUTTER/, which it must then match\n"
+    "                        APT with a CUTTER/, which it must then match, or --tools\n"
+    "                        is given\n"
+    "  --tools FILE          tool table for a program that changes tools (T n M6):\n"
+    "                        {\"T1\": tool or tool file, ...}; each pass is predicted\n"
+    "                        with the tool loaded when it is cut (--tool: the one in\n"
+    "                        the spindle before the first change)\n"
     "  --toolpath FILE       tool path, G-code, APT CL or CSV (required)\n"
     "  --out FILE            prediction to write (.json, required)\n"
     "  --map FILE            also draw the error map per face (.png, colour scale in um)\n"

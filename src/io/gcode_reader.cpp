@@ -124,6 +124,9 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
   double feed = 0;
   double position[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
+  int selected_tool = -1;  // last T word; -1 none yet
+  int loaded_tool = 0;     // in the spindle (ToolpathPass::tool)
+  int unloaded_at = 0;     // line of a T0 M6 while the spindle is empty
   ToolpathPass current;
   auto close_pass = [&]() {
     if (current.points.size() >= 2) path.passes.push_back(std::move(current));
@@ -156,6 +159,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     bool radius_given = false;
     bool home = false;     // G28
     bool machine = false;  // G53
+    bool change = false;   // M6
     int motion_here = -1;  // motion word on this line
     for (const Word& w : words) {
       // Only errors and ignored words need the word as written.
@@ -235,9 +239,19 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           if (!(w.value > 0)) fail_line(name, number, "feed F" + w.text + " must be positive");
           feed = w.value;
           break;
-        case 'M':
-        case 'S':
         case 'T':
+          if (!(w.value >= 0 && w.value == std::floor(w.value) && w.value <= 1e6))
+            fail_line(name, number, "tool number " + written() + " must be a whole number from 0 to 1000000");
+          selected_tool = static_cast<int>(w.value);
+          break;
+        case 'M':
+          if (w.value == 6) {
+            change = true;
+            break;
+          }
+          path.ignored.push_back({number, written()});
+          break;
+        case 'S':
         case 'H':
         case 'D':
           path.ignored.push_back({number, written()});
@@ -245,6 +259,23 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
         default:
           fail_line(name, number, "word " + written() + " is not supported (no rotary axes in 3-axis paths)");
       }
+    }
+    if (change) {
+      // The spindle goes to the change position (machine coordinates) and
+      // comes back with another tool: the pass ends and nothing is known of
+      // where the tool is until the program says so.
+      if (selected_tool < 0) fail_line(name, number, "M6 (tool change) without a tool number: no T word before it");
+      if (home || machine || axis_given[0] || axis_given[1] || axis_given[2])
+        fail_line(name, number, "M6 (tool change) with a move on its line: give the move on a line of its own");
+      close_pass();
+      RapidMove unchecked;
+      unchecked.line = number;
+      unchecked.tool = loaded_tool;
+      path.rapids.push_back(unchecked);
+      loaded_tool = selected_tool;
+      unloaded_at = loaded_tool == 0 ? number : 0;
+      path.tool_changes.push_back({number, loaded_tool});
+      for (bool& k : known) k = false;
     }
     const bool arc_words = radius_given || centre_given[0] || centre_given[1] || centre_given[2];
     const bool arc = !home && !machine && (motion == 2 || motion == 3);
@@ -262,6 +293,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
       close_pass();
       RapidMove unchecked;  // ends in machine coordinates: not placed in the part frame
       unchecked.line = number;
+      unchecked.tool = loaded_tool;
       path.rapids.push_back(unchecked);
       for (int a = 0; a < 3; ++a)
         if (axis_given[a] || (home && !any)) known[a] = false;
@@ -294,6 +326,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     if (motion == 0) {
       RapidMove rapid;
       rapid.line = number;
+      rapid.tool = loaded_tool;
       rapid.known = known[0] && known[1] && known[2];  // where it starts
       for (int a = 0; a < 3; ++a) known[a] = known[a] || axis_given[a];
       rapid.known = rapid.known && known[0] && known[1] && known[2];
@@ -309,6 +342,8 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     }
     // A cut starts from where the tool is: all three axes must be known
     // before it, or the pass would start at a guessed point.
+    if (unloaded_at)
+      fail_line(name, number, "cutting move with an empty spindle (T0 M6 at line " + std::to_string(unloaded_at) + ")");
     if (!(known[0] && known[1] && known[2]))
       fail_line(name, number, motion == 1 ? "cutting move before X, Y and Z are all known"
                                           : "arc before X, Y and Z are all known");
@@ -359,7 +394,10 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     if (points + static_cast<long>(reached.size()) > limits::kMaxFilePoints)
       fail_line(name, number, "more than " + std::to_string(limits::kMaxFilePoints) +
                                   " tool-path points (docs/formats.md \"Limits\")");
-    if (current.points.empty()) current.points.push_back(tip(from));
+    if (current.points.empty()) {
+      current.points.push_back(tip(from));
+      current.tool = loaded_tool;
+    }
     for (const Eigen::Vector3d& p : reached)
       if ((p - current.points.back().position).norm() > 0) {  // zero-length moves add nothing
         current.points.push_back(tip(p));

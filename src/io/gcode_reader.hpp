@@ -25,8 +25,19 @@
 // positions are taken as tool tips, i.e. the length offset is assumed to be
 // the one the tool was measured with; G43 is listed in `ignored`.
 //
+// Tool changes: `T n` selects tool n (a whole number), M6 loads the
+// selected tool (a T on the M6 line, in either order, is the one loaded).
+// The change ends the pass and, since the spindle travels to the change
+// position in machine coordinates, makes every axis unknown (an unchecked
+// rapid, as G28) until the program positions the new tool again. Every
+// pass and rapid carries the tool number loaded (0 before the first M6),
+// and Toolpath::tool_changes lists the changes: which cutter that number
+// is comes from a tool table (machining/cutter/path_tools.hpp). `T0 M6`
+// empties the spindle: a cut after it is refused.
+//
 // Ignored and listed with their line numbers in `ignored` (no geometric
-// effect on tool tips): M S T H D words, G40 G43 G49 G61 G64 G80 G94.
+// effect on tool tips): M (other than M6) S H D words, G40 G43 G49 G61 G64
+// G80 G94.
 //
 // Refused, naming the line (dropping them would predict the wrong part):
 // G90.1 (absolute arc centres), cutter compensation G41/G42, canned cycles

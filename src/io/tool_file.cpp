@@ -1,6 +1,8 @@
 #include "io/tool_file.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "base/number_text.hpp"
@@ -156,6 +158,53 @@ std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std
 
 std::vector<ToolSpec> read_tool_library(const std::string& path) {
   return parse_tool_library_json(jf::read_text(path), path);
+}
+
+std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const std::string& name,
+                                                  const std::string& folder) {
+  const json doc = jf::parse_text(text, name);
+  const std::string root = name + ":";
+  if (!doc.is_object())
+    throw InputError(root + " expected a tool table (a JSON object from \"T1\", \"T2\", ... to tools)");
+  if (doc.empty()) throw InputError(root + " the tool table is empty");
+  std::vector<ToolTableEntry> table;
+  std::vector<std::string> keys;
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    const std::string& key = it.key();
+    const bool digits = key.size() >= 2 && key.size() <= 9 && key.find_first_not_of("0123456789", 1) == std::string::npos;
+    const long number = digits && (key[0] == 'T' || key[0] == 't') ? std::stol(key.substr(1)) : -1;
+    if (number < 1 || number > 1000000)
+      throw InputError(name + ": " + quote_field(key) + ": expected a tool number \"T1\" to \"T1000000\" as the key");
+    const std::string where = name + ": " + key;
+    for (std::size_t k = 0; k < table.size(); ++k)
+      if (table[k].number == number)
+        throw InputError(where + ": tool " + std::to_string(number) + " is given twice (also " + keys[k] + ")");
+    ToolTableEntry entry;
+    entry.number = static_cast<int>(number);
+    if (it.value().is_string()) {
+      const std::string file = it.value().get<std::string>();
+      if (file.empty()) throw InputError(where + ": empty tool file name");
+      const std::filesystem::path p(file);
+      entry.file = p.is_absolute() || folder.empty() ? file : (std::filesystem::path(folder) / p).string();
+      entry.tool = read_tool_file(entry.file);
+    } else if (it.value().is_object()) {
+      entry.tool = parse_tool(it.value(), where);
+    } else {
+      throw InputError(where + ": expected a tool (a JSON object) or the name of a tool file");
+    }
+    table.push_back(std::move(entry));
+    keys.push_back(key);
+  }
+  std::vector<std::size_t> order(table.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return table[a].number < table[b].number; });
+  std::vector<ToolTableEntry> sorted;
+  for (std::size_t k : order) sorted.push_back(std::move(table[k]));
+  return sorted;
+}
+
+std::vector<ToolTableEntry> read_tool_table(const std::string& path) {
+  return parse_tool_table_json(jf::read_text(path), path, std::filesystem::path(path).parent_path().string());
 }
 
 std::string tool_to_json_text(const ToolSpec& tool) {

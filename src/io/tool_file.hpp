@@ -47,6 +47,26 @@ ToolSpec read_tool_file(const std::string& path);
 std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std::string& name);
 std::vector<ToolSpec> read_tool_library(const std::string& path);
 
+// A tool table: which cutter each tool number of a program is (G-code
+// `T n M6`, io/gcode_reader.hpp). A JSON object from "T<n>" (n a whole
+// number from 1 to 1000000; T0 is the empty spindle) to a tool, either an
+// object as above or the name of a tool file, relative to the table's
+// folder:
+//
+//   {"T1": {"name": "FL12", "type": "flat", "diameter": 12}, "T7": "ball6.json"}
+//
+// Entries come back by tool number. Errors name the table and the key
+// ("table.json: T7.diameter: ..."), or the tool file a key names; "T7" and
+// "T07" are one number, given twice.
+struct ToolTableEntry {
+  int number = 0;
+  ToolSpec tool;
+  std::string file;  // the tool file it names; empty for a tool written in the table
+};
+std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const std::string& name,
+                                                  const std::string& folder);
+std::vector<ToolTableEntry> read_tool_table(const std::string& path);
+
 // Deterministic writers (millimetres; corner_radius always written).
 std::string tool_to_json_text(const ToolSpec& tool);
 std::string tool_library_to_json_text(const std::vector<ToolSpec>& tools);

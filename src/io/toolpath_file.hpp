@@ -43,6 +43,9 @@ struct ToolpathPoint {
 
 struct ToolpathPass {
   std::vector<ToolpathPoint> points;  // at least 2
+  // The tool number in the spindle while the pass is cut (G-code `T n M6`);
+  // 0 when the file loads no tool (CSV, APT, G-code before any tool change).
+  int tool = 0;
 };
 
 // One rapid move, in file order, as any tool-path reader records it (G-code
@@ -62,6 +65,13 @@ struct RapidMove {
   bool known = false;  // both ends in the part frame
   Eigen::Vector3d from = Eigen::Vector3d::Zero();  // tip [mm], only when known
   Eigen::Vector3d to = Eigen::Vector3d::Zero();
+  int tool = 0;  // tool number in the spindle, as ToolpathPass::tool
+};
+
+// A tool change (G-code M6): the tool number loaded and the line.
+struct ToolChange {
+  int line = 0;
+  int tool = 0;
 };
 
 struct IgnoredWord {
@@ -74,6 +84,7 @@ struct Toolpath {
   std::vector<ToolpathPass> passes;
   std::vector<RapidMove> rapids;     // non-cutting moves, in file order (see RapidMove)
   std::vector<IgnoredWord> ignored;  // G-code words read but without geometric effect
+  std::vector<ToolChange> tool_changes;  // in file order (G-code only)
   std::string source;                // file name, for reports
   // The cutter the file itself defines (APT `CUTTER/`, io/apt_reader.hpp),
   // and the line that defines it; empty for G-code and CSV.

@@ -77,6 +77,7 @@ void read_toolpath(const JsonCursor& root, Job& job, const std::string& folder) 
   } else if (t.find("file")) {
     job.toolpath_file = path_member(t, "file", folder);
     if (const auto units = t.optional_string("units")) job.toolpath_read.units = *units;
+    if (t.find("tools")) job.tool_table = path_member(t, "tools", folder);
   } else {
     throw InputError(where + ": expected a file name, {\"file\": ...} or {\"generate\": {...}}");
   }
@@ -360,7 +361,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   paper_size_css(job.paper, root.path("paper"));  // a4 or letter, checked before any work
   root.finish("docs/formats.md \"Job file\"");
   scale_registration_to_tolerance(job.compare);
-  for (const std::string* input : {&job.part, &job.tool, &job.record_file})
+  for (const std::string* input : {&job.part, &job.tool, &job.record_file, &job.tool_table})
     if (*input == job.output) throw InputError(root.path("output") + ": the output folder is an input file");
   return job;
 }

@@ -51,6 +51,9 @@ struct Job {
   // Tool path: a file, or generated (exactly one of the two).
   std::optional<std::string> toolpath_file;
   ToolpathReadOptions toolpath_read;
+  // Tool table of a program that changes tools (toolpath.tools; io/tool_file.hpp);
+  // empty: none, every pass is cut with `tool`.
+  std::string tool_table;
   std::optional<ToolpathGeneration> generate;
 
   PartitionOptions partition;

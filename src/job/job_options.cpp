@@ -35,6 +35,7 @@ std::string job_options_json(const Job& job) {
                        {"feed", jf::finite(g.write.feed, "feed")}}}};
   } else {
     j["toolpath"] = {{"file", *job.toolpath_file}, {"units", job.toolpath_read.units}};
+    if (!job.tool_table.empty()) j["toolpath"]["tools"] = job.tool_table;
   }
   const ToleranceZone& z = job.compare.tolerance;
   j["tolerance"] = {{"zone", jf::finite(z.width, "zone")}, {"outside", jf::finite(z.outside, "outside")}};

@@ -15,6 +15,7 @@
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "io/tool_file.hpp"
+#include "machining/cutter/path_tools.hpp"
 #include "job/job_options.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/region_image.hpp"
@@ -95,14 +96,7 @@ struct Staged {
 
 Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
   const Job& job = s.job;
-  if (job.toolpath_file) {
-    Toolpath path = read_toolpath(*job.toolpath_file, job.toolpath_read);
-    // A CL file names its cutter: the job's tool must be that cutter, or the
-    // prediction would be of a cut the program does not make (docs/formats.md
-    // "APT CL data"). Throws InputError naming both.
-    tool_for_path(read_tool_file(job.tool), job.tool, path);
-    return path;
-  }
+  if (job.toolpath_file) return read_toolpath(*job.toolpath_file, job.toolpath_read);
   GeneratedToolpath generated = generate_toolpath(part, job.part, cutter, *job.generate,
                                                   [&](std::size_t d, std::size_t t) { s.note("toolpath", d, t); });
   s.add("toolpath.csv", std::move(generated.contacts_csv));
@@ -113,13 +107,13 @@ Toolpath toolpath_stage(Staged& s, const Part& part, const Cutter& cutter) {
   return path;
 }
 
-Prediction predict_stage(Staged& s, const Part& part, const Cutter& cutter, const Toolpath& path,
+Prediction predict_stage(Staged& s, const Part& part, const PathTools& tools, const Toolpath& path,
                          const RegionMap& map) {
   const Job& job = s.job;
   const PredictionSources names{
       s.part_name, job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file) : "toolpath.nc",
       "regions.json"};
-  PredictedPath predicted = predict_stage(part, cutter, path, job.prediction, names, &map,
+  PredictedPath predicted = predict_stage(part, tools, path, job.prediction, names, &map,
                                           [&](const std::string& stage, std::size_t d, std::size_t t) {
                                             s.note("predict: " + stage, d, t);
                                           });
@@ -258,6 +252,13 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
   s.inputs.push_back(digest_file("part", job.part));
   s.inputs.push_back(digest_file("tool", job.tool));
   if (job.toolpath_file) s.inputs.push_back(digest_file("toolpath", *job.toolpath_file));
+  std::optional<std::vector<ToolTableEntry>> table;
+  if (!job.tool_table.empty()) {
+    s.inputs.push_back(digest_file("tool table", job.tool_table));
+    table = read_tool_table(job.tool_table);
+    for (const ToolTableEntry& e : *table)
+      if (!e.file.empty()) s.inputs.push_back(digest_file("tool", e.file));
+  }
   for (const std::string& f : job.measurement_files) s.inputs.push_back(digest_file("measurements", f));
   if (!job.measurement_dialect_file.empty())
     s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
@@ -280,7 +281,12 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
 
   const Toolpath path = toolpath_stage(s, part, cutter);
   clock.done(job.generate ? "toolpath" : "read toolpath");
-  const Prediction prediction = predict_stage(s, part, cutter, path, map);
+  // A CL file names its cutter: the job's tool must be that cutter, or the
+  // prediction would be of a cut the program does not make (docs/formats.md
+  // "APT CL data"); a program that changes tools takes them from the table.
+  const PathTools tools = job.toolpath_file ? tools_for_path(path, read_tool_file(job.tool), job.tool, table, job.tool_table)
+                                            : single_tool(cutter, path);
+  const Prediction prediction = predict_stage(s, part, tools, path, map);
   clock.done("predict");
   const InspectionPlan plan = plan_stage(s, part, map, prediction);
   clock.done("plan");

@@ -6,12 +6,12 @@
 
 namespace furrow {
 
-PredictedPath predict_stage(const Part& part, const Cutter& cutter, const Toolpath& path,
+PredictedPath predict_stage(const Part& part, const PathTools& tools, const Toolpath& path,
                             const PathPredictionOptions& options, const PredictionSources& names,
                             const RegionMap* regions, const StageProgress& progress) {
   PredictedPath out;
-  out.computed = predict_path(part, cutter, path, options, progress);
-  out.record = make_prediction(part, cutter, out.computed, options, names.part, names.toolpath);
+  out.computed = predict_path(part, tools, path, options, progress);
+  out.record = make_prediction(part, out.computed, options, names.part, names.toolpath);
   if (regions) {
     out.record.has_regions = true;
     out.record.regions_file = names.regions;

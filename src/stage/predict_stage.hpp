@@ -26,9 +26,10 @@ struct PredictedPath {
   std::string json;         // prediction.json's text
 };
 
+// `tools`: the cutter of every pass and rapid (machining/cutter/path_tools.hpp).
 // `regions` may be null (no per-region errors). `progress` is
 // path_prediction.hpp's (step, done, total).
-PredictedPath predict_stage(const Part& part, const Cutter& cutter, const Toolpath& path,
+PredictedPath predict_stage(const Part& part, const PathTools& tools, const Toolpath& path,
                             const PathPredictionOptions& options, const PredictionSources& names,
                             const RegionMap* regions, const StageProgress& progress = {});
 

@@ -77,8 +77,13 @@ TEST_CASE("G-code from a Fusion 360 style Fanuc post: O number, N numbers, G28, 
   CHECK(swept == doctest::Approx(2 * 3.14159265358979323846).epsilon(1e-12));
   std::vector<std::string> ignored;
   for (const auto& w : p.ignored) ignored.push_back(std::to_string(w.line) + ":" + w.word);
-  CHECK(ignored == std::vector<std::string>{"4:G94", "4:G49", "4:G40", "4:G80", "10:T1", "10:M6", "11:S8000",
-                                            "11:M3", "13:M8", "15:G43", "15:H1", "22:M9", "27:M30"});
+  CHECK(ignored == std::vector<std::string>{"4:G94", "4:G49", "4:G40", "4:G80", "11:S8000", "11:M3", "13:M8",
+                                            "15:G43", "15:H1", "22:M9", "27:M30"});
+  // T1 M6 is a tool change: the pass is cut with tool 1.
+  REQUIRE(p.tool_changes.size() == 1);
+  CHECK(p.tool_changes[0].line == 10);
+  CHECK(p.tool_changes[0].tool == 1);
+  CHECK(p.passes[0].tool == 1);
 }
 
 TEST_CASE("G-code from a Mastercam style Fanuc post: modal words without spaces, R arcs, inch") {
@@ -157,4 +162,69 @@ TEST_CASE("G-code: constructs the control would expand or offset are refused, na
   CHECK(error_of("G54\n" + start + "G54 G1 X1\n").empty());
   CHECK(error_of(start + "G1 X1 A90.\n").find("cam.nc:2: word A90. is not supported") == 0);
   CHECK(error_of(start + "G1 X1\nG4 P1.\n").find("cam.nc:3: G4 is not supported") == 0);
+}
+
+TEST_CASE("G-code: tool changes as posts write them give each pass and rapid the tool in the spindle") {
+  // A roughing and a finishing tool, the way Fanuc posts write the change:
+  // T3 M6 on one line, a preselected T7 loaded by a later bare M06, and
+  // M6 before its T word ("M6T2", word order is free).
+  const std::string program =
+      "%\n"                               // 1
+      "O2000\n"                           // 2
+      "N10 G90 G21 G17\n"                 // 3
+      "N20 T3 M6\n"                       // 4
+      "N30 G0 G54 X0. Y0. S9000 M3\n"     // 5
+      "N40 G43 Z5. H3\n"                  // 6
+      "N50 G1 Z-1. F500.\n"               // 7
+      "N60 X20.\n"                        // 8
+      "N70 G0 Z50. T7\n"                  // 9  (T7 preselected while cutting ends)
+      "N80 G28 G91 Z0.\n"                 // 10
+      "N90 G90 M06\n"                     // 11
+      "N100 G0 X0. Y5.\n"                 // 12
+      "N110 Z5.\n"                        // 13
+      "N120 G1 Z-1.2\n"                   // 14
+      "N130 X20.\n"                       // 15
+      "N140 G0 Z50.\n"                    // 16
+      "N150 M6T2\n"                       // 17
+      "N160 G0 X0. Y10. Z5.\n"            // 18
+      "N170 G1 Z-1.1\n"                   // 19
+      "N180 X20.\n"                       // 20
+      "N190 M30\n"                        // 21
+      "%\n";
+  const Toolpath p = parse_gcode(program, "tools.nc");
+  REQUIRE(p.passes.size() == 3);
+  CHECK(p.passes[0].tool == 3);
+  CHECK(p.passes[1].tool == 7);
+  CHECK(p.passes[2].tool == 2);
+  REQUIRE(p.tool_changes.size() == 3);
+  CHECK(p.tool_changes[0].line == 4);
+  CHECK(p.tool_changes[1].line == 11);
+  CHECK(p.tool_changes[1].tool == 7);
+  CHECK(p.tool_changes[2].line == 17);
+  CHECK(p.tool_changes[2].tool == 2);
+  // Rapids carry the tool loaded when they run; a change is an unchecked
+  // move to the change position (machine coordinates), like G28.
+  std::vector<std::string> rapids;
+  for (const RapidMove& r : p.rapids)
+    rapids.push_back(std::to_string(r.line) + (r.known ? "" : "?") + ":T" + std::to_string(r.tool));
+  CHECK(rapids == std::vector<std::string>{"4?:T0", "5?:T3", "6?:T3", "9:T3", "10?:T3", "11?:T3", "12?:T7",
+                                           "13?:T7", "16:T7", "17?:T7", "18?:T2"});
+  for (const IgnoredWord& w : p.ignored) {
+    CHECK(w.word != "M6");
+    CHECK(w.word != "M06");
+    CHECK(w.word.front() != 'T');
+  }
+}
+
+TEST_CASE("G-code: tool changes the reader cannot follow are refused, naming the line") {
+  const std::string start = "G90 G0 X0 Y0 Z5\n";
+  CHECK(error_of(start + "M6\n").find("cam.nc:2: M6 (tool change) without a tool number") == 0);
+  CHECK(error_of("T1.5 M6\n").find("cam.nc:1: tool number T1.5 must be a whole number") == 0);
+  CHECK(error_of("T-1 M6\n").find("cam.nc:1: tool number T-1 must be a whole number") == 0);
+  CHECK(error_of("T1 M6 G0 X0 Y0 Z5\n").find("cam.nc:1: M6 (tool change) with a move on its line") == 0);
+  // After a change the tool is at the change position: a cut needs a position first.
+  CHECK(error_of("T1 M6\n" + start + "G1 X1\nT2 M6\nG1 X2\n").find("cam.nc:5: cutting move before X, Y and Z") == 0);
+  // T0 M6 empties the spindle.
+  CHECK(error_of("T1 M6\n" + start + "T0 M6\n" + start + "G1 X3\n")
+            .find("cam.nc:5: cutting move with an empty spindle (T0 M6 at line 3)") == 0);
 }

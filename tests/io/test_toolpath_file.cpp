@@ -57,7 +57,9 @@ TEST_CASE("G-code: absolute and relative moves, rapids separate passes, comments
   // Ignored words are reported with their lines, nothing silently dropped.
   std::vector<std::string> ignored;
   for (const auto& w : p.ignored) ignored.push_back(std::to_string(w.line) + ":" + w.word);
-  CHECK(ignored == std::vector<std::string>{"4:T1", "4:M6", "5:S12000", "5:M3", "14:M30"});
+  CHECK(ignored == std::vector<std::string>{"5:S12000", "5:M3", "14:M30"});
+  CHECK(p.passes[0].tool == 1);
+  CHECK(p.passes[1].tool == 1);
 }
 
 TEST_CASE("G-code: inch units convert to mm, also mid-file, and apply to the line they are on") {

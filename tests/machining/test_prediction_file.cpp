@@ -218,7 +218,7 @@ TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, err
   options.tolerance = 0.01;
   options.resolution = 0.1;
   const PathPrediction r = predict_path(part, ball, path, options);
-  const Prediction p = make_prediction(part, ball, r, options, "semi_cylinder.json", "planned");
+  const Prediction p = make_prediction(part, r, options, "semi_cylinder.json", "planned");
   CHECK(p.summary.steps == path.move_count());
   CHECK(p.summary.steps_evaluated == p.summary.steps);
   CHECK(p.summary.steps_over_tolerance == 0);
@@ -275,7 +275,7 @@ TEST_CASE("a 20 mm ball through the mould's dimple: local gouges at the bottom, 
   options.gouge_threshold = 0.002;
   options.resolution = 0.1;
   const PathPrediction r = predict_path(part, ball, path, options);
-  const Prediction p = make_prediction(part, ball, r, options, "mould.json", "dimple.csv");
+  const Prediction p = make_prediction(part, r, options, "mould.json", "dimple.csv");
   REQUIRE(p.summary.local_gouge_points > 0);
   for (const LocalGougeRecord& g : p.local_gouges) {
     CHECK(g.status == "gouge");

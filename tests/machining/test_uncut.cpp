@@ -191,7 +191,7 @@ TEST_CASE("sparse path through prediction.json: uncut samples counted per face, 
   PathPredictionOptions options;
   options.resolution = 0.1;
   const PathPrediction result = predict_path(part, ball, path, options);
-  const Prediction p = make_prediction(part, ball, result, options, "plane.json", "sparse.csv");
+  const Prediction p = make_prediction(part, result, options, "plane.json", "sparse.csv");
   const nlohmann::json doc = nlohmann::json::parse(prediction_to_json_text(p));
   const auto& samples = doc["summary"]["samples"];
   CHECK(samples["not_reached"].get<std::size_t>() > 0);

@@ -1,6 +1,10 @@
 #include "machining/prediction/path_prediction.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
 #include <sstream>
 
 #include "base/error.hpp"
@@ -31,57 +35,164 @@ ErrorAt error_at(const Part& part, double error, const SurfacePoint& s) {
   return e;
 }
 
+// The passes one cutter cuts, as a path of their own, and where each of
+// them is in the whole path.
+struct ToolGroup {
+  int cutter = 0;
+  std::vector<int> passes;  // indices into the whole path, in path order
+};
+
+std::vector<ToolGroup> tool_groups(const PathTools& tools) {
+  std::vector<ToolGroup> groups(tools.cutters.size());
+  for (std::size_t c = 0; c < groups.size(); ++c) groups[c].cutter = static_cast<int>(c);
+  for (std::size_t p = 0; p < tools.of_pass.size(); ++p)
+    groups[static_cast<std::size_t>(tools.of_pass[p])].passes.push_back(static_cast<int>(p));
+  return groups;
+}
+
+Toolpath sub_path(const Toolpath& path, const ToolGroup& group) {
+  Toolpath sub;
+  sub.kind = path.kind;
+  sub.source = path.source;
+  for (int p : group.passes) sub.passes.push_back(path.passes[static_cast<std::size_t>(p)]);
+  return sub;
+}
+
+PathGeometry sub_geometry(const PathGeometry& geometry, const ToolGroup& group) {
+  PathGeometry sub;
+  for (int p : group.passes) sub.passes.push_back(geometry.passes[static_cast<std::size_t>(p)]);
+  return sub;
+}
+
+void locate(const Part& part, const PathTools& tools, const Toolpath& path, const std::vector<ToolGroup>& groups,
+            const PathContactOptions& options, const StageProgress& progress, PathGeometry& out) {
+  if (groups.size() == 1) {
+    out = locate_path(part, tools.cutters[0], path, options, stage(progress, "locating path"));
+    return;
+  }
+  out.passes.resize(path.passes.size());
+  for (const ToolGroup& g : groups) {
+    if (g.passes.empty()) continue;
+    PathGeometry sub = locate_path(part, tools.cutters[static_cast<std::size_t>(g.cutter)], sub_path(path, g), options,
+                                   stage(progress, "locating path"));
+    for (std::size_t k = 0; k < g.passes.size(); ++k)
+      out.passes[static_cast<std::size_t>(g.passes[k])] = std::move(sub.passes[k]);
+    out.points += sub.points;
+    out.without_contact += sub.without_contact;
+    out.in_air += sub.in_air;
+    out.below_surface += sub.below_surface;
+    out.lowest_gap = std::min(out.lowest_gap, sub.lowest_gap);
+  }
+}
+
 }  // namespace
 
 PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpath& path,
+                            const PathPredictionOptions& options, const StageProgress& progress) {
+  return predict_path(part, single_tool(cutter, path), path, options, progress);
+}
+
+PathPrediction predict_path(const Part& part, const PathTools& path_tools, const Toolpath& path,
                             const PathPredictionOptions& options, const StageProgress& progress) {
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
     throw InputError("predict: the tolerance must be a positive number of millimetres");
   if (!(options.gouge_threshold >= 0) || !std::isfinite(options.gouge_threshold))
     throw InputError("predict: the gouge threshold must not be negative");
+  if (path_tools.cutters.empty() || path_tools.of_pass.size() != path.passes.size() ||
+      path_tools.of_rapid.size() != path.rapids.size())
+    throw std::logic_error("predict_path: the tools do not describe this path");
   PathPrediction r;
-  r.resolution = options.resolution > 0 ? options.resolution : default_zmap_resolution(cutter, options.tolerance);
+  r.tools = std::make_shared<const PathTools>(path_tools);
+  const PathTools& tools = *r.tools;
+  const std::vector<ToolGroup> groups = tool_groups(tools);
+  auto cutter_of = [&](const ToolGroup& g) -> const Cutter& { return tools.cutters[static_cast<std::size_t>(g.cutter)]; };
+  if (options.resolution > 0) {
+    r.resolution = options.resolution;
+  } else {
+    r.resolution = std::numeric_limits<double>::infinity();
+    for (const Cutter& c : tools.cutters) r.resolution = std::min(r.resolution, default_zmap_resolution(c, options.tolerance));
+  }
   r.gouge_threshold = options.gouge_threshold > 0 ? options.gouge_threshold : 2 * options.tolerance;
 
-  r.geometry = locate_path(part, cutter, path, options.contacts, stage(progress, "locating path"));
+  locate(part, tools, path, groups, options.contacts, progress, r.geometry);
   const VerticalProjector projector(part);
-  r.steps = predict_steps(projector, cutter, r.geometry, options.step, stage(progress, "per-step errors"));
+  for (const ToolGroup& g : groups) {
+    if (g.passes.empty()) continue;
+    const bool whole = groups.size() == 1;
+    std::vector<StepPrediction> steps = predict_steps(projector, cutter_of(g), whole ? r.geometry : sub_geometry(r.geometry, g),
+                                                      options.step, stage(progress, "per-step errors"));
+    for (StepPrediction& s : steps) {
+      if (!whole) s.pass = g.passes[static_cast<std::size_t>(s.pass)];
+      r.steps.push_back(std::move(s));
+    }
+  }
+  std::stable_sort(r.steps.begin(), r.steps.end(), [](const StepPrediction& a, const StepPrediction& b) {
+    return a.pass != b.pass ? a.pass < b.pass : a.step < b.step;
+  });
 
-  // The z-map covers the part and every move's shadow on it.
+  // The z-map covers the part and every move's shadow on it. Each tool
+  // lowers it with its own cutter, in path order within the tool.
   r.zmap.emplace(part_xy_extent(part), r.resolution, options.zmap);
   // The moves run between the located tips: for contact-point input these
   // are the cutter locations, not the file's positions.
-  std::vector<ZMapMove> moves;
-  for (std::size_t p = 0; p < r.geometry.passes.size(); ++p)
-    for (std::size_t k = 1; k < r.geometry.passes[p].size(); ++k)
-      moves.push_back({r.geometry.passes[p][k - 1].tip, r.geometry.passes[p][k].tip, static_cast<int>(p),
-                       static_cast<int>(k - 1)});
-  r.zmap->cut(cutter, moves, stage(progress, "z-map"));
+  for (const ToolGroup& g : groups) {
+    std::vector<ZMapMove> moves;
+    for (int p : g.passes) {
+      const std::vector<PathPoint>& pass = r.geometry.passes[static_cast<std::size_t>(p)];
+      for (std::size_t k = 1; k < pass.size(); ++k)
+        moves.push_back({pass[k - 1].tip, pass[k].tip, p, static_cast<int>(k - 1)});
+    }
+    if (!moves.empty()) r.zmap->cut(cutter_of(g), moves, stage(progress, "z-map"));
+  }
   r.map = compute_error_map(part, *r.zmap, options.map, stage(progress, "error map"));
-  r.scallops = pass_pair_scallops(projector, *r.zmap, cutter.diameter(), path_contacts(r.geometry), options.scallops);
+  for (const ToolGroup& g : groups) {
+    if (g.passes.empty()) continue;
+    const bool whole = groups.size() == 1;
+    std::vector<PassScallop> scallops =
+        pass_pair_scallops(projector, *r.zmap, cutter_of(g).diameter(),
+                           path_contacts(whole ? r.geometry : sub_geometry(r.geometry, g)), options.scallops);
+    for (PassScallop& sc : scallops) {
+      if (!whole) {
+        sc.pass_a = g.passes[static_cast<std::size_t>(sc.pass_a)];
+        sc.pass_b = g.passes[static_cast<std::size_t>(sc.pass_b)];
+      }
+      r.scallops.push_back(std::move(sc));
+    }
+  }
+  std::stable_sort(r.scallops.begin(), r.scallops.end(),
+                   [](const PassScallop& a, const PassScallop& b) { return a.pass_a < b.pass_a; });
   r.sites = find_gouge_sites(part, *r.zmap, r.map, {r.gouge_threshold}, options.map);
 
-  std::vector<ContactSite> sites;
-  std::vector<std::pair<int, int>> where;
-  for (std::size_t p = 0; p < r.geometry.passes.size(); ++p)
-    for (std::size_t k = 0; k < r.geometry.passes[p].size(); ++k) {
-      const PathPoint& q = r.geometry.passes[p][k];
-      if (!q.contact.valid || q.in_air) continue;
-      ContactSite s;
-      s.face = static_cast<std::size_t>(q.contact.at.face);
-      s.uv = q.contact.at.uv;
-      s.line = q.line;
-      sites.push_back(s);
-      where.emplace_back(static_cast<int>(p), static_cast<int>(k));
+  for (const ToolGroup& g : groups) {
+    std::vector<ContactSite> sites;
+    std::vector<std::pair<int, int>> where;
+    for (int p : g.passes) {
+      const std::vector<PathPoint>& pass = r.geometry.passes[static_cast<std::size_t>(p)];
+      for (std::size_t k = 0; k < pass.size(); ++k) {
+        const PathPoint& q = pass[k];
+        if (!q.contact.valid || q.in_air) continue;
+        ContactSite s;
+        s.face = static_cast<std::size_t>(q.contact.at.face);
+        s.uv = q.contact.at.uv;
+        s.line = q.line;
+        sites.push_back(s);
+        where.emplace_back(p, static_cast<int>(k));
+      }
     }
-  const std::vector<GougePoint> checks = scan_gouges(part, cutter, sites, options.local, stage(progress, "local gouges"));
-  for (std::size_t k = 0; k < checks.size(); ++k) {
-    const GougeStatus s = checks[k].gouge.status;
-    if (s == GougeStatus::gouge || s == GougeStatus::concave_crease)
-      r.local_gouges.push_back({where[k].first, where[k].second, checks[k]});
+    if (sites.empty()) continue;
+    const std::vector<GougePoint> checks = scan_gouges(part, cutter_of(g), sites, options.local, stage(progress, "local gouges"));
+    for (std::size_t k = 0; k < checks.size(); ++k) {
+      const GougeStatus s = checks[k].gouge.status;
+      if (s == GougeStatus::gouge || s == GougeStatus::concave_crease)
+        r.local_gouges.push_back({where[k].first, where[k].second, checks[k]});
+    }
   }
+  std::stable_sort(r.local_gouges.begin(), r.local_gouges.end(), [](const PathPrediction::Local& a, const PathPrediction::Local& b) {
+    return a.pass != b.pass ? a.pass < b.pass : a.point < b.point;
+  });
 
-  // Rapids against the design surface, sampled as finely as the error map.
+  // Rapids against the design surface, sampled as finely as the error map,
+  // each with the tool in the spindle when it runs.
   if (progress) progress("rapids", 0, 1);
   RapidCheckOptions rapid;
   rapid.threshold = r.gouge_threshold;
@@ -89,18 +200,46 @@ PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpa
   rapid.max_samples = options.map.max_samples;
   rapid.normal = options.map.normal;
   rapid.stock = options.stock;
-  r.rapids = check_rapids(part, cutter, path.rapids, rapid);
+  if (groups.size() == 1) {
+    r.rapids = check_rapids(part, tools.cutters[0], path.rapids, rapid);
+  } else {
+    r.rapids.rapids = path.rapids.size();
+    r.rapids.stock = options.stock.has_value();
+    for (const ToolGroup& g : groups) {
+      std::vector<RapidMove> moves;
+      std::vector<std::size_t> index;
+      for (std::size_t k = 0; k < path.rapids.size(); ++k)
+        if (tools.of_rapid[k] == g.cutter) {
+          moves.push_back(path.rapids[k]);
+          index.push_back(k);
+        }
+      if (moves.empty()) continue;
+      RapidCheck part_check = check_rapids(part, cutter_of(g), moves, rapid);
+      r.rapids.checked += part_check.checked;
+      r.rapids.unchecked += part_check.unchecked;
+      for (RapidGouge& gouge : part_check.gouges) {
+        gouge.rapid = index[gouge.rapid];
+        r.rapids.gouges.push_back(gouge);
+      }
+    }
+    std::stable_sort(r.rapids.gouges.begin(), r.rapids.gouges.end(),
+                     [](const RapidGouge& a, const RapidGouge& b) { return a.rapid < b.rapid; });
+  }
   if (progress) progress("rapids", 1, 1);
   return r;
 }
 
-Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPrediction& r,
-                           const PathPredictionOptions& options, const std::string& part_name,
-                           const std::string& toolpath_name) {
+Prediction make_prediction(const Part& part, const PathPrediction& r, const PathPredictionOptions& options,
+                           const std::string& part_name, const std::string& toolpath_name) {
   Prediction p;
   p.part = part_name;
   p.toolpath = toolpath_name;
-  p.tool = cutter.spec();
+  const PathTools& tools = *r.tools;
+  p.tool = tools.cutters[tools.of_pass.empty() ? 0 : static_cast<std::size_t>(tools.of_pass.front())].spec();
+  if (tools.changes_tools()) {
+    for (std::size_t c = 0; c < tools.cutters.size(); ++c) p.tools.push_back({tools.numbers[c], tools.cutters[c].spec()});
+    p.pass_tools = tools.of_pass;
+  }
   p.tolerance = options.tolerance;
   p.gouge_threshold = r.gouge_threshold;
   const ZMap& z = *r.zmap;

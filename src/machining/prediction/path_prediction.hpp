@@ -9,10 +9,12 @@
 // (rapid_check.hpp), then the plain Prediction record (prediction.hpp) that
 // prediction.json stores.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "machining/cutter/path_tools.hpp"
 #include "machining/gouge/gouge_scan.hpp"
 #include "machining/prediction/gouge_sites.hpp"
 #include "machining/prediction/path_steps.hpp"
@@ -48,6 +50,8 @@ struct PathPredictionOptions {
 using StageProgress = std::function<void(const std::string&, std::size_t, std::size_t)>;
 
 struct PathPrediction {
+  // The cutters of the path (shared: the z-map's envelopes point into them).
+  std::shared_ptr<const PathTools> tools;
   double resolution = 0, gouge_threshold = 0;  // as used [mm]
   PathGeometry geometry;
   std::vector<StepPrediction> steps;
@@ -65,13 +69,24 @@ struct PathPrediction {
 
 // Throws InputError for invalid options (non-positive tolerance or
 // resolution) and for contact-point input that does not fit the part.
+//
+// A program that changes tools (`tools` with several cutters) is predicted
+// tool by tool where the geometry is the cutter's own: locating the path,
+// the per-step errors, the local gouge check and the rapids each use the
+// cutter of their pass or rapid; the scallop is measured between
+// neighbouring passes of the same tool only. The z-map is the one machined
+// surface every tool leaves (each move lowers it with its own cutter), so
+// the error map and gouge sites are of the finished part. The default
+// z-map resolution is the finest any of the cutters asks for.
+PathPrediction predict_path(const Part& part, const PathTools& tools, const Toolpath& path,
+                            const PathPredictionOptions& options = {}, const StageProgress& progress = {});
+// One cutter for every pass and rapid.
 PathPrediction predict_path(const Part& part, const Cutter& cutter, const Toolpath& path,
                             const PathPredictionOptions& options = {}, const StageProgress& progress = {});
 
 // The record written to prediction.json; `part_name` and `toolpath_name`
 // are stored as given.
-Prediction make_prediction(const Part& part, const Cutter& cutter, const PathPrediction& result,
-                           const PathPredictionOptions& options, const std::string& part_name,
-                           const std::string& toolpath_name);
+Prediction make_prediction(const Part& part, const PathPrediction& result, const PathPredictionOptions& options,
+                           const std::string& part_name, const std::string& toolpath_name);
 
 }  // namespace furrow

@@ -152,9 +152,19 @@ struct PredictedError {
   bool reached() const { return status == ErrorCellStatus::reached; }
 };
 
+// One tool of a program that changes tools (machining/cutter/path_tools.hpp).
+struct ToolUseRecord {
+  int number = 0;  // the program's tool number (T n)
+  ToolSpec tool;
+};
+
 struct Prediction {
   std::string part, toolpath;  // source files, as given
-  ToolSpec tool;
+  ToolSpec tool;  // the tool of the first pass (the only one unless `tools` is filled)
+  // A program that changes tools: its tools in order of first use, and per
+  // pass the index of its tool in `tools`. Both empty for a one-tool path.
+  std::vector<ToolUseRecord> tools;
+  std::vector<int> pass_tools;
   double tolerance = 0, gouge_threshold = 0;  // [mm]
   ZMapRecord zmap;
   PredictionSummary summary;

@@ -125,6 +125,13 @@ std::string prediction_to_json_text(const Prediction& p) {
   j["part"] = p.part;
   j["toolpath"] = p.toolpath;
   j["tool"] = tool_json(p.tool);
+  // Only for a program that changes tools: a one-tool prediction keeps its bytes.
+  if (!p.tools.empty()) {
+    json tools = json::array();
+    for (const ToolUseRecord& t : p.tools) tools.push_back({{"number", t.number}, {"tool", tool_json(t.tool)}});
+    j["tools"] = tools;
+    j["pass_tools"] = p.pass_tools;
+  }
   j["tolerance"] = jf::finite(p.tolerance, "tolerance");
   j["gouge_threshold"] = jf::finite(p.gouge_threshold, "gouge_threshold");
   j["zmap"] = {{"resolution", jf::finite(p.zmap.resolution, "resolution")},

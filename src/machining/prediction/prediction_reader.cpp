@@ -156,6 +156,29 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
   p.part = root.string("part");
   p.toolpath = root.string("toolpath");
   p.tool = parse_tool_json(root.raw("tool").dump(), root.path("tool"));
+  if (root.has("tools") || root.has("pass_tools")) {
+    const json& tools = root.array("tools");
+    if (tools.size() < 2) throw InputError(root.path("tools") + ": written only for two or more tools");
+    for (std::size_t k = 0; k < tools.size(); ++k) {
+      const JsonCursor t(tools[k], jf::child(root.path("tools"), k));
+      t.only({"number", "tool"}, "docs/formats.md \"prediction.json\"");
+      ToolUseRecord use;
+      use.number = t.integer("number", 0);
+      use.tool = parse_tool_json(t.raw("tool").dump(), t.path("tool"));
+      for (const ToolUseRecord& before : p.tools)
+        if (before.number == use.number)
+          throw InputError(t.path("number") + ": tool " + std::to_string(use.number) + " is listed twice");
+      p.tools.push_back(use);
+    }
+    const json& passes = root.array("pass_tools");
+    for (std::size_t k = 0; k < passes.size(); ++k) {
+      const std::string where = jf::child(root.path("pass_tools"), k);
+      const double index = jf::number(passes[k], where);
+      if (!(index >= 0 && index < double(p.tools.size()) && index == std::floor(index)))
+        throw InputError(where + ": expected an index into tools (0 to " + std::to_string(p.tools.size() - 1) + ")");
+      p.pass_tools.push_back(static_cast<int>(index));
+    }
+  }
   p.tolerance = root.positive("tolerance");
   p.gouge_threshold = root.non_negative("gouge_threshold");
 
