@@ -71,3 +71,58 @@ TEST_CASE("plan.csv lists the points in order with exact numbers") {
     CHECK(number(f[19]) == p.retract.z());
   }
 }
+
+TEST_CASE("plan.csv of a plan with an alignment: its points first, each row naming its feature") {
+  InspectionPlan plan;
+  plan.part = "box.step";
+  plan.probe = {"Probe1", 2};
+  auto point = [](const std::string& id, int order, double x) {
+    PlannedPoint p;
+    p.id = id;
+    p.order = order;
+    p.face = "top";
+    p.uv = {x / 10, 0.5};
+    p.xyz = {x, 1.0 / 3, 20};
+    p.ijk = {0, 0, 1};
+    p.approach = p.xyz + 5 * p.ijk;
+    p.retract = p.approach;
+    return p;
+  };
+  PartAlignment a;
+  DatumFeature top;
+  top.label = "A";
+  top.points = {point("A1", 1, 1), point("A2", 2, 2), point("A3", 3, 3)};
+  DatumFeature wall;
+  wall.label = "B";
+  wall.kind = DatumFeature::Kind::line;
+  wall.points = {point("B1", 4, 4), point("B2", 5, 5)};
+  a.datums = {top, wall};
+  plan.alignment = a;
+  plan.points = {point("P0002", 2, 7), point("P0001", 1, 6)};
+  std::istringstream in(plan_to_csv_text(plan));
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "# Furrow probe plan: part box.step, probe Probe1 diameter 2 mm, 2 points after 5 alignment points, "
+                "units mm");
+  std::getline(in, line);
+  CHECK(line.size() > 8);
+  CHECK(line.substr(line.size() - 8) == ",feature");
+  struct Want {
+    const char* id;
+    const char* feature;
+    int order;
+    double x;
+  } want[] = {{"A1", "DATUM_A", 1, 1}, {"A2", "DATUM_A", 2, 2}, {"A3", "DATUM_A", 3, 3}, {"B1", "DATUM_B", 4, 4},
+              {"B2", "DATUM_B", 5, 5}, {"P0001", "FREE_FORM", 1, 6}, {"P0002", "FREE_FORM", 2, 7}};
+  for (const Want& w : want) {
+    REQUIRE(std::getline(in, line));
+    const std::vector<std::string> f = split(line);
+    REQUIRE(f.size() == 20);
+    CHECK(f[0] == std::to_string(w.order));
+    CHECK(f[1] == w.id);
+    CHECK(f[19] == w.feature);
+    CHECK(number(f[7]) == w.x);
+    CHECK(number(f[8]) == 1.0 / 3);
+  }
+  CHECK_FALSE(std::getline(in, line));
+}

@@ -237,7 +237,7 @@ TEST_CASE("indexable head: furrow plan --head writes the tip per point and per p
   REQUIRE(r.status == 0);
   const std::string plan = slurp(dir + "/plan/plan.json");
   CHECK(plan.find("\"tip\"") != std::string::npos);
-  CHECK(slurp(dir + "/plan/plan.csv").find(",tip_a,tip_b\n") != std::string::npos);
+  CHECK(slurp(dir + "/plan/plan.csv").find(",tip_a,tip_b,feature\n") != std::string::npos);
   const std::string dmis = slurp(dir + "/plan/plan.dmi");
   CHECK(dmis.find("S(PROBE1_A0B0)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,45.000000,2.000000") != std::string::npos);
   CHECK(slurp(dir + "/plan/plan.prg").find("ChangeTool(\"Probe1_A0B0\")") != std::string::npos);
