@@ -118,6 +118,25 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   for (std::size_t k = 0; k < r.point_sites.size(); ++k)
     if (!r.point_sites[k].empty()) on_sites.push_back({{"point", r.plan.points[k].id}, {"gouge_site", r.point_sites[k]}});
   doc["gouge_site_points"] = std::move(on_sites);
+  // What the programs measure before the free-form points (docs/cmm.md
+  // "Part alignment"): the method, why, and the points of each feature.
+  if (const auto& a = r.plan.alignment) {
+    json ja;
+    ja["method"] = to_string(a->method);
+    ja["reason"] = a->reason;
+    json features = json::array();
+    for (const DatumFeature& d : a->datums) {
+      json ids = json::array();
+      for (const PlannedPoint& p : d.points) ids.push_back(p.id);
+      features.push_back({{"label", d.label}, {"kind", to_string(d.kind)}, {"face", d.face}, {"points", ids}});
+    }
+    ja["datums"] = std::move(features);
+    json manual = json::array();
+    for (const PlannedPoint& p : a->manual) manual.push_back(p.id);
+    ja["manual"] = std::move(manual);
+    ja["points"] = a->points().size();
+    doc["alignment"] = std::move(ja);
+  }
   doc["points"] = r.plan.points.size();
   doc["tour"] = {{"nearest_neighbour_mm", jf::finite(r.tour.nearest_neighbour_length, "tour")},
                  {"optimised_mm", jf::finite(r.tour.length, "tour")},

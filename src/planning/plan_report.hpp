@@ -8,7 +8,8 @@
 // short), every issue with its reason (points moved or dropped and why, regions too
 // small, gouge sites without points, a budget raised to the floors), the
 // tour (nearest-neighbour and final length, passes, convergence) and the
-// cycle estimate. Deterministic: no timings, no dates.
+// cycle estimate, and the part alignment (method, reason, the points of each
+// datum feature or of the manual best fit) when the plan has one. Deterministic: no timings, no dates.
 #include <string>
 
 #include "planning/plan_coverage.hpp"

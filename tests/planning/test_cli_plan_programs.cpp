@@ -3,6 +3,8 @@
 // read back by the strict readers, and the date never from the clock.
 #include <doctest/doctest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -125,6 +127,20 @@ TEST_CASE("furrow plan: the mould (one free-form face) gets a manual alignment, 
     CHECK((ipp.alignment_steps[k].point.xyz - manual[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
     CHECK((ipp.alignment_steps[k].moves_before.back() - manual[k].approach).cwiseAbs().maxCoeff() <= 5e-7);
   }
+  // report.json and plan.csv name the same points.
+  const nlohmann::json report = nlohmann::json::parse(slurp(dir + "/m/report.json"));
+  REQUIRE(report.contains("alignment"));
+  CHECK(report["alignment"]["method"] == "free_form");
+  CHECK(report["alignment"]["reason"] == plan.alignment->reason);
+  CHECK(report["alignment"]["points"] == 3);
+  CHECK(report["alignment"]["datums"].empty());
+  REQUIRE(report["alignment"]["manual"].size() == 3);
+  const std::string csv = slurp(dir + "/m/plan.csv");
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(report["alignment"]["manual"][k] == manual[k].id);
+    CHECK(csv.find("\n" + std::to_string(manual[k].order) + "," + manual[k].id + ",") < csv.find(",FREE_FORM\n"));
+  }
+  CHECK(csv.find(std::to_string(plan.points.size()) + " points after 3 alignment points") != std::string::npos);
   // The free-form points follow, unchanged by the alignment.
   REQUIRE(dmis.steps.size() == plan.points.size());
   REQUIRE(ipp.steps.size() == plan.points.size());
