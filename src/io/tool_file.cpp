@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "base/number_text.hpp"
@@ -168,7 +169,7 @@ std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const
     throw InputError(root + " expected a tool table (a JSON object from \"T1\", \"T2\", ... to tools)");
   if (doc.empty()) throw InputError(root + " the tool table is empty");
   std::vector<ToolTableEntry> table;
-  std::vector<std::string> keys;
+  std::map<long, std::string> keys;  // tool number -> its key as written
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     const std::string& key = it.key();
     const bool digits = key.size() >= 2 && key.size() <= 9 && key.find_first_not_of("0123456789", 1) == std::string::npos;
@@ -176,9 +177,8 @@ std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const
     if (number < 1 || number > 1000000)
       throw InputError(name + ": " + quote_field(key) + ": expected a tool number \"T1\" to \"T1000000\" as the key");
     const std::string where = name + ": " + key;
-    for (std::size_t k = 0; k < table.size(); ++k)
-      if (table[k].number == number)
-        throw InputError(where + ": tool " + std::to_string(number) + " is given twice (also " + keys[k] + ")");
+    if (const auto twice = keys.find(number); twice != keys.end())
+      throw InputError(where + ": tool " + std::to_string(number) + " is given twice (also " + twice->second + ")");
     ToolTableEntry entry;
     entry.number = static_cast<int>(number);
     if (it.value().is_string()) {
@@ -193,7 +193,7 @@ std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const
       throw InputError(where + ": expected a tool (a JSON object) or the name of a tool file");
     }
     table.push_back(std::move(entry));
-    keys.push_back(key);
+    keys.emplace(number, key);
   }
   std::vector<std::size_t> order(table.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;

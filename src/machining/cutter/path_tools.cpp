@@ -46,6 +46,8 @@ PathTools tools_for_path(const Toolpath& path, const std::optional<ToolSpec>& to
   }
 
   PathTools out;
+  std::map<int, const ToolSpec*> by_number;
+  for (const ToolTableEntry& e : *table) by_number.emplace(e.number, &e.tool);
   std::map<int, int> index;  // tool number -> cutter
   auto cutter_for = [&](int number, int line) {
     const auto found = index.find(number);
@@ -57,12 +59,11 @@ PathTools tools_for_path(const Toolpath& path, const std::optional<ToolSpec>& to
                                              "which tool is in the spindle (load one first, or give --tool)");
       out.cutters.emplace_back(tool_for_path(tool, tool_source, path));
     } else {
-      const auto entry = std::find_if(table->begin(), table->end(),
-                                      [number](const ToolTableEntry& e) { return e.number == number; });
-      if (entry == table->end())
+      const auto entry = by_number.find(number);
+      if (entry == by_number.end())
         throw InputError(table_source + ": no tool T" + std::to_string(number) + ", which " +
                          where(path, change_line(path, number)) + " loads");
-      out.cutters.emplace_back(entry->tool);
+      out.cutters.emplace_back(*entry->second);
     }
     out.numbers.push_back(number);
     index[number] = static_cast<int>(out.cutters.size() - 1);
