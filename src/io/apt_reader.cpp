@@ -220,6 +220,7 @@ class AptReader {
       rapid_next_ = false;
       RapidMove rapid;  // checked against the part like a G0 (io/toolpath_file.hpp)
       rapid.line = line;
+      rapid.tool = tool_;
       rapid.known = known_;
       if (known_) {
         rapid.from = position_;
@@ -281,7 +282,10 @@ class AptReader {
       t.line = line;
       return t;
     };
-    if (current_.points.empty()) current_.points.push_back(tip(position_));
+    if (current_.points.empty()) {
+      current_.points.push_back(tip(position_));
+      current_.tool = tool_;
+    }
     for (const Eigen::Vector3d& p : reached)
       if ((p - current_.points.back().position).norm() > 0) {  // zero-length moves add nothing
         current_.points.push_back(tip(p));
@@ -477,15 +481,37 @@ class AptReader {
       tool.type = ToolType::bull;
     }
     validate_tool(tool, name_ + ":" + std::to_string(s.line) + ": " + s.major);
-    if (path_.tool) {
-      if (std::abs(path_.tool->diameter - tool.diameter) > kToolTolerance ||
-          std::abs(path_.tool->corner_radius - tool.corner_radius) > kToolTolerance)
-        fail_line(name_, s.line, s.major + "/ defines another tool than line " + std::to_string(path_.tool_line) +
-                                     ": one tool per path");
-      return;
+    auto same = [&](const ToolSpec& t) {
+      return std::abs(t.diameter - tool.diameter) <= kToolTolerance &&
+             std::abs(t.corner_radius - tool.corner_radius) <= kToolTolerance;
+    };
+    // The same cutter again (posts repeat CUTTER/ per operation) changes
+    // nothing; another one is a tool change: the passes after it are cut
+    // with it, and a tool already defined keeps its number.
+    if (tool_ > 0 && same(path_.defined_tools[static_cast<std::size_t>(tool_ - 1)].tool)) return;
+    if (!path_.tool) {
+      path_.tool = tool;
+      path_.tool_line = s.line;
     }
-    path_.tool = tool;
-    path_.tool_line = s.line;
+    int number = 0;
+    for (std::size_t k = 0; k < path_.defined_tools.size() && number == 0; ++k)
+      if (same(path_.defined_tools[k].tool)) number = static_cast<int>(k + 1);
+    if (number == 0) {
+      path_.defined_tools.push_back({tool, s.line});
+      number = static_cast<int>(path_.defined_tools.size());
+    }
+    if (tool_ > 0) {
+      // The spindle goes to the change position: the pass ends, and where
+      // the new tool is stays unknown until FROM/ or a RAPID GOTO/ says so.
+      close_pass();
+      RapidMove change;
+      change.line = s.line;
+      change.tool = tool_;
+      path_.rapids.push_back(change);
+      known_ = false;
+    }
+    tool_ = number;
+    path_.tool_changes.push_back({s.line, number});
   }
 
   void cutter(const AptStatement& s) {
@@ -541,6 +567,7 @@ class AptReader {
   bool known_ = false;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   ToolpathPass current_;
+  int tool_ = 0;  // number of the cutter in effect (Toolpath::defined_tools), 0 before the first
   long points_ = 0;
   std::optional<PendingCircle> circle_;
   std::optional<Eigen::Vector3d> indirv_;

@@ -19,8 +19,13 @@
 // INDIRV/ + TLON,GOFWD/(CIRCLE/xc,yc,zc,r),ON,(LINE/...) (the arc starts
 // along INDIRV and ends where it first meets the line). CUTTER/d, /d,r and
 // the 7-parameter /d,r,e,f,a,b,h (and NX's TLDATA/MILL,d,r,l,0,0) define the
-// tool: Toolpath::tool, a ball, flat or bull end mill; a second one with
-// another geometry is refused (one tool per path).
+// tool, a ball, flat or bull end mill: Toolpath::tool is the first, and
+// Toolpath::defined_tools lists each geometry once. One with another
+// geometry than the cutter in effect is a tool change: the pass ends, the
+// position is unknown until FROM/ or a RAPID GOTO/ (the change is an
+// unchecked rapid), and the passes and rapids after it carry its number
+// (1 + its index in defined_tools; 0 before the first). The same geometry
+// again (posts repeat CUTTER/ per operation) changes nothing.
 //
 // 3-axis only: a tool axis (TLAXIS/, GOTO's i,j,k, CIRCLE's) must be +z;
 // anything tilted is refused naming its line, whatever MULTAX says.

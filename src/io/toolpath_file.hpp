@@ -86,10 +86,19 @@ struct Toolpath {
   std::vector<IgnoredWord> ignored;  // G-code words read but without geometric effect
   std::vector<ToolChange> tool_changes;  // in file order (G-code only)
   std::string source;                // file name, for reports
-  // The cutter the file itself defines (APT `CUTTER/`, io/apt_reader.hpp),
-  // and the line that defines it; empty for G-code and CSV.
+  // The cutter the file itself defines first (APT `CUTTER/`,
+  // io/apt_reader.hpp), and the line that defines it; empty for G-code and CSV.
   std::optional<ToolSpec> tool;
   int tool_line = 0;
+  // Every cutter the file defines (APT), in order of definition: a pass or
+  // rapid with tool number n (>= 1) is cut or travelled with
+  // defined_tools[n - 1]. Empty for G-code and CSV, whose numbers name
+  // tools of a tool table.
+  struct DefinedTool {
+    ToolSpec tool;
+    int line = 0;
+  };
+  std::vector<DefinedTool> defined_tools;
 
   std::size_t point_count() const;
   std::size_t move_count() const;  // cutting segments

@@ -159,3 +159,53 @@ TEST_CASE("APT in a job: the job's tool must be the file's CUTTER/") {
   CHECK(r.err.find("CUTTER") == std::string::npos);
   CHECK(std::filesystem::exists(dir + "/right/prediction.json"));
 }
+
+TEST_CASE("APT that changes cutters: the prediction of the G-code with T1 M6, T2 M6 and a tool table") {
+  // The flank raster above in two passes, the second with a 10 mm flat end
+  // mill: in the CL file a second CUTTER/ (and LOADTL/2, ignored), in the
+  // G-code T2 M6 with the flat in the table. The numbers agree; only the
+  // tool names and source lines differ, and the G-code counts one more
+  // unchecked rapid (its first M6; the CL file's first CUTTER/ moves nothing).
+  const std::string dir = scratch_dir("io-apt-two-cutters");
+  write_text(dir + "/two.cl",
+             "PARTNO MOULD FLANK\nUNITS/MM\n"
+             "CUTTER/6.0000,3.0000,0.0000,3.0000,0.0000,0.0000,50.0000\nLOADTL/1\n"
+             "RAPID\nGOTO/60.0000,28.0000,40.0000\nRAPID\nGOTO/60.0000,28.0000,21.9000\n"
+             "FEDRAT/MMPM,800.0000\nGOTO/64.0000,28.0000,21.2000\nGOTO/68.0000,28.0000,20.2000\n"
+             "RAPID\nGOTO/68.0000,28.0000,40.0000\n"
+             "CUTTER/10.0000\nLOADTL/2\n"
+             "RAPID\nGOTO/68.0000,28.5000,40.0000\nRAPID\nGOTO/68.0000,28.5000,20.2000\n"
+             "GOTO/64.0000,28.5000,21.2000\nGOTO/60.0000,28.5000,21.9000\n"
+             "RAPID\nGOTO/60.0000,28.5000,40.0000\nFINI\n");
+  write_text(dir + "/two.nc",
+             "%\nG21 G90 G17\nT1 M6\nG0 X60 Y28 Z40\nG0 Z21.9\nG1 X64 Y28 Z21.2 F800\nG1 X68 Y28 Z20.2\nG0 Z40\n"
+             "T2 M6\nG0 X68 Y28.5 Z40\nG0 Z20.2\nG1 X64 Y28.5 Z21.2\nG1 X60 Y28.5 Z21.9\nG0 Z40\nM30\n%\n");
+  write_text(dir + "/table.json",
+             "{\"T1\": \"" + kBall6 + "\", \"T2\": {\"name\": \"FL10\", \"type\": \"flat\", \"diameter\": 10}}\n");
+  const CliResult g = run_furrow({"predict", kMould, "--tools", dir + "/table.json", "--toolpath", dir + "/two.nc",
+                                  "--resolution", "0.2", "--out", dir + "/gcode.json"});
+  CAPTURE(g.err);
+  REQUIRE((g.status == 0 || g.status == 1));
+  const CliResult a = run_furrow(
+      {"predict", kMould, "--toolpath", dir + "/two.cl", "--resolution", "0.2", "--out", dir + "/apt.json"});
+  CAPTURE(a.err);
+  CHECK(a.status == g.status);
+  CHECK(a.out.find("  T2 CUTTER/10,0 (flat, diameter 10 mm): 1 pass") != std::string::npos);
+  json gj = json::parse(slurp(dir + "/gcode.json")), aj = json::parse(slurp(dir + "/apt.json"));
+  REQUIRE(aj.contains("tools"));
+  CHECK(aj["pass_tools"] == json::array({0, 1}));
+  if (gj.contains("rapids")) {
+    REQUIRE(aj.contains("rapids"));
+    CHECK(gj["rapids"]["unchecked"].get<int>() == aj["rapids"]["unchecked"].get<int>() + 1);
+    gj["rapids"].erase("unchecked");
+    aj["rapids"].erase("unchecked");
+  }
+  int compared = 0;
+  check_same_numbers(gj, aj, "", compared);
+  CHECK(compared > 100);
+  // A table for a file that defines its own cutters is refused.
+  const CliResult both = run_furrow({"predict", kMould, "--tools", dir + "/table.json", "--toolpath", dir + "/two.cl",
+                                     "--out", dir + "/both.json"});
+  CHECK(both.status == 2);
+  CHECK(both.err.find("defines its own cutters (CUTTER/ at lines 3 and 14)") != std::string::npos);
+}

@@ -245,7 +245,7 @@ TEST_CASE("APT: refused constructs name their line") {
       {"cutter compensation", head + "CUTCOM/LEFT\n", "cam.cl:5: CUTCOM (cutter compensation)"},
       {"canned cycle", head + "CYCLE/DRILL,5,10,IPM\n", "cam.cl:5: CYCLE (a canned cycle)"},
       {"tapered cutter", "CUTTER/10,1,4,1,10,0,50\n", "cam.cl:1: CUTTER/ is not a cylindrical"},
-      {"second cutter", head + "CUTTER/10\n", "cam.cl:5: CUTTER/ defines another tool than line 1"},
+      {"cut after a tool change", head + "CUTTER/10\nGOTO/1,0,0\n", "cam.cl:6: cutting move from an unknown position"},
       {"CIRCLE without GOTO", head + "CIRCLE/0,5,0,0,0,1,5\nFINI\n", "cam.cl:5: CIRCLE/ is not followed"},
       {"CIRCLE then RAPID", head + "CIRCLE/0,5,0,0,0,1,5\nRAPID\nGOTO/0,0,10\n", "cam.cl:5: CIRCLE/ is followed by a RAPID"},
       {"tilted CIRCLE", head + "CIRCLE/0,5,0,0,1,1,5\nGOTO/0,10,0\n", "cam.cl:5: CIRCLE/ axis is not along"},

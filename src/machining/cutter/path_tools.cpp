@@ -30,7 +30,21 @@ PathTools single_tool(const Cutter& cutter, const Toolpath& path) {
 }
 
 PathTools tools_for_path(const Toolpath& path, const std::optional<ToolSpec>& tool, const std::string& tool_source,
-                         const std::optional<std::vector<ToolTableEntry>>& table, const std::string& table_source) {
+                         const std::optional<std::vector<ToolTableEntry>>& given_table, const std::string& given_source) {
+  std::optional<std::vector<ToolTableEntry>> table = given_table;
+  std::string table_source = given_source;
+  if (path.defined_tools.size() > 1) {
+    // The file defines its cutters (APT): they are its table.
+    if (given_table)
+      throw InputError(given_source + ": " + path.source + " defines its own cutters (CUTTER/ at lines " +
+                       std::to_string(path.defined_tools[0].line) + " and " + std::to_string(path.defined_tools[1].line) +
+                       "): a tool table does not apply to it");
+    if (tool) tool_for_path(tool, tool_source, path);  // must be the file's first cutter
+    table.emplace();
+    for (std::size_t k = 0; k < path.defined_tools.size(); ++k)
+      table->push_back({static_cast<int>(k + 1), path.defined_tools[k].tool, ""});
+    table_source = path.source;
+  }
   if (!table) {
     int first = 0;
     for (const ToolpathPass& pass : path.passes) {

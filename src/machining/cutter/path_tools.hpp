@@ -19,6 +19,11 @@
 // - Without a table, every pass uses the single tool (required), or the
 //   cutter an APT file defines (io/apt_reader.hpp tool_for_path); the
 //   program may load one tool number, any number of times.
+// - An APT file that defines several cutters (CUTTER/ with another
+//   geometry changes the tool, io/apt_reader.hpp) is its own table: each
+//   pass is cut with the cutter defined last before it. A tool table is
+//   then refused, and a single tool, when given, must be the file's first
+//   cutter (as for a file with one).
 // - A rapid moves the tool loaded when it runs; a rapid before the first
 //   change moves the first tool the program cuts with (posts load the first
 //   tool before any motion, so this is the one in the spindle when a file
