@@ -309,6 +309,11 @@ ContactPlan plan_contact_points(const Part& part, const Cutter& cutter, const Pa
     for (double t : steps.params) {
       PlannedContact p;
       p.at = c.at(t);
+      // An end found by bisection lies within rounding of the face's edge,
+      // where the projection may land either side: step inward rather than
+      // lose the end (and with it, on a short piece, the whole pass).
+      for (double inward = 1e-9; !p.at.valid && (t == i.a || t == i.b) && inward < 1e-4; inward *= 100)
+        p.at = c.at(t == i.a ? t + inward * (i.b - i.a) : t - inward * (i.b - i.a));
       if (!p.at.valid) continue;
       const CutterLocation loc = cutter_location(cutter, p.at.point, p.at.normal, options.forward.predictor.location);
       if (!loc.reachable) continue;
