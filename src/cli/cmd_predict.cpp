@@ -77,7 +77,7 @@ void print_summary(std::ostream& out, const Prediction& p) {
   if (s.points_below_surface)
     out << "  " << s.points_below_surface << " tips below the cutter-location surface (lowest " << um(s.lowest_gap)
         << ")\n";
-  out << "per step: largest error " << um(s.max_step_error) << ", " << s.steps_over_tolerance
+  out << "along the passes (per step): largest error " << um(s.max_step_error) << ", " << s.steps_over_tolerance
       << " steps over the tolerance\n";
   out << "z-map: " << p.zmap.nx << " x " << p.zmap.ny << " nodes at " << p.zmap.resolution << " mm, "
       << p.zmap.moves << " moves\n";
@@ -94,7 +94,8 @@ void print_summary(std::ostream& out, const Prediction& p) {
   };
   extreme("max undercut:", s.max_undercut);
   extreme("max overcut: ", s.max_overcut);
-  out << "max scallop between passes: " << um(s.max_scallop) << " over " << p.scallops.size() << " pass pairs\n";
+  out << "between passes (" << p.scallops.size() << " pass pairs): cusp " << um(s.max_cusp)
+      << ", ridge with the furrows along the passes " << um(s.max_scallop) << "\n";
   out << "gouge sites (overcut beyond " << um(p.gouge_threshold) << "): " << s.gouge_sites << "\n";
   std::vector<const GougeSiteRecord*> deepest;
   for (const GougeSiteRecord& g : p.gouge_sites) deepest.push_back(&g);
@@ -232,8 +233,10 @@ const Command kPredictCommand = {
     "  - per move, exactly, along the design curve between its two contact points\n"
     "    (largest undercut and overcut and where they are);\n"
     "  - over the whole part, by a z-map of every move: an error map per face,\n"
-    "    the largest scallop between adjacent passes, and gouge sites (connected\n"
-    "    areas of overcut beyond the threshold) with depth, area and extent;\n"
+    "    the ridge between adjacent passes, and gouge sites (connected areas of\n"
+    "    overcut beyond the threshold) with depth, area and extent;\n"
+    "  - between adjacent passes, the cusp of the two passes' cutters alone, the\n"
+    "    figure a side step is chosen for, apart from the furrows along them;\n"
     "  - contact points where the cutter is more curved than the part (local\n"
     "    gouges, in every tangent direction);\n"
     "  - rapids (G0, APT RAPID): the cutter swept along each one must stay clear\n"

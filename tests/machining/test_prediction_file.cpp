@@ -249,6 +249,18 @@ TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, err
   const Prediction back = parse_prediction_json(prediction_to_json_text(p), "p.json");
   CHECK(back.steps.size() == p.steps.size());
   CHECK(back.summary.max_scallop == doctest::Approx(p.summary.max_scallop).epsilon(1e-6));
+  // The cusp of each pass pair, apart from the ridge (the semi-cylinder is
+  // straight across: the cusp is the side step's, the target).
+  CHECK(p.summary.max_cusp == doctest::Approx(0.01).epsilon(0.02));
+  CHECK(back.summary.max_cusp == doctest::Approx(p.summary.max_cusp).epsilon(1e-6));
+  REQUIRE(back.scallops.size() == p.scallops.size());
+  for (std::size_t k = 0; k < p.scallops.size(); ++k) {
+    REQUIRE(p.scallops[k].has_cusp);
+    CHECK(back.scallops[k].has_cusp);
+    CHECK(back.scallops[k].cusp == doctest::Approx(p.scallops[k].cusp).epsilon(1e-6));
+    CHECK((back.scallops[k].cusp_at.xyz - p.scallops[k].cusp_at.xyz).norm() < 1e-6);
+    CHECK(back.scallops[k].cusp_at.face == p.scallops[k].cusp_at.face);
+  }
 }
 
 TEST_CASE("a 20 mm ball through the mould's dimple: local gouges at the bottom, gouge sites around it") {

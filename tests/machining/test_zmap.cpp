@@ -39,7 +39,7 @@ std::vector<std::vector<PathContact>> cylinder_passes(const Part& part, const Cu
       REQUIRE(std::fabs(s.point.z() - rho * std::sin(psi)) < 1e-9);
       REQUIRE(s.normal.dot(Eigen::Vector3d(std::cos(psi), 0, std::sin(psi))) == doctest::Approx(convex ? 1 : -1));
       tips[e] = cutter_location(cutter, s.point, s.normal).tip;
-      pass.push_back({true, s});
+      pass.push_back(exact_contact(cutter, s));
     }
     moves.push_back({tips[0], tips[1], k, 0});
     passes.push_back(pass);
@@ -189,18 +189,21 @@ TEST_CASE("flat plane, parallel passes: the z-map scallop is the ball formula, f
       const double y = 10 + k * w;
       const SurfacePoint s0 = projector.project(5, y), s1 = projector.project(35, y);
       moves.push_back({s0.point, s1.point, k, 0});  // tips = contacts on a plane
-      passes.push_back({{true, s0}, {true, s1}});
+      passes.push_back({exact_contact(ball, s0), exact_contact(ball, s1)});
     }
     ZMap zmap(part_xy_extent(part), 0.05);
     zmap.cut(ball, moves);
-    const auto scallops = pass_pair_scallops(projector, zmap, 2 * r, passes);
+    const auto scallops = pass_pair_scallops(projector, zmap, ball, passes);
     REQUIRE(scallops.size() == 5);
     for (const PassScallop& s : scallops) {
       CAPTURE(h);
-      REQUIRE(s.found);
-      CHECK(s.height == doctest::Approx(h).epsilon(1e-6));
-      // The ridge lies half-way between the passes.
-      CHECK(s.at.point.y() == doctest::Approx(10 + (s.pass_a + 0.5) * w).epsilon(1e-6));
+      // Straight passes leave no furrow along them: ridge and cusp agree.
+      for (const ScallopPeak& peak : {s.ridge, s.cusp}) {
+        REQUIRE(peak.found);
+        CHECK(peak.height == doctest::Approx(h).epsilon(1e-6));
+        // The ridge lies half-way between the passes.
+        CHECK(peak.at.point.y() == doctest::Approx(10 + (s.pass_a + 0.5) * w).epsilon(1e-6));
+      }
     }
     // The plain bilinear z-map misses the cusp by at most its slope times half
     // a cell (here sqrt(2h/r) on each side of the ridge).
@@ -235,14 +238,16 @@ TEST_CASE("convex and concave cylinders, passes along the axis: z-map scallops f
     ZMap zmap(part_xy_extent(part), 0.05);
     zmap.cut(ball, moves);
     const VerticalProjector projector(part);
-    const auto scallops = pass_pair_scallops(projector, zmap, 2 * r, passes);
+    const auto scallops = pass_pair_scallops(projector, zmap, ball, passes);
     REQUIRE(scallops.size() == 4);
     const double expected = *ball_scallop_height(r, k, step.side_step);
     CHECK(expected == doctest::Approx(0.01).epsilon(1e-9));
     for (const PassScallop& s : scallops) {
       CAPTURE(is_convex);
-      REQUIRE(s.found);
-      CHECK(s.height == doctest::Approx(expected).epsilon(1e-6));
+      for (const ScallopPeak& peak : {s.ridge, s.cusp}) {
+        REQUIRE(peak.found);
+        CHECK(peak.height == doctest::Approx(expected).epsilon(1e-6));
+      }
     }
     // The same side step on the other curvature gives a different scallop:
     // the check above is not blind to the sign of k.

@@ -103,6 +103,7 @@ PathGeometry locate_path(const Part& part, const Cutter& cutter, const Toolpath&
   for (auto& pass : geometry.passes)
     for (PathPoint& p : pass) {
       p = located[k++];
+      p.contact.tip = p.tip;
       ++geometry.points;
       geometry.without_contact += !p.contact.valid;
       geometry.in_air += p.in_air;

@@ -149,7 +149,7 @@ PathPrediction predict_path(const Part& part, const PathTools& path_tools, const
     if (g.passes.empty()) continue;
     const bool whole = groups.size() == 1;
     std::vector<PassScallop> scallops =
-        pass_pair_scallops(projector, *r.zmap, cutter_of(g).diameter(),
+        pass_pair_scallops(projector, *r.zmap, cutter_of(g),
                            path_contacts(whole ? r.geometry : sub_geometry(r.geometry, g)), options.scallops);
     for (PassScallop& sc : scallops) {
       if (!whole) {
@@ -269,9 +269,16 @@ Prediction make_prediction(const Part& part, const PathPrediction& r, const Path
     p.steps.push_back(rec);
   }
   for (const PassScallop& sc : r.scallops) {
-    if (!sc.found) continue;
-    p.scallops.push_back({sc.pass_a, sc.pass_b, sc.height, location(part, sc.at)});
-    s.max_scallop = std::max(s.max_scallop, sc.height);
+    if (!sc.ridge.found) continue;
+    ScallopRecord rec{sc.pass_a, sc.pass_b, sc.ridge.height, location(part, sc.ridge.at)};
+    s.max_scallop = std::max(s.max_scallop, sc.ridge.height);
+    if (sc.cusp.found) {
+      rec.has_cusp = true;
+      rec.cusp = sc.cusp.height;
+      rec.cusp_at = location(part, sc.cusp.at);
+      s.max_cusp = std::max(s.max_cusp, sc.cusp.height);
+    }
+    p.scallops.push_back(rec);
   }
   for (const GougeSite& g : r.sites) {
     GougeSiteRecord rec;

@@ -47,10 +47,15 @@ struct StepRecord {
   double chord_deviation = 0;  // [mm] chord estimate, for comparison
 };
 
+// Between two adjacent passes (pass_scallops.hpp): the ridge the z-map
+// keeps, and the cusp of the two passes' cutters alone.
 struct ScallopRecord {
   int pass_a = 0, pass_b = 0;
-  double height = 0;  // [mm]
+  double height = 0;  // [mm] the ridge
   SurfaceLocation at;
+  bool has_cusp = false;  // false: no cross-section had one, or a file from before cusps were written
+  double cusp = 0;        // [mm]
+  SurfaceLocation cusp_at;
 };
 
 struct GougeSiteRecord {
@@ -135,7 +140,10 @@ struct PredictionSummary {
   ErrorAt max_undercut, max_overcut;  // over the error map (refined)
   std::size_t steps = 0, steps_evaluated = 0, steps_over_tolerance = 0;
   double max_step_error = 0;  // [mm] largest |error| of an evaluated step
-  double max_scallop = 0;     // [mm] over the pass pairs
+  // Between passes [mm], over the pass pairs: the ridge the z-map keeps
+  // there (cusp plus the furrows along the passes where they meet it), and
+  // the cusp alone (0 in files from before cusps were written).
+  double max_scallop = 0, max_cusp = 0;
   std::size_t gouge_sites = 0, local_gouge_points = 0;
   std::size_t path_points = 0, points_without_contact = 0, points_in_air = 0, points_below_surface = 0;
   double lowest_gap = 0;  // [mm]

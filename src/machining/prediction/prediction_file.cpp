@@ -60,6 +60,7 @@ json summary_json(const PredictionSummary& s) {
   j["steps_over_tolerance"] = s.steps_over_tolerance;
   j["max_step_error"] = length(s.max_step_error, "max_step_error");
   j["max_scallop"] = length(s.max_scallop, "max_scallop");
+  j["max_cusp"] = length(s.max_cusp, "max_cusp");
   j["gouge_sites"] = s.gouge_sites;
   j["local_gouge_points"] = s.local_gouge_points;
   j["path_points"] = s.path_points;
@@ -160,6 +161,11 @@ std::string prediction_to_json_text(const Prediction& p) {
     json o = location(s.at);
     o["passes"] = json::array({s.pass_a, s.pass_b});
     o["height"] = length(s.height, "height");
+    if (s.has_cusp) {
+      json c = location(s.cusp_at);
+      c["height"] = length(s.cusp, "cusp.height");
+      o["cusp"] = c;
+    }
     scallops.push_back(o);
   }
   j["scallops"] = scallops;

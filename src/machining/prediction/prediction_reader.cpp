@@ -198,6 +198,7 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
   sum.steps_over_tolerance = s.count("steps_over_tolerance");
   sum.max_step_error = s.number("max_step_error");
   sum.max_scallop = s.number("max_scallop");
+  if (s.has("max_cusp")) sum.max_cusp = s.number("max_cusp");  // optional: older files have none
   sum.gouge_sites = s.count("gouge_sites");
   sum.local_gouge_points = s.count("local_gouge_points");
   sum.path_points = s.count("path_points");
@@ -233,6 +234,12 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
     r.at = read_location(o);
     std::tie(r.pass_a, r.pass_b) = count_pair(o.raw("passes"), o.path("passes"));
     r.height = o.number("height");
+    if (o.has("cusp")) {  // optional: older files have none
+      const JsonCursor c = o.at("cusp");
+      r.has_cusp = true;
+      r.cusp = c.number("height");
+      r.cusp_at = read_location(c);
+    }
     p.scallops.push_back(r);
   }
   const json& sites = root.array("gouge_sites");
