@@ -82,11 +82,9 @@ TEST_CASE("iso-scallop passes meet their target within 2 percent measured as the
   // The planner's side step comes from the osculating circle across the
   // pass at sample points; the cusp is measured on the true surface between
   // the real passes, so this holds the planner to its promise where the
-  // curvature varies along and across the passes. Ball only: a bull-nose or
-  // flat cutter tilted along the pass is not measured exactly by standing
-  // cutters (pass_scallops.hpp), and across the crest of a convex part the
-  // planner's bull-nose side step is too wide (docs/architecture.md
-  // "Scallop between passes").
+  // curvature varies along and across the passes. No bull-nose or flat
+  // cutter tilted along the pass: standing cutters do not measure it exactly
+  // (pass_scallops.hpp).
   struct Case {
     std::string name;
     Part part;
@@ -103,6 +101,11 @@ TEST_CASE("iso-scallop passes meet their target within 2 percent measured as the
     torus.faces.emplace_back("ring", make_torus(40, 15, 0.0, 0.6, 1.8, 2.6));
     cases.push_back({"torus saddle ball", torus, Cutter("ball8", 4, 4), {PassDirection::along_u, 0}, 0.3});
   }
+  // A bull-nose across the crest of a convex part: between two passes
+  // either side of it the cutter touches on opposite sides of its flat
+  // bottom. Tilted across the passes only, so standing cutters are exact.
+  cases.push_back({"cylinder bull", read_part(example("semi_cylinder.json")), Cutter("bull10r2", 5, 2),
+                   {PassDirection::along_v, 0}, 0.3});
   cases.push_back({"mould oblique", read_part(example("mould.json")), Cutter("ball6", 3, 3), {PassDirection::plane, 30}, 0.3});
   const double target = 0.01;
   for (const Case& c : cases) {

@@ -46,13 +46,14 @@ Eigen::Vector2d tip_at(const Cutter& c, const Eigen::Vector2d& p, const Eigen::V
 }  // namespace
 
 std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, double tilt, double w,
-                                            const CrossSectionOptions& options) {
+                                            const CrossSectionOptions& options, double first) {
   if (cutter.corner_radius() == cutter.radius()) return ball_scallop_height(cutter.radius(), k, w);
   if (!(w > 0)) return 0.0;
   const Section s{k, tilt};
   Eigen::Vector2d pa, na, pb, nb;
-  s.at(-0.5 * w, pa, na);
-  s.at(0.5 * w, pb, nb);
+  const double sa = first * w, sb = (first + 1) * w;
+  s.at(sa, pa, na);
+  s.at(sb, pb, nb);
   if (!(na.y() > 0) || !(nb.y() > 0)) return std::nullopt;
   const Eigen::Vector2d ta = tip_at(cutter, pa, na), tb = tip_at(cutter, pb, nb);
   const double R = cutter.radius();
@@ -77,11 +78,11 @@ std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, doub
   int best_k = 0;
   double best = -std::numeric_limits<double>::infinity();
   for (int i = 0; i <= n; ++i) {
-    const double e = error(-0.5 * w + w * i / n);
+    const double e = error(sa + w * i / n);
     if (e > best) best = e, best_k = i;
   }
   if (!ridge) return std::nullopt;  // the two cutters leave a gap between them
-  double centre = -0.5 * w + w * best_k / n;
+  double centre = sa + w * best_k / n;
   // The ridge is where the two envelopes cross; it can be narrower than the
   // samples (a bull-nose's flat bottoms leave only a sliver): find it
   // directly and refine around it if it beats the samples.
@@ -97,7 +98,7 @@ std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, doub
         const double mid = 0.5 * (lo + hi);
         (diff(mid) <= 0 ? lo : hi) = mid;
       }
-      double a = -0.5 * w, b = 0.5 * w;  // the arc point under the ridge (x grows along the arc)
+      double a = sa, b = sb;  // the arc point under the ridge (x grows along the arc)
       for (int it = 0; it < 200 && b - a > 1e-12 * w; ++it) {
         const double mid = 0.5 * (a + b);
         Eigen::Vector2d p, nn;
@@ -109,21 +110,21 @@ std::optional<double> cutter_scallop_height(const Cutter& cutter, double k, doub
     }
   }
   const double h = w / n;
-  const double lo = std::max(-0.5 * w, centre - h), hi = std::min(0.5 * w, centre + h);
+  const double lo = std::max(sa, centre - h), hi = std::min(sb, centre + h);
   const ScalarSearchResult r = minimize_unimodal([&](double sigma) { return -error(sigma); }, lo, hi,
                                                  {options.ridge_tolerance, 100});
   return std::max(best, -r.value);
 }
 
 SideStepResult cutter_side_step_for_scallop(const Cutter& cutter, double k, double tilt, double height,
-                                            const CrossSectionOptions& options) {
+                                            const CrossSectionOptions& options, double first) {
   if (cutter.corner_radius() == cutter.radius())
     return ball_side_step_for_scallop(cutter.radius(), k, height, {options.side_step_tolerance / cutter.radius(),
                                                                    options.max_iterations});
   SideStepResult result;
   if (!(height > 0)) return result;
   auto below = [&](double w) {
-    const auto h = cutter_scallop_height(cutter, k, tilt, w, options);
+    const auto h = cutter_scallop_height(cutter, k, tilt, w, options, first);
     return h && *h <= height;
   };
   // Cutters of diameter 2R overlap only while w < 2R (flat case); curved

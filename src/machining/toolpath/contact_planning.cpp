@@ -99,26 +99,32 @@ std::vector<Interval> usable_intervals(const Family& f, double level, double min
 }
 
 // The side step w (arc across the pass) at a surface point whose pass runs
-// along `along`, and the across direction.
+// along `along`, and the across direction (toward the next pass). `first`
+// says where the point lies in the pair of contacts the step separates
+// (cross_section_scallop.hpp): 0 on the pass the step starts from, -1 on
+// the next one.
 double side_step_at(const Family& f, const Cutter& cutter, const SurfacePoint& p, const ContactPlanOptions& o,
-                    double flat_w, Eigen::Vector3d& across) {
+                    double flat_w, double first, Eigen::Vector3d& across) {
   const Face& face = f.part->faces[p.face];
   const DifferentialGeometry g = face.geometry(p.uv.x(), p.uv.y());
   if (g.degenerate) return kInf;
-  Eigen::Vector3d along;
+  Eigen::Vector3d along, next;  // next: toward the next pass
   if (f.face >= 0) {
     const SurfaceDerivatives sd = face.surface().evaluate(p.uv.x(), p.uv.y(), 1);
     along = (f.along_u ? sd.Su : sd.Sv).normalized();
+    next = f.along_u ? sd.Sv : sd.Su;
   } else {
     along = Eigen::Vector3d(f.m.x(), f.m.y(), 0).cross(g.normal).normalized();
     if (along.head<2>().dot(f.d) < 0) along = -along;
+    next = Eigen::Vector3d(f.m.x(), f.m.y(), 0);
   }
   across = g.normal.cross(along);
+  if (across.dot(next) < 0) across = -across;
   const double k_across = g.normal_curvature(across);
   const Eigen::Vector2d across_h = across.head<2>();
   const double tilt =
       across_h.norm() > 1e-12 ? std::atan2(g.normal.head<2>().dot(across_h.normalized()), g.normal.z()) : 0.0;
-  const SideStepResult s = cutter_side_step_for_scallop(cutter, k_across, tilt, o.scallop, o.cross_section);
+  const SideStepResult s = cutter_side_step_for_scallop(cutter, k_across, tilt, o.scallop, o.cross_section, first);
   return s.feasible && s.side_step > 0 ? s.side_step : flat_w;
 }
 
@@ -137,12 +143,12 @@ double side_step(const Family& f, const Cutter& cutter, double level, double pro
     const SurfacePoint p = here.at(f.t(k));
     if (!usable(*f.part, p, o.min_normal_z)) continue;
     Eigen::Vector3d across;
-    double w = side_step_at(f, cutter, p, o, flat_w, across);
+    double w = side_step_at(f, cutter, p, o, flat_w, two ? 0.0 : -0.5, across);
     if (!std::isfinite(w)) continue;
     if (two) {
       const SurfacePoint q = there.at(f.t(k));
       Eigen::Vector3d unused;
-      if (usable(*f.part, q, o.min_normal_z)) w = std::min(w, side_step_at(f, cutter, q, o, flat_w, unused));
+      if (usable(*f.part, q, o.min_normal_z)) w = std::min(w, side_step_at(f, cutter, q, o, flat_w, -1.0, unused));
     }
     double rate;  // level units per mm across
     if (f.face >= 0) {

@@ -15,7 +15,9 @@
 // Along the current pass the surface is sampled; at each sample the side step
 // w whose scallop equals the target is computed for the cross-section there
 // (cross_section_scallop.hpp: curvature across the pass, tilt of the normal;
-// exact for the ball) and converted into the pass parameter (v, u, or plane
+// exact for the ball; the pair of contacts starting at the sample, so that a
+// flat-bottomed cutter crossing the crest of a convex part is seen touching
+// on both sides of its bottom) and converted into the pass parameter (v, u, or plane
 // offset) by the surface's rate across the pass; the smallest wins, and is
 // checked again from the candidate next pass (whose curvature may be
 // tighter), so the scallop stays at or below the target everywhere up to the
