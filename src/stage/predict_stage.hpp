@@ -34,7 +34,9 @@ PredictedPath predict_stage(const Part& part, const PathTools& tools, const Tool
                             const RegionMap* regions, const StageProgress& progress = {});
 
 // The error map as a PNG; `scale` [mm] is where the colours saturate, 0 for
-// the default of twice the tolerance.
+// the default of twice the tolerance. The largest furrow along a pass (F),
+// cusp (C) and ridge (R) between passes are marked where they are and
+// given in notes under the legend.
 std::string prediction_map_png(const Part& part, const PredictedPath& predicted, const PathPredictionOptions& options,
                                double scale);
 

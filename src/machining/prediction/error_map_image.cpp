@@ -72,15 +72,30 @@ std::string error_map_png(const Part& part, const ErrorMap& map, const ErrorImag
     height = std::max(height, pictures.back().rows);
   }
   const int bar_h = std::max(height, 200);
+  const int note_h = 20;
   width += bar_w + bar_labels;
-  cv::Mat canvas(title + bar_h + 2 * margin, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  cv::Mat canvas(title + bar_h + 2 * margin + note_h * static_cast<int>(o.notes.size()), width, CV_8UC3,
+                 cv::Scalar(255, 255, 255));
   int x = margin;
   const int font = cv::FONT_HERSHEY_SIMPLEX;
   for (std::size_t f = 0; f < pictures.size(); ++f) {
-    pictures[f].copyTo(canvas(cv::Rect(x, title + margin, pictures[f].cols, pictures[f].rows)));
+    const cv::Mat& pic = pictures[f];
+    pic.copyTo(canvas(cv::Rect(x, title + margin, pic.cols, pic.rows)));
     cv::putText(canvas, part.faces[map.faces[f].face].name() + "  (u right, v up)", cv::Point(x, title + 8), font, 0.5,
                 cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-    x += pictures[f].cols + margin;
+    const ParameterDomain& d = map.faces[f].domain;
+    for (const MapMarker& m : o.markers) {
+      if (m.face != map.faces[f].face) continue;
+      // The same pixel grid as face_image: u to the right, v up.
+      const double fu = (m.uv.x() - d.u0) / d.width_u(), fv = (m.uv.y() - d.v0) / d.width_v();
+      if (!(fu >= 0 && fu <= 1 && fv >= 0 && fv <= 1)) continue;
+      const cv::Point c(x + static_cast<int>(std::lround(fu * (pic.cols - 1))),
+                        title + margin + static_cast<int>(std::lround((1 - fv) * (pic.rows - 1))));
+      cv::circle(canvas, c, 7, cv::Scalar(255, 255, 255), 3, cv::LINE_AA);
+      cv::circle(canvas, c, 7, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+      cv::putText(canvas, m.label, c + cv::Point(10, -6), font, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    }
+    x += pic.cols + margin;
   }
   // Colour bar: +scale at the top, -scale at the bottom.
   const int top = title + margin;
@@ -99,6 +114,9 @@ std::string error_map_png(const Part& part, const ErrorMap& map, const ErrorImag
   cv::putText(canvas, "error [um]", cv::Point(x - 10, title + 8), font, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   cv::putText(canvas, "+ material left, - overcut; grey: not reached", cv::Point(margin, top + bar_h + 22), font, 0.45,
               cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  for (std::size_t k = 0; k < o.notes.size(); ++k)
+    cv::putText(canvas, o.notes[k], cv::Point(margin, top + bar_h + 22 + note_h * static_cast<int>(k + 1)), font, 0.45,
+                cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   const std::vector<unsigned char> bytes = plot::encode_png(canvas);
   return std::string(bytes.begin(), bytes.end());
 }
