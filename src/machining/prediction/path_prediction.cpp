@@ -98,8 +98,13 @@ PathPrediction predict_path(const Part& part, const PathTools& path_tools, const
     throw InputError("predict: the tolerance must be a positive number of millimetres");
   if (!(options.gouge_threshold >= 0) || !std::isfinite(options.gouge_threshold))
     throw InputError("predict: the gouge threshold must not be negative");
+  auto in_range = [&](const std::vector<int>& of) {
+    return std::all_of(of.begin(), of.end(),
+                       [&](int t) { return t >= 0 && static_cast<std::size_t>(t) < path_tools.cutters.size(); });
+  };
   if (path_tools.cutters.empty() || path_tools.of_pass.size() != path.passes.size() ||
-      path_tools.of_rapid.size() != path.rapids.size())
+      path_tools.of_rapid.size() != path.rapids.size() || !in_range(path_tools.of_pass) ||
+      !in_range(path_tools.of_rapid))
     throw std::logic_error("predict_path: the tools do not describe this path");
   PathPrediction r;
   r.tools = std::make_shared<const PathTools>(path_tools);
