@@ -20,9 +20,8 @@
 // the error varies on the scale of the step and the cutter).
 // Only this move's envelope counts, and only on the curve: neighbouring
 // moves and passes (scallops) are the z-map's business (zmap.hpp). Beside
-// the curve the same move can cut deeper where the surface rises across the
-// pass (a saddle: convex along, concave across), by a few per cent of the
-// step's error on the mould; the z-map error map shows it.
+// the curve the same move can cut deeper (an oblique step, a saddle):
+// strip_step.hpp refines the overcut there from this result.
 // On a convex stretch the contact points themselves are overcut a little:
 // the cutter moving off along the chord dips below the point it touched.
 #include <Eigen/Core>

@@ -18,7 +18,8 @@ const char* to_string(StepStatus status) {
 
 std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, const Cutter& cutter,
                                           const PathGeometry& geometry, const FurrowStepOptions& options,
-                                          const std::function<void(std::size_t, std::size_t)>& progress) {
+                                          const std::function<void(std::size_t, std::size_t)>& progress,
+                                          const StripStepOptions& strip) {
   std::vector<StepPrediction> steps;
   for (std::size_t p = 0; p < geometry.passes.size(); ++p)
     for (std::size_t k = 0; k + 1 < geometry.passes[p].size(); ++k) {
@@ -45,6 +46,11 @@ std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, co
       s.error = furrow_step_error(cutter, a.tip, b.tip, curve, options);
       s.status = s.error.valid ? StepStatus::evaluated : StepStatus::unreachable;
       if (s.error.valid) s.chord = chord_deviation(curve, options);
+      const StripStepResult beside = strip_step_error(projector.part(), cutter, curve, s.error, options, strip);
+      if (beside.valid) {
+        s.error.overcut = {beside.overcut.error, beside.overcut.lambda, beside.overcut.at};
+        s.error.converged = s.error.converged && beside.converged;
+      }
     }
     const std::size_t d = ++done;
     if (progress && omp_get_thread_num() == 0 && d % 64 == 0) progress(d, steps.size());

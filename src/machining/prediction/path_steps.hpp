@@ -2,12 +2,15 @@
 // The exact per-step error (furrow_step.hpp) of every move of a located tool
 // path (path_contacts.hpp). The design curve of a step is the vertical
 // section between its two contact points (the plane the straight move lies
-// in); the move is the path's own pair of tips.
+// in); the move is the path's own pair of tips. A step that overcuts has
+// its overcut refined over the strip beside the curve (strip_step.hpp): its
+// deepest point on an oblique step lies off the curve.
 #include <functional>
 #include <vector>
 
 #include "machining/prediction/furrow_step.hpp"
 #include "machining/prediction/path_contacts.hpp"
+#include "machining/prediction/strip_step.hpp"
 
 namespace furrow {
 
@@ -30,6 +33,7 @@ struct StepPrediction {
 // Parallel over steps; each depends on its own step only.
 std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, const Cutter& cutter,
                                           const PathGeometry& geometry, const FurrowStepOptions& options = {},
-                                          const std::function<void(std::size_t, std::size_t)>& progress = {});
+                                          const std::function<void(std::size_t, std::size_t)>& progress = {},
+                                          const StripStepOptions& strip = {});
 
 }  // namespace furrow
