@@ -34,7 +34,7 @@ void place_all(const Part& part, const Cutter& cutter, const std::vector<PassCur
     const ForwardSteps s = place_contact_points(part, passes[p], cutter, options);
     counts[p] = s.params.size();
     for (std::size_t k = 1; k < s.params.size(); ++k)
-      worsts[p] = std::max(worsts[p], step_error(cutter, passes[p].between(s.params[k - 1], s.params[k]), StepRule::exact));
+      worsts[p] = std::max(worsts[p], step_error(part, cutter, passes[p].between(s.params[k - 1], s.params[k]), StepRule::exact));
   }
   for (std::size_t p = 0; p < passes.size(); ++p) points += counts[p], worst = std::max(worst, worsts[p]);
 }

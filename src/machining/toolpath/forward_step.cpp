@@ -1,5 +1,7 @@
 #include "machining/toolpath/forward_step.hpp"
 #include "base/numbers.hpp"
+#include "machining/gouge/local_gouge.hpp"
+#include "machining/prediction/strip_step.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,13 +42,23 @@ const char* to_string(StepRule rule) {
   return "unknown";
 }
 
-double step_error(const Cutter& cutter, const SurfaceCurve& curve, StepRule rule, const FurrowStepOptions& predictor) {
+double step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& curve, StepRule rule,
+                  const FurrowStepOptions& predictor, bool beside) {
   if (rule == StepRule::chord) {
     const ChordDeviation c = chord_deviation(curve, predictor);
     return c.valid ? c.deviation : kInf;
   }
-  const FurrowStepResult r = furrow_step_error(cutter, curve, predictor);
-  return r.valid && r.unreached == 0 ? r.magnitude() : kInf;
+  if (!beside) {
+    const FurrowStepResult r = furrow_step_error(cutter, curve, predictor);
+    return r.valid && r.unreached == 0 ? r.magnitude() : kInf;
+  }
+  // One remembering curve: the strip search starts on the curve's points.
+  const SurfaceCurve remembered = remembering_curve(curve);
+  FurrowStepResult r = furrow_step_error(cutter, remembered, predictor);
+  if (!r.valid || r.unreached != 0) return kInf;
+  const StripStepResult strip = strip_step_error(part, cutter, remembered, r, predictor);
+  if (strip.valid) r.overcut.error = strip.overcut.error;
+  return r.magnitude();
 }
 
 double circular_arc_step(const Part& part, const Cutter& cutter, const SurfacePoint& at,
@@ -69,41 +81,39 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
   ForwardSteps result;
   result.params.push_back(pass.t0);
   double t = pass.t0;
+  // Whether the cutter fits the part at a pass point (no local gouge in any
+  // direction): only then is a step's overcut beside its curve the step's
+  // doing (strip_step.hpp), not a gouge no step length removes. Asked at the
+  // step's start only, so that one search sees one error function.
+  auto fits = [&](double at) {
+    const SurfacePoint p = pass.at(at);
+    if (!p.valid) return false;
+    const DifferentialGeometry g = part.faces[p.face].geometry(p.uv.x(), p.uv.y());
+    return !g.degenerate && check_local_gouge(cutter, g).status == GougeStatus::clear;
+  };
+  bool beside = false;  // the current step's error includes the strip beside the curve
+  bool start_fits = false;
   auto error = [&](double a, double b) {
     ++result.evaluations;
-    const double e = step_error(cutter, pass.between(a, b), options.rule, options.predictor);
+    const double e = step_error(part, cutter, pass.between(a, b), options.rule, options.predictor,
+                                beside && start_fits);
     if (!std::isfinite(e)) ++result.invalid;
     return e;
   };
   const double span = pass.t1 - pass.t0;
-  while (t < pass.t1) {
-    // A count from the input's ratio of length to tolerance: bounded.
-    if (static_cast<long>(result.params.size()) > options.max_points) {
-      result.truncated = true;
-      break;
-    }
-    // Upper end: the pass end, or the parameter at max_step.
-    const double end = options.max_step > 0 ? param_at_chord(pass, t, options.max_step) : pass.t1;
-    // Estimate: the circular-arc step at t.
-    const SurfacePoint here = pass.at(t);
-    double estimate = end;
-    if (here.valid) {
-      const SurfacePoint ahead = pass.at(std::min(t + 1e-3 * span, pass.t1));
-      const Eigen::Vector3d dir = (ahead.point - here.point).normalized();
-      const double ds = circular_arc_step(part, cutter, here, dir, options.tolerance);
-      estimate = std::min(end, param_at_chord(pass, t, ds));
-    }
-    if (options.rule == StepRule::circular_arc) {
-      t = estimate > t ? estimate : end;
-      result.params.push_back(t);
-      continue;
-    }
+  // One step from t: the longest whose error is within the tolerance (the
+  // header), with whether it jumped or hit the iteration cap.
+  struct Next {
+    double t = 0;
+    bool jump = false, capped = false, minimal = false;
+  };
+  auto search = [&](double end, double estimate) {
+    Next next;
     const double e = options.tolerance;
     const double e_end = error(t, end);
     if (e_end <= e) {
-      t = end;
-      result.params.push_back(t);
-      continue;
+      next.t = end;
+      return next;
     }
     // Bracket [lo, hi]: error(lo) <= e < error(hi).
     double lo = t, hi = end, e_lo = 0, e_hi = e_end;  // errors at the ends
@@ -160,10 +170,50 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
         replaced = +1;
       }
     }
-    if (!resolved && it < options.max_iterations && lo > t) ++result.jumps;
-    if (it >= options.max_iterations) ++result.capped;
-    if (!(lo > t)) lo = std::min(hi, t + 1e-9 * span);  // cannot stall: a minimal step
-    t = lo;
+    next.jump = !resolved && it < options.max_iterations && lo > t;
+    next.capped = it >= options.max_iterations;
+    next.minimal = !(lo > t);
+    if (next.minimal) lo = std::min(hi, t + 1e-9 * span);  // cannot stall: a minimal step
+    next.t = lo;
+    return next;
+  };
+  while (t < pass.t1) {
+    // A count from the input's ratio of length to tolerance: bounded.
+    if (static_cast<long>(result.params.size()) > options.max_points) {
+      result.truncated = true;
+      break;
+    }
+    // Upper end: the pass end, or the parameter at max_step.
+    const double end = options.max_step > 0 ? param_at_chord(pass, t, options.max_step) : pass.t1;
+    // Estimate: the circular-arc step at t.
+    const SurfacePoint here = pass.at(t);
+    double estimate = end;
+    if (here.valid) {
+      const SurfacePoint ahead = pass.at(std::min(t + 1e-3 * span, pass.t1));
+      const Eigen::Vector3d dir = (ahead.point - here.point).normalized();
+      const double ds = circular_arc_step(part, cutter, here, dir, options.tolerance);
+      estimate = std::min(end, param_at_chord(pass, t, ds));
+    }
+    if (options.rule == StepRule::circular_arc) {
+      t = estimate > t ? estimate : end;
+      result.params.push_back(t);
+      continue;
+    }
+    beside = options.rule == StepRule::exact;
+    start_fits = beside && fits(t);
+    Next next = search(end, estimate);
+    // An overcut beside the curve that even the shortest step keeps, or
+    // that jumps over the tolerance, is not the step's growing furrow (a
+    // feature beside the pass within the cutter's reach, a part edge): the
+    // curve's error decides this step, as it does where the cutter does not
+    // fit.
+    if ((next.minimal || next.jump) && beside && start_fits) {
+      beside = false;
+      next = search(end, estimate);
+    }
+    result.jumps += next.jump;
+    result.capped += next.capped;
+    t = next.t;
     result.params.push_back(t);
   }
   return result;

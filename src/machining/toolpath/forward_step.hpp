@@ -28,7 +28,14 @@
 // accepted step always has error <= tolerance as computed (a zero-length
 // step has none), and a longer one tried exceeded it. Where the error jumps
 // over the tolerance (a step reaching another face, a change of contact) the
-// bracket collapses first; the step is kept and counted in `jumps`. The last
+// bracket collapses first; the step is kept and counted in `jumps`.
+// The exact rule's overcut is the deepest beside the curve too (strip_step.hpp:
+// an oblique step cuts deepest off it) where the cutter fits the part at
+// the step's start (no local gouge, local_gouge.hpp); where it does not, that
+// gouge is beside the curve at any step length, and the curve's error
+// decides. So it does when even a minimal step keeps an overcut beside the
+// curve over the tolerance, or the error beside it jumps over the tolerance
+// (a feature within the cutter's reach, a part edge). The last
 // step of a pass ends at the pass end and may be shorter. `max_step` [mm,
 // chord] caps every rule (0: no cap).
 #include <vector>
@@ -63,9 +70,11 @@ struct ForwardSteps {
 };
 
 // The rule's error of one step (exact: max(undercut, |overcut|); chord: the
-// chord deviation); +infinity when the step cannot be evaluated.
-double step_error(const Cutter& cutter, const SurfaceCurve& curve, StepRule rule,
-                  const FurrowStepOptions& predictor = {});
+// chord deviation); +infinity when the step cannot be evaluated. With
+// `beside` the exact rule's overcut is the deepest over the strip beside the
+// curve (strip_step.hpp), whose points lie on `part`.
+double step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& curve, StepRule rule,
+                  const FurrowStepOptions& predictor = {}, bool beside = true);
 
 // Arc length of the circular-arc estimate at a point for a pass direction
 // (unit, tangent); +infinity when the formula gives no bound.
