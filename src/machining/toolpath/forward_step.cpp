@@ -92,11 +92,9 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
     return !g.degenerate && check_local_gouge(cutter, g).status == GougeStatus::clear;
   };
   bool beside = false;  // the current step's error includes the strip beside the curve
-  bool start_fits = false;
   auto error = [&](double a, double b) {
     ++result.evaluations;
-    const double e = step_error(part, cutter, pass.between(a, b), options.rule, options.predictor,
-                                beside && start_fits);
+    const double e = step_error(part, cutter, pass.between(a, b), options.rule, options.predictor, beside);
     if (!std::isfinite(e)) ++result.invalid;
     return e;
   };
@@ -199,15 +197,14 @@ ForwardSteps place_contact_points(const Part& part, const PassCurve& pass, const
       result.params.push_back(t);
       continue;
     }
-    beside = options.rule == StepRule::exact;
-    start_fits = beside && fits(t);
+    beside = options.rule == StepRule::exact && fits(t);
     Next next = search(end, estimate);
     // An overcut beside the curve that even the shortest step keeps, or
     // that jumps over the tolerance, is not the step's growing furrow (a
     // feature beside the pass within the cutter's reach, a part edge): the
     // curve's error decides this step, as it does where the cutter does not
     // fit.
-    if ((next.minimal || next.jump) && beside && start_fits) {
+    if ((next.minimal || next.jump) && beside) {
       beside = false;
       next = search(end, estimate);
     }
