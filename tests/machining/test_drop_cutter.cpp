@@ -119,6 +119,7 @@ void compare_with_brute_force(const Part& part, const std::vector<Cutter>& cutte
   for (const Cutter& cutter : cutters) {
     const TipContactFinder finder(part, cutter);
     const DropCutterOptions& opt = TipContactOptions{}.bound;
+    const DropCutter drop(part, cutter, opt);
     const double R = cutter.radius(), r = cutter.corner_radius();
     int resting = 0, incomplete = 0;
     long cells = 0;
@@ -164,6 +165,19 @@ void compare_with_brute_force(const Part& part, const std::vector<Cutter>& cutte
       const double err = f.zu * f.du / 2 + f.zv * f.dv / 2 + envelope_slope(R, r, rho + d) * d;
       CAPTURE(err);
       CHECK(top.tip_z <= brute + err + 1e-9);
+      // The decision form: asked about a height the samples beat, it proves
+      // it with a real point; asked about one above the sampling error, it
+      // finds none (or reports a bound from its cap that admits the rest).
+      const DropCutterResult below = drop.rests_above(xy, brute - 1e-3);
+      CHECK(below.tip_z > brute - 1e-3);
+      CHECK(below.any);
+      const Eigen::Vector3d held = part.faces[below.face].surface().point(below.uv.x(), below.uv.y());
+      CHECK((held - below.point).norm() < 1e-9);
+      CHECK(below.tip_z <= held.z() - envelope(R, r, (held.head<2>() - xy).norm()) + 1e-9);
+      const double clear_height = brute + err + 1e-3;
+      const DropCutterResult above = drop.rests_above(xy, clear_height);
+      CHECK_FALSE(above.tip_z > clear_height);
+      if (!above.complete) CHECK(above.unresolved > clear_height);
     }
     MESSAGE(cutter.name() << " cells " << cells << " incomplete " << incomplete);
     CHECK(resting > queries / 2);

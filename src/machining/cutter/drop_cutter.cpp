@@ -4,6 +4,8 @@
 #include <cmath>
 #include <queue>
 
+#include "geometry/bspline_basis.hpp"
+
 namespace furrow {
 
 namespace {
@@ -47,35 +49,22 @@ std::vector<int> spans(const std::vector<double>& knots, int p, int n) {
 
 Eigen::Vector3d project(const Eigen::Vector4d& h) { return h.head<3>() / h.w(); }
 
-// Halves a net along u (dir 0) or v (dir 1) by de Casteljau at 1/2.
-void halve(const DropCutter::Cell& c, int dir, DropCutter::Cell& lo, DropCutter::Cell& hi) {
-  lo = c;
-  hi = c;
-  const int n = dir == 0 ? c.p : c.q;       // degree along the split
-  const int m = dir == 0 ? c.q + 1 : c.p + 1;  // lines across it
-  auto at = [&](std::vector<Eigen::Vector4d>& net, int along, int line) -> Eigen::Vector4d& {
-    return dir == 0 ? net[along * (c.q + 1) + line] : net[line * (c.q + 1) + along];
-  };
-  std::vector<Eigen::Vector4d> w(n + 1);
-  std::vector<Eigen::Vector4d> net = c.net;
+// Halves a (p+1) x (q+1) net (row-major, i along u) along u (dir 0) or v
+// (dir 1) by de Casteljau at 1/2 into `lo` and `hi` (same layout).
+void halve(const Eigen::Vector4d* net, int p, int q, int dir, Eigen::Vector4d* lo, Eigen::Vector4d* hi) {
+  const int n = dir == 0 ? p : q;          // degree along the split
+  const int m = dir == 0 ? q + 1 : p + 1;  // lines across it
+  auto index = [&](int along, int line) { return dir == 0 ? along * (q + 1) + line : line * (q + 1) + along; };
+  Eigen::Vector4d w[kMaxDegree + 1];
   for (int line = 0; line < m; ++line) {
-    for (int i = 0; i <= n; ++i) w[i] = at(net, i, line);
-    at(lo.net, 0, line) = w[0];
-    at(hi.net, n, line) = w[n];
+    for (int i = 0; i <= n; ++i) w[i] = net[index(i, line)];
+    lo[index(0, line)] = w[0];
+    hi[index(n, line)] = w[n];
     for (int r = 1; r <= n; ++r) {
       for (int i = 0; i + r <= n; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
-      at(lo.net, r, line) = w[0];
-      at(hi.net, n - r, line) = w[n - r];
+      lo[index(r, line)] = w[0];
+      hi[index(n - r, line)] = w[n - r];
     }
-  }
-  if (dir == 0) {
-    const double mid = 0.5 * (c.u0 + c.u1);
-    lo.u1 = mid;
-    hi.u0 = mid;
-  } else {
-    const double mid = 0.5 * (c.v0 + c.v1);
-    lo.v1 = mid;
-    hi.v0 = mid;
   }
 }
 
@@ -129,20 +118,29 @@ DropCutter::DropCutter(const Part& part, const Cutter& cutter, const DropCutterO
 }
 
 DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const {
+  return search(xy, known, false);
+}
+
+DropCutterResult DropCutter::rests_above(const Eigen::Vector2d& xy, double height) const {
+  return search(xy, height, true);
+}
+
+DropCutterResult DropCutter::search(const Eigen::Vector2d& xy, double known, bool first_above) const {
   DropCutterResult result;
   const double R = cutter_.radius();
   const double hold = R - options_.radial_tolerance;  // beyond: grazing (the header)
   auto box_distance = [&](const Eigen::AlignedBox3d& box) {
     const double dx = std::max({box.min().x() - xy.x(), 0.0, xy.x() - box.max().x()});
     const double dy = std::max({box.min().y() - xy.y(), 0.0, xy.y() - box.max().y()});
-    return std::hypot(dx, dy);
+    return std::sqrt(dx * dx + dy * dy);
   };
+  const double start = known;
   double best = known;
   // Per-cell scratch, reused: the projected control points and the bound's lines.
   std::vector<Eigen::Vector3d> pts;
   std::vector<double> a, b;
   // Lower bound from the cell's corners (surface points, when the trim keeps them).
-  auto corners = [&](const Cell& c) {
+  auto corners = [&](const Piece& c) {
     const Face& face = part_.faces[c.face];
     const int corner_index[4][2] = {{0, 0}, {c.p, 0}, {0, c.q}, {c.p, c.q}};
     for (const auto& ij : corner_index) {
@@ -215,23 +213,36 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
     return bound;
   };
 
-  std::vector<Cell> pool;
+  // Cells waiting to be halved: their nets live in one arena (no allocation
+  // per cell), `net` indexing its first control point.
+  std::vector<Piece> pool;
+  std::vector<Eigen::Vector4d> arena;
   using Entry = std::pair<double, std::size_t>;  // (upper bound, index into pool)
   std::priority_queue<Entry> open;
-  auto consider = [&](Cell&& c) {
+  const auto found_above = [&] { return first_above && result.tip_z > start; };
+  // `net` must not point into the arena (it may grow).
+  auto consider = [&](Piece c, const Eigen::Vector4d* net) {
     ++result.cells;
-    pts.resize(c.net.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = project(c.net[i]);
+    const std::size_t size = static_cast<std::size_t>((c.p + 1) * (c.q + 1));
+    pts.resize(size);
+    for (std::size_t i = 0; i < size; ++i) pts[i] = project(net[i]);
     corners(c);
     const double ub = upper();
     if (!(ub > best + options_.height_tolerance)) return;
-    pool.push_back(std::move(c));
+    c.net = arena.size();
+    arena.insert(arena.end(), net, net + size);
+    pool.push_back(c);
     open.push({ub, pool.size() - 1});
   };
-  for (std::size_t k = 0; k < patches_.size(); ++k)
-    if (box_distance(boxes_[k]) < hold) consider(Cell(patches_[k]));
+  for (std::size_t k = 0; k < patches_.size() && !found_above(); ++k)
+    if (box_distance(boxes_[k]) < hold) {
+      const Cell& patch = patches_[k];
+      consider(Piece{patch.face, patch.p, patch.q, patch.u0, patch.u1, patch.v0, patch.v1, 0},
+               patch.net.data());
+    }
   const int cap = std::max(1, options_.max_cells);
-  while (!open.empty()) {
+  std::vector<Eigen::Vector4d> parent, halves[2], quarters[4];
+  while (!open.empty() && !found_above()) {
     const auto [ub, index] = open.top();
     if (!(ub > best + options_.height_tolerance)) break;  // nothing left can beat it
     if (result.cells + 4 > cap) {
@@ -240,12 +251,22 @@ DropCutterResult DropCutter::drop(const Eigen::Vector2d& xy, double known) const
       break;
     }
     open.pop();
-    Cell cell = std::move(pool[index]);
-    Cell a, b, parts[4];
-    halve(cell, 0, a, b);
-    halve(a, 1, parts[0], parts[1]);
-    halve(b, 1, parts[2], parts[3]);
-    for (Cell& part : parts) consider(std::move(part));
+    const Piece cell = pool[index];
+    const std::size_t size = static_cast<std::size_t>((cell.p + 1) * (cell.q + 1));
+    parent.assign(arena.begin() + static_cast<std::ptrdiff_t>(cell.net),
+                  arena.begin() + static_cast<std::ptrdiff_t>(cell.net + size));
+    for (auto& h : halves) h.resize(size);
+    for (auto& q : quarters) q.resize(size);
+    halve(parent.data(), cell.p, cell.q, 0, halves[0].data(), halves[1].data());
+    for (int i = 0; i < 2; ++i)
+      halve(halves[i].data(), cell.p, cell.q, 1, quarters[2 * i].data(), quarters[2 * i + 1].data());
+    const double umid = 0.5 * (cell.u0 + cell.u1), vmid = 0.5 * (cell.v0 + cell.v1);
+    for (int i = 0; i < 4; ++i) {
+      Piece part = cell;
+      (i < 2 ? part.u1 : part.u0) = umid;
+      (i % 2 == 0 ? part.v1 : part.v0) = vmid;
+      consider(part, quarters[i].data());
+    }
   }
   return result;
 }

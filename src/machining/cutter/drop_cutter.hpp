@@ -4,7 +4,8 @@
 // branch and bound over parameter cells with a proven upper bound per cell,
 // so a collision cannot hide between seeds (docs/tool_selection.md
 // "Interference search"). contact_from_tip.cpp runs it after its seeded
-// Newton search and polishes what it finds with that search's code.
+// Newton search and polishes what it finds with that search's code; tool
+// selection asks only its decision form (rests_above).
 //
 // The rest height is the maximum over part points p within the shank radius
 // of phi(p) = p_z - H(p_xy), H(x, y) = height_at(|(x, y) - axis|) the
@@ -92,6 +93,15 @@ class DropCutter {
   // that cannot beat it are dropped from the start.
   DropCutterResult drop(const Eigen::Vector2d& xy,
                         double known = -std::numeric_limits<double>::infinity()) const;
+  // The decision form: whether the cutter lowered at `xy` rests above
+  // `height`. The same search as drop(xy, height), stopped at the first part
+  // point that holds the cutter higher (tip_z > height: proven, tip_z is
+  // that point's, a lower bound of the rest height). Otherwise, when
+  // complete, no point rests it higher than height + height_tolerance; when
+  // not, `unresolved` bounds the rest as in drop(). An interference verdict
+  // needs no more, and stopping early makes it several times cheaper than
+  // the rest height.
+  DropCutterResult rests_above(const Eigen::Vector2d& xy, double height) const;
 
   // A Bezier patch or a piece of one: homogeneous control net, row-major
   // (i along u) with (degree_u + 1) x (degree_v + 1) points.
@@ -103,6 +113,15 @@ class DropCutter {
   };
 
  private:
+  // A cell during the search: its net is in the search's arena at `net`.
+  struct Piece {
+    std::size_t face;
+    int p, q;
+    double u0, u1, v0, v1;
+    std::size_t net;
+  };
+  DropCutterResult search(const Eigen::Vector2d& xy, double known, bool first_above) const;
+
   const Part& part_;
   const Cutter& cutter_;
   DropCutterOptions options_;

@@ -13,20 +13,35 @@ namespace furrow {
 
 namespace {
 
-// How far the cutter located by `g` at `point` would rest above its location
-// when lowered at its axis (> 0: it cuts in elsewhere) [mm].
-double interference_depth(const Cutter& cutter, const TipContactFinder& finder,
-                          const Eigen::Vector3d& point, const LocalGouge& g,
-                          const GougeOptions& options) {
+// The cutter located by `g` at `point`, lowered at its axis: whether it
+// rests more than `tolerance` above its location (it cuts in elsewhere), by
+// the bounded search's decision form, which stops at the first point that
+// proves it. A search that hit its cell cap counts as interfering (a clear
+// verdict is passed on to nested tools, so it must be proven). The depth,
+// reported only for a site's smallest tool, is then measured in full by
+// `finder` when given.
+struct Interference {
+  bool interferes = false;
+  double depth = 0;  // [mm] how far above its location the cutter rests, when interferes
+};
+
+Interference interference(const Cutter& cutter, const DropCutter& drop, const TipContactFinder* finder,
+                          const Eigen::Vector3d& point, const LocalGouge& g, const GougeOptions& options,
+                          double tolerance) {
   CutterLocationOptions placed = options.location;
   placed.horizontal_side = g.cutter.toward_axis;
   const CutterLocation loc = cutter_location(cutter, point, g.cutter.normal, placed);
-  const TipContactResult r = finder.find(loc.tip);
-  double depth = r.status == TipContactStatus::found ? -r.gap : 0.0;
-  // The bounded search gave up: count the cutter as resting as high as it
-  // may (a clear verdict is passed on to nested tools, so it must be proven).
-  if (!r.complete) depth = std::max(depth, r.unresolved - loc.tip.z());
-  return depth;
+  const DropCutterResult d = drop.rests_above(loc.tip.head<2>(), loc.tip.z() + tolerance);
+  Interference out;
+  out.interferes = d.tip_z > loc.tip.z() + tolerance || !d.complete;
+  if (!out.interferes || !finder) return out;
+  const TipContactResult r = finder->find(loc.tip);
+  out.depth = r.status == TipContactStatus::found ? -r.gap : 0.0;
+  if (!r.complete) out.depth = std::max(out.depth, r.unresolved - loc.tip.z());
+  // The decision proved a point at least this high.
+  out.depth = std::max(out.depth, d.tip_z - loc.tip.z());
+  if (!d.complete) out.depth = std::max(out.depth, d.unresolved - loc.tip.z());
+  return out;
 }
 
 }  // namespace
@@ -58,10 +73,15 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
     for (std::size_t b = a + 1; b < tools; ++b)
       contains[a * tools + b] = cutter_contains(result.library[a], result.library[b]);
   const bool share = options.check_interference && options.share_interference;
-  std::vector<std::unique_ptr<TipContactFinder>> finders;
-  if (options.check_interference)
+  // Each tool's bounded search; the full contact search only for the
+  // smallest tool, whose interference depth is reported.
+  std::vector<std::unique_ptr<DropCutter>> drops;
+  std::unique_ptr<TipContactFinder> smallest;
+  if (options.check_interference) {
     for (const Cutter& c : result.library)
-      finders.push_back(std::make_unique<TipContactFinder>(part, c, options.contact));
+      drops.push_back(std::make_unique<DropCutter>(part, c, options.contact.bound));
+    smallest = std::make_unique<TipContactFinder>(part, result.library.back(), options.contact);
+  }
 
   result.sites.resize(sites.size());
   std::vector<ToolVerdict>& verdicts = result.verdicts;
@@ -107,9 +127,11 @@ ToolSelection select_tools(const Part& part, std::vector<Cutter> library,
           return contains[a * tools + t] && placed[a] == placed[t];
         });
         if (!inside_clear) {
-          depth = interference_depth(cutter, *finders[t], s.point, g, gouge);
+          const Interference i = interference(cutter, *drops[t], last ? smallest.get() : nullptr, s.point,
+                                              g, gouge, options.interference_tolerance);
           ++searches[static_cast<std::size_t>(k)];
-          if (depth > options.interference_tolerance) verdict[t] = ToolVerdict::interferes;
+          if (i.interferes) verdict[t] = ToolVerdict::interferes;
+          depth = i.depth;
         }
       }
       if (verdict[t] == ToolVerdict::clear) clear.push_back(t);

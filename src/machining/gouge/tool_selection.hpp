@@ -12,8 +12,8 @@
 // first tool with no gouging site.
 //
 // Shared interference verdicts (docs/tool_selection.md), on by default:
-// the local check is cheap, the interference search (a drop-cutter query,
-// contact_from_tip.hpp) is not. Two end mills located at the same contact
+// the local check is cheap, the interference search (a bounded drop-cutter
+// decision, drop_cutter.hpp) is not. Two end mills located at the same contact
 // point with the same normal and axis side nest when the inner one has
 // neither a wider flat bottom nor a larger corner radius (cutter_contains);
 // a part that does not reach into the outer cutter cannot reach into the
@@ -23,9 +23,8 @@
 // result (pick, needed curvature, interference depth) is then the same as
 // with every search run: up to a site's pick nothing is skipped, and a site
 // without a tool had no clear container. Per-tool verdicts agree too as far
-// as the search is exact: it ends in a bounded drop cutter
-// (drop_cutter.hpp) that proves a clear verdict to within its height
-// tolerance, and a search that hits its cell cap counts the cutter as
+// as the search is exact: the bounded drop cutter proves a clear verdict to
+// within its height tolerance, and a search that hits its cell cap counts the cutter as
 // resting as high as it may (never clear on a guess). A verdict can differ
 // only where a container's depth lies within that tolerance above
 // interference_tolerance.

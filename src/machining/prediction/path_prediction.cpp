@@ -275,7 +275,11 @@ Prediction make_prediction(const Part& part, const PathPrediction& r, const Path
   }
   for (const PassScallop& sc : r.scallops) {
     if (!sc.ridge.found) continue;
-    ScallopRecord rec{sc.pass_a, sc.pass_b, sc.ridge.height, location(part, sc.ridge.at)};
+    ScallopRecord rec;
+    rec.pass_a = sc.pass_a;
+    rec.pass_b = sc.pass_b;
+    rec.height = sc.ridge.height;
+    rec.at = location(part, sc.ridge.at);
     s.max_scallop = std::max(s.max_scallop, sc.ridge.height);
     if (sc.cusp.found) {
       rec.has_cusp = true;
