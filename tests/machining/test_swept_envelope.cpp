@@ -173,3 +173,51 @@ TEST_CASE("swept envelope: a row in pieces is the whole row bit for bit, and the
   CHECK(other_pieces > 50);
   CHECK(other_tight > other_pieces / 2);
 }
+
+TEST_CASE("swept envelope: the bound over a rectangle is below the brute-force envelope at every point in it, and tight for a plunge") {
+  std::mt19937 rng(37);
+  const Cutter cutters[] = {Cutter("ball", 3, 3), Cutter("bull", 4, 1), Cutter("flat", 2.5, 0)};
+  int plunges = 0, tight = 0;
+  for (const Cutter& cutter : cutters)
+    for (int m = 0; m < 30; ++m) {
+      Eigen::Vector3d a = random_point(rng, 6), b = random_point(rng, 6);
+      const bool plunge = m % 3 == 0;
+      if (plunge) b = Eigen::Vector3d(a.x(), a.y(), a.z() + 4);
+      const SweptEnvelope env(cutter, a, b);
+      const Eigen::AlignedBox2d shadow = env.shadow_box();
+      std::uniform_real_distribution<double> ux(shadow.min().x() - 1, shadow.max().x() + 1),
+          uy(shadow.min().y() - 1, shadow.max().y() + 1), size(0.05, 2.0);
+      for (int r = 0; r < 8; ++r) {
+        const Eigen::Vector2d lo(ux(rng), uy(rng));
+        const Eigen::AlignedBox2d area(lo, lo + Eigen::Vector2d(size(rng), size(rng)));
+        const double bound = env.lower_bound(area);
+        REQUIRE_FALSE(std::isnan(bound));
+        // The lowest envelope over a 41 x 41 grid of the rectangle.
+        double lowest = std::numeric_limits<double>::infinity();
+        for (int i = 0; i <= 40; ++i)
+          for (int j = 0; j <= 40; ++j) {
+            const Eigen::Vector2d p = area.min() + Eigen::Vector2d(i / 40.0, j / 40.0).cwiseProduct(area.sizes());
+            lowest = std::min(lowest, brute_force_height(cutter, a, b, p.x(), p.y(), 400));
+          }
+        CAPTURE(cutter.name());
+        CAPTURE(m);
+        CHECK(bound <= lowest + 1e-9);
+        const Eigen::Vector2d axis = a.head<2>();
+        if (plunge && std::isfinite(lowest)) {
+          // A plunge's envelope is the lower tip's cutter: the bound is the
+          // profile at the rectangle's nearest point, which the grid comes
+          // within a grid step of.
+          ++plunges;
+          const double step = area.sizes().norm() / 40;
+          const double nearest = (axis.cwiseMax(area.min()).cwiseMin(area.max()) - axis).norm();
+          if (nearest + step < cutter.radius() - 1e-3) {
+            const double at_grid = a.z() + cutter.height_at(nearest + step);
+            CHECK(bound >= a.z() + cutter.height_at(nearest) - 1e-12);
+            tight += lowest <= at_grid + 1e-9;
+          }
+        }
+      }
+    }
+  CHECK(plunges > 10);
+  CHECK(tight > 5);
+}

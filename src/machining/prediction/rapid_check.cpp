@@ -108,12 +108,15 @@ RapidGouge part_check(const Part& part, const std::vector<FaceSamples>& faces, c
     const Face& face = part.faces[s.face];
     for (const FaceSamples::Block& block : s.blocks) {
       if (block.box.isEmpty()) continue;
-      // The envelope is nowhere below the lowest tip: a block entirely
-      // below it, or outside the shadow, cannot be touched.
+      // A block outside the shadow, or whose top is not above the lowest
+      // the envelope comes over it, cannot be touched (a plunge onto the
+      // part reaches down only near its end point).
       if (block.box.max().z() <= lowest_tip) continue;
       if (block.box.max().x() < shadow.min().x() || block.box.min().x() > shadow.max().x() ||
           block.box.max().y() < shadow.min().y() || block.box.min().y() > shadow.max().y())
         continue;
+      const Eigen::AlignedBox2d area(block.box.min().head<2>(), block.box.max().head<2>());
+      if (block.box.max().z() <= env.lower_bound(area)) continue;
       for (int j = block.j0; j < block.j1; ++j)
         for (int i = block.i0; i < block.i1; ++i) {
           const Eigen::Vector2d uv(s.u(i), s.v(j));

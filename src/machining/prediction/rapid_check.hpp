@@ -15,7 +15,9 @@
 // (u, v). Samples the tool cannot reach from above (n_z < 0) and trimmed
 // ones are skipped, as in the error map. Each face's samples are grouped in
 // blocks with their bounding box (padded by a sample step), so a rapid only
-// visits blocks in its shadow that rise above its lowest tip: a rapid at a
+// visits blocks in its shadow that rise above the lowest its envelope comes
+// over them (SweptEnvelope::lower_bound; a plunge visits the blocks near
+// where it lands): a rapid at a
 // safe height costs one box test per block, and nothing at all when it is
 // above the part's control nets (which contain every face); when no rapid
 // comes that low, the surface is not sampled.

@@ -117,6 +117,22 @@ double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
 
 }  // namespace
 
+double SweptEnvelope::lower_bound(const Eigen::AlignedBox2d& area) const {
+  if (area.isEmpty()) return kInf;
+  const Eigen::Vector2d a = from_.head<2>(), b = to_.head<2>();
+  // Zero when the projection enters the rectangle (an end inside, or it
+  // crosses a side); otherwise the nearest of the four sides.
+  double gap = 0;
+  if (!area.contains(a) && !area.contains(b)) {
+    using Corner = Eigen::AlignedBox2d;
+    const Eigen::Vector2d c[4] = {area.corner(Corner::BottomLeft), area.corner(Corner::BottomRight),
+                                  area.corner(Corner::TopRight), area.corner(Corner::TopLeft)};
+    gap = kInf;
+    for (int i = 0; i < 4; ++i) gap = std::min(gap, segment_distance(c[i], c[(i + 1) % 4], a, b));
+  }
+  return std::min(from_.z(), to_.z()) + cutter_->height_at(std::min(gap, cutter_->radius()));
+}
+
 double SweptEnvelope::row_lower_bound(double y, double x0, double dx, int ka, int kb) const {
   if (kb < ka) return -kInf;
   if (!ball_ || plunge_) {

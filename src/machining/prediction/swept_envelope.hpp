@@ -86,6 +86,12 @@ class SweptEnvelope {
   // bound is above every node's height so far: cheaper than the row.
   double row_lower_bound(double y, double x0, double dx, int ka, int kb) const;
 
+  // A lower bound of z_env over the rectangle `area` (any cutter): the lower
+  // tip plus the profile at the distance between the rectangle and the
+  // move's projection, as row_lower_bound for non-ball cutters. Lets a
+  // caller skip a patch of surface whose top is not above it.
+  double lower_bound(const Eigen::AlignedBox2d& area) const;
+
   // The x interval of the shadow on the row y: false when the row misses it.
   bool row_span(double y, double& x_lo, double& x_hi) const;
   // Bounding box of the shadow (the two end discs).
