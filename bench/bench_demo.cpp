@@ -1,7 +1,7 @@
 // The whole `furrow demo`: examples/jobs/demo.json run
 // end to end in memory (everything but writing the folder), 3 times; prints
 // each stage's wall time and the total of every run, and the median total
-// (target < 30 s on the 2-core machine). Prints figures; it does not pass or
+// (target < 2 s on the 2-core machine). Prints figures; it does not pass or
 // fail.
 //   usage: bench_demo [RUNS]
 #include <omp.h>
@@ -31,6 +31,6 @@ int main(int argc, char** argv) {
     totals.push_back(wall);
   }
   std::sort(totals.begin(), totals.end());
-  std::printf("median total %.2f s (target < 30 s)\n", totals[totals.size() / 2]);
+  std::printf("median total %.2f s (target < 2 s)\n", totals[totals.size() / 2]);
   return 0;
 }
