@@ -111,3 +111,115 @@ TEST_CASE("oblique steps: the overcut beside the curve agrees with a brute-force
   // The curve alone is short by more than 0.1 um on some of these steps.
   CHECK(beside >= 3);
 }
+
+namespace {
+
+// The crest of the move's track bottom, independently: sections by vertical
+// planes across the move's horizontal direction (points found by vertical
+// projection, not by the strip's (u, v) offsets), on each the smallest
+// error within `window` of the move's line, the largest of these over the
+// step; a grid, then a finer one around the best node. Where the valley is
+// a proper minimum both give the error's saddle value on the surface, which
+// does not depend on how the sections are drawn.
+double brute_force_crest(const VerticalProjector& projector, const Cutter& cutter, const Eigen::Vector3d& tip0,
+                         const Eigen::Vector3d& tip1, const Eigen::Vector2d& xy0, const Eigen::Vector2d& xy1,
+                         double window) {
+  const SweptEnvelope envelope(cutter, tip0, tip1);
+  const NormalErrorOptions normal =
+      with_height_bounds(NormalErrorOptions{}, std::min(tip0.z(), tip1.z()), envelope.shadow_box());
+  const Eigen::Vector2d along = xy1 - xy0, across = Eigen::Vector2d(-along.y(), along.x()).normalized();
+  auto error = [&](double s, double t) {
+    const Eigen::Vector2d xy = xy0 + s * along + t * across;
+    const SurfacePoint q = projector.project(xy.x(), xy.y());
+    if (!q.valid || !(q.normal.z() >= 0)) return std::numeric_limits<double>::infinity();
+    const NormalError e = normal_error([&](double x, double y) { return envelope.height_at(x, y); }, q.point,
+                                       q.normal, normal);
+    return e.reached ? e.error : std::numeric_limits<double>::infinity();
+  };
+  double s_lo = 0, s_hi = 1, t_lo = -window, t_hi = window;
+  double best = -std::numeric_limits<double>::infinity(), best_s = 0.5, best_t = 0;
+  for (int level = 0; level < 3; ++level) {
+    const int n = 100;
+    const double ds = (s_hi - s_lo) / n, dt = (t_hi - t_lo) / n;
+    best = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= n; ++i) {
+      const double s = s_lo + i * ds;
+      double valley = std::numeric_limits<double>::infinity(), valley_t = 0;
+      for (int j = 0; j <= n; ++j) {
+        const double e = error(s, t_lo + j * dt);
+        if (e < valley) valley = e, valley_t = t_lo + j * dt;
+      }
+      if (std::isfinite(valley) && valley > best) best = valley, best_s = s, best_t = valley_t;
+    }
+    s_lo = std::max(0.0, best_s - 4 * ds), s_hi = std::min(1.0, best_s + 4 * ds);
+    t_lo = std::max(-window, best_t - 8 * dt), t_hi = std::min(window, best_t + 8 * dt);
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("oblique steps in concave parts: the undercut is the crest of the track bottom, as a brute-force search finds it to 0.1 um") {
+  std::vector<Step> steps;
+  {
+    Part tube;  // the bottom of a tube of radius 40 about y (concave)
+    tube.faces.emplace_back("tube", make_cylinder(40, 40, kPi + 0.4, 2 * kPi - 0.4));
+    const double t0 = 1.5 * kPi - 0.1, t1 = t0 + 3.4 / 40;
+    steps.push_back({"tube", tube, {40 * std::cos(t0), 10}, {40 * std::cos(t1), 17.9}});
+    Part bowl;  // the inside of a sphere of radius 30
+    bowl.faces.emplace_back("bowl", make_sphere(30, 0.2, 1.4, -1.4, -0.2), Trim{}, true);
+    steps.push_back({"bowl", bowl, {8, 5}, {12, 11}});
+    Part ring;  // inside of a torus: a saddle, stepping mostly around the hole
+    ring.faces.emplace_back("ring", make_torus(40, 15, 0.0, 0.8, 1.8, 2.6));
+    steps.push_back({"saddle", ring, {30 * std::cos(0.2), 30 * std::sin(0.2)}, {29.5 * std::cos(0.4), 29.5 * std::sin(0.4)}});
+  }
+  const Cutter cutters[] = {Cutter("ball", 12.7, 12.7), Cutter("flat", 12.7, 0), Cutter("bull", 12.7, 5.08),
+                            Cutter("ball6", 3, 3)};
+  int refined = 0, lower = 0;
+  for (const Step& s : steps) {
+    const VerticalProjector projector(s.part);
+    const SurfacePoint a = projector.project(s.xy0.x(), s.xy0.y()), b = projector.project(s.xy1.x(), s.xy1.y());
+    REQUIRE(a.valid);
+    REQUIRE(b.valid);
+    for (const Cutter& cutter : cutters) {
+      CAPTURE(s.name);
+      CAPTURE(cutter.name());
+      const Eigen::Vector3d tip0 = cutter_location(cutter, a.point, a.normal).tip;
+      const Eigen::Vector3d tip1 = cutter_location(cutter, b.point, b.normal).tip;
+      const SurfaceCurve curve = vertical_section_curve(projector, a, b);
+      const FurrowStepResult on_curve = furrow_step_error(cutter, tip0, tip1, curve);
+      REQUIRE(on_curve.valid);
+      const StripStepOptions options;
+      const StripStepResult strip = strip_step_error(s.part, cutter, curve, on_curve, {}, options);
+      REQUIRE(strip.valid);
+      // Never above the curve's, and a real surface point.
+      CHECK(strip.undercut.error <= on_curve.undercut.error + 1e-12);
+      CHECK(strip.undercut.error >= 0);
+      REQUIRE(strip.undercut.at.valid);
+      // A cutter that cuts in beside the curve (a flat or bull-nose bottom
+      // across the tube) leaves no track bottom: the curve's figure stays.
+      if (strip.overcut.error < -options.clear) CHECK(strip.undercut.error == on_curve.undercut.error);
+      if (!(on_curve.undercut.error > 1e-6) || strip.overcut.error < -options.clear) continue;
+      CHECK(strip.converged);
+      const double window = cutter.radius();
+      if (!(std::fabs(strip.undercut.offset) < window - 1e-3)) {
+        // No valley within the cutter's reach: the curve's figure is kept.
+        CHECK(strip.undercut.error == on_curve.undercut.error);
+        continue;
+      }
+      // A flat end mill's envelope has a crease along its rim, so the
+      // valley has a kink and the crest depends on how the sections are
+      // drawn: only the bounds above hold for it (strip_step.hpp).
+      if (cutter.corner_radius() == 0) continue;
+      ++refined;
+      const double oracle = brute_force_crest(projector, cutter, tip0, tip1, s.xy0, s.xy1, window);
+      CAPTURE(oracle);
+      CAPTURE(on_curve.undercut.error);
+      CHECK(std::fabs(strip.undercut.error - oracle) < 1e-4);
+      lower += on_curve.undercut.error - oracle > 1e-4;
+    }
+  }
+  CHECK(refined >= 6);
+  // The curve alone overstates the crest by more than 0.1 um on some steps.
+  CHECK(lower >= 2);
+}

@@ -49,6 +49,7 @@ std::vector<StepPrediction> predict_steps(const VerticalProjector& projector, co
       const StripStepResult beside = strip_step_error(projector.part(), cutter, curve, s.error, options, strip);
       if (beside.valid) {
         s.error.overcut = {beside.overcut.error, beside.overcut.lambda, beside.overcut.at};
+        s.error.undercut = {beside.undercut.error, beside.undercut.lambda, beside.undercut.at};
         s.error.converged = s.error.converged && beside.converged;
       }
     }

@@ -71,28 +71,19 @@ class Strip {
 
 }  // namespace
 
-StripStepResult strip_step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& curve,
-                                 const FurrowStepResult& on_curve, const FurrowStepOptions& step_options,
-                                 const StripStepOptions& options) {
-  StripStepResult result;
-  if (!on_curve.valid || !(on_curve.overcut.error < 0)) return result;
-  const Eigen::Vector3d d = on_curve.tip1 - on_curve.tip0;
-  const SweptEnvelope envelope(cutter, on_curve.tip0, on_curve.tip1, step_options.envelope);
-  const NormalErrorOptions normal = with_height_bounds(
-      step_options.normal, std::min(on_curve.tip0.z(), on_curve.tip1.z()), envelope.shadow_box());
-  Strip strip(part, curve, envelope, normal, d);
-  const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
-  const double chord = std::max((p1.point - p0.point).norm(), 1e-12);
-  const double width = options.half_width > 0 ? options.half_width : cutter.radius();
+namespace {
+
+// The overcut: from the curve's smallest error, alternating Brent searches
+// across and along until the point settles (the header).
+StripExtreme deepest(Strip& strip, const FurrowStepResult& on_curve, double width, double chord,
+                     const StripStepOptions& options, bool& converged) {
   const int samples = std::max(2, options.across_samples);
   const double cell = 2 * width / samples;
   const ScalarSearchOptions across_search{options.tolerance, options.max_iterations};
   const ScalarSearchOptions along_search{options.tolerance / chord, options.max_iterations};
-
   double lambda = on_curve.overcut.lambda, c = 0;
   double best = std::min(on_curve.overcut.error, strip(lambda, 0.0));
-  result.valid = true;
-  result.converged = false;
+  converged = false;
   for (int round = 0; round < options.max_rounds; ++round) {
     const double lambda_before = lambda, c_before = c;
     // Across: the first time over the whole width (the valley may lie off
@@ -115,14 +106,141 @@ StripStepResult strip_step_error(const Part& part, const Cutter& cutter, const S
     const ScalarSearchResult b = minimize_unimodal([&](double l) { return strip(l, c); }, la, lb, along_search);
     if (b.value < best) best = b.value, lambda = b.x;
     if (std::fabs(c - c_before) <= options.tolerance && std::fabs(lambda - lambda_before) * chord <= options.tolerance) {
-      result.converged = true;
+      converged = true;
       break;
     }
   }
-  result.overcut.error = best;
-  result.overcut.lambda = lambda;
-  result.overcut.offset = c;
-  result.overcut.at = strip.point(lambda, c);
+  StripExtreme out;
+  out.error = best;
+  out.lambda = lambda;
+  out.offset = c;
+  out.at = strip.point(lambda, c);
+  return out;
+}
+
+// The track bottom's crest: the saddle of the error where it is smallest
+// across (the valley) and largest along it, found by alternating a Brent
+// search across (sampled first over +-width, as for the overcut) with a
+// Brent search along, until the point settles (the header). With the valley
+// at the edge of the width there is no bottom within the cutter's reach:
+// the curve's undercut is kept (`proper` false).
+StripExtreme crest(Strip& strip, const FurrowStepResult& on_curve, double width, double chord,
+                   const StripStepOptions& options, bool& converged, bool& proper) {
+  const int samples = std::max(2, options.across_samples);
+  const double cell = 2 * width / samples;
+  const ScalarSearchOptions across_search{options.tolerance, options.max_iterations};
+  const ScalarSearchOptions along_search{options.tolerance / chord, options.max_iterations};
+  double lambda = on_curve.undercut.lambda, c = 0;
+  converged = false;
+  for (int round = 0; round < options.max_rounds; ++round) {
+    const double lambda_before = lambda, c_before = c;
+    double lo = std::max(-width, c - cell), hi = std::min(width, c + cell);
+    if (round == 0) {
+      int arg = -1;
+      double sampled = kInf;
+      for (int k = 0; k <= samples; ++k) {
+        const double e = strip(lambda, -width + k * cell);
+        if (e < sampled) sampled = e, arg = k;
+      }
+      if (arg < 0) break;
+      lo = std::max(-width, -width + (arg - 1) * cell), hi = std::min(width, -width + (arg + 1) * cell);
+    }
+    const ScalarSearchResult a = minimize_unimodal([&](double x) { return strip(lambda, x); }, lo, hi, across_search);
+    if (!std::isfinite(a.value)) break;
+    c = a.x;
+    const double la = std::max(0.0, lambda - options.along_bracket), lb = std::min(1.0, lambda + options.along_bracket);
+    const ScalarSearchResult b = minimize_unimodal(
+        [&](double l) {
+          const double e = strip(l, c);
+          return std::isfinite(e) ? -e : kInf;
+        },
+        la, lb, along_search);
+    if (std::isfinite(b.value)) lambda = b.x;
+    if (std::fabs(c - c_before) <= options.tolerance && std::fabs(lambda - lambda_before) * chord <= options.tolerance) {
+      converged = true;
+      break;
+    }
+  }
+  if (!converged) {
+    // The alternation can circle a saddle whose valley turns sharply with
+    // lambda (a flat end mill's rim): then search it nested, the valley of
+    // each section found afresh (sampled over the width, then Brent) and the
+    // largest valley by Brent along. Slower, the same answer where both end.
+    auto valley = [&](double l, double& at) {
+      int arg = -1;
+      double sampled = kInf;
+      for (int k = 0; k <= samples; ++k) {
+        const double e = strip(l, -width + k * cell);
+        if (e < sampled) sampled = e, arg = k;
+      }
+      if (arg < 0) return kInf;
+      const double lo = std::max(-width, -width + (arg - 1) * cell), hi = std::min(width, -width + (arg + 1) * cell);
+      const ScalarSearchResult r = minimize_unimodal([&](double x) { return strip(l, x); }, lo, hi, across_search);
+      at = r.x;
+      return r.value;
+    };
+    const double la = std::max(0.0, on_curve.undercut.lambda - options.along_bracket);
+    const double lb = std::min(1.0, on_curve.undercut.lambda + options.along_bracket);
+    double at = 0;
+    const ScalarSearchResult top = minimize_unimodal(
+        [&](double l) {
+          const double v = valley(l, at);
+          return std::isfinite(v) ? -v : kInf;
+        },
+        la, lb, along_search);
+    converged = top.converged && std::isfinite(top.value);
+    lambda = top.x;
+    valley(lambda, c);
+  }
+  const double value = strip(lambda, c);
+  proper = std::isfinite(value) && std::fabs(c) < width - 2 * options.tolerance;
+  StripExtreme out;
+  if (!proper) {
+    out = {on_curve.undercut.error, on_curve.undercut.lambda, 0, on_curve.undercut.at};
+    return out;
+  }
+  out.error = std::max(0.0, std::min(value, on_curve.undercut.error));
+  out.lambda = lambda;
+  out.offset = c;
+  out.at = strip.point(lambda, c);
+  return out;
+}
+
+}  // namespace
+
+StripStepResult strip_step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& curve,
+                                 const FurrowStepResult& on_curve, const FurrowStepOptions& step_options,
+                                 const StripStepOptions& options) {
+  StripStepResult result;
+  if (!on_curve.valid) return result;
+  result.valid = true;
+  result.overcut = {on_curve.overcut.error, on_curve.overcut.lambda, 0, on_curve.overcut.at};
+  result.undercut = {on_curve.undercut.error, on_curve.undercut.lambda, 0, on_curve.undercut.at};
+  const bool undercut = options.undercut && on_curve.undercut.error > 0;
+  if (!(on_curve.overcut.error < 0) && !undercut) return result;
+  const Eigen::Vector3d d = on_curve.tip1 - on_curve.tip0;
+  const SweptEnvelope envelope(cutter, on_curve.tip0, on_curve.tip1, step_options.envelope);
+  const NormalErrorOptions normal = with_height_bounds(
+      step_options.normal, std::min(on_curve.tip0.z(), on_curve.tip1.z()), envelope.shadow_box());
+  Strip strip(part, curve, envelope, normal, d);
+  const SurfacePoint p0 = curve(0.0), p1 = curve(1.0);
+  const double chord = std::max((p1.point - p0.point).norm(), 1e-12);
+  const double width = options.half_width > 0 ? options.half_width : cutter.radius();
+  bool converged = true;
+  // Searched also where the curve itself is not overcut: a cutter that
+  // does not fit across a concave part cuts in beside the curve only.
+  result.overcut = deepest(strip, on_curve, width, chord, options, converged);
+  // Where the move cuts in beside the curve, its track has no bottom that
+  // leaves material: the undercut stays the curve's (the header).
+  if (undercut && !(result.overcut.error < -options.clear)) {
+    bool settled = true, proper = true;
+    const StripExtreme top = crest(strip, on_curve, width, chord, options, settled, proper);
+    // A search that did not settle keeps the curve's figure (an upper
+    // bound of the crest) and says so.
+    if (settled) result.undercut = top;
+    converged = converged && settled;
+  }
+  result.converged = converged;
   result.evaluations = strip.evaluations;
   return result;
 }

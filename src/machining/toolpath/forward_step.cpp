@@ -56,7 +56,15 @@ double step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& cu
   const SurfaceCurve remembered = remembering_curve(curve);
   FurrowStepResult r = furrow_step_error(cutter, remembered, predictor);
   if (!r.valid || r.unreached != 0) return kInf;
-  const StripStepResult strip = strip_step_error(part, cutter, remembered, r, predictor);
+  // The undercut stays the curve's: never below the track's crest
+  // (strip_step.hpp), so a step planned by it keeps the tolerance there too.
+  // A step whose curve is not overcut is taken at the curve's figure: the
+  // planner looks beside the curve only where the cutter fits the part (the
+  // caller), and the search beside starts from the curve's overcut.
+  if (!(r.overcut.error < 0)) return r.magnitude();
+  StripStepOptions beside_options;
+  beside_options.undercut = false;
+  const StripStepResult strip = strip_step_error(part, cutter, remembered, r, predictor, beside_options);
   if (strip.valid) r.overcut.error = strip.overcut.error;
   return r.magnitude();
 }
