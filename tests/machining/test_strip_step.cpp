@@ -62,6 +62,30 @@ struct Step {
   Eigen::Vector2d xy0, xy1;  // contacts, from above
 };
 
+// Each step with each of a ball, flat and bull-nose cutter (and a small
+// ball): its contacts, tips, design curve and the error on the curve.
+template <class Check>
+void each_step(const std::vector<Step>& steps, Check&& check) {
+  const Cutter cutters[] = {Cutter("ball", 12.7, 12.7), Cutter("flat", 12.7, 0), Cutter("bull", 12.7, 5.08),
+                            Cutter("ball6", 3, 3)};
+  for (const Step& s : steps) {
+    const VerticalProjector projector(s.part);
+    const SurfacePoint a = projector.project(s.xy0.x(), s.xy0.y()), b = projector.project(s.xy1.x(), s.xy1.y());
+    REQUIRE(a.valid);
+    REQUIRE(b.valid);
+    for (const Cutter& cutter : cutters) {
+      CAPTURE(s.name);
+      CAPTURE(cutter.name());
+      const Eigen::Vector3d tip0 = cutter_location(cutter, a.point, a.normal).tip;
+      const Eigen::Vector3d tip1 = cutter_location(cutter, b.point, b.normal).tip;
+      const SurfaceCurve curve = vertical_section_curve(projector, a, b);
+      const FurrowStepResult on_curve = furrow_step_error(cutter, tip0, tip1, curve);
+      REQUIRE(on_curve.valid);
+      check(s, cutter, projector, a, b, tip0, tip1, curve, on_curve);
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("oblique steps: the overcut beside the curve agrees with a brute-force search of the surface to 0.1 um") {
@@ -78,26 +102,14 @@ TEST_CASE("oblique steps: the overcut beside the curve agrees with a brute-force
     ring.faces.emplace_back("ring", make_torus(40, 15, 0.0, 0.8, 1.8, 2.6));
     steps.push_back({"saddle", ring, {31 * std::cos(0.2), 31 * std::sin(0.2)}, {29 * std::cos(0.3), 29 * std::sin(0.3)}});
   }
-  const Cutter cutters[] = {Cutter("ball", 12.7, 12.7), Cutter("flat", 12.7, 0), Cutter("bull", 12.7, 5.08),
-                            Cutter("ball6", 3, 3)};
   int beside = 0;
-  for (const Step& s : steps) {
-    const VerticalProjector projector(s.part);
-    const SurfacePoint a = projector.project(s.xy0.x(), s.xy0.y()), b = projector.project(s.xy1.x(), s.xy1.y());
-    REQUIRE(a.valid);
-    REQUIRE(b.valid);
-    for (const Cutter& cutter : cutters) {
-      CAPTURE(s.name);
-      CAPTURE(cutter.name());
-      const Eigen::Vector3d tip0 = cutter_location(cutter, a.point, a.normal).tip;
-      const Eigen::Vector3d tip1 = cutter_location(cutter, b.point, b.normal).tip;
-      const SurfaceCurve curve = vertical_section_curve(projector, a, b);
-      const FurrowStepResult on_curve = furrow_step_error(cutter, tip0, tip1, curve);
-      REQUIRE(on_curve.valid);
+  each_step(steps, [&](const Step& s, const Cutter& cutter, const VerticalProjector&, const SurfacePoint& a,
+                       const SurfacePoint& b, const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1,
+                       const SurfaceCurve& curve, const FurrowStepResult& on_curve) {
       const double oracle = brute_force_overcut(s.part, cutter, tip0, tip1, a, b);
       if (!(oracle < -1e-6)) {
         CHECK(on_curve.overcut.error >= oracle - 1e-7);
-        continue;  // nothing to refine: the move leaves material only
+        return;  // nothing to refine: the move leaves material only
       }
       const StripStepResult strip = strip_step_error(s.part, cutter, curve, on_curve, {});
       REQUIRE(strip.valid);
@@ -106,36 +118,17 @@ TEST_CASE("oblique steps: the overcut beside the curve agrees with a brute-force
       CHECK(strip.overcut.error <= on_curve.overcut.error);
       REQUIRE(strip.overcut.at.valid);
       beside += on_curve.overcut.error - strip.overcut.error > 1e-4;
-    }
-  }
+  });
   // The curve alone is short by more than 0.1 um on some of these steps.
   CHECK(beside >= 3);
 }
 
 namespace {
 
-// The crest of the move's track bottom, independently: sections by vertical
-// planes across the move's horizontal direction (points found by vertical
-// projection, not by the strip's (u, v) offsets), on each the smallest
-// error within `window` of the move's line, the largest of these over the
-// step; a grid, then a finer one around the best node. Where the valley is
-// a proper minimum both give the error's saddle value on the surface, which
-// does not depend on how the sections are drawn.
-double brute_force_crest(const VerticalProjector& projector, const Cutter& cutter, const Eigen::Vector3d& tip0,
-                         const Eigen::Vector3d& tip1, const Eigen::Vector2d& xy0, const Eigen::Vector2d& xy1,
-                         double window) {
-  const SweptEnvelope envelope(cutter, tip0, tip1);
-  const NormalErrorOptions normal =
-      with_height_bounds(NormalErrorOptions{}, std::min(tip0.z(), tip1.z()), envelope.shadow_box());
-  const Eigen::Vector2d along = xy1 - xy0, across = Eigen::Vector2d(-along.y(), along.x()).normalized();
-  auto error = [&](double s, double t) {
-    const Eigen::Vector2d xy = xy0 + s * along + t * across;
-    const SurfacePoint q = projector.project(xy.x(), xy.y());
-    if (!q.valid || !(q.normal.z() >= 0)) return std::numeric_limits<double>::infinity();
-    const NormalError e = normal_error([&](double x, double y) { return envelope.height_at(x, y); }, q.point,
-                                       q.normal, normal);
-    return e.reached ? e.error : std::numeric_limits<double>::infinity();
-  };
+// max over s in [0, 1] of min over t in [-window, window] of error(s, t):
+// a 101 x 101 grid, then two finer ones around the best node.
+template <class Error>
+double crest_by_grid(Error&& error, double window) {
   double s_lo = 0, s_hi = 1, t_lo = -window, t_hi = window;
   double best = -std::numeric_limits<double>::infinity(), best_s = 0.5, best_t = 0;
   for (int level = 0; level < 3; ++level) {
@@ -157,9 +150,34 @@ double brute_force_crest(const VerticalProjector& projector, const Cutter& cutte
   return best;
 }
 
+// The crest of the move's track bottom, independently: sections by vertical
+// planes across the move's horizontal direction (points found by vertical
+// projection, not by the strip's (u, v) offsets), on each the smallest
+// error within `window` of the move's line, the largest of these over the
+// step (crest_by_grid). Where the valley is
+// a proper minimum both give the error's saddle value on the surface, which
+// does not depend on how the sections are drawn.
+double brute_force_crest(const VerticalProjector& projector, const Cutter& cutter, const Eigen::Vector3d& tip0,
+                         const Eigen::Vector3d& tip1, const Eigen::Vector2d& xy0, const Eigen::Vector2d& xy1,
+                         double window) {
+  const SweptEnvelope envelope(cutter, tip0, tip1);
+  const NormalErrorOptions normal =
+      with_height_bounds(NormalErrorOptions{}, std::min(tip0.z(), tip1.z()), envelope.shadow_box());
+  const Eigen::Vector2d along = xy1 - xy0, across = Eigen::Vector2d(-along.y(), along.x()).normalized();
+  auto error = [&](double s, double t) {
+    const Eigen::Vector2d xy = xy0 + s * along + t * across;
+    const SurfacePoint q = projector.project(xy.x(), xy.y());
+    if (!q.valid || !(q.normal.z() >= 0)) return std::numeric_limits<double>::infinity();
+    const NormalError e = normal_error([&](double x, double y) { return envelope.height_at(x, y); }, q.point,
+                                       q.normal, normal);
+    return e.reached ? e.error : std::numeric_limits<double>::infinity();
+  };
+  return crest_by_grid(error, window);
+}
+
 // The same crest on the strip's own sections (strip_step.hpp: the curve
 // point moved c mm across the move, as a straight line in (u, v)), by a
-// grid and a finer grid around the best node: for a flat end mill, whose
+// grid (crest_by_grid): for a flat end mill, whose
 // crest depends on the sections, this checks the search, not the sections.
 double brute_force_crest_on_sections(const Part& part, const Cutter& cutter, const SurfaceCurve& curve,
                                      const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1, double window) {
@@ -181,24 +199,7 @@ double brute_force_crest_on_sections(const Part& part, const Cutter& cutter, con
                                        q.normal, normal);
     return e.reached ? e.error : std::numeric_limits<double>::infinity();
   };
-  double l_lo = 0, l_hi = 1, c_lo = -window, c_hi = window;
-  double best = -std::numeric_limits<double>::infinity(), best_l = 0.5, best_c = 0;
-  for (int level = 0; level < 3; ++level) {
-    const int n = 100;
-    const double dl = (l_hi - l_lo) / n, dc = (c_hi - c_lo) / n;
-    best = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= n; ++i) {
-      double valley = std::numeric_limits<double>::infinity(), valley_c = 0;
-      for (int j = 0; j <= n; ++j) {
-        const double e = error(l_lo + i * dl, c_lo + j * dc);
-        if (e < valley) valley = e, valley_c = c_lo + j * dc;
-      }
-      if (std::isfinite(valley) && valley > best) best = valley, best_l = l_lo + i * dl, best_c = valley_c;
-    }
-    l_lo = std::max(0.0, best_l - 4 * dl), l_hi = std::min(1.0, best_l + 4 * dl);
-    c_lo = std::max(-window, best_c - 8 * dc), c_hi = std::min(window, best_c + 8 * dc);
-  }
-  return best;
+  return crest_by_grid(error, window);
 }
 
 }  // namespace
@@ -217,22 +218,10 @@ TEST_CASE("oblique steps in concave parts: the undercut is the crest of the trac
     ring.faces.emplace_back("ring", make_torus(40, 15, 0.0, 0.8, 1.8, 2.6));
     steps.push_back({"saddle", ring, {30 * std::cos(0.2), 30 * std::sin(0.2)}, {29.5 * std::cos(0.4), 29.5 * std::sin(0.4)}});
   }
-  const Cutter cutters[] = {Cutter("ball", 12.7, 12.7), Cutter("flat", 12.7, 0), Cutter("bull", 12.7, 5.08),
-                            Cutter("ball6", 3, 3)};
   int refined = 0, lower = 0, flat = 0;
-  for (const Step& s : steps) {
-    const VerticalProjector projector(s.part);
-    const SurfacePoint a = projector.project(s.xy0.x(), s.xy0.y()), b = projector.project(s.xy1.x(), s.xy1.y());
-    REQUIRE(a.valid);
-    REQUIRE(b.valid);
-    for (const Cutter& cutter : cutters) {
-      CAPTURE(s.name);
-      CAPTURE(cutter.name());
-      const Eigen::Vector3d tip0 = cutter_location(cutter, a.point, a.normal).tip;
-      const Eigen::Vector3d tip1 = cutter_location(cutter, b.point, b.normal).tip;
-      const SurfaceCurve curve = vertical_section_curve(projector, a, b);
-      const FurrowStepResult on_curve = furrow_step_error(cutter, tip0, tip1, curve);
-      REQUIRE(on_curve.valid);
+  each_step(steps, [&](const Step& s, const Cutter& cutter, const VerticalProjector& projector, const SurfacePoint&,
+                       const SurfacePoint&, const Eigen::Vector3d& tip0, const Eigen::Vector3d& tip1,
+                       const SurfaceCurve& curve, const FurrowStepResult& on_curve) {
       const StripStepOptions options;
       const StripStepResult strip = strip_step_error(s.part, cutter, curve, on_curve, {}, options);
       REQUIRE(strip.valid);
@@ -243,13 +232,13 @@ TEST_CASE("oblique steps in concave parts: the undercut is the crest of the trac
       // A cutter that cuts in beside the curve (a flat or bull-nose bottom
       // across the tube) leaves no track bottom: the curve's figure stays.
       if (strip.overcut.error < -options.clear) CHECK(strip.undercut.error == on_curve.undercut.error);
-      if (!(on_curve.undercut.error > 1e-6) || strip.overcut.error < -options.clear) continue;
+      if (!(on_curve.undercut.error > 1e-6) || strip.overcut.error < -options.clear) return;
       CHECK(strip.converged);
       const double window = cutter.radius();
       if (!(std::fabs(strip.undercut.offset) < window - 1e-3)) {
         // No valley within the cutter's reach: the curve's figure is kept.
         CHECK(strip.undercut.error == on_curve.undercut.error);
-        continue;
+        return;
       }
       ++refined;
       if (cutter.corner_radius() == 0) {
@@ -260,15 +249,14 @@ TEST_CASE("oblique steps in concave parts: the undercut is the crest of the trac
         CAPTURE(on_sections);
         CHECK(std::fabs(strip.undercut.error - on_sections) < 1e-4);
         ++flat;
-        continue;
+        return;
       }
       const double oracle = brute_force_crest(projector, cutter, tip0, tip1, s.xy0, s.xy1, window);
       CAPTURE(oracle);
       CAPTURE(on_curve.undercut.error);
       CHECK(std::fabs(strip.undercut.error - oracle) < 1e-4);
       lower += on_curve.undercut.error - oracle > 1e-4;
-    }
-  }
+  });
   CHECK(refined >= 6);
   CHECK(flat >= 1);
   // The curve alone overstates the crest by more than 0.1 um on some steps.
