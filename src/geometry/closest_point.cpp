@@ -204,9 +204,15 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     }
   }
 
-  // Depth-first branch and bound over the box tree, nearer child first.
-  // Squared distances to boxes, computed once when a node is pushed: no
-  // square roots on the way down.
+  // Two phases. First a depth-first walk of the box tree, nearer child
+  // first, that only screens cells: a cell is a candidate when its lower
+  // bound is below both the best foot so far and the nearest kept middle
+  // sample of the cells screened (a surface point: an upper bound of the
+  // answer, tight for a point far off the surface, where the lower bounds
+  // of many cells are close to each other). Then the candidates are solved
+  // in the order of their lower bounds until the next cannot beat the best
+  // foot: the cell holding the foot usually comes first, so the others are
+  // skipped. Squared distances throughout: no square roots on the way down.
   struct Pending {
     std::int32_t node;
     double squared_distance;
@@ -214,39 +220,47 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   Pending stack[128];
   int top = 0;
   stack[top++] = {0, nodes[0].box.squaredExteriorDistance(q)};
+  constexpr int kMaxCandidates = 256;
+  std::pair<double, std::uint32_t> candidates[kMaxCandidates];
+  int count = 0;
+  double upper = best.squared_distance;  // squared: min(best foot, nearest middle sample)
+  auto solve_candidates = [&] {
+    std::sort(candidates, candidates + count);
+    for (int k = 0; k < count; ++k) {
+      if (candidates[k].first * candidates[k].first >= best.squared_distance) break;
+      solve_cell(*part_, grid, cells[candidates[k].second], q, nullptr, options_, best);
+      ++examined;
+    }
+    count = 0;
+    upper = std::min(upper, best.squared_distance);
+  };
   while (top > 0) {
     const Pending pending = stack[--top];
-    if (pending.squared_distance >= best.squared_distance) continue;
+    if (pending.squared_distance >= upper) continue;
     const SeedNode& node = nodes[pending.node];
     if (node.left < 0) {
-      // Cells of the leaf nearest first (at most four); cells that cannot
-      // hold an orthogonal foot are left out at once.
-      std::pair<double, std::uint32_t> order[4];
-      std::uint32_t n = 0;
       for (std::uint32_t k = 0; k < node.count; ++k) {
         const std::uint32_t index = node.first + k;
         if (static_cast<int>(index) == hint_cell || cells[index].face == excluded) continue;
-        const double bound = cells[index].screen(q);
-        if (!(bound * bound < best.squared_distance)) continue;
-        std::uint32_t at = n++;  // insertion sort: at most four entries
-        for (; at > 0 && order[at - 1].first > bound; --at) order[at] = order[at - 1];
-        order[at] = {bound, index};
-      }
-      for (std::uint32_t k = 0; k < n; ++k) {
-        if (order[k].first * order[k].first >= best.squared_distance) break;
-        solve_cell(*part_, grid, cells[order[k].second], q, nullptr, options_, best);
-        ++examined;
+        const SeedCell& cell = cells[index];
+        if (cell.sample_kept >> 4 & 1u) upper = std::min(upper, (cell.sample_point[4] - q).squaredNorm());
+        const double bound = cell.screen(q);
+        if (!(bound * bound < upper)) continue;
+        // A full list is solved at once (the walk goes on with its best).
+        if (count == kMaxCandidates) solve_candidates();
+        candidates[count++] = {bound, index};
       }
       continue;
     }
     const double bl = nodes[node.left].box.squaredExteriorDistance(q);
     const double br = nodes[node.right].box.squaredExteriorDistance(q);
     const bool left_first = bl <= br;
-    if (std::max(bl, br) < best.squared_distance)
+    if (std::max(bl, br) < upper)
       stack[top++] = left_first ? Pending{node.right, br} : Pending{node.left, bl};
-    if (std::min(bl, br) < best.squared_distance)
+    if (std::min(bl, br) < upper)
       stack[top++] = left_first ? Pending{node.left, bl} : Pending{node.right, br};
   }
+  solve_candidates();
 
   if (!std::isfinite(best.squared_distance)) {  // every cell was excluded
     ClosestPoint none;

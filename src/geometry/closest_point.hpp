@@ -7,9 +7,11 @@
 // has several local minima of the distance; plain Newton from one seed can
 // converge to a wrong one and nobody notices. Here every face is cut into
 // small (u,v) cells (seed_grid.hpp), each with conservative bounding volumes;
-// a query walks a box tree nearest-first and solves the box-constrained
-// problem in every cell whose bounding volume could still hold something
-// nearer than the best foot found so far (branch and bound). The answer is
+// a query walks a box tree nearest-first, screening the cells whose bounding
+// volume could still hold something nearer than the best foot so far or the
+// nearest cell middle seen, then solves the box-constrained problem in the
+// candidates by increasing lower bound while one could still beat the best
+// foot (branch and bound). The answer is
 // therefore the minimum over all cells, up to the assumption that the
 // distance has one local minimum per cell (cells are a fraction of a knot
 // span; see ClosestPointOptions). Typical cost: 2 cells and 3 Newton steps,
