@@ -220,15 +220,22 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   Pending stack[128];
   int top = 0;
   stack[top++] = {0, nodes[0].box.squaredExteriorDistance(q)};
+  // Plain members, not std::pair: an array of pairs would be zeroed on
+  // every query.
+  struct Screened {
+    double bound;
+    std::uint32_t cell;
+    bool operator<(const Screened& other) const { return bound < other.bound; }
+  };
   constexpr int kMaxCandidates = 256;
-  std::pair<double, std::uint32_t> candidates[kMaxCandidates];
+  Screened candidates[kMaxCandidates];
   int count = 0;
   double upper = best.squared_distance;  // squared: min(best foot, nearest middle sample)
   auto solve_candidates = [&] {
     std::sort(candidates, candidates + count);
     for (int k = 0; k < count; ++k) {
-      if (candidates[k].first * candidates[k].first >= best.squared_distance) break;
-      solve_cell(*part_, grid, cells[candidates[k].second], q, nullptr, options_, best);
+      if (candidates[k].bound * candidates[k].bound >= best.squared_distance) break;
+      solve_cell(*part_, grid, cells[candidates[k].cell], q, nullptr, options_, best);
       ++examined;
     }
     count = 0;
