@@ -53,9 +53,15 @@ void EdgeDistance::build(double piece_length) {
 double EdgeDistance::distance(const Eigen::Vector3d& p, double reach) const {
   if (!tree_) throw std::logic_error("EdgeDistance: distance before build");
   if (pieces_.empty()) return std::numeric_limits<double>::infinity();
-  // A piece within reach has its midpoint within reach + half a piece.
-  const double radius = reach + 0.5 * piece_length_;
-  double best = std::numeric_limits<double>::infinity();
+  // The piece with the nearest midpoint bounds the answer from above; a
+  // piece nearer than that (or than reach) has its midpoint within that
+  // distance + half a piece. So only the pieces around the nearest one are
+  // measured, however long the edges within reach are.
+  const PointNeighbour nearest = tree_->search->nearest(p);
+  if (nearest.index >= pieces_.size() || nearest.distance > reach + 0.5 * piece_length_)
+    return std::numeric_limits<double>::infinity();
+  double best = point_segment_distance(p, pieces_[nearest.index].a, pieces_[nearest.index].b);
+  const double radius = std::min(reach, best) + 0.5 * piece_length_;
   for (const PointNeighbour& n : tree_->search->within(p, radius)) {
     const Segment& s = pieces_[n.index];
     best = std::min(best, point_segment_distance(p, s.a, s.b));

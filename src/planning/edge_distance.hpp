@@ -11,9 +11,11 @@
 // back within `b` of a point (curvature radius comparable with `b`).
 //
 // Edges are cut into pieces no longer than a given length and the piece
-// midpoints go into a k-d tree (geometry/point_search.hpp); a query looks at the pieces within
-// reach + half a piece length and measures the exact point-segment
-// distance, so the answer is exact, not a sampled approximation.
+// midpoints go into a k-d tree (geometry/point_search.hpp); a query takes
+// the piece with the nearest midpoint, then looks at the pieces whose
+// midpoints lie within the distance to it (or reach, if smaller) + half a
+// piece length and measures the exact point-segment distance, so the answer
+// is exact, not a sampled approximation.
 //
 // Units: mm. Thread safety: distance() is const and may run concurrently.
 #include <Eigen/Core>

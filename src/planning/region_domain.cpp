@@ -12,20 +12,29 @@ RegionDomain& RegionDomain::operator=(RegionDomain&&) noexcept = default;
 
 namespace {
 
-// The face's trim loops as polylines on the surface (each uv edge cut into
-// `samples` chords).
-std::vector<std::vector<Eigen::Vector3d>> trim_polylines(const Face& face, int samples) {
+// The face's trim loops as polylines on the surface. A trim loop is already
+// a fine uv polygon; each of its edges is a straight uv segment whose image
+// bows away from its chord by about the midpoint's deviation d (the sagitta),
+// which n chords cut to d / n^2. So each edge gets the fewest chords (at
+// most `samples`) that bring the sagitta within `tolerance`: one on a plane,
+// where the image is straight. Cutting every edge into the same number of
+// chords made millions of pieces on a plate with dozens of holes.
+std::vector<std::vector<Eigen::Vector3d>> trim_polylines(const Face& face, int samples, double tolerance) {
   std::vector<std::vector<Eigen::Vector3d>> out;
+  const ParameterDomain& d = face.domain();
+  auto at = [&](const Eigen::Vector2d& uv) {
+    return face.surface().point(std::clamp(uv.x(), d.u0, d.u1), std::clamp(uv.y(), d.v0, d.v1));
+  };
   for (const UvLoop& loop : face.trim().loops()) {
     std::vector<Eigen::Vector3d> line;
     for (std::size_t k = 0; k < loop.size(); ++k) {
       const Eigen::Vector2d& a = loop[k];
       const Eigen::Vector2d& b = loop[(k + 1) % loop.size()];
-      for (int s = 0; s < samples; ++s) {
-        const Eigen::Vector2d uv = a + (b - a) * (static_cast<double>(s) / samples);
-        const ParameterDomain& d = face.domain();
-        line.push_back(face.surface().point(std::clamp(uv.x(), d.u0, d.u1), std::clamp(uv.y(), d.v0, d.v1)));
-      }
+      const Eigen::Vector3d pa = at(a);
+      const double sagitta = (at(0.5 * (a + b)) - 0.5 * (pa + at(b))).norm();
+      const int n = std::clamp(static_cast<int>(std::ceil(std::sqrt(sagitta / tolerance))), 1, samples);
+      line.push_back(pa);
+      for (int s = 1; s < n; ++s) line.push_back(at(a + (b - a) * (static_cast<double>(s) / n)));
     }
     out.push_back(std::move(line));
   }
@@ -64,11 +73,14 @@ RegionDomain::RegionDomain(const Part& part, const RegionMap& map, int region_id
   edges_ = std::make_unique<EdgeDistance>();
   for (const BorderLoop& loop : region_->border)
     if (loop.xyz.size() >= 2) edges_->add_polyline(loop.xyz, true);
-  for (const auto& line : trim_polylines(*face_, options.trim_samples_per_edge))
+  // The chords' sagitta takes half the margin the polylines are allowed.
+  const std::vector<std::vector<Eigen::Vector3d>> trims =
+      trim_polylines(*face_, options.trim_samples_per_edge, 0.5 * options.edge_margin);
+  for (const auto& line : trims)
     if (line.size() >= 2) edges_->add_polyline(line, true);
   edges_->build(std::max(options.border, 0.25));
   face_edges_ = std::make_unique<EdgeDistance>();
-  for (const auto& line : trim_polylines(*face_, options.trim_samples_per_edge))
+  for (const auto& line : trims)
     if (line.size() >= 2) face_edges_->add_polyline(line, true);
   face_edges_->add_polyline(boundary_polyline(*face_, options.boundary_samples_per_side), true);
   face_edges_->build(std::max(options.border, 0.25));

@@ -42,8 +42,9 @@ struct RegionDomainOptions {
   double border = 2;  // clearance from region edges [mm], >= 0
   // Extra clearance for the difference between the edge polylines and the
   // true edge curves: regions.json keeps border polylines within 1 um of
-  // the surface curve (partition.hpp kDefaultChordTolerance); trim loops are
-  // sampled here with `trim_samples_per_edge` chords each.
+  // the surface curve (partition.hpp kDefaultChordTolerance); each edge of a
+  // trim loop's uv polygon is cut here into the fewest chords, at most
+  // `trim_samples_per_edge`, that keep its image within half this margin.
   double edge_margin = 2e-3;
   int trim_samples_per_edge = 64;
   // The face's parameter-rectangle boundary, sampled with this many chords
