@@ -1,0 +1,208 @@
+// Probe planning on a real-looking multi-face CAD part (target: under 10 s
+// and 500 MB for the whole `furrow plan` on about 140 faces).
+//
+// The part is built here with OpenCASCADE, as a CAD system would model a
+// fixture plate: a 200 x 150 x 25 mm plate with 18 cylindrical bosses whose
+// top edges are filleted (toroidal blends), 18 blind bores and 18 spherical
+// dimples on a 20 mm pitch; beside it a block with a B-spline top, a ball,
+// a ring (torus) and a truncated cone: planes with many circular trims,
+// cylinders, tori, spheres, a cone and a B-spline face, in five solids. It
+// is written to STEP and then run through what `furrow plan PART.step` does
+// (docs/cmm.md): import, partition, plan and the plan folder's files in
+// memory (only writing them to disk is left out). The faces the part stands
+// on (facing straight down at the lowest height) are left out, as a user
+// leaves them out of an inspection: no probe reaches them on the table.
+// Run twice: with the vertical stylus and with an indexable head (a PH10M
+// with 21 qualified tips). Prints per run the wall time of each stage, the
+// points allocated and placed, the regions covered and the peak resident
+// memory. Prints figures; it does not pass or fail.
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Builder.hxx>
+#include <BRepAdaptor_Curve.hxx>
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "io/cad/cad_import.hpp"
+#include "io/cmm/probe_head.hpp"
+#include "partition/partition.hpp"
+#include "stage/plan_stage.hpp"
+
+using namespace furrow;
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+double peak_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
+}
+
+// A boss of radius r and height h standing on z0, its top edge filleted.
+TopoDS_Shape filleted_boss(double x, double y, double z0, double r, double h, double fillet) {
+  const TopoDS_Shape boss = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, z0), gp::DZ()), r, h).Shape();
+  BRepFilletAPI_MakeFillet round(boss);
+  for (TopExp_Explorer e(boss, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    if (curve.GetType() == GeomAbs_Circle && std::abs(curve.Circle().Location().Z() - (z0 + h)) < 1e-9)
+      round.Add(fillet, TopoDS::Edge(e.Current()));
+  }
+  return round.Shape();
+}
+
+TopoDS_Shape fixture_plate() {
+  TopTools_ListOfShape plate, cutters, bosses;
+  plate.Append(BRepPrimAPI_MakeBox(200, 150, 25).Shape());
+  int k = 0;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 6; ++j, ++k) {
+      const double x = 20 + 20 * i, y = 25 + 20 * j;
+      if (k % 3 == 0)
+        bosses.Append(filleted_boss(x, y, 25, 5, 8, 1.5));
+      else if (k % 3 == 1)
+        cutters.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, 15), gp::DZ()), 4, 12).Shape());
+      else
+        cutters.Append(BRepPrimAPI_MakeSphere(gp_Pnt(x, y, 29), 6).Shape());
+    }
+  BRepAlgoAPI_Cut cut;
+  cut.SetArguments(plate);
+  cut.SetTools(cutters);
+  cut.Build();
+  TopTools_ListOfShape cut_list;
+  cut_list.Append(cut.Shape());
+  BRepAlgoAPI_Fuse fuse;
+  fuse.SetArguments(cut_list);
+  fuse.SetTools(bosses);
+  fuse.Build();
+  return fuse.Shape();
+}
+
+TopoDS_Shape freeform_block() {
+  TColgp_Array2OfPnt pts(1, 6, 1, 5);
+  for (int i = 1; i <= 6; ++i)
+    for (int j = 1; j <= 5; ++j)
+      pts(i, j) = gp_Pnt(220 + 12 * (i - 1), 10 * (j - 1), 20 + 4 * std::sin(0.9 * i) * std::cos(0.7 * j));
+  const Handle(Geom_BSplineSurface) top = GeomAPI_PointsToBSplineSurface(pts).Surface();
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(top, 1e-7).Face();
+  return BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, -15)).Shape();
+}
+
+TopoDS_Shape make_part() {
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  builder.Add(compound, fixture_plate());
+  builder.Add(compound, freeform_block());
+  builder.Add(compound, BRepPrimAPI_MakeSphere(gp_Pnt(250, 80, 15), 15).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(250, 130, 8), gp::DZ()), 14, 6).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(300, 80, 0), gp::DZ()), 12, 5, 18).Shape());
+  return compound;
+}
+
+// The head of docs/cmm.md's example, tips every 15 degrees of A up to 90
+// and every 90 degrees of B.
+const char* kHead = R"({
+  "head": {"type": "PH10M", "a": {"min": 0, "max": 105, "step": 7.5}, "b": {"min": -180, "max": 180, "step": 7.5},
+           "length": 30, "diameter": 24},
+  "stylus": {"length": 30, "ball_diameter": 2, "stem_diameter": 1.2},
+  "probe_body": {"length": 25, "diameter": 13.2},
+  "qualified": [{"a": 0, "b": 0},
+                {"a": 15, "b": 0}, {"a": 15, "b": 90}, {"a": 15, "b": 180}, {"a": 15, "b": -90},
+                {"a": 30, "b": 0}, {"a": 30, "b": 90}, {"a": 30, "b": 180}, {"a": 30, "b": -90},
+                {"a": 45, "b": 0}, {"a": 45, "b": 90}, {"a": 45, "b": 180}, {"a": 45, "b": -90},
+                {"a": 60, "b": 0}, {"a": 60, "b": 90}, {"a": 60, "b": 180}, {"a": 60, "b": -90},
+                {"a": 90, "b": 0}, {"a": 90, "b": 90}, {"a": 90, "b": 180}, {"a": 90, "b": -90}]
+})";
+
+void run(const std::string& step, bool head) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Part part = import_cad(step).part;
+  const std::size_t imported = part.faces.size();
+  part.faces.erase(std::remove_if(part.faces.begin(), part.faces.end(),
+                                  [](const Face& f) {
+                                    const ParameterDomain& d = f.domain();
+                                    const DifferentialGeometry g =
+                                        f.geometry((d.u0 + d.u1) / 2, (d.v0 + d.v1) / 2);
+                                    return g.normal.z() < -0.99 && std::abs(g.point.z()) < 1e-6;
+                                  }),
+                   part.faces.end());
+  const double t_import = since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  const RegionMap map = partition_part(part, {}).map;
+  const double t_partition = since(t1);
+  PlannerOptions options;
+  options.part_name = "fixture";
+  if (head) use_head(options, parse_probe_head(kHead, "head.json"));
+  const auto t2 = std::chrono::steady_clock::now();
+  const PlanStage stage = plan_stage(part, map, options, nullptr, "fixture", "regions.json", "");
+  const double t_plan = since(t2);
+  std::size_t bytes = 0;
+  for (const FolderFile& f : stage.files) bytes += f.bytes.size();
+  const PlanCoverage& c = stage.coverage;
+  std::printf("\n%s, %d OpenMP threads\n", head ? "indexable head (21 tips)" : "vertical stylus",
+              omp_get_max_threads());
+  std::printf("  faces %zu imported, %zu planned (the table side left out), %zu regions\n", imported,
+              part.faces.size(), map.regions.size());
+  std::printf("  import %.2f s, partition %.2f s, plan and files %.2f s: total %.2f s (target < 10 s)\n", t_import,
+              t_partition, t_plan, since(t0));
+  const PlanTiming& t = stage.result.timing;
+  std::printf("  of the plan: regions %.2f s, sampling %.2f s, collision checks %.2f s, ordering %.2f s, moves %.2f s\n",
+              t.regions_seconds, t.sampling_seconds, t.access_seconds, t.tour_seconds, t.moves_seconds);
+  std::printf("  points: %ld allocated, %ld placed, %ld dropped; regions covered %d of %zu; tip changes %d\n",
+              c.allocated, c.planned, c.dropped, c.regions_covered, c.regions.size(), stage.result.tip_changes);
+  std::printf("  files %zu (%.1f kB); peak resident memory so far %.0f MB (target < 500 MB)\n", stage.files.size(),
+              bytes / 1024.0, peak_mb());
+}
+
+}  // namespace
+
+int main() {
+  Message::DefaultMessenger()->ChangePrinters().Clear();
+  const std::string dir = (std::filesystem::temp_directory_path() / "furrow_bench_plan_cad").string();
+  std::filesystem::create_directories(dir);
+  const std::string step = dir + "/fixture.step";
+  const TopoDS_Shape part = make_part();
+  TopTools_IndexedMapOfShape faces, solids;
+  TopExp::MapShapes(part, TopAbs_FACE, faces);
+  TopExp::MapShapes(part, TopAbs_SOLID, solids);
+  STEPControl_Writer writer;
+  writer.Transfer(part, STEPControl_AsIs);
+  writer.Write(step.c_str());
+  std::printf("part: %d faces in %d solids (plate with 18 filleted bosses, 18 bores, 18 dimples; B-spline block, "
+              "ball, ring, cone), STEP %.1f MB\n",
+              faces.Extent(), solids.Extent(), std::filesystem::file_size(step) / 1e6);
+  run(step, false);
+  run(step, true);
+  return 0;
+}
