@@ -108,8 +108,25 @@ void solve_cell(const Part& part, const SeedGrid& grid, const SeedCell& cell,
     c.converged = in_box_foot.converged;
     c.iterations = in_box_foot.iterations;
   } else {
+    // Segments nearest sphere first; one whose sphere is no nearer than the
+    // best foot (this cell's or the search's) cannot hold a better one.
+    // Squared distances throughout: a sphere (c, r) is no nearer than the
+    // distance D when |q - c|^2 >= (r + D)^2.
+    const TrimSegment* segments = grid.trim_segments().data() + cell.first_segment;
+    std::uint32_t first = 0;
+    double nearest = std::numeric_limits<double>::infinity();
     for (std::uint32_t k = 0; k < cell.segment_count; ++k) {
-      const TrimSegment& seg = grid.trim_segments()[cell.first_segment + k];
+      const double d2 = (q - segments[k].centre).squaredNorm(), r = segments[k].radius;
+      if (d2 - r * r < nearest) nearest = d2 - r * r, first = k;  // a cheap order: any order is exact
+    }
+    for (std::uint32_t n = 0; n < cell.segment_count; ++n) {
+      const std::uint32_t k = n == 0 ? first : (n <= first ? n - 1 : n);
+      const TrimSegment& seg = segments[k];
+      const double beat = std::min(c.squared_distance, best.squared_distance);
+      if (std::isfinite(beat)) {
+        const double reach = seg.radius + std::sqrt(beat);
+        if ((q - seg.centre).squaredNorm() >= reach * reach) continue;
+      }
       const LocalFoot f = foot_point_on_segment(face.surface(), q, seg.a, seg.b, options);
       if (f.squared_distance < c.squared_distance) {
         c.squared_distance = f.squared_distance;

@@ -89,6 +89,7 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
         throw InputError(w_where + ": weight times control point is not a finite number");
       homogeneous_[index(i, j)] << w * p, w;
       points_[index(i, j)] = p;
+      control_box_.extend(p);
     }
   }
   domain_ = {knots_u_[degree_u_], knots_u_[num_u_], knots_v_[degree_v_], knots_v_[num_v_]};
@@ -101,11 +102,6 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
   }
 }
 
-Eigen::AlignedBox3d NurbsSurface::control_box() const {
-  Eigen::AlignedBox3d box;
-  for (const auto& p : points_) box.extend(p);
-  return box;
-}
 
 Eigen::Vector3d NurbsSurface::point(double u, double v) const { return evaluate(u, v, 0).S; }
 

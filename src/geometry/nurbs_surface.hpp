@@ -58,8 +58,9 @@ class NurbsSurface {
   const ParameterDomain& domain() const { return domain_; }
 
   // Axis-aligned box of the control net; contains the surface (convex hull
-  // property, positive weights).
-  Eigen::AlignedBox3d control_box() const;
+  // property, positive weights). Kept from construction: tolerances scaled
+  // by the part's size ask for it at every evaluation of the geometry.
+  const Eigen::AlignedBox3d& control_box() const { return control_box_; }
 
   // Point only.
   Eigen::Vector3d point(double u, double v) const;
@@ -76,6 +77,7 @@ class NurbsSurface {
   std::vector<Eigen::Vector3d> points_;       // as given, so that files round-trip exactly
   bool rational_ = false;
   ParameterDomain domain_;
+  Eigen::AlignedBox3d control_box_;
 };
 
 }  // namespace furrow

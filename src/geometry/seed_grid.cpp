@@ -168,7 +168,7 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
           for (const UvLoop& loop : trim.loops())
             for (std::size_t k = 0; k < loop.size(); ++k) {
               Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
-              if (clip_segment(a, b, cell.lo, cell.hi)) segments_.push_back({a, b});
+              if (clip_segment(a, b, cell.lo, cell.hi)) segments_.push_back({a, b, Eigen::Vector3d::Zero(), 0});
             }
           cell.segment_count = static_cast<std::uint32_t>(segments_.size()) - cell.first_segment;
           cut = cell.segment_count > 0;
@@ -217,6 +217,14 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       const double bulge =
           2.0 * (h.x() * h.x() * max_uu + 2 * h.x() * h.y() * max_uv + h.y() * h.y() * max_vv) / 8;
       const double slack = bulge + 1e-12 * (1 + cell.centre.norm());
+      for (std::uint32_t k = 0; k < cell.segment_count; ++k) {
+        TrimSegment& seg = segments_[cell.first_segment + k];
+        const Eigen::Vector3d pa = s.point(seg.a.x(), seg.a.y()), pb = s.point(seg.b.x(), seg.b.y());
+        const Eigen::Vector2d d = (seg.b - seg.a).cwiseAbs();
+        const double bow = 2.0 * (d.x() * d.x() * max_uu + 2 * d.x() * d.y() * max_uv + d.y() * d.y() * max_vv) / 8;
+        seg.centre = 0.5 * (pa + pb);
+        seg.radius = 0.5 * (pb - pa).norm() + bow + 1e-12 * (1 + seg.centre.norm());
+      }
       cell.radius = r + slack;
       cell.half_extent = extent.array() + slack;
       const bool on_domain_edge = i == 0 || j == 0 || i == nu - 1 || j == nv - 1;

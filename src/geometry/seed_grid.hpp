@@ -75,9 +75,18 @@ struct SeedCell {
   double screen(const Eigen::Vector3d& q) const;
 };
 
-// A trim loop segment clipped to one cell, in (u,v).
+// A trim loop segment clipped to one cell, in (u,v), with a sphere holding
+// its image on the surface: about the chord between its end points, the
+// radius half the chord plus the most the image can bow away from it,
+// (du^2 |Suu| + 2 |du dv| |Suv| + dv^2 |Svv|) / 8 with the cell's sampled
+// maxima doubled (as for the cell's own volumes). The closest-point search
+// solves a cut cell's segments nearest sphere first and skips those whose
+// sphere is farther than the best foot: a fine trim polygon has hundreds of
+// segments in a cell.
 struct TrimSegment {
   Eigen::Vector2d a, b;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0;
 };
 
 // Node of the box tree: an axis-aligned box holding the oriented boxes of

@@ -408,6 +408,52 @@ TEST_CASE("trimmed plane with a hole: the foot is on the hole's boundary polygon
   CHECK(in_hole > 10);
 }
 
+TEST_CASE("oblique plate with 30 finely polygonised holes: the foot agrees with the exact polygon distance") {
+  // As CAD import writes a drilled plate: one planar face, every hole a
+  // 400-gon in (u, v), so a seed cell holds hundreds of trim segments (the
+  // search orders and skips them by their bounding spheres). The plane is
+  // tilted and the map affine: each trim segment's image is a straight 3-D
+  // segment, so the exact answer is the orthogonal distance where the
+  // projection is kept and the nearest boundary segment elsewhere.
+  const Eigen::Vector3d origin(5, -3, 2), eu(100, 10, 25), ev(-8, 80, -15);
+  std::vector<UvLoop> loops{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 5; ++j) loops.push_back(uv_circle(0.1 + 0.16 * i, 0.1 + 0.2 * j, 0.05, 400));
+  const Trim trim(loops);
+  const Part part = single_face(make_plane(origin, eu, ev), false, trim);
+  const ClosestPointFinder finder(part);
+  const Eigen::Vector3d normal = eu.cross(ev).normalized();
+  Eigen::Matrix<double, 3, 2> map;
+  map << eu, ev;
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-0.05, 1.05), offset(-3, 3);
+  int in_hole = 0, outside = 0;
+  for (int k = 0; k < 600; ++k) {
+    const double reach = k % 5 == 0 ? 10 : 1;  // some points far off the plate
+    const Eigen::Vector3d q = origin + map * Eigen::Vector2d(u(rng), u(rng)) + reach * offset(rng) * normal;
+    const Eigen::Vector2d uv = (map.transpose() * map).ldlt().solve(map.transpose() * (q - origin));
+    double exact;
+    if (trim.contains(uv)) {
+      exact = std::abs((q - origin).dot(normal));
+    } else {
+      in_hole += uv.minCoeff() > 0 && uv.maxCoeff() < 1;
+      outside += !(uv.minCoeff() > 0 && uv.maxCoeff() < 1);
+      exact = std::numeric_limits<double>::infinity();
+      for (const UvLoop& loop : loops)
+        for (std::size_t s = 0; s < loop.size(); ++s) {
+          const Eigen::Vector3d a = origin + map * loop[s], b = origin + map * loop[(s + 1) % loop.size()];
+          const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+          exact = std::min(exact, (a + t * (b - a) - q).norm());
+        }
+    }
+    const ClosestPoint c = finder.project(q);
+    CAPTURE(k);
+    CHECK(std::abs(c.distance - exact) <= 1e-9);
+  }
+  CHECK(in_hole > 20);
+  CHECK(outside > 20);
+}
+
 TEST_CASE("trimmed mould with a hole over the dome: brute force agrees") {
   Part part = mould();
   const Face& f = part.faces[0];
