@@ -182,6 +182,7 @@ void run(const std::string& step, bool head) {
               t.regions_seconds, t.sampling_seconds, t.access_seconds, t.tour_seconds, t.moves_seconds);
   std::printf("  points: %ld allocated, %ld placed, %ld dropped; regions covered %d of %zu; tip changes %d\n",
               c.allocated, c.planned, c.dropped, c.regions_covered, c.regions.size(), stage.result.tip_changes);
+  if (!c.complete()) std::printf("  uncovered: %s\n", c.describe_uncovered(6).c_str());
   std::printf("  files %zu (%.1f kB); peak resident memory so far %.0f MB (target < 500 MB)\n", stage.files.size(),
               bytes / 1024.0, peak_mb());
 }
