@@ -2,8 +2,8 @@
 // and 500 MB for the whole `furrow plan` on about 140 faces).
 //
 // The part is built here with OpenCASCADE, as a CAD system would model a
-// fixture plate: a 200 x 150 x 25 mm plate with 18 cylindrical bosses whose
-// top edges are filleted (toroidal blends), 18 blind bores and 18 spherical
+// fixture plate: a 220 x 150 x 25 mm plate with 20 cylindrical bosses whose
+// top edges are filleted (toroidal blends), 20 blind bores and 20 spherical
 // dimples on a 20 mm pitch; beside it a block with a B-spline top, a ball,
 // a ring (torus) and a truncated cone: planes with many circular trims,
 // cylinders, tori, spheres, a cone and a B-spline face, in five solids. It
@@ -84,9 +84,9 @@ TopoDS_Shape filleted_boss(double x, double y, double z0, double r, double h, do
 
 TopoDS_Shape fixture_plate() {
   TopTools_ListOfShape plate, cutters, bosses;
-  plate.Append(BRepPrimAPI_MakeBox(200, 150, 25).Shape());
+  plate.Append(BRepPrimAPI_MakeBox(220, 150, 25).Shape());
   int k = 0;
-  for (int i = 0; i < 9; ++i)
+  for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 6; ++j, ++k) {
       const double x = 20 + 20 * i, y = 25 + 20 * j;
       if (k % 3 == 0)
@@ -113,7 +113,7 @@ TopoDS_Shape freeform_block() {
   TColgp_Array2OfPnt pts(1, 6, 1, 5);
   for (int i = 1; i <= 6; ++i)
     for (int j = 1; j <= 5; ++j)
-      pts(i, j) = gp_Pnt(220 + 12 * (i - 1), 10 * (j - 1), 20 + 4 * std::sin(0.9 * i) * std::cos(0.7 * j));
+      pts(i, j) = gp_Pnt(240 + 12 * (i - 1), 10 * (j - 1), 20 + 4 * std::sin(0.9 * i) * std::cos(0.7 * j));
   const Handle(Geom_BSplineSurface) top = GeomAPI_PointsToBSplineSurface(pts).Surface();
   const TopoDS_Face face = BRepBuilderAPI_MakeFace(top, 1e-7).Face();
   return BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, -15)).Shape();
@@ -125,9 +125,9 @@ TopoDS_Shape make_part() {
   builder.MakeCompound(compound);
   builder.Add(compound, fixture_plate());
   builder.Add(compound, freeform_block());
-  builder.Add(compound, BRepPrimAPI_MakeSphere(gp_Pnt(250, 80, 15), 15).Shape());
-  builder.Add(compound, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(250, 130, 8), gp::DZ()), 14, 6).Shape());
-  builder.Add(compound, BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(300, 80, 0), gp::DZ()), 12, 5, 18).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeSphere(gp_Pnt(270, 80, 15), 15).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(270, 130, 8), gp::DZ()), 14, 6).Shape());
+  builder.Add(compound, BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(320, 80, 0), gp::DZ()), 12, 5, 18).Shape());
   return compound;
 }
 
@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
   STEPControl_Writer writer;
   writer.Transfer(part, STEPControl_AsIs);
   writer.Write(step.c_str());
-  std::printf("part: %d faces in %d solids (plate with 18 filleted bosses, 18 bores, 18 dimples; B-spline block, "
+  std::printf("part: %d faces in %d solids (plate with 20 filleted bosses, 20 bores, 20 dimples; B-spline block, "
               "ball, ring, cone), STEP %.1f MB\n",
               faces.Extent(), solids.Extent(), std::filesystem::file_size(step) / 1e6);
   if (only != "head") run(step, false);
