@@ -7,8 +7,6 @@
 // written to STEP (and IGES), then imported with the default options. Prints
 // the median wall time of several imports, OpenCASCADE's own share (reading
 // and translating the file without converting anything), and the trim sizes.
-#include <BRepAlgoAPI_Cut.hxx>
-#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -21,7 +19,6 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -32,15 +29,17 @@
 #include <string>
 #include <vector>
 
+#include "bench_clock.hpp"
 #include "io/cad/cad_import.hpp"
+#include "occ_booleans.hpp"
+
+using furrow::bench::peak_rss_mb;
 
 namespace {
 
 // nx x ny features on a 20 mm pitch: bosses, through-holes, dimples in turn.
 TopoDS_Shape make_plate(int nx = 12, int ny = 9) {
-  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(10 + 20 * nx, 10 + 20 * ny, 20).Shape();
-  TopTools_ListOfShape plate_list, cutters, bosses;
-  plate_list.Append(plate);
+  TopTools_ListOfShape cutters, bosses;
   int k = 0;
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j, ++k) {
@@ -52,23 +51,7 @@ TopoDS_Shape make_plate(int nx = 12, int ny = 9) {
       else
         cutters.Append(BRepPrimAPI_MakeSphere(gp_Pnt(x, y, 23), 6).Shape());
     }
-  BRepAlgoAPI_Cut cut;
-  cut.SetArguments(plate_list);
-  cut.SetTools(cutters);
-  cut.Build();
-  TopTools_ListOfShape cut_list;
-  cut_list.Append(cut.Shape());
-  BRepAlgoAPI_Fuse fuse;
-  fuse.SetArguments(cut_list);
-  fuse.SetTools(bosses);
-  fuse.Build();
-  return fuse.Shape();
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
+  return furrow::bench::cut_then_fuse(BRepPrimAPI_MakeBox(10 + 20 * nx, 10 + 20 * ny, 20).Shape(), cutters, bosses);
 }
 
 double median_seconds(int runs, const std::function<void()>& work) {

@@ -17,8 +17,6 @@
 // points allocated and placed, the regions covered and the peak resident
 // memory. Prints figures; it does not pass or fail.
 //   usage: bench_plan_cad [stylus|head]     (default: both)
-#include <BRepAlgoAPI_Cut.hxx>
-#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -42,7 +40,6 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -51,24 +48,18 @@
 #include <filesystem>
 #include <string>
 
+#include "bench_clock.hpp"
 #include "io/cad/cad_import.hpp"
+#include "occ_booleans.hpp"
 #include "io/cmm/probe_head.hpp"
 #include "partition/partition.hpp"
 #include "stage/plan_stage.hpp"
 
 using namespace furrow;
+using furrow::bench::peak_rss_mb;
+using furrow::bench::seconds_since;
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-double peak_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
-}
 
 // A boss of radius r and height h standing on z0, its top edge filleted.
 TopoDS_Shape filleted_boss(double x, double y, double z0, double r, double h, double fillet) {
@@ -83,8 +74,7 @@ TopoDS_Shape filleted_boss(double x, double y, double z0, double r, double h, do
 }
 
 TopoDS_Shape fixture_plate() {
-  TopTools_ListOfShape plate, cutters, bosses;
-  plate.Append(BRepPrimAPI_MakeBox(220, 150, 25).Shape());
+  TopTools_ListOfShape cutters, bosses;
   int k = 0;
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 6; ++j, ++k) {
@@ -96,17 +86,7 @@ TopoDS_Shape fixture_plate() {
       else
         cutters.Append(BRepPrimAPI_MakeSphere(gp_Pnt(x, y, 29), 6).Shape());
     }
-  BRepAlgoAPI_Cut cut;
-  cut.SetArguments(plate);
-  cut.SetTools(cutters);
-  cut.Build();
-  TopTools_ListOfShape cut_list;
-  cut_list.Append(cut.Shape());
-  BRepAlgoAPI_Fuse fuse;
-  fuse.SetArguments(cut_list);
-  fuse.SetTools(bosses);
-  fuse.Build();
-  return fuse.Shape();
+  return furrow::bench::cut_then_fuse(BRepPrimAPI_MakeBox(220, 150, 25).Shape(), cutters, bosses);
 }
 
 TopoDS_Shape freeform_block() {
@@ -158,16 +138,16 @@ void run(const std::string& step, bool head) {
                                     return g.normal.z() < -0.99 && std::abs(g.point.z()) < 1e-6;
                                   }),
                    part.faces.end());
-  const double t_import = since(t0);
+  const double t_import = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   const RegionMap map = partition_part(part, {}).map;
-  const double t_partition = since(t1);
+  const double t_partition = seconds_since(t1);
   PlannerOptions options;
   options.part_name = "fixture";
   if (head) use_head(options, parse_probe_head(kHead, "head.json"));
   const auto t2 = std::chrono::steady_clock::now();
   const PlanStage stage = plan_stage(part, map, options, nullptr, "fixture", "regions.json", "");
-  const double t_plan = since(t2);
+  const double t_plan = seconds_since(t2);
   std::size_t bytes = 0;
   for (const FolderFile& f : stage.files) bytes += f.bytes.size();
   const PlanCoverage& c = stage.coverage;
@@ -176,7 +156,7 @@ void run(const std::string& step, bool head) {
   std::printf("  faces %zu imported, %zu planned (the table side left out), %zu regions\n", imported,
               part.faces.size(), map.regions.size());
   std::printf("  import %.2f s, partition %.2f s, plan and files %.2f s: total %.2f s (target < 10 s)\n", t_import,
-              t_partition, t_plan, since(t0));
+              t_partition, t_plan, seconds_since(t0));
   const PlanTiming& t = stage.result.timing;
   std::printf("  of the plan: regions %.2f s, sampling %.2f s, collision checks %.2f s, ordering %.2f s, moves %.2f s\n",
               t.regions_seconds, t.sampling_seconds, t.access_seconds, t.tour_seconds, t.moves_seconds);
@@ -184,7 +164,7 @@ void run(const std::string& step, bool head) {
               c.allocated, c.planned, c.dropped, c.regions_covered, c.regions.size(), stage.result.tip_changes);
   if (!c.complete()) std::printf("  uncovered: %s\n", c.describe_uncovered(6).c_str());
   std::printf("  files %zu (%.1f kB); peak resident memory so far %.0f MB (target < 500 MB)\n", stage.files.size(),
-              bytes / 1024.0, peak_mb());
+              bytes / 1024.0, peak_rss_mb());
 }
 
 }  // namespace

@@ -12,7 +12,6 @@
 //
 //   ./build/bench_planning [points] [strategy]     (one size)
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -20,6 +19,7 @@
 #include <limits>
 #include <string>
 
+#include "bench_clock.hpp"
 #include "io/cmm/dmis_writer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
 #include "io/part_file.hpp"
@@ -28,20 +28,12 @@
 #include "planning/probe_planner.hpp"
 
 using namespace furrow;
+using furrow::bench::peak_rss_mb;
+using furrow::bench::seconds_since;
 
 namespace {
 
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-double peak_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kB on Linux
-}
-
-void bench(const Part& part, const RegionMap& map, long points, const char* strategy) {
+void plan_size(const Part& part, const RegionMap& map, long points, const char* strategy) {
   PlannerOptions options;
   options.points = points;
   if (strategy) options.strategy = parse_sampling_strategy(strategy, "strategy");
@@ -53,7 +45,7 @@ void bench(const Part& part, const RegionMap& map, long points, const char* stra
   for (int rep = 0; rep < reps; ++rep) {
     const auto t0 = std::chrono::steady_clock::now();
     PlanResult r = plan_probe_points(part, map, options);
-    const double total = since(t0);
+    const double total = seconds_since(t0);
     if (total < best) {
       best = total;
       kept = std::move(r);
@@ -68,7 +60,7 @@ void bench(const Part& part, const RegionMap& map, long points, const char* stra
               kept.tour.converged ? "converged" : "pass cap");
   std::printf("  moves and cycle time       %8.3f s   (%d straight, %d over the clearance plane)\n", t.moves_seconds,
               kept.cycle.straight_moves, kept.cycle.plane_moves);
-  std::printf("peak resident memory so far  %8.1f MB\n", peak_mb());
+  std::printf("peak resident memory so far  %8.1f MB\n", peak_rss_mb());
   std::printf("tour between probe centres: nearest neighbour %.1f mm, greedy start %.1f mm, 2-opt + Or-opt %.1f mm "
               "(%.1f %% shorter than nearest neighbour)\n",
               kept.tour.nearest_neighbour_length, kept.tour.start_length, kept.tour.length,
@@ -77,11 +69,11 @@ void bench(const Part& part, const RegionMap& map, long points, const char* stra
   const auto t1 = std::chrono::steady_clock::now();
   const ProbeProgram program = make_probe_program(kept, "bench", options);
   const std::size_t bytes = dmis_program_text(program).size() + ippdme_program_text(program).size();
-  const double texts = since(t1);
+  const double texts = seconds_since(t1);
   const auto t2 = std::chrono::steady_clock::now();
   const std::size_t png = plan_image_png(part, map, kept).size();
   std::printf("DMIS + I++ texts %.3f s (%.1f kB), PNG %.3f s (%.1f kB), not in the total\n", texts, bytes / 1024.0,
-              since(t2), png / 1024.0);
+              seconds_since(t2), png / 1024.0);
 }
 
 }  // namespace
@@ -91,9 +83,9 @@ int main(int argc, char** argv) {
   const RegionMap map = partition_part(part, {}).map;
   const char* strategy = argc > 2 ? argv[2] : nullptr;
   if (argc > 1) {
-    bench(part, map, std::atol(argv[1]), strategy);
+    plan_size(part, map, std::atol(argv[1]), strategy);
   } else {
-    for (const long points : {5000L, 10000L, 100000L}) bench(part, map, points, strategy);
+    for (const long points : {5000L, 10000L, 100000L}) plan_size(part, map, points, strategy);
   }
   return 0;
 }

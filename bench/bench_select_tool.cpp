@@ -12,7 +12,6 @@
 // Prints figures; it does not pass or fail.
 //   usage: bench_select_tool [--fast-only]
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,22 +21,15 @@
 #include <string>
 #include <vector>
 
+#include "bench_clock.hpp"
 #include "io/part_file.hpp"
 #include "machining/gouge/tool_selection.hpp"
 
 using namespace furrow;
+using furrow::bench::peak_rss_mb;
+using furrow::bench::seconds_since;
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux: kilobytes
-}
 
 std::string number(double d) {
   char buf[32];
