@@ -73,6 +73,20 @@ class Strip {
 
 namespace {
 
+// The first search across a section: the error at samples + 1 evenly
+// spaced offsets over [-width, width]. Returns the index of the smallest
+// (the first one, on ties) and sets `value`; -1 when none is defined.
+int smallest_sample(Strip& strip, double lambda, double width, int samples, double& value) {
+  const double cell = 2 * width / samples;
+  int arg = -1;
+  value = kInf;
+  for (int k = 0; k <= samples; ++k) {
+    const double e = strip(lambda, -width + k * cell);
+    if (e < value) value = e, arg = k;
+  }
+  return arg;
+}
+
 // The overcut: from the curve's smallest error, alternating Brent searches
 // across and along until the point settles (the header).
 StripExtreme deepest(Strip& strip, const FurrowStepResult& on_curve, double width, double chord,
@@ -90,14 +104,9 @@ StripExtreme deepest(Strip& strip, const FurrowStepResult& on_curve, double widt
     // the curve by more than a Brent bracket), then around the last point.
     double lo = c - cell, hi = c + cell;
     if (round == 0) {
-      int arg = -1;
-      double sampled = best;
-      for (int k = 0; k <= samples; ++k) {
-        const double ck = -width + k * cell;
-        const double e = strip(lambda, ck);
-        if (e < sampled) sampled = e, arg = k;
-      }
-      if (arg >= 0) lo = -width + (arg - 1) * cell, hi = -width + (arg + 1) * cell;
+      double sampled = kInf;
+      const int arg = smallest_sample(strip, lambda, width, samples, sampled);
+      if (arg >= 0 && sampled < best) lo = -width + (arg - 1) * cell, hi = -width + (arg + 1) * cell;
     }
     const ScalarSearchResult a = minimize_unimodal([&](double x) { return strip(lambda, x); }, lo, hi, across_search);
     if (a.value < best) best = a.value, c = a.x;
@@ -136,12 +145,8 @@ StripExtreme crest(Strip& strip, const FurrowStepResult& on_curve, double width,
     const double lambda_before = lambda, c_before = c;
     double lo = std::max(-width, c - cell), hi = std::min(width, c + cell);
     if (round == 0) {
-      int arg = -1;
       double sampled = kInf;
-      for (int k = 0; k <= samples; ++k) {
-        const double e = strip(lambda, -width + k * cell);
-        if (e < sampled) sampled = e, arg = k;
-      }
+      const int arg = smallest_sample(strip, lambda, width, samples, sampled);
       if (arg < 0) break;
       lo = std::max(-width, -width + (arg - 1) * cell), hi = std::min(width, -width + (arg + 1) * cell);
     }
@@ -167,12 +172,8 @@ StripExtreme crest(Strip& strip, const FurrowStepResult& on_curve, double width,
     // each section found afresh (sampled over the width, then Brent) and the
     // largest valley by Brent along. Slower, the same answer where both end.
     auto valley = [&](double l, double& at) {
-      int arg = -1;
       double sampled = kInf;
-      for (int k = 0; k <= samples; ++k) {
-        const double e = strip(l, -width + k * cell);
-        if (e < sampled) sampled = e, arg = k;
-      }
+      const int arg = smallest_sample(strip, l, width, samples, sampled);
       if (arg < 0) return kInf;
       const double lo = std::max(-width, -width + (arg - 1) * cell), hi = std::min(width, -width + (arg + 1) * cell);
       const ScalarSearchResult r = minimize_unimodal([&](double x) { return strip(l, x); }, lo, hi, across_search);
