@@ -209,6 +209,7 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
                                         std::size_t excluded) const {
   const SeedGrid& grid = *grid_;
   const auto& cells = grid.cells();
+  const auto& bounds = grid.bounds();
   const auto& nodes = grid.nodes();
   Candidate best;
   int examined = 0;
@@ -223,8 +224,8 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
 
   // Two phases. First a depth-first walk of the box tree, nearer child
   // first, that only screens cells: a cell is a candidate when its lower
-  // bound is below both the best foot so far and the nearest kept middle
-  // sample of the cells screened (a surface point: an upper bound of the
+  // bound is below both the best foot so far and the nearest kept surface
+  // sample of the cells screened (CellBounds::surface_point: an upper bound of the
   // answer, tight for a point far off the surface, where the lower bounds
   // of many cells are close to each other). Then the candidates are solved
   // in the order of their lower bounds until the next cannot beat the best
@@ -240,18 +241,18 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   // Plain members, not std::pair: an array of pairs would be zeroed on
   // every query.
   struct Screened {
-    double bound;
+    double bound;  // squared
     std::uint32_t cell;
     bool operator<(const Screened& other) const { return bound < other.bound; }
   };
   constexpr int kMaxCandidates = 256;
   Screened candidates[kMaxCandidates];
   int count = 0;
-  double upper = best.squared_distance;  // squared: min(best foot, nearest middle sample)
+  double upper = best.squared_distance;  // squared: min(best foot, nearest surface sample)
   auto solve_candidates = [&] {
     std::sort(candidates, candidates + count);
     for (int k = 0; k < count; ++k) {
-      if (candidates[k].bound * candidates[k].bound >= best.squared_distance) break;
+      if (candidates[k].bound >= best.squared_distance) break;
       solve_cell(*part_, grid, cells[candidates[k].cell], q, nullptr, options_, best);
       ++examined;
     }
@@ -265,11 +266,12 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     if (node.left < 0) {
       for (std::uint32_t k = 0; k < node.count; ++k) {
         const std::uint32_t index = node.first + k;
-        if (static_cast<int>(index) == hint_cell || cells[index].face == excluded) continue;
-        const SeedCell& cell = cells[index];
-        if (cell.sample_kept >> 4 & 1u) upper = std::min(upper, (cell.sample_point[4] - q).squaredNorm());
-        const double bound = cell.screen(q);
-        if (!(bound * bound < upper)) continue;
+        if (static_cast<int>(index) == hint_cell || (excluded != kNoFace && cells[index].face == excluded))
+          continue;
+        const CellBounds& cell = bounds[index];
+        upper = std::min(upper, (cell.surface_point - q).squaredNorm());
+        const double bound = cell.squared_screen(q);
+        if (!(bound < upper)) continue;
         // A full list is solved at once (the walk goes on with its best).
         if (count == kMaxCandidates) solve_candidates();
         candidates[count++] = {bound, index};
@@ -294,11 +296,17 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
   }
   const Face& face = part_->faces[best.face];
   const ParameterDomain& dom = face.domain();
-  const bool inside_cell = (best.uv.array() > best.cell_lo.array()).all() &&
-                           (best.uv.array() < best.cell_hi.array()).all();
+  // Off the cell's edges, or on an edge that is the face's own domain edge
+  // (the cell's bound there is the face's, so the cell's minimum is the
+  // face's local minimum too: a point beyond the face's edge).
+  const Eigen::Vector2d dom_lo(dom.u0, dom.v0), dom_hi(dom.u1, dom.v1);
+  const bool inside_cell =
+      ((best.uv.array() > best.cell_lo.array()) || (best.cell_lo.array() <= dom_lo.array())).all() &&
+      ((best.uv.array() < best.cell_hi.array()) || (best.cell_hi.array() >= dom_hi.array())).all();
   if (!best.on_trim && !(inside_cell && best.converged)) {
-    // The best cell minimum sits on a cell's edge; one solve over the whole
-    // face from there confirms it is stationary for the face (or improves it).
+    // The best cell minimum sits on an edge between cells; one solve over the
+    // whole face from there confirms it is stationary for the face (or
+    // improves it).
     const LocalFoot polish =
         foot_point_in_box(face.surface(), q, best.uv, {dom.u0, dom.v0}, {dom.u1, dom.v1}, options_);
     if (polish.squared_distance <= best.squared_distance && face.trim().contains(polish.uv)) {

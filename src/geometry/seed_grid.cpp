@@ -42,7 +42,7 @@ bool clip_segment(Eigen::Vector2d& a, Eigen::Vector2d& b, const Eigen::Vector2d&
 }
 
 // Axis-aligned box of a cell's oriented box.
-Eigen::AlignedBox3d cell_box(const SeedCell& c) {
+Eigen::AlignedBox3d cell_box(const CellBounds& c) {
   const Eigen::Vector3d reach = c.axes.transpose().cwiseAbs() * c.half_extent;
   return Eigen::AlignedBox3d(c.centre - reach, c.centre + reach);
 }
@@ -66,7 +66,7 @@ Eigen::Matrix3d tangent_frame(const SurfaceDerivatives& d) {
 
 namespace {
 
-// The cone test of SeedCell::may_hold_foot on q in the box's frame.
+// The cone test of CellBounds::may_hold_foot on q in the box's frame.
 bool in_cone_reach(const Eigen::Vector3d& local, const Eigen::Vector3d& half_extent, double cone_tan) {
   if (!(cone_tan >= 0)) return true;
   // A foot p in the box has q - p within the cone's angle alpha of +-axis
@@ -75,22 +75,20 @@ bool in_cone_reach(const Eigen::Vector3d& local, const Eigen::Vector3d& half_ext
   const double dx = std::max(std::abs(local.x()) - half_extent.x(), 0.0);
   const double dy = std::max(std::abs(local.y()) - half_extent.y(), 0.0);
   const double height = std::abs(local.z()) + half_extent.z();
-  const double sideways = std::sqrt(dx * dx + dy * dy);
-  return sideways <= cone_tan * height * (1 + 1e-12) + 1e-12 * (1 + height);
+  const double reach = cone_tan * height * (1 + 1e-12) + 1e-12 * (1 + height);
+  return dx * dx + dy * dy <= reach * reach;  // squared: no root on the search's path
 }
 
 }  // namespace
 
-bool SeedCell::may_hold_foot(const Eigen::Vector3d& q) const {
+bool CellBounds::may_hold_foot(const Eigen::Vector3d& q) const {
   return in_cone_reach(axes * (q - centre), half_extent, cone_tan);
 }
 
-double SeedCell::screen(const Eigen::Vector3d& q) const {
-  const Eigen::Vector3d d = q - centre;
-  const Eigen::Vector3d local = axes * d;
+double CellBounds::squared_screen(const Eigen::Vector3d& q) const {
+  const Eigen::Vector3d local = axes * (q - centre);
   if (!in_cone_reach(local, half_extent, cone_tan)) return std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d excess = (local.cwiseAbs() - half_extent).cwiseMax(0.0);
-  return std::max(d.norm() - radius, excess.norm());
+  return (local.cwiseAbs() - half_extent).cwiseMax(0.0).squaredNorm();
 }
 
 std::vector<double> seed_breaks(const std::vector<double>& knots, double lo, double hi,
@@ -126,12 +124,15 @@ SeedGrid::SeedGrid(const Part& part, const ClosestPointOptions& options) {
   build_tree(order, 0, static_cast<std::uint32_t>(order.size()));
   // Store cells in tree order so that a leaf's cells are contiguous.
   std::vector<SeedCell> sorted(cells_.size());
+  std::vector<CellBounds> sorted_bounds(cells_.size());
   std::vector<std::int32_t> new_index(cells_.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
     sorted[k] = cells_[order[k]];
+    sorted_bounds[k] = bounds_[order[k]];
     new_index[order[k]] = static_cast<std::int32_t>(k);
   }
   cells_ = std::move(sorted);
+  bounds_ = std::move(sorted_bounds);
   for (FaceCells& fc : faces_)
     for (std::int32_t& i : fc.index)
       if (i >= 0) i = new_index[i];
@@ -156,6 +157,7 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
       SeedCell cell;
+      CellBounds bounds;
       cell.face = static_cast<std::uint32_t>(face_index);
       cell.lo = {fc.breaks_u[i], fc.breaks_v[j]};
       cell.hi = {fc.breaks_u[i + 1], fc.breaks_v[j + 1]};
@@ -177,7 +179,7 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
         cell.cut_by_trim = cut;
       }
 
-      // Sub-samples: bounding sphere and the five seed samples.
+      // Sub-samples: the oriented box and the five seed samples.
       Eigen::Vector3d pts[kSub + 1][kSub + 1], normals[kSub + 1][kSub + 1];
       double max_uu = 0, max_uv = 0, max_vv = 0;
       double max_nu = 0, max_nv = 0;  // bounds on |dn/du|, |dn/dv|
@@ -202,21 +204,17 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
             max_nv = std::max(max_nv, (d.Suv.cross(d.Sv).norm() + d.Su.cross(d.Svv).norm()) / area);
           }
         }
-      cell.centre = box.center();
+      bounds.centre = box.center();
       const SurfaceDerivatives middle = s.evaluate(mid.x(), mid.y(), 1);
       cell.middle_su = middle.Su;
       cell.middle_sv = middle.Sv;
-      cell.axes = tangent_frame(middle);
-      double r = 0;
+      bounds.axes = tangent_frame(middle);
       Eigen::Vector3d extent = Eigen::Vector3d::Zero();
       for (auto& row : pts)
-        for (auto& p : row) {
-          r = std::max(r, (p - cell.centre).norm());
-          extent = extent.cwiseMax((cell.axes * (p - cell.centre)).cwiseAbs());
-        }
+        for (auto& p : row) extent = extent.cwiseMax((bounds.axes * (p - bounds.centre)).cwiseAbs());
       const double bulge =
           2.0 * (h.x() * h.x() * max_uu + 2 * h.x() * h.y() * max_uv + h.y() * h.y() * max_vv) / 8;
-      const double slack = bulge + 1e-12 * (1 + cell.centre.norm());
+      const double slack = bulge + 1e-12 * (1 + bounds.centre.norm());
       for (std::uint32_t k = 0; k < cell.segment_count; ++k) {
         TrimSegment& seg = segments_[cell.first_segment + k];
         const Eigen::Vector3d pa = s.point(seg.a.x(), seg.a.y()), pb = s.point(seg.b.x(), seg.b.y());
@@ -225,17 +223,16 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
         seg.centre = 0.5 * (pa + pb);
         seg.radius = 0.5 * (pb - pa).norm() + bow + 1e-12 * (1 + seg.centre.norm());
       }
-      cell.radius = r + slack;
-      cell.half_extent = extent.array() + slack;
+      bounds.half_extent = extent.array() + slack;
       const bool on_domain_edge = i == 0 || j == 0 || i == nu - 1 || j == nv - 1;
       if (regular && !on_domain_edge && !cell.cut_by_trim) {
         // The box's third axis is the middle normal: the cone's axis.
-        const Eigen::Vector3d axis = cell.axes.row(2).transpose();
+        const Eigen::Vector3d axis = bounds.axes.row(2).transpose();
         double widest = 0;
         for (auto& row : normals)
           for (auto& n : row) widest = std::max(widest, std::acos(std::clamp(n.dot(axis), -1.0, 1.0)));
         const double angle = widest + 2.0 * (h.x() * max_nu + h.y() * max_nv);
-        if (std::isfinite(angle) && angle < radians(80.0)) cell.cone_tan = std::tan(angle);
+        if (std::isfinite(angle) && angle < radians(80.0)) bounds.cone_tan = std::tan(angle);
       }
       const int corner[5][2] = {{0, 0}, {kSub, 0}, {0, kSub}, {kSub, kSub}, {kSub / 2, kSub / 2}};
       cell.sample_kept = 0;
@@ -244,8 +241,14 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
         cell.sample_point[k] = pts[corner[k][0]][corner[k][1]];
         if (!cell.cut_by_trim || trim.contains(cell.sample_uv[k])) cell.sample_kept |= 1u << k;
       }
+      for (int k : {4, 0, 1, 2, 3})  // the middle first: nearest to most of the cell
+        if (cell.sample_kept >> k & 1u) {
+          bounds.surface_point = cell.sample_point[k];
+          break;
+        }
       fc.index[static_cast<std::size_t>(i) * nv + j] = static_cast<std::int32_t>(cells_.size());
       cells_.push_back(cell);
+      bounds_.push_back(bounds);
     }
   }
   faces_.push_back(std::move(fc));
@@ -260,17 +263,17 @@ std::int32_t SeedGrid::build_tree(std::vector<std::uint32_t>& order, std::uint32
     SeedNode leaf;
     leaf.first = first;
     leaf.count = count;
-    for (auto it = begin; it != end; ++it) leaf.box.extend(cell_box(cells_[*it]));
+    for (auto it = begin; it != end; ++it) leaf.box.extend(cell_box(bounds_[*it]));
     nodes_[node] = leaf;
     return node;
   }
   Eigen::AlignedBox3d box;
-  for (auto it = begin; it != end; ++it) box.extend(cells_[*it].centre);
+  for (auto it = begin; it != end; ++it) box.extend(bounds_[*it].centre);
   int axis = 0;
   box.sizes().maxCoeff(&axis);
   const auto middle = begin + count / 2;
   std::nth_element(begin, middle, end, [&](std::uint32_t a, std::uint32_t b) {
-    return cells_[a].centre(axis) < cells_[b].centre(axis);
+    return bounds_[a].centre(axis) < bounds_[b].centre(axis);
   });
   const std::int32_t left = build_tree(order, first, count / 2);
   const std::int32_t right = build_tree(order, first + count / 2, count - count / 2);

@@ -1,21 +1,23 @@
 #pragma once
 // Seed cells for the global closest-point search (closest_point.hpp): every
-// face of a part cut into small (u,v) boxes, each with a bounding sphere and
-// an oriented bounding box of its piece of surface, and a binary tree of
+// face of a part cut into small (u,v) boxes, each with an oriented bounding
+// box and a cone of normals of its piece of surface, and a binary tree of
 // axis-aligned boxes over all cells.
 //
 // Cells follow the knot spans (ClosestPointOptions::cells_per_span per span
 // and direction, at least min_cells and at most max_cells per direction), so
 // a cell is polynomial and small against the surface's features.
 //
-// Bounding volumes are conservative: spheres and oriented boxes hold a 5 x 5
-// sub-sample of the cell grown by a bound on how far the surface can bulge
-// between sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| + hv^2 |Svv|) / 8 with the
-// sampled maxima doubled. The distance from q to a cell's box (or sphere) is
-// a lower bound on the distance to its surface; that is what lets the search
-// skip cells safely.
+// Bounding volumes are conservative: oriented boxes hold a 5 x 5 sub-sample
+// of the cell grown by a bound on how far the surface can bulge between
+// sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| + hv^2 |Svv|) / 8 with the
+// sampled maxima doubled. The distance from q to a cell's box is a lower
+// bound on the distance to its surface; that is what lets the search skip
+// cells safely. (A bounding sphere was kept too until it was measured never
+// to prune a cell the box had not: the box about the middle tangent frame is
+// the tighter of the two.)
 //
-// Cones of normals (SeedCell::may_hold_foot) are bounded the same way: the
+// Cones of normals (CellBounds::may_hold_foot) are bounded the same way: the
 // angle between the middle normal and the normals at the sub-samples, plus
 // the most the normal can turn between sub-samples, |dn/du| <= (|Suu x Sv| +
 // |Su x Suv|) / |Su x Sv| (and likewise along v) with the sampled maxima
@@ -26,9 +28,9 @@
 // the trim boundary there.
 #include <Eigen/Core>
 #include <cstdint>
-#include <vector>
-
+#include <limits>
 #include <optional>
+#include <vector>
 
 #include "geometry/bezier_patch.hpp"
 #include "geometry/closest_point.hpp"
@@ -36,16 +38,10 @@
 
 namespace furrow {
 
+// The cell itself: where it lies in (u,v), its seeds and its trim.
 struct SeedCell {
   std::uint32_t face = 0;
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // (u,v) box
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();                            // bounding sphere
-  double radius = 0;
-  // Oriented bounding box about `centre`: rows of `axes` are the unit
-  // tangents and normal at the middle, `half_extent` the half sizes along
-  // them. Much tighter than the sphere across a nearly flat cell.
-  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d half_extent = Eigen::Vector3d::Zero();
   // Tangent plane at the middle sample: seeds Newton at q's projection on it.
   Eigen::Vector3d middle_su = Eigen::Vector3d::Zero(), middle_sv = Eigen::Vector3d::Zero();
   // Corners (lo, (hi.u, lo.v), (lo.u, hi.v), hi) and the middle, in (u,v) and 3-D.
@@ -54,25 +50,41 @@ struct SeedCell {
   std::uint8_t sample_kept = 0x1f;  // bit k: sample k is kept by the trim
   bool cut_by_trim = false;
   std::uint32_t first_segment = 0, segment_count = 0;  // into SeedGrid::trim_segments()
+};
 
-  // Cone of normals about the oriented box's third axis (the middle
-  // normal): every unit normal of the cell makes an angle of at most
-  // atan(cone_tan) with +-that axis. Negative when the cell is never pruned
-  // by it: it touches the face's domain edge or a trim loop (feet there need
-  // not be orthogonal), has a degenerate normal, or its normals turn by 80
-  // degrees or more.
+// What the search reads of every cell it walks past, kept apart from the
+// SeedCell it bounds (SeedGrid::bounds() runs parallel to cells()): a query
+// far from the surface screens some twenty cells and solves two, so the
+// screening data is packed into three cache lines, not spread over seven.
+struct CellBounds {
+  // Oriented bounding box: rows of `axes` are the unit tangents and normal
+  // at the middle, `half_extent` the half sizes along them, about `centre`.
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d half_extent = Eigen::Vector3d::Zero();
+  // A point of the cell's surface kept by the trim (the middle sample when
+  // it is kept): its distance from q bounds the answer from above. Infinite
+  // when no sample of the cell is kept.
+  Eigen::Vector3d surface_point = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  // Cone of normals about the box's third axis (the middle normal): every
+  // unit normal of the cell makes an angle of at most atan(cone_tan) with
+  // +-that axis. Negative when the cell is never pruned by it: it touches
+  // the face's domain edge or a trim loop (feet there need not be
+  // orthogonal), has a degenerate normal, or its normals turn by 80 degrees
+  // or more.
   double cone_tan = -1;
 
   // False when no point of the cell can be an orthogonal foot of q: q - S
   // would have to lie along a normal, but q is too far sideways of the
-  // oriented box for any direction in the double cone of normals. A global minimum
-  // inside the face's domain is such a foot (the distance is stationary
-  // there), so a cell for which this is false cannot hold it.
+  // oriented box for any direction in the double cone of normals. A global
+  // minimum inside the face's domain is such a foot (the distance is
+  // stationary there), so a cell for which this is false cannot hold it.
   bool may_hold_foot(const Eigen::Vector3d& q) const;
-  // A lower bound on the distance from q to any surface point of the cell
-  // (from the sphere and the oriented box), or infinity when the cell cannot
-  // hold an orthogonal foot of q: both tests share q in the box's frame.
-  double screen(const Eigen::Vector3d& q) const;
+  // A lower bound on the squared distance from q to any surface point of
+  // the cell (to the oriented box), or infinity when the cell cannot hold
+  // an orthogonal foot of q: both tests share q in the box's frame.
+  // Squared because the search compares it with squared distances only.
+  double squared_screen(const Eigen::Vector3d& q) const;
 };
 
 // A trim loop segment clipped to one cell, in (u,v), with a sphere holding
@@ -102,6 +114,7 @@ class SeedGrid {
   SeedGrid(const Part& part, const ClosestPointOptions& options);
 
   const std::vector<SeedCell>& cells() const { return cells_; }
+  const std::vector<CellBounds>& bounds() const { return bounds_; }  // parallel to cells()
   const std::vector<SeedNode>& nodes() const { return nodes_; }  // nodes_[0] is the root
   const std::vector<TrimSegment>& trim_segments() const { return segments_; }
   // The surface over cell k in Bezier form (one polynomial, cheap to
@@ -123,6 +136,7 @@ class SeedGrid {
                           std::uint32_t count);
 
   std::vector<SeedCell> cells_;
+  std::vector<CellBounds> bounds_;
   std::vector<SeedNode> nodes_;
   std::vector<TrimSegment> segments_;
   std::vector<FaceCells> faces_;

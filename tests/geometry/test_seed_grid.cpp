@@ -27,8 +27,18 @@ struct Screened {
 void check_cells_keep_their_feet(const Part& part, std::mt19937& rng, Screened& count) {
   const SeedGrid grid(part, ClosestPointOptions{});
   std::uniform_real_distribution<double> unit(0.0, 1.0), height(-60.0, 60.0);
-  for (const SeedCell& cell : grid.cells()) {
+  for (std::size_t index = 0; index < grid.cells().size(); ++index) {
+    const SeedCell& cell = grid.cells()[index];
+    const CellBounds& bounds = grid.bounds()[index];
     const Face& face = part.faces[cell.face];
+    // The upper-bound sample is a kept surface point of this cell.
+    bool sample_found = false;
+    for (int k = 0; k < 5; ++k)
+      if (cell.sample_kept >> k & 1u)
+        sample_found = sample_found ||
+                       (face.surface().point(cell.sample_uv[k].x(), cell.sample_uv[k].y()) - bounds.surface_point)
+                               .norm() < 1e-12 * (1 + bounds.surface_point.norm());
+    CHECK(sample_found == (cell.sample_kept != 0));
     for (int k = 0; k < 6; ++k) {
       const Eigen::Vector2d uv = cell.lo + Eigen::Vector2d(unit(rng), unit(rng)).cwiseProduct(cell.hi - cell.lo);
       const DifferentialGeometry g = face.geometry(uv.x(), uv.y());
@@ -37,12 +47,15 @@ void check_cells_keep_their_feet(const Part& part, std::mt19937& rng, Screened& 
       const Eigen::Vector3d q = g.point + t * g.normal;
       CAPTURE(uv.transpose());
       CAPTURE(t);
-      CHECK(cell.may_hold_foot(q));
-      CHECK(cell.screen(q) <= std::abs(t) * (1 + 1e-12) + 1e-9);
+      // The oriented box holds the cell's surface.
+      CHECK(((bounds.axes * (g.point - bounds.centre)).cwiseAbs() - bounds.half_extent).maxCoeff() <= 0);
+      CHECK(bounds.may_hold_foot(q));
+      const double reach = std::abs(t) * (1 + 1e-12) + 1e-9;
+      CHECK(bounds.squared_screen(q) <= reach * reach);
       ++count.tested;
       // The same q is screened out of some other cells: the test has teeth.
-      for (const SeedCell& other : grid.cells())
-        if (&other != &cell && !other.may_hold_foot(q)) {
+      for (const CellBounds& other : grid.bounds())
+        if (&other != &bounds && !other.may_hold_foot(q)) {
           ++count.pruned_elsewhere;
           break;
         }
