@@ -1,11 +1,11 @@
 #pragma once
-// A figure of a partition for people: one panel per face showing its (u,v)
-// domain, u to the right and v up, each cell coloured by its region's class
-// (convex orange, concave blue, saddle green, planar sand; trimmed light
-// grey, degenerate dark grey), region borders in black and every region's id
-// at its interior point; a legend names the colours. Panels are drawn with
-// the face's aspect on the surface (face_extent), not the raw parameter
-// square, so the picture looks like the part seen along its normal.
+// A figure of a partition for people: the part in four views (top, front,
+// right side, isometric; render/part_views.hpp), every visible surface
+// point coloured by its region's class (convex orange, concave blue, saddle
+// green, planar sand; a cell the partition left out light grey, a
+// degenerate cell dark grey), shaded, region borders in black, face edges in grey and every
+// region's id ("R3") where its interior point is seen; a legend names the
+// colours. One picture whatever the number of faces.
 //
 // PNG bytes come from render/png.hpp; writing goes through
 // write_file_atomically, so a failed run leaves no partial image.

@@ -1,13 +1,13 @@
 #pragma once
-// The report's region map: the curvature partition (regions.json) seen from
-// above (x, y in mm, looking down -z), each region filled with its class
-// colour (colour_scale.hpp: the partition's own colours), region borders in
-// black and every region's id ("R3") at its interior point, with a legend
-// of the classes present. Surfaces overlapping in the view are painted
-// bottom to top, so what a vertical probe would see is on top.
+// The report's region map: the curvature partition (regions.json) on the
+// part in four views (top, front, right side, isometric; hidden surfaces
+// removed, render/part_views.hpp), each region filled with its class colour
+// (the partition's own colours) and shaded, region borders in black, face
+// edges in grey, every region's id ("R3") where its interior point is seen,
+// and a legend of the classes present.
 //
-// Drawn from the map's data (region_at, border loops), not from the
-// partition's cell arrays, so `furrow report` can draw it from the files.
+// Drawn from the map's data (region_at), not from the partition's cell
+// arrays, so `furrow report` can draw it from the files.
 #include <string>
 #include <vector>
 

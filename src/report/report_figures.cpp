@@ -152,9 +152,10 @@ std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, con
   if (regions)
     jobs.push_back([&part, regions] {
       return ReportFigure{"figures/region_map.png", "regions", "Curvature regions",
-                          "The partition the plan and the statistics per region use, seen from above: convex "
-                          "orange, concave blue, saddle green, planar sand.",
-                          region_map_png("Curvature regions, top view", part, *regions), "", ""};
+                          "The partition the plan and the statistics per region use, on the part seen from the "
+                          "top, the front, the right and an isometric corner (hidden surfaces removed): convex "
+                          "orange, concave blue, saddle green, planar sand; region borders black, face edges grey.",
+                          region_map_png("Curvature regions", part, *regions), "", ""};
     });
   add_deviation_maps(doc, part, regions, jobs);
   if (interactive) jobs.push_back([&] { return part_view_3d_figure(doc, part, prediction); });

@@ -1,10 +1,12 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/part_file.hpp"
 #include "partition/partition.hpp"
 #include "render/colour_scale.hpp"
+#include "render/part_views.hpp"
 #include "report/part_outlines.hpp"
 #include "report/region_map_figure.hpp"
 
@@ -12,12 +14,17 @@ using namespace furrow;
 
 namespace {
 
+// Pixels painted with `c` under some light: the figure shades a colour by
+// one factor in [0.45, 1] on all three channels (PartViewsFigure::shaded).
 int pixels_of(const cv::Mat& img, const Rgb& c) {
+  std::vector<Rgb> shades;
+  for (int k = 0; k <= 1000; ++k) shades.push_back(PartViewsFigure::shaded(c, static_cast<float>(k / 1000.0)));
+  std::sort(shades.begin(), shades.end());
   int n = 0;
   for (int y = 0; y < img.rows; ++y)
     for (int x = 0; x < img.cols; ++x) {
       const cv::Vec3b p = img.at<cv::Vec3b>(y, x);
-      n += p[2] == c[0] && p[1] == c[1] && p[0] == c[2];
+      n += std::binary_search(shades.begin(), shades.end(), Rgb{p[2], p[1], p[0]});
     }
   return n;
 }
