@@ -43,6 +43,15 @@ void print_summary(std::ostream& out, const std::string& path, const PartitionRe
       out << line;
     }
   }
+  // Regions merged across faces (docs/partition.md "Regions across faces").
+  for (const RegionGroup& g : map.groups) {
+    if (g.regions.size() < 2) continue;
+    std::string ids;
+    for (int id : g.regions) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+    std::snprintf(line, sizeof line, "surface S%d  %-8s %12.4f mm^2 on %zu faces: regions ", g.id,
+                  to_string(g.curvature_class), g.area, g.faces.size());
+    out << line << ids << "\n";
+  }
 }
 
 int run_partition(Args& args) {
@@ -108,11 +117,13 @@ const Command kPartitionCommand = {
     "sample as convex, concave, saddle or planar (normal out of the material:\n"
     "convex bulges toward the tool), groups equal neighbours into regions, merges\n"
     "regions smaller than the minimum area into the neighbour sharing the longest\n"
-    "border and writes the regions with their areas, curvature statistics and\n"
-    "borders (uv and xyz) to REGIONS.json (docs/formats.md, docs/partition.md).\n"
+    "border, groups regions of one class on faces that meet tangentially (a fillet\n"
+    "chain is one surface) and writes the regions with their areas, curvature\n"
+    "statistics, borders (uv and xyz) and groups to REGIONS.json (docs/formats.md,\n"
+    "docs/partition.md).\n"
     "\n"
     "  --out FILE       regions file to write (.json, required)\n"
-    "  --image FILE     also draw the regions per face (.png)\n"
+    "  --image FILE     also draw the regions on the part in four views (.png)\n"
     "  --grid NUxNV     cells per face along u and v (or N for NxN)\n"
     "  --spacing MM     cell size on the surface instead (default: the largest face\n"
     "                   gets 400 cells along its longest side)\n"

@@ -125,8 +125,6 @@ Part read_part(const std::string& path) {
   return read_part_json(path);
 }
 
-namespace {
-
 json analytic_json(const AnalyticSurface& a) {
   json j;
   j["type"] = to_string(a.type);
@@ -139,8 +137,6 @@ json analytic_json(const AnalyticSurface& a) {
   j["deviation_mm"] = jf::finite(a.deviation, "deviation");
   return j;
 }
-
-}  // namespace
 
 std::string part_to_json_text(const Part& part) {
   json jfaces = json::array();

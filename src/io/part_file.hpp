@@ -10,6 +10,7 @@
 // faces[1].knots_v: expected 9 knots (5 control points + degree 3 + 1), got 8".
 #include <string>
 
+#include "base/json_fields.hpp"
 #include "geometry/part.hpp"
 
 namespace furrow {
@@ -25,6 +26,10 @@ Part parse_part_json(const std::string& text, const std::string& name);
 
 std::string part_to_json_text(const Part& part);
 void write_part_json(const Part& part, const std::string& path);
+
+// A face's "analytic" member as the part file spells it (docs/formats.md
+// "Analytic surfaces"); `furrow info --json` and report.json use the same.
+json_fields::json analytic_json(const AnalyticSurface& a);
 
 // Conversion factor from a units name to millimetres ("mm" -> 1, "inch" ->
 // 25.4); throws InputError naming `where` for anything else.

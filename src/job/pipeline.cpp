@@ -309,6 +309,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     // is printed in the report rendered right after.
     const Clock::time_point report_start = Clock::now();
     check_comparison_faces(doc, part);
+    context.face_surfaces = face_surfaces(part, doc);
     const std::vector<ReportFigure> figures =
         make_report_figures(doc, part, &map, job.compare_with_prediction ? &prediction : nullptr);
     context.stages = result.stages;

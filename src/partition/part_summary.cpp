@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
+#include "io/part_file.hpp"
 #include "base/numbers.hpp"
 #include "partition/curvature_field.hpp"
 #include "partition/curvature_tolerance.hpp"
@@ -124,18 +125,7 @@ std::string part_summary_json(const PartSummary& s) {
       jf["k1"] = range_json(f.k1);
       jf["k2"] = range_json(f.k2);
     }
-    if (f.analytic) {
-      const AnalyticSurface& a = *f.analytic;
-      json ja;
-      ja["type"] = to_string(a.type);
-      ja["origin"] = vector_json(a.origin);
-      ja["axis"] = vector_json(a.axis);
-      if (a.radius > 0) ja["radius"] = finite(a.radius, "radius");
-      if (a.minor_radius > 0) ja["minor_radius"] = finite(a.minor_radius, "minor radius");
-      if (a.half_angle > 0) ja["half_angle_deg"] = finite(degrees(a.half_angle), "half angle");
-      ja["deviation_mm"] = finite(a.deviation, "deviation");
-      jf["analytic"] = std::move(ja);
-    }
+    if (f.analytic) jf["analytic"] = analytic_json(*f.analytic);
     jf["eps"] = finite(f.eps, "eps");
     jf["classes"] = class_json(f.class_area, f.area);
     faces.push_back(std::move(jf));

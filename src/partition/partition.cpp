@@ -1,5 +1,7 @@
 #include "partition/partition.hpp"
 
+#include "partition/region_groups.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -143,6 +145,9 @@ PartitionResult partition_part(const Part& part, const PartitionOptions& options
   // regions file without regions would only move the failure downstream.
   if (result.map.regions.empty())
     throw InputError("the part has no face of positive size to sample");
+  const Clock::time_point t2 = Clock::now();
+  group_regions_across_faces(part, result);
+  result.timing.region_seconds += seconds_since(t2);
   return result;
 }
 

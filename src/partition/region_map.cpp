@@ -1,5 +1,7 @@
 #include "partition/region_map.hpp"
 
+#include <algorithm>
+
 #include "base/error.hpp"
 #include "partition/part_fingerprint.hpp"
 
@@ -11,6 +13,21 @@ void Region::set_border(std::vector<BorderLoop> loops) {
   uv.reserve(border.size());
   for (const BorderLoop& l : border) uv.push_back(l.uv);
   uv_outline = Trim(std::move(uv), "region " + std::to_string(id) + " border");
+}
+
+void RegionMap::collect_groups() {
+  int count = 0;
+  for (const Region& r : regions) count = std::max(count, r.group + 1);
+  groups.assign(static_cast<std::size_t>(count), RegionGroup{});
+  for (const Region& r : regions) {
+    RegionGroup& g = groups[static_cast<std::size_t>(r.group)];
+    g.id = r.group;
+    g.curvature_class = r.curvature_class;
+    g.area += r.area;
+    g.regions.push_back(r.id);
+    if (std::find(g.faces.begin(), g.faces.end(), r.face) == g.faces.end()) g.faces.push_back(r.face);
+  }
+  for (RegionGroup& g : groups) std::sort(g.faces.begin(), g.faces.end());
 }
 
 std::optional<int> RegionMap::region_at(int face, double u, double v) const {

@@ -57,9 +57,21 @@ struct Region {
   ValueStats K, H, k1, k2;
   std::vector<BorderLoop> border;  // outer loops first, then holes
   std::vector<RegionNeighbour> neighbours;  // by id
+  int group = -1;  // RegionMap::groups: the surface it is part of across faces (-1: not grouped)
   Trim uv_outline;  // even-odd set of the border's uv loops (set with set_border)
 
   void set_border(std::vector<BorderLoop> loops);
+};
+
+// Regions of one class on several faces that meet tangentially
+// (partition/region_groups.hpp): one surface to a metrologist, a fillet
+// chain for instance. A region that joins none is a group of its own.
+struct RegionGroup {
+  int id = 0;
+  CurvatureClass curvature_class = CurvatureClass::planar;
+  double area = 0;           // sum of its regions' areas [mm^2]
+  std::vector<int> regions;  // ids, ascending
+  std::vector<int> faces;    // face indices, ascending, distinct
 };
 
 struct RegionFace {
@@ -82,6 +94,11 @@ struct RegionMap {
   std::string part_fingerprint;
   std::vector<RegionFace> faces;
   std::vector<Region> regions;  // regions[k].id == k
+  std::vector<RegionGroup> groups;  // groups[k].id == k; every region in exactly one
+
+  // Builds `groups` from every region's `group` (ids 0..n-1, each used).
+  // Precondition: the ids are that.
+  void collect_groups();
 
   // The region holding the surface point (u, v) of face `face`, or nullopt
   // when the point is outside every region (trimmed, degenerate, outside the

@@ -53,7 +53,7 @@ json face_json(const RegionFace& f) {
   return j;
 }
 
-json region_json(const Region& r) {
+json region_json(const Region& r, int group) {
   json j;
   j["id"] = r.id;
   j["face"] = r.face;
@@ -62,6 +62,7 @@ json region_json(const Region& r) {
   j["absorbed_area_mm2"] = jf::finite(r.absorbed_area, "absorbed area");
   j["cells"] = r.cells;
   j["merged_components"] = r.merged_components;
+  j["group"] = group;
   j["uv_box"] = box_json(r.uv_box);
   j["xyz_box"] = box_json(r.xyz_box);
   j["centroid"] = jf::vector_json(r.centroid);
@@ -189,6 +190,7 @@ Region parse_region(const json& j, const std::string& where) {
   r.absorbed_area = o.non_negative("absorbed_area_mm2");
   r.cells = o.integer("cells", 1);
   r.merged_components = o.integer("merged_components", 1);
+  r.group = o.has("group") ? o.integer("group", 0) : r.id;  // files before groups: each region alone
   r.uv_box = box2_at(o, "uv_box");
   r.xyz_box = box3_at(o, "xyz_box");
   r.centroid = o.vector3("centroid");
@@ -247,6 +249,28 @@ void check_references(const RegionMap& map, const std::string& root) {
   }
 }
 
+// Group ids run 0..n-1, each used, and a group has one class: the
+// consumers index groups by id and report a group's class.
+void check_groups(const RegionMap& map, const std::string& root) {
+  const int count = static_cast<int>(map.regions.size());
+  std::vector<int> class_of(map.regions.size(), -1);
+  int groups = 0;
+  for (const Region& r : map.regions) {
+    const std::string where = jf::child(jf::child(root, "regions"), static_cast<std::size_t>(r.id)) + ".group";
+    if (r.group < 0 || r.group >= count)
+      throw InputError(where + ": " + std::to_string(r.group) + " is not a group id (0 to " + std::to_string(count - 1) + ")");
+    int& c = class_of[static_cast<std::size_t>(r.group)];
+    if (c >= 0 && c != static_cast<int>(r.curvature_class))
+      throw InputError(where + ": group " + std::to_string(r.group) + " holds regions of different classes");
+    c = static_cast<int>(r.curvature_class);
+    groups = std::max(groups, r.group + 1);
+  }
+  for (int g = 0; g < groups; ++g)
+    if (class_of[static_cast<std::size_t>(g)] < 0)
+      throw InputError(jf::child(root, "regions") + ": no region is in group " + std::to_string(g) +
+                       " (group ids run 0, 1, 2, ...)");
+}
+
 }  // namespace
 
 std::string regions_to_json_text(const RegionMap& map) {
@@ -260,8 +284,24 @@ std::string regions_to_json_text(const RegionMap& map) {
   for (const RegionFace& f : map.faces) faces.push_back(face_json(f));
   doc["faces"] = std::move(faces);
   json regions = json::array();
-  for (const Region& r : map.regions) regions.push_back(region_json(r));
+  // A map that was never grouped (built by hand, not by partition_part)
+  // is written with every region a group of its own.
+  const bool alone = map.groups.empty();
+  for (const Region& r : map.regions) regions.push_back(region_json(r, alone ? r.id : r.group));
   doc["regions"] = std::move(regions);
+  json groups = json::array();
+  auto group_json = [](const RegionGroup& g) {
+    return json{{"id", g.id},
+                {"class", to_string(g.curvature_class)},
+                {"area_mm2", jf::finite(g.area, "group area")},
+                {"regions", g.regions},
+                {"faces", g.faces}};
+  };
+  if (alone)
+    for (const Region& r : map.regions) groups.push_back(group_json({r.id, r.curvature_class, r.area, {r.id}, {r.face}}));
+  else
+    for (const RegionGroup& g : map.groups) groups.push_back(group_json(g));
+  doc["groups"] = std::move(groups);
   return jf::to_text(doc);
 }
 
@@ -294,6 +334,23 @@ RegionMap parse_regions_json(const std::string& text, const std::string& name) {
   for (std::size_t r = 0; r < regions.size(); ++r)
     map.regions.push_back(parse_region(regions[r], jf::child(root.path("regions"), r)));
   check_references(map, root.where());
+  check_groups(map, root.where());
+  map.collect_groups();
+  if (root.has("groups")) {
+    // The list must say what the regions say (it is derived from them).
+    const json& groups = root.array("groups");
+    if (groups.size() != map.groups.size())
+      throw InputError(root.path("groups") + ": " + std::to_string(groups.size()) + " groups, but the regions name " +
+                       std::to_string(map.groups.size()));
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const JsonCursor o(groups[g], jf::child(root.path("groups"), g));
+      std::vector<int> members;
+      const json& ids = o.array("regions");
+      for (std::size_t k = 0; k < ids.size(); ++k) members.push_back(jf::integer(ids[k], jf::child(o.path("regions"), k)));
+      if (o.integer("id", 0) != static_cast<int>(g) || members != map.groups[g].regions)
+        throw InputError(o.where() + ": its id and regions disagree with the regions' \"group\" members");
+    }
+  }
   return map;
 }
 

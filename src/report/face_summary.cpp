@@ -53,7 +53,8 @@ std::vector<FaceDeviationSummary> face_summaries(const ComparisonDocument& doc) 
   return out;
 }
 
-std::string face_summary_html(const ComparisonDocument& doc) {
+std::string face_summary_html(const ComparisonDocument& doc,
+                              const std::vector<std::optional<AnalyticSurface>>& surfaces) {
   const std::vector<FaceDeviationSummary> faces = face_summaries(doc);
   std::size_t bad = 0;
   for (const FaceDeviationSummary& f : faces) bad += f.out_of_tolerance > 0;
@@ -76,11 +77,14 @@ std::string face_summary_html(const ComparisonDocument& doc) {
                  f.mean_deviation ? um(*f.mean_deviation) : dash,
                  f.evaluated ? um(f.worst_excess).substr(f.worst_excess > 0 ? 1 : 0) : dash,
                  f.worst_point.empty() ? dash : html::escape(f.worst_point)};
+    const bool known = f.face_index >= 0 && static_cast<std::size_t>(f.face_index) < surfaces.size();
+    const std::optional<AnalyticSurface>* surface = known ? &surfaces[static_cast<std::size_t>(f.face_index)] : nullptr;
+    row.cells.push_back(!surface ? dash : *surface ? html::escape(describe(**surface)) : "free-form");
     if (f.out_of_tolerance > 0) row.css_class = "out";
     rows.push_back(std::move(row));
   }
   out += html::table({"Face", "Index", "Points", "Evaluated", "Out", "Min [um]", "Max [um]", "Mean [um]",
-                      "Beyond zone [um]", "Worst point"},
+                      "Beyond zone [um]", "Worst point", "Surface"},
                      rows, "faces");
   return out + "</section>\n";
 }

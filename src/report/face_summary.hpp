@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/analytic_surface.hpp"
 #include "inspection/comparison_document.hpp"
 
 namespace furrow {
@@ -32,7 +33,9 @@ struct FaceDeviationSummary {
 std::vector<FaceDeviationSummary> face_summaries(const ComparisonDocument& doc);
 
 // <section id="faces"> with the table; the rows of faces with points out of
-// tolerance are red.
-std::string face_summary_html(const ComparisonDocument& doc);
+// tolerance are red. `surfaces` (indexed like the part's faces, may be
+// empty) gives each face's elementary surface for the "Surface" column.
+std::string face_summary_html(const ComparisonDocument& doc,
+                              const std::vector<std::optional<AnalyticSurface>>& surfaces = {});
 
 }  // namespace furrow

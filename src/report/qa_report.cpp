@@ -61,10 +61,23 @@ std::string utc_timestamp() {
   return buf;
 }
 
+std::vector<std::optional<AnalyticSurface>> face_surfaces(const Part& part, const ComparisonDocument& doc) {
+  std::vector<char> measured(part.faces.size(), 0);
+  for (const ComparisonDocument::Point& p : doc.points)
+    if (p.face_index >= 0 && static_cast<std::size_t>(p.face_index) < part.faces.size())
+      measured[static_cast<std::size_t>(p.face_index)] = 1;
+  std::vector<std::optional<AnalyticSurface>> out(part.faces.size());
+  for (std::size_t f = 0; f < part.faces.size(); ++f)
+    if (measured[f]) out[f] = part.faces[f].analytic() ? part.faces[f].analytic() : recognise_analytic(part.faces[f].surface());
+  return out;
+}
+
 std::vector<FolderFile> make_report(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
                                     const ReportContext& context, const Prediction* prediction) {
   check_comparison_faces(doc, part);
-  return render_report(doc, regions, make_report_figures(doc, part, regions, prediction), context);
+  ReportContext with_surfaces = context;
+  if (with_surfaces.face_surfaces.empty()) with_surfaces.face_surfaces = face_surfaces(part, doc);
+  return render_report(doc, regions, make_report_figures(doc, part, regions, prediction), with_surfaces);
 }
 
 std::vector<FolderFile> render_report(const ComparisonDocument& doc, const RegionMap* regions,

@@ -57,7 +57,17 @@ struct ReportContext {
   // none: the report says that no record was given. Its file, when it came
   // from one, belongs in `inputs` (role "record").
   std::optional<InspectionRecord> record;
+  // What each face of the part exactly is, indexed like Part::faces (from
+  // face_surfaces below); unset for a free-form face. Empty: not known.
+  std::vector<std::optional<AnalyticSurface>> face_surfaces;
 };
+
+// The elementary surface (plane, cylinder, cone, sphere, torus) of every
+// face that carries measured points: the import's metadata where the part
+// has it, else recognised from the NURBS (geometry/analytic_surface.hpp);
+// unset for the other faces and for free-form ones. The metrologist reads a
+// bore's radius and axis next to its deviations.
+std::vector<std::optional<AnalyticSurface>> face_surfaces(const Part& part, const ComparisonDocument& doc);
 
 // "2024-05-01T12:34:56Z", now.
 std::string utc_timestamp();

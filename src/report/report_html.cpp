@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "report/face_summary.hpp"
+#include "report/merged_surfaces.hpp"
 #include "report/html.hpp"
 #include "report/inspection_record_html.hpp"
 #include "report/point_table_html.hpp"
@@ -227,6 +228,30 @@ std::string regions_section(const ComparisonDocument& doc, const RegionMap* regi
   out += html::table({"Region", "Face", "Class", "Area [mm2]", "Points", "Mean [um]", "Sigma [um]", "Min [um]",
                       "Max [um]", "Out", "Residual RMS [um]", "Prediction"},
                      rows);
+  const std::vector<MergedSurface> merged = merged_surfaces(doc, regions);
+  if (!merged.empty()) {
+    out += "<h3>Surfaces across faces</h3>\n<p>Regions of one class on faces that meet tangentially (a fillet "
+           "chain, a blend split into patches) are one surface; their points together:</p>\n";
+    std::vector<TableRow> surfaces;
+    for (const MergedSurface& m : merged) {
+      std::string ids, faces;
+      for (int id : m.group->regions) ids += (ids.empty() ? "R" : ", R") + std::to_string(id);
+      for (int f : m.group->faces)
+        faces += (faces.empty() ? "" : ", ") + escape(regions->faces[static_cast<std::size_t>(f)].name);
+      TableRow row;
+      row.cells = {"S" + std::to_string(m.group->id), to_string(m.group->curvature_class), ids, faces,
+                   fixed(m.group->area, 1), count(m.deviations.count),
+                   m.deviations.count ? um(m.deviations.mean) : "&ndash;",
+                   m.deviations.count ? fixed(m.deviations.sigma * 1000, 1) : "&ndash;",
+                   m.deviations.count ? um(m.deviations.min) : "&ndash;",
+                   m.deviations.count ? um(m.deviations.max) : "&ndash;", count(m.out_of_tolerance)};
+      if (m.out_of_tolerance > 0) row.css_class = "out";
+      surfaces.push_back(std::move(row));
+    }
+    out += html::table({"Surface", "Class", "Regions", "Faces", "Area [mm2]", "Points", "Mean [um]", "Sigma [um]",
+                        "Min [um]", "Max [um]", "Out"},
+                       surfaces);
+  }
   return out + figures_of(figures, "regions") + "</section>\n";
 }
 
@@ -394,7 +419,7 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += figures_of(figures, "view3d");  // part_view_3d.hpp: a whole section, when present
   out += prediction_section(doc, figures);
   out += gouges_section(doc, figures);
-  out += face_summary_html(doc) + point_table_html(doc);
+  out += face_summary_html(doc, context.face_surfaces) + point_table_html(doc);
   out += traceability_section(doc, context) + sign_off_html(context.record);
   return out + kImageCheck + "</body>\n</html>\n";
 }

@@ -6,7 +6,9 @@
 #include "inspection/verification_json.hpp"
 #include "base/json_fields.hpp"
 #include "base/json_text.hpp"
+#include "io/part_file.hpp"
 #include "report/face_summary.hpp"
+#include "report/merged_surfaces.hpp"
 
 namespace furrow {
 
@@ -80,9 +82,13 @@ json record_json(const std::optional<InspectionRecord>& record) {
   return j;
 }
 
-json faces_json(const ComparisonDocument& doc) {
+json faces_json(const ComparisonDocument& doc, const std::vector<std::optional<AnalyticSurface>>& surfaces) {
   json out = json::array();
-  for (const FaceDeviationSummary& f : face_summaries(doc))
+  for (const FaceDeviationSummary& f : face_summaries(doc)) {
+    const std::optional<AnalyticSurface>* surface =
+        f.face_index >= 0 && static_cast<std::size_t>(f.face_index) < surfaces.size()
+            ? &surfaces[static_cast<std::size_t>(f.face_index)]
+            : nullptr;
     out.push_back({{"face", f.face},
                    {"face_index", f.face_index},
                    {"points", f.points},
@@ -92,7 +98,9 @@ json faces_json(const ComparisonDocument& doc) {
                    {"max", opt(f.max_deviation, "max")},
                    {"mean", opt(f.mean_deviation, "mean")},
                    {"beyond_zone", num(f.worst_excess, "beyond_zone")},
-                   {"worst_point", f.worst_point.empty() ? json(nullptr) : json(f.worst_point)}});
+                   {"worst_point", f.worst_point.empty() ? json(nullptr) : json(f.worst_point)},
+                   {"surface", surface && *surface ? analytic_json(**surface) : json(nullptr)}});
+  }
   return out;
 }
 
@@ -147,6 +155,24 @@ json regions_json(const ComparisonDocument& doc, const RegionMap* regions) {
     j["face"] = known ? json(regions->faces[static_cast<std::size_t>(known->face)].name) : json(nullptr);
     j["class"] = known ? json(to_string(known->curvature_class)) : json(nullptr);
     j["area"] = known ? num(known->area, "area") : json(nullptr);
+    j["group"] = known && known->group >= 0 ? json(known->group) : json(nullptr);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+json surfaces_json(const ComparisonDocument& doc, const RegionMap* regions) {
+  json out = json::array();
+  for (const MergedSurface& m : merged_surfaces(doc, regions)) {
+    json j = cj::statistics_json(m.deviations);
+    j["group"] = m.group->id;
+    j["class"] = to_string(m.group->curvature_class);
+    j["area"] = num(m.group->area, "area");
+    j["regions"] = m.group->regions;
+    json faces = json::array();
+    for (int f : m.group->faces) faces.push_back(regions->faces[static_cast<std::size_t>(f)].name);
+    j["faces"] = std::move(faces);
+    j["out_of_tolerance"] = m.out_of_tolerance;
     out.push_back(std::move(j));
   }
   return out;
@@ -245,6 +271,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   dev["profile"] = num(s.profile, "profile");
   d["deviations"] = std::move(dev);
   d["regions"] = regions_json(doc, regions);
+  d["surfaces"] = surfaces_json(doc, regions);
   // The verification parts as comparison.json writes them.
   d["prediction"] = doc.prediction ? vj::prediction_comparison_json(*doc.prediction) : json(nullptr);
   if (doc.gouges) {
@@ -255,7 +282,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   } else {
     d["gouges"] = nullptr;
   }
-  d["faces"] = faces_json(doc);
+  d["faces"] = faces_json(doc, context.face_surfaces);
   d["points"] = nullptr;  // streamed below, in its place among the members
   json figs = json::array();
   for (const ReportFigure& f : figures) figs.push_back({{"file", f.file}, {"section", f.section}, {"title", f.title}});

@@ -222,13 +222,14 @@ TEST_CASE("the report folder is the same bytes whether its figures and files are
   // documents two at a time; the oracle is every piece made strictly one
   // after the other on one thread.
   const test::ReportFixture& f = fixture();
-  const ReportContext c = context("2024-01-01T00:00:00Z");
+  ReportContext c = context("2024-01-01T00:00:00Z");
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   const std::vector<ReportFigure> figures = make_report_figures(f.doc, f.part, nullptr);
   omp_set_num_threads(4);
   const std::vector<FolderFile> parallel = make_report(f.doc, f.part, nullptr, c);
   omp_set_num_threads(threads);
+  c.face_surfaces = face_surfaces(f.part, f.doc);  // what make_report adds to the context
   const ReportVerdict verdict = report_verdict(f.doc);
   std::vector<FolderFile> serial = {
       {"report.html", report_html(f.doc, verdict, nullptr, c, figures)},
