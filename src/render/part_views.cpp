@@ -181,6 +181,8 @@ PartViewsFigure draw_part_views(const std::string& title, const Part& part, cons
     plot::text(img, text, {x + 26, y + 12}, 0.42);
     y += 24;
   }
+  fig.legend_left = x;
+  fig.legend_bottom = y;
   return fig;
 }
 

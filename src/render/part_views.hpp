@@ -70,6 +70,9 @@ struct PartViewsFigure {
   int width = 0, height = 0;
   std::vector<unsigned char> bgr;  // width * height * 3
   std::vector<ViewPanel> panels;   // top, front, side, iso
+  // The legend column's left edge and the first free row below its
+  // entries, where a caller may add its own key (a colour bar).
+  int legend_left = 0, legend_bottom = 0;
   // The shaded colour a pixel of `base` colour gets under light `light`
   // (what the panels paint): exposed so a test can check every pixel.
   static Rgb shaded(const Rgb& base, float light);

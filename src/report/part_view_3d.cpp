@@ -6,8 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "render/drawing_raster.hpp"
-#include "render/svg.hpp"
+#include "report/deviation_views.hpp"
 #include "report/figures.hpp"
 #include "report/html.hpp"
 
@@ -284,27 +283,15 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
   const std::string orbit = read_file_or_throw(dir + "/examples/js/controls/OrbitControls.js");
   const PartView3d view = part_view_3d(doc, part, prediction);
 
-  // The static front view: the fallback without WebGL, and the figure file.
-  std::vector<MapPoint> front;
-  for (const auto& p : doc.points) {
-    MapPoint m;
-    m.position = {p.foot.x(), p.foot.z()};
-    m.value = p.evaluated ? p.deviation : std::nan("");
-    m.flagged = !p.evaluated || !p.in_tolerance.value_or(true);
-    front.push_back(std::move(m));  // unlabelled: seen edge-on the labels would pile up; the top view has them
-  }
-  const ToleranceLimits tol{doc.options.tolerance.lower(), doc.options.tolerance.upper()};
-  const Drawing drawing = deviation_map_drawing("Deviation [\u00b5m], front view (x, z)", front, {}, tol, "x [mm]",
-                                                "z [mm]", true);
+  // The static views: the fallback without WebGL, and the figure file.
   ReportFigure fig;
-  fig.file = "figures/part_view_front.png";
+  fig.file = "figures/part_views.png";
   fig.section = "view3d";
   fig.title = "3D view";
   fig.caption = "";
-  fig.png = to_png(drawing);
-  const bool vector = front.size() <= kVectorPointLimit;
-  if (vector) fig.svg = to_svg(drawing, "Deviations, front view (x, z)", "fig-part_view_front");
-  const std::string static_view = vector ? fig.svg : html::embedded_png(fig.png, "Front view") + "\n";
+  fig.png = deviation_views_png(doc, part, view.range);
+  const std::string static_view =
+      html::embedded_png(fig.png, "The measured points on the part in four views", "fig-part_views") + "\n";
 
   char range_um[32];
   std::snprintf(range_um, sizeof range_um, "%.1f", view.range * 1000);
@@ -329,8 +316,9 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
                                             "(z-map error map) on the same scale"
                                           : "") +
           ". Drag to orbit, wheel to zoom, right-drag to pan.</p>\n</div>\n";
-  html += "<div class=\"view3d-static\">\n<p>The interactive view needs WebGL; the static views: the top view under "
-          "Deviations, and the front view:</p>\n" +
+  html += "<div class=\"view3d-static\">\n<p>The interactive view needs WebGL; the part in four views, the "
+          "measured points coloured by deviation on the same scale (a grey ring where a view does not see the "
+          "point):</p>\n" +
           static_view + "</div>\n";
   html += "<script type=\"application/json\" id=\"view3d-data\">" + part_view_3d_json(view) + "</script>\n";
   html += "<script>" + three + "\n</script>\n<script>" + orbit + "\n</script>\n<script>" + kViewerScript +

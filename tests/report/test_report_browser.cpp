@@ -235,8 +235,8 @@ TEST_CASE("without WebGL the 3D view falls back to the static views") {
   INFO("chromium log: " << r.log.substr(0, 3000));
   CHECK(attribute_of_view(r.dom, "data-view3d") == "fallback:no-webgl");
   CHECK(console_messages(r.log).empty());
-  // The static front view is in the section.
-  CHECK(r.dom.find("id=\"fig-part_view_front\"") != std::string::npos);
+  // The static four views are in the section.
+  CHECK(r.dom.find("id=\"fig-part_views\"") != std::string::npos);
 }
 
 TEST_CASE("report.pdf: pages with the header and page number, no table row cut, A4 and Letter") {
