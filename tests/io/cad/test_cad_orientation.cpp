@@ -7,12 +7,17 @@
 #include <algorithm>
 #include <random>
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <TopExp_Explorer.hxx>
+
 #include "cad_reference.hpp"
 #include "base/error.hpp"
 #include "io/cad/cad_import.hpp"
 #include "partition/classification.hpp"
 #include "partition/part_summary.hpp"
 #include "support/run_cli.hpp"
+#include "support/trimmed_area.hpp"
 
 using namespace furrow;
 using namespace furrow::test;
@@ -63,13 +68,51 @@ double outward_share(const Face& face, SolidsClassifier& solids) {
   return total == 0 ? 1.0 : static_cast<double>(out) / total;
 }
 
-}  // namespace
+// A block as machined parts are: a boss with a filleted foot (a torus
+// blend), a drilled bore, rounded vertical edges (cylinder fillets), and
+// beside it a solid with a free-form B-spline top.
+ReferenceModel make_filleted_model() {
+  using G = ReferenceGeometry;
+  TopoDS_Shape block = BRepPrimAPI_MakeBox(G::box_x, G::box_y, G::box_z).Shape();
+  block = BRepAlgoAPI_Fuse(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(G::boss_x, G::boss_y, G::box_z), gp::DZ()),
+                                                           G::boss_r, G::boss_h)
+                                      .Shape())
+              .Shape();
+  block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(58, 30, -1), gp::DZ()), 6, G::box_z + 2).Shape())
+              .Shape();
+  BRepFilletAPI_MakeFillet fillet(block);
+  for (TopExp_Explorer e(block, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+    const BRepAdaptor_Curve c(edge);
+    const gp_Pnt a = c.Value(c.FirstParameter()), b = c.Value(c.LastParameter());
+    const bool vertical_box_edge = c.GetType() == GeomAbs_Line && std::abs(a.X() - b.X()) < 1e-9 &&
+                                   std::abs(a.Y() - b.Y()) < 1e-9 && (a.X() < 1e-9 || a.X() > G::box_x - 1e-9);
+    const bool boss_foot = c.GetType() == GeomAbs_Circle && std::abs(c.Circle().Radius() - G::boss_r) < 1e-9 &&
+                           std::abs(c.Circle().Location().Z() - G::box_z) < 1e-9;
+    if (vertical_box_edge) fillet.Add(5.0, edge);
+    if (boss_foot) fillet.Add(2.0, edge);
+  }
+  ReferenceModel model;
+  TopExp_Explorer solid(fillet.Shape(), TopAbs_SOLID);
+  model.solids.push_back(solid.Current());
+  const TopoDS_Face top = BRepBuilderAPI_MakeFace(freeform_surface(), 1e-7).Face();
+  model.solids.push_back(BRepPrimAPI_MakePrism(top, gp_Vec(0, 0, -15)).Shape());
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const auto& sh : model.solids) builder.Add(compound, sh);
+  model.shape = compound;
+  return model;
+}
 
-TEST_CASE("orientation: a surface model with random face flips comes in outward, in STEP and in IGES") {
-  const ReferenceModel model = make_reference_model();
+// The model's faces as a surface model with random flips, in STEP and in
+// IGES: every face comes in outward (the solids' classifier), with
+// OpenCASCADE's area to 1e-6, and both files give the same class split.
+// Returns the folder holding the two files.
+std::string check_surface_model(const ReferenceModel& model, const std::string& label) {
   SolidsClassifier solids(model);
   const TopoDS_Compound faces = loose_faces(model.shape, 12345);
-  const std::string dir = scratch_dir("cad-orientation-model");
+  const std::string dir = scratch_dir("cad-orientation-" + label);
   write_step(faces, dir + "/surfaces.step");
   write_iges(faces, dir + "/surfaces.igs");
   std::vector<PartSummary> summaries;
@@ -90,11 +133,38 @@ TEST_CASE("orientation: a surface model with random face flips comes in outward,
     // The random flips had to be undone somewhere (about half the faces).
     CHECK(turned > 0);
   }
-  // Both files give the same part: area and, with the same orientation, the
-  // same convex/concave/saddle split (up to the grids' sampling).
+  // Both files give the same faces: every face's area (Green's theorem on
+  // its trim, tests/support/trimmed_area.hpp) against OpenCASCADE's area of
+  // the source faces, matched by size.
+  std::vector<double> expected;
+  for (const TopoDS_Face& face : faces_of(model.shape)) expected.push_back(occt_area(face));
+  std::sort(expected.begin(), expected.end());
+  for (const char* name : {"surfaces.step", "surfaces.igs"}) {
+    CAPTURE(name);
+    const CadImportResult r = import_cad(dir + "/" + name);
+    std::vector<double> areas;
+    for (const Face& face : r.part.faces) areas.push_back(trimmed_area(face));
+    std::sort(areas.begin(), areas.end());
+    REQUIRE(areas.size() == expected.size());
+    double worst = 0;
+    for (std::size_t k = 0; k < areas.size(); ++k) worst = std::max(worst, std::abs(areas[k] - expected[k]) / expected[k]);
+    INFO(name << ": largest relative face-area difference from OpenCASCADE " << worst);
+    CHECK(worst < 1e-6);
+  }
+  // And, with the same orientation, the same convex/concave/saddle split
+  // (up to the grids' sampling).
   CHECK(std::abs(summaries[0].area - summaries[1].area) < 2e-4 * summaries[0].area);
   for (int c = 0; c < kCurvatureClassCount; ++c)
     CHECK(std::abs(summaries[0].class_area[c] - summaries[1].class_area[c]) < 5e-3 * summaries[0].area);
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("orientation: a surface model with random face flips comes in outward, in STEP and in IGES") {
+  const ReferenceModel model = make_reference_model();
+  const std::string dir = check_surface_model(model, "model");
+  SolidsClassifier solids(model);
   // Without sewing only the faces that close on themselves (the ball, the
   // ring) are decided; every other face is its own open shell, kept as the
   // file has it and reported undecided.
@@ -115,6 +185,22 @@ TEST_CASE("orientation: a surface model with random face flips comes in outward,
   }
   CHECK(closed == 2);
   CHECK(inward > 0);
+}
+
+TEST_CASE("orientation: a filleted block with a bore and a torus blend, and a B-spline top, in STEP and IGES") {
+  const ReferenceModel model = make_filleted_model();
+  // The fillets are there: 4 rounded vertical edges and the torus at the boss's foot.
+  int cylinders = 0, tori = 0, bsplines = 0;
+  for (const TopoDS_Face& f : faces_of(model.shape)) {
+    const GeomAbs_SurfaceType t = BRepAdaptor_Surface(f).GetType();
+    cylinders += t == GeomAbs_Cylinder;
+    tori += t == GeomAbs_Torus;
+    bsplines += t == GeomAbs_BSplineSurface;
+  }
+  CHECK(cylinders >= 6);  // 4 fillets, the boss, the bore
+  CHECK(tori == 1);
+  CHECK(bsplines >= 1);
+  check_surface_model(model, "filleted");
 }
 
 TEST_CASE("orientation: an open shell is made consistent, +z, -z and a point rule decide its side") {
