@@ -69,6 +69,14 @@ struct ReferenceGeometry {
   static constexpr double dimple_x = 55, dimple_y = 30, dimple_z = 26, dimple_r = 10;
 };
 
+inline TopoDS_Compound compound_of(const std::vector<TopoDS_Shape>& shapes) {
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const auto& s : shapes) builder.Add(compound, s);
+  return compound;
+}
+
 inline Handle(Geom_BSplineSurface) freeform_surface() {
   TColgp_Array2OfPnt pts(1, 5, 1, 4);
   for (int i = 1; i <= 5; ++i)
@@ -111,11 +119,7 @@ inline ReferenceModel make_reference_model() {
   model.solids.push_back(
       BRepPrimAPI_MakeRevolution(gp::XOY(), profile).Shape().Moved(TopLoc_Location(place)));
 
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  for (const auto& s : model.solids) builder.Add(compound, s);
-  model.shape = compound;
+  model.shape = compound_of(model.solids);
   return model;
 }
 

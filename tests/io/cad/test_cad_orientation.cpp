@@ -97,11 +97,7 @@ ReferenceModel make_filleted_model() {
   model.solids.push_back(solid.Current());
   const TopoDS_Face top = BRepBuilderAPI_MakeFace(freeform_surface(), 1e-7).Face();
   model.solids.push_back(BRepPrimAPI_MakePrism(top, gp_Vec(0, 0, -15)).Shape());
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  for (const auto& sh : model.solids) builder.Add(compound, sh);
-  model.shape = compound;
+  model.shape = compound_of(model.solids);
   return model;
 }
 
