@@ -137,32 +137,46 @@ double median_surface_distance(const ClosestPointFinder& finder, const Measureme
   return median(d);
 }
 
-CoarseResult coarse_global_search(const ClosestPointFinder& finder, const MeasurementSet& set,
-                                  const CoarseOptions& options) {
-  const std::vector<SurfaceSample> samples =
-      sample_part_surface(finder.part(), options.surface_samples);
-  std::vector<Eigen::Vector3d> target(samples.size());
-  for (std::size_t k = 0; k < samples.size(); ++k)
-    target[k] = samples[k].point + set.probe_radius * samples[k].normal;
+namespace {
+
+// What the measured points are matched against: probe-centre positions
+// over a sampling of the part's surface, with a k-d tree over them.
+struct SearchTarget {
+  std::vector<Eigen::Vector3d> points;
+  double diagonal = 0;  // of their box [mm]
+  PointSearch tree;
+};
+
+SearchTarget search_target(const Part& part, double probe_radius, std::size_t samples) {
+  const std::vector<SurfaceSample> surface = sample_part_surface(part, samples);
+  std::vector<Eigen::Vector3d> points(surface.size());
+  for (std::size_t k = 0; k < surface.size(); ++k) points[k] = surface[k].point + probe_radius * surface[k].normal;
   Eigen::AlignedBox3d box;
-  for (const auto& p : target) box.extend(p);
+  for (const auto& p : points) box.extend(p);
   const double diagonal = box.diagonal().norm();
-  // Points that cannot lie on the part in any placement (blunders metres
-  // away, at any finite magnitude) take no part in the search; the fine fit
-  // later flags them. Without a bulk (fewer than 3 points near the median)
-  // every finite point is used.
-  std::vector<Eigen::Vector3d> all(set.points.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = set.points[k].xyz;
+  PointSearch tree(points);
+  return {std::move(points), diagonal, std::move(tree)};
+}
+
+// Points that cannot lie on the part in any placement (blunders metres
+// away, at any finite magnitude) take no part in the search; the fine fit
+// later flags them. Without a bulk (fewer than 3 points near the median)
+// every finite point is used.
+std::vector<std::size_t> usable_points(const std::vector<Eigen::Vector3d>& all, double diagonal) {
   std::vector<std::size_t> usable = points_near_the_bulk(all, 1.5 * diagonal);
   if (usable.size() < 3) usable = points_near_the_bulk(all, std::numeric_limits<double>::max());
-  std::vector<Eigen::Vector3d> measured;
-  for (std::size_t k : usable) measured.push_back(all[k]);
+  return usable;
+}
 
+// Starting placements: the measured principal axes turned onto the
+// surface's in each of the cube's 24 rotations, and the 24 rotations alone,
+// each moving the measured centroid onto the surface's.
+std::vector<Eigen::Isometry3d> starting_placements(const std::vector<Eigen::Vector3d>& target,
+                                                   const std::vector<Eigen::Vector3d>& measured) {
   Eigen::Vector3d c_surface, c_measured;
   Eigen::Matrix3d e_surface, e_measured;
   principal_axes(target, c_surface, e_surface);
   principal_axes(measured, c_measured, e_measured);
-
   std::vector<Eigen::Isometry3d> starts;
   for (const Eigen::Matrix3d& p : cube_rotations()) {
     for (const Eigen::Matrix3d& r : {Eigen::Matrix3d(e_surface * p * e_measured.transpose()), p}) {
@@ -173,99 +187,125 @@ CoarseResult coarse_global_search(const ClosestPointFinder& finder, const Measur
       starts.push_back(t);
     }
   }
+  return starts;
+}
 
-  const PointSearch tree(target);
+// Trimmed point-to-point ICP against the sampling (k-d tree, Umeyama in
+// double): pairs farther than max_distance or than three times the median
+// pair distance are dropped, so blunders do not pull. Stops after
+// `iterations`, when the transform moves less than `tolerance`, or when
+// fewer than 3 pairs are left.
+Eigen::Isometry3d trimmed_icp(const SearchTarget& target, const std::vector<Eigen::Vector3d>& source,
+                              Eigen::Isometry3d t, int iterations, double max_distance, double tolerance) {
+  for (int it = 0; it < iterations; ++it) {
+    std::vector<std::pair<std::size_t, int>> pairs;
+    std::vector<double> dist;
+    for (std::size_t k = 0; k < source.size(); ++k) {
+      const PointNeighbour near = target.tree.nearest(t * source[k]);
+      if (near.index < target.points.size() && near.distance <= max_distance) {
+        pairs.emplace_back(k, static_cast<int>(near.index));
+        dist.push_back(near.distance);
+      }
+    }
+    const double limit = 3 * median(dist) + 1e-9;
+    std::vector<Eigen::Vector3d> from, to;
+    for (std::size_t m = 0; m < pairs.size(); ++m)
+      if (dist[m] <= limit) {
+        from.push_back(source[pairs[m].first]);
+        to.push_back(target.points[pairs[m].second]);
+      }
+    if (from.size() < 3) break;
+    Eigen::Matrix3Xd a(3, from.size()), b(3, from.size());
+    for (std::size_t m = 0; m < from.size(); ++m) {
+      a.col(m) = from[m];
+      b.col(m) = to[m];
+    }
+    const Eigen::Isometry3d next(Eigen::Matrix4d(Eigen::umeyama(a, b, false)));
+    const double change = (next.matrix() - t.matrix()).norm();
+    t = next;
+    if (change < tolerance) break;
+  }
+  return t;
+}
 
+// A short ICP of every start on the screening points, scored by the median
+// distance to the nearest target sample; best first. Candidates are
+// independent (read-only tree): screened in parallel, each into its own
+// slot, so the outcome does not depend on scheduling.
+std::vector<Candidate> screen_placements(const SearchTarget& target, const std::vector<Eigen::Isometry3d>& starts,
+                                         const std::vector<Eigen::Vector3d>& screen, const CoarseOptions& options) {
+  std::vector<Candidate> screened(starts.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const Eigen::Isometry3d t =
+        trimmed_icp(target, screen, starts[k], options.screen_iterations, target.diagonal / 4, options.icp_tolerance);
+    std::vector<double> d;
+    for (const Eigen::Vector3d& p : screen) d.push_back(target.tree.nearest(t * p).distance);
+    screened[k] = {t, median(d)};
+  }
+  std::stable_sort(screened.begin(), screened.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  return screened;
+}
+
+// The best screened candidates refined by two tighter ICP rounds and scored
+// by the median distance to the true surface; best first.
+std::vector<Candidate> refine_placements(const ClosestPointFinder& finder, const MeasurementSet& set,
+                                         const SearchTarget& target, const std::vector<Candidate>& screened,
+                                         const std::vector<Eigen::Vector3d>& refine, const CoarseOptions& options) {
+  std::vector<Candidate> refined;
+  const std::size_t n = std::min<std::size_t>(screened.size(),
+                                              static_cast<std::size_t>(std::max(1, options.refine_candidates)));
+  for (std::size_t k = 0; k < n; ++k) {
+    Eigen::Isometry3d t = trimmed_icp(target, refine, screened[k].transform, options.refine_iterations,
+                                      target.diagonal / 10, options.icp_tolerance);
+    t = trimmed_icp(target, refine, t, options.refine_iterations, target.diagonal / 50, options.icp_tolerance);
+    refined.push_back({t, median_surface_distance(finder, set, t, options.refine_points)});
+  }
+  std::stable_sort(refined.begin(), refined.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  return refined;
+}
+
+// The best refined placement, and whether a placement turned by more than
+// the ambiguity angle scores nearly as well (a symmetric part).
+CoarseResult best_placement(const std::vector<Candidate>& refined, int candidates, const CoarseOptions& options) {
+  CoarseResult out;
+  out.method = CoarseMethod::global_search;
+  out.transform = refined[0].transform;
+  out.median_distance = refined[0].score;
+  out.candidates = candidates;
+  const double angle_limit = options.ambiguity_angle_deg * kPi / 180;
+  for (std::size_t k = 1; k < refined.size(); ++k) {
+    if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit) continue;
+    out.runner_up_median = refined[k].score;
+    out.ambiguous = refined[k].score <= options.ambiguity_ratio * out.median_distance + 1e-3;
+    break;
+  }
+  return out;
+}
+
+}  // namespace
+
+CoarseResult coarse_global_search(const ClosestPointFinder& finder, const MeasurementSet& set,
+                                  const CoarseOptions& options) {
+  const SearchTarget target = search_target(finder.part(), set.probe_radius, options.surface_samples);
+  std::vector<Eigen::Vector3d> all(set.points.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = set.points[k].xyz;
+  const std::vector<std::size_t> usable = usable_points(all, target.diagonal);
+  std::vector<Eigen::Vector3d> measured;
+  for (std::size_t k : usable) measured.push_back(all[k]);
+  const std::vector<Eigen::Isometry3d> starts = starting_placements(target.points, measured);
   // Spread over the part, not by file order (point_subsets.hpp says why).
   auto subset = [&](std::size_t max) {
     std::vector<Eigen::Vector3d> pts;
     for (std::size_t k : spread_subset(all, usable, max)) pts.push_back(all[k]);
     return pts;
   };
-  const std::vector<Eigen::Vector3d> screen = subset(options.screen_points);
-  const std::vector<Eigen::Vector3d> refine = subset(options.refine_points);
-
-  // Trimmed point-to-point ICP against the sampling (k-d tree, Umeyama
-  // in double): pairs farther than max_distance or than three times the
-  // median pair distance are dropped, so blunders do not pull.
-  auto run_icp = [&](const std::vector<Eigen::Vector3d>& source, Eigen::Isometry3d t,
-                     int iterations, double max_distance) {
-    for (int it = 0; it < iterations; ++it) {
-      std::vector<std::pair<std::size_t, int>> pairs;
-      std::vector<double> dist;
-      for (std::size_t k = 0; k < source.size(); ++k) {
-        const Eigen::Vector3d q = t * source[k];
-        const PointNeighbour near = tree.nearest(q);
-        const double d = near.distance;
-        if (near.index < target.size() && d <= max_distance) {
-          pairs.emplace_back(k, static_cast<int>(near.index));
-          dist.push_back(d);
-        }
-      }
-      const double limit = 3 * median(dist) + 1e-9;
-      std::vector<Eigen::Vector3d> from, to;
-      for (std::size_t m = 0; m < pairs.size(); ++m)
-        if (dist[m] <= limit) {
-          from.push_back(source[pairs[m].first]);
-          to.push_back(target[pairs[m].second]);
-        }
-      if (from.size() < 3) break;
-      Eigen::Matrix3Xd a(3, from.size()), b(3, from.size());
-      for (std::size_t m = 0; m < from.size(); ++m) {
-        a.col(m) = from[m];
-        b.col(m) = to[m];
-      }
-      const Eigen::Isometry3d next(Eigen::Matrix4d(Eigen::umeyama(a, b, false)));
-      const double change = (next.matrix() - t.matrix()).norm();
-      t = next;
-      if (change < options.icp_tolerance) break;
-    }
-    return t;
-  };
-  // Screening score: median distance to the nearest target sample.
-  auto screen_score = [&](const Eigen::Isometry3d& t) {
-    std::vector<double> d;
-    for (const Eigen::Vector3d& p : screen) d.push_back(tree.nearest(t * p).distance);
-    return median(d);
-  };
-
-  // Candidates are independent (read-only tree): screen them in parallel,
-  // each into its own slot, so the outcome does not depend on scheduling.
-  std::vector<Candidate> screened(starts.size());
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    const Eigen::Isometry3d t = run_icp(screen, starts[k], options.screen_iterations, diagonal / 4);
-    screened[k] = {t, screen_score(t)};
-  }
-  std::stable_sort(screened.begin(), screened.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-
-  std::vector<Candidate> refined;
-  const std::size_t n_refine = std::min<std::size_t>(
-      screened.size(), static_cast<std::size_t>(std::max(1, options.refine_candidates)));
-  for (std::size_t k = 0; k < n_refine; ++k) {
-    Eigen::Isometry3d t =
-        run_icp(refine, screened[k].transform, options.refine_iterations, diagonal / 10);
-    t = run_icp(refine, t, options.refine_iterations, diagonal / 50);
-    refined.push_back({t, median_surface_distance(finder, set, t, options.refine_points)});
-  }
-  std::stable_sort(refined.begin(), refined.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
-
-  CoarseResult out;
-  out.method = CoarseMethod::global_search;
-  out.transform = refined[0].transform;
-  out.median_distance = refined[0].score;
-  out.candidates = static_cast<int>(starts.size());
-  const double angle_limit = options.ambiguity_angle_deg * kPi / 180;
-  for (std::size_t k = 1; k < refined.size(); ++k) {
-    if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit)
-      continue;
-    out.runner_up_median = refined[k].score;
-    out.ambiguous = refined[k].score <= options.ambiguity_ratio * out.median_distance + 1e-3;
-    break;
-  }
-  return out;
+  const std::vector<Candidate> screened = screen_placements(target, starts, subset(options.screen_points), options);
+  const std::vector<Candidate> refined =
+      refine_placements(finder, set, target, screened, subset(options.refine_points), options);
+  return best_placement(refined, static_cast<int>(starts.size()), options);
 }
 
 CoarseResult coarse_alignment(const ClosestPointFinder& finder, const MeasurementSet& set,
