@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -243,196 +244,229 @@ Observability observability_at_solution(const Part& part, const std::vector<Regi
   return o;
 }
 
-}  // namespace
+// One registration, in the steps docs/registration.md describes: the coarse
+// start, the fit with the weak directions held and the points settled on
+// their faces, the outlier passes, the weak directions the points do see
+// released, then the points classified and the uncertainty. The members are
+// what the steps hand on to each other.
+class RegistrationRun {
+ public:
+  RegistrationRun(const ClosestPointFinder& finder, const MeasurementSet& set, const InspectionPlan* plan,
+                  const RegistrationOptions& options)
+      : finder_(finder), set_(set), plan_(plan), options_(options), n_(set.points.size()),
+        rule_{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours, options.neighbour_radius},
+        verdict_(set.points.size(), OutlierReason::none) {}
+  RegistrationRun(const RegistrationRun&) = delete;
+  RegistrationRun& operator=(const RegistrationRun&) = delete;
 
-RegistrationResult register_measurements(const ClosestPointFinder& finder,
-                                         const MeasurementSet& set, const InspectionPlan* plan,
-                                         const RegistrationOptions& options) {
-  const std::size_t n = set.points.size();
-  const int dof = options.dof.count();
-  if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
-    throw InputError("the weak-direction ratio must lie in (0, 1)");
-  RegistrationResult result;
+  RegistrationResult run() {
+    coarse_start();
+    set_up_fit();
+    hold_weak_directions();
+    judge_start();
+    fit_with_outlier_passes();
+    // Without outlier flagging every point stays in the fit; the points
+    // beyond an edge are still classified, once, by the same rule.
+    if (!options_.flag_outliers && fine()) {
+      std::vector<bool> usable;
+      numbers_ = classify(usable);
+    }
+    release_weak_directions();
+    result_.fitted_dof = fitted_;
+    result_.status = !too_few_.empty()          ? too_few_
+                     : !solver_message_.empty() ? "solver failed: " + solver_message_
+                     : result_.converged        ? "converged"
+                                                : "outer iteration limit reached";
+    evaluate_points();
+    judge_outcome();
+    note("observability");
+    result_.observability = observability_at_solution(finder_.part(), result_.points, options_);
+    // Which of them the fit left where the coarse start put them.
+    for (WeakDirection& d : result_.observability.weak) d.held = held(d);
+    for (WeakDirection& d : result_.held) d.held = held(d);
+    transform_and_uncertainty();
+    return std::move(result_);
+  }
+
+ private:
+  enum class Holding { none, all, exact_only };
+
+  void note(const std::string& what) const {
+    if (options_.progress) options_.progress(what);
+  }
+  bool fine() const { return too_few_.empty() && solver_message_.empty(); }
+  bool held(const WeakDirection& d) const {
+    return holding_ == Holding::all || (holding_ == Holding::exact_only && d.ratio < kExactlyFree);
+  }
+
   // Fewer points than free parameters: nothing to fit, and the coarse
   // search needs three. Evaluated as measured, reported as too few.
-  const bool enough = static_cast<int>(n) > dof;
-  auto note = [&](const std::string& what) {
-    if (options.progress) options.progress(what);
-  };
-  note("coarse start");
-  if (options.dof.all_free() && enough) {
-    result.coarse = coarse_alignment(finder, set, plan, options.coarse);
-  } else {
-    result.coarse.method = CoarseMethod::identity;
-    result.coarse.median_distance = median_surface_distance(
-        finder, set, Eigen::Isometry3d::Identity(), options.coarse.refine_points);
-  }
-  note("fit setup");
-  std::vector<Eigen::Vector3d> y(n);
-  double reach = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    y[i] = result.coarse.transform * set.points[i].xyz;
-    reach = std::max(reach, y[i].norm());
-  }
-  // y is handed over, not copied: the fit keeps the only copy.
-  SurfaceFit fit(std::move(y), set.probe_radius, options.dof, options.loss, options.loss_scale,
-                 options.max_solver_iterations);
-  result.points.resize(n);
-  Workspace ws{finder,
-               set,
-               options,
-               fit,
-               result.points,
-               std::vector<OutlierReason>(n, OutlierReason::none),
-               std::vector<bool>(n, false),
-               std::vector<bool>(n, false)};
+  bool enough() const { return static_cast<int>(n_) > options_.dof.count(); }
 
-  ws.project();
-  // The points on the part at the start decide which motions are weak.
-  MotionBasis release(6, 0);
-  MotionBasis held_basis(6, 0);  // the weak directions held (columns)
-  enum class Holding { none, all, exact_only } holding = Holding::none;
-  auto points_in_fit = [&](std::vector<Eigen::Vector3d>& x, std::vector<Eigen::Vector3d>& normal) {
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < n; ++i) count += ws.on_part(i);
-    x.reserve(count);
-    normal.reserve(count);
-    for (std::size_t i = 0; i < n; ++i)
-      if (ws.on_part(i)) {
-        x.push_back(fit.moved(i));
-        normal.push_back(ws.foot(i).normal);
-      }
-  };
-  {
-    std::vector<Eigen::Vector3d> x, normal;
-    points_in_fit(x, normal);
-    const MotionBasis allowed = free_parameter_basis(options.dof.free);
-    const Observability start = analyse_observability(x, normal, allowed, options.weak_ratio);
-    if (options.hold_weak && !start.weak.empty()) {
-      fit.restrict_motion(start.constrained);
-      result.held = start.weak;
-      held_basis.resize(6, static_cast<Eigen::Index>(start.weak.size()));
-      for (std::size_t k = 0; k < start.weak.size(); ++k)
-        held_basis.col(static_cast<Eigen::Index>(k)) = start.weak[k].parameters;
-      holding = Holding::all;
-      // The motions the points see at all (not exact symmetries): released
-      // for a last fit once the others have converged.
-      release = analyse_observability(x, normal, allowed, kExactlyFree).constrained;
-      if (release.cols() == start.constrained.cols()) release.resize(6, 0);
+  void coarse_start() {
+    note("coarse start");
+    if (options_.dof.all_free() && enough()) {
+      result_.coarse = coarse_alignment(finder_, set_, plan_, options_.coarse);
+    } else {
+      result_.coarse.method = CoarseMethod::identity;
+      result_.coarse.median_distance = median_surface_distance(finder_, set_, Eigen::Isometry3d::Identity(),
+                                                               options_.coarse.refine_points);
     }
   }
-  int fitted = static_cast<int>(fit.motion_basis().cols());
-  result.fitted_dof = fitted;
-  std::string too_few;
-  if (!enough)
-    too_few = std::to_string(n) + " points cannot fix " + std::to_string(dof) + " degrees of freedom";
-  else if (fitted == 0)
-    too_few = "the points on the part fix no motion at all";
-  {
-    std::vector<double> d;
-    for (std::size_t i = 0; i < n; ++i)
-      if (ws.geometric[i] == OutlierReason::none && !ws.beyond[i]) d.push_back(fit.residual(i));
-    result.rms_before = rms(d);
+
+  void set_up_fit() {
+    note("fit setup");
+    std::vector<Eigen::Vector3d> y(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      y[i] = result_.coarse.transform * set_.points[i].xyz;
+      reach_ = std::max(reach_, y[i].norm());
+    }
+    // y is handed over, not copied: the fit keeps the only copy.
+    fit_ = std::make_unique<SurfaceFit>(std::move(y), set_.probe_radius, options_.dof, options_.loss,
+                                        options_.loss_scale, options_.max_solver_iterations);
+    result_.points.resize(n_);
+    ws_.reset(new Workspace{finder_, set_, options_, *fit_, result_.points,
+                            std::vector<OutlierReason>(n_, OutlierReason::none), std::vector<bool>(n_, false),
+                            std::vector<bool>(n_, false)});
+    ws_->project();
   }
-  std::vector<OutlierReason> verdict(n, OutlierReason::none);
-  OutlierVerdict numbers;
-  const OutlierRule rule{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours,
-                         options.neighbour_radius};
-  // The outlier rule on the current fit, into `verdict`; `usable` says which
+
+  // The points on the part at the start decide which motions are weak; with
+  // hold_weak those are held, and the ones the points see at all are kept
+  // for release once the others have converged.
+  void hold_weak_directions() {
+    std::vector<Eigen::Vector3d> x, normal;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n_; ++i) count += ws_->on_part(i);
+    x.reserve(count);
+    normal.reserve(count);
+    for (std::size_t i = 0; i < n_; ++i)
+      if (ws_->on_part(i)) {
+        x.push_back(fit_->moved(i));
+        normal.push_back(ws_->foot(i).normal);
+      }
+    const MotionBasis allowed = free_parameter_basis(options_.dof.free);
+    const Observability start = analyse_observability(x, normal, allowed, options_.weak_ratio);
+    if (options_.hold_weak && !start.weak.empty()) {
+      fit_->restrict_motion(start.constrained);
+      result_.held = start.weak;
+      held_basis_.resize(6, static_cast<Eigen::Index>(start.weak.size()));
+      for (std::size_t k = 0; k < start.weak.size(); ++k)
+        held_basis_.col(static_cast<Eigen::Index>(k)) = start.weak[k].parameters;
+      holding_ = Holding::all;
+      release_ = analyse_observability(x, normal, allowed, kExactlyFree).constrained;
+      if (release_.cols() == start.constrained.cols()) release_.resize(6, 0);
+    }
+  }
+
+  // Too few points or motions fixed; the residuals at the start.
+  void judge_start() {
+    fitted_ = static_cast<int>(fit_->motion_basis().cols());
+    result_.fitted_dof = fitted_;
+    if (!enough())
+      too_few_ = std::to_string(n_) + " points cannot fix " + std::to_string(options_.dof.count()) +
+                 " degrees of freedom";
+    else if (fitted_ == 0)
+      too_few_ = "the points on the part fix no motion at all";
+    std::vector<double> d;
+    for (std::size_t i = 0; i < n_; ++i)
+      if (ws_->geometric[i] == OutlierReason::none && !ws_->beyond[i]) d.push_back(fit_->residual(i));
+    result_.rms_before = rms(d);
+  }
+
+  // The outlier rule on the current fit, into verdict_; `usable` says which
   // points it judged (those with a foot point on the part).
-  const auto classify = [&](std::vector<bool>& usable) {
-    std::vector<Eigen::Vector3d> positions(n);
-    std::vector<double> deviation(n);
-    usable.assign(n, false);
-    for (std::size_t i = 0; i < n; ++i) {
+  OutlierVerdict classify(std::vector<bool>& usable) {
+    std::vector<Eigen::Vector3d> positions(n_);
+    std::vector<double> deviation(n_);
+    usable.assign(n_, false);
+    for (std::size_t i = 0; i < n_; ++i) {
       // Neighbours on the surface: at the foot points, not the measured
       // points - blunders off the same side of a dense scan are closer to
       // each other than to the surface and would vouch for each other.
-      positions[i] = ws.foot(i).point;
-      deviation[i] = fit.residual(i);
-      usable[i] = ws.geometric[i] == OutlierReason::none;
+      positions[i] = ws_->foot(i).point;
+      deviation[i] = fit_->residual(i);
+      usable[i] = ws_->geometric[i] == OutlierReason::none;
     }
-    return classify_deviations(positions, deviation, usable, rule, verdict);
-  };
-  std::string solver_message;
+    return classify_deviations(positions, deviation, usable, rule_, verdict_);
+  }
+
   // The points the fit uses: every point with a foot that the outlier rule
   // has not excluded - edges do not take any out.
-  auto active_count = [&] {
+  std::size_t active_count() const {
     std::size_t active = 0;
-    for (std::size_t i = 0; i < n; ++i) active += ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
+    for (std::size_t i = 0; i < n_; ++i) active += ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i];
     return active;
-  };
-  auto on_part_count = [&] {
+  }
+  std::size_t on_part_count() const {
     std::size_t on = 0;
-    for (std::size_t i = 0; i < n; ++i) on += ws.on_part(i);
+    for (std::size_t i = 0; i < n_; ++i) on += ws_->on_part(i);
     return on;
-  };
-  // Outer iterations until the motion stops (result.converged), the solver
+  }
+
+  // Outer iterations until the motion stops (result_.converged), the solver
   // fails or too few points are left on the part.
-  auto iterate = [&](const std::string& label) {
-    result.converged = false;
-    for (int outer = 1; outer <= options.max_outer_iterations; ++outer) {
-      ++result.outer_iterations;
+  void iterate(const std::string& label) {
+    result_.converged = false;
+    for (int outer = 1; outer <= options_.max_outer_iterations; ++outer) {
+      ++result_.outer_iterations;
       note("fit " + label + "." + std::to_string(outer));
-      const Eigen::Matrix<double, 6, 1> before = fit.parameters();
+      const Eigen::Matrix<double, 6, 1> before = fit_->parameters();
       const std::size_t active = active_count();
-      result.fitted_per_iteration.push_back(static_cast<int>(active));
-      if (static_cast<int>(active) <= fitted) {
-        too_few = "only " + std::to_string(active) + " points have a foot on the part, too few to fit " +
-                  std::to_string(fitted) + " degrees of freedom and check the rest";
+      result_.fitted_per_iteration.push_back(static_cast<int>(active));
+      if (static_cast<int>(active) <= fitted_) {
+        too_few_ = "only " + std::to_string(active) + " points have a foot on the part, too few to fit " +
+                   std::to_string(fitted_) + " degrees of freedom and check the rest";
         return;
       }
-      result.solver_iterations += fit.solve(solver_message);
-      ws.project();
-      if (!solver_message.empty()) return;
-      if (motion(before, fit.parameters(), reach) <= options.motion_tolerance) {
-        result.converged = true;
+      result_.solver_iterations += fit_->solve(solver_message_);
+      ws_->project();
+      if (!solver_message_.empty()) return;
+      if (motion(before, fit_->parameters(), reach_) <= options_.motion_tolerance) {
+        result_.converged = true;
         return;
       }
     }
-  };
-  for (int pass = 1; too_few.empty() && pass <= std::max(1, options.max_outlier_passes); ++pass) {
-    result.outlier_passes = pass;
-    iterate(std::to_string(pass));
-    // Points left beyond a face edge by where the start put the held
-    // directions: those directions moved to bring them back, then the
-    // constrained ones re-fitted, before any point is classified.
-    // Edge points stay in the constrained fit, so it can move them off
-    // again: alternate until the settling moves nothing.
-    for (int round = 1; round <= kSettleRounds && result.converged && too_few.empty() && solver_message.empty();
-         ++round) {
-      const Eigen::Matrix<double, 6, 1> before = fit.parameters();
-      if (!settle_on_faces(ws, held_basis, set.probe_radius, reach, options.motion_tolerance)) break;
-      if (motion(before, fit.parameters(), reach) <= options.motion_tolerance) break;
-      iterate(std::to_string(pass) + " settled");
+  }
+
+  void fit_with_outlier_passes() {
+    for (int pass = 1; too_few_.empty() && pass <= std::max(1, options_.max_outlier_passes); ++pass) {
+      result_.outlier_passes = pass;
+      iterate(std::to_string(pass));
+      // Points left beyond a face edge by where the start put the held
+      // directions: those directions moved to bring them back, then the
+      // constrained ones re-fitted, before any point is classified.
+      // Edge points stay in the constrained fit, so it can move them off
+      // again: alternate until the settling moves nothing.
+      for (int round = 1; round <= kSettleRounds && result_.converged && fine(); ++round) {
+        const Eigen::Matrix<double, 6, 1> before = fit_->parameters();
+        if (!settle_on_faces(*ws_, held_basis_, set_.probe_radius, reach_, options_.motion_tolerance)) break;
+        if (motion(before, fit_->parameters(), reach_) <= options_.motion_tolerance) break;
+        iterate(std::to_string(pass) + " settled");
+      }
+      if (!options_.flag_outliers || !fine()) break;
+      std::vector<bool> usable;
+      numbers_ = classify(usable);
+      std::vector<bool> excluded(n_);
+      for (std::size_t i = 0; i < n_; ++i) excluded[i] = usable[i] && verdict_[i] != OutlierReason::none;
+      if (excluded == ws_->excluded) break;
+      if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) <= fitted_) break;
+      ws_->excluded = excluded;
+      fit_->set_loss(RobustLoss::none, options_.loss_scale);
+      for (std::size_t i = 0; i < n_; ++i)
+        fit_->set_foot(i, ws_->foot(i).point, ws_->foot(i).normal, usable[i] && !excluded[i],
+                       ws_->foot(i).converged && ws_->foot(i).location != FootLocation::interior);
     }
-    if (!options.flag_outliers || !solver_message.empty() || !too_few.empty()) break;
-    std::vector<bool> usable;
-    numbers = classify(usable);
-    std::vector<bool> excluded(n);
-    for (std::size_t i = 0; i < n; ++i)
-      excluded[i] = usable[i] && verdict[i] != OutlierReason::none;
-    if (excluded == ws.excluded) break;
-    if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) <= fitted) break;
-    ws.excluded = excluded;
-    fit.set_loss(RobustLoss::none, options.loss_scale);
-    for (std::size_t i = 0; i < n; ++i)
-      fit.set_foot(i, ws.foot(i).point, ws.foot(i).normal, usable[i] && !excluded[i],
-                   ws.foot(i).converged && ws.foot(i).location != FootLocation::interior);
   }
-  // Without outlier flagging every point stays in the fit; the points
-  // beyond an edge are still classified, once, by the same rule.
-  if (!options.flag_outliers && too_few.empty() && solver_message.empty()) {
-    std::vector<bool> usable;
-    numbers = classify(usable);
-  }
+
   // The weak directions the points do see, released: the data decide them
   // now that every point has settled on the part. Kept only if no point
   // leaves the part and the fit converges; otherwise the held fit stands
   // (docs/registration.md "Weakly constrained directions").
-  if (release.cols() > 0 && result.converged && too_few.empty() && solver_message.empty()) {
-    const Eigen::Matrix<double, 6, 1> held_parameters = fit.parameters();
-    const MotionBasis held_basis = fit.motion_basis();
+  void release_weak_directions() {
+    if (release_.cols() == 0 || !result_.converged || !fine()) return;
+    const Eigen::Matrix<double, 6, 1> held_parameters = fit_->parameters();
+    const MotionBasis held_motion = fit_->motion_basis();
     const std::size_t held_active = on_part_count();
     // The sum of squared residuals of the points in the fit: more freedom
     // cannot raise it at a true minimum, so a released fit that ends higher
@@ -440,107 +474,129 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder,
     // sees) and is not kept.
     auto squares = [&] {
       double sum = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (ws.geometric[i] == OutlierReason::none && !ws.excluded[i]) sum += fit.residual(i) * fit.residual(i);
+      for (std::size_t i = 0; i < n_; ++i)
+        if (ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i]) sum += fit_->residual(i) * fit_->residual(i);
       return sum;
     };
     const double held_squares = squares();
-    const int held_fitted = fitted;
-    const int outer_before = result.outer_iterations;
-    fit.restrict_motion(release);
-    fitted = static_cast<int>(release.cols());
+    const int held_fitted = fitted_;
+    const int outer_before = result_.outer_iterations;
+    fit_->restrict_motion(release_);
+    fitted_ = static_cast<int>(release_.cols());
     iterate("released");
-    if (result.converged && on_part_count() >= held_active && squares() <= held_squares * (1 + 1e-9)) {
-      holding = Holding::exact_only;
-    } else {
-      too_few.clear();
-      solver_message.clear();
-      fit.restrict_motion(held_basis);
-      fit.set_parameters(held_parameters);
-      fitted = held_fitted;
-      ws.project();
-      result.converged = true;
-      result.outer_iterations = outer_before;
+    if (result_.converged && on_part_count() >= held_active && squares() <= held_squares * (1 + 1e-9)) {
+      holding_ = Holding::exact_only;
+      return;
     }
+    too_few_.clear();
+    solver_message_.clear();
+    fit_->restrict_motion(held_motion);
+    fit_->set_parameters(held_parameters);
+    fitted_ = held_fitted;
+    ws_->project();
+    result_.converged = true;
+    result_.outer_iterations = outer_before;
   }
-  result.fitted_dof = fitted;
-  result.status = !too_few.empty()          ? too_few
-                  : !solver_message.empty() ? "solver failed: " + solver_message
-                  : result.converged        ? "converged"
-                                            : "outer iteration limit reached";
 
   // Results per point at the final transform (the feet are there already).
-  std::vector<double> in_fit;
-  in_fit.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    RegisteredPoint& p = result.points[i];
-    p.registered = fit.moved(i);
-    p.deviation = fit.residual(i);
-    // Classified once, at the final transform (docs/registration.md
-    // "Points at an edge"): a point the deviation rule flags whose foot is
-    // on a boundary with the point beside the surface is off the part.
-    const bool flagged = options.flag_outliers ? ws.excluded[i]
-                                               : ws.beyond[i] && verdict[i] != OutlierReason::none;
-    p.outlier = ws.geometric[i] != OutlierReason::none ? ws.geometric[i]
-                : !flagged                             ? OutlierReason::none
-                : ws.beyond[i]                         ? OutlierReason::beyond_edge
-                                                       : verdict[i];
-    p.in_fit = ws.geometric[i] == OutlierReason::none && !ws.excluded[i];
-    p.evaluated = p.outlier == OutlierReason::none || p.outlier == OutlierReason::large_deviation;
-    if (p.outlier == OutlierReason::beyond_edge)
-      p.outlier_detail = "foot on the " + std::string(to_string(p.foot.location)) + ", point " +
-                         number(sideways(p.registered, p.foot)) + " mm beside the surface, " +
-                         number(std::abs(p.deviation)) + " mm from it, |d - median| > " +
-                         number(numbers.limit) + " mm";
-    else if (p.outlier == OutlierReason::no_foot_point)
-      p.outlier_detail = "closest-point search did not converge";
-    else if (p.outlier != OutlierReason::none)
-      p.outlier_detail =
-          "|d - median| = " + number(std::abs(p.deviation - numbers.median)) + " mm > " +
-          number(numbers.limit) + " mm (" + number(options.outlier_sigma) + " x robust sigma " +
-          number(numbers.robust_sigma) + " mm, floor " + number(options.outlier_floor) + " mm)";
-    if (p.in_fit) in_fit.push_back(p.deviation);
+  void evaluate_points() {
+    in_fit_.reserve(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      RegisteredPoint& p = result_.points[i];
+      p.registered = fit_->moved(i);
+      p.deviation = fit_->residual(i);
+      // Classified once, at the final transform (docs/registration.md
+      // "Points at an edge"): a point the deviation rule flags whose foot is
+      // on a boundary with the point beside the surface is off the part.
+      const bool flagged = options_.flag_outliers ? ws_->excluded[i]
+                                                  : ws_->beyond[i] && verdict_[i] != OutlierReason::none;
+      p.outlier = ws_->geometric[i] != OutlierReason::none ? ws_->geometric[i]
+                  : !flagged                               ? OutlierReason::none
+                  : ws_->beyond[i]                         ? OutlierReason::beyond_edge
+                                                           : verdict_[i];
+      p.in_fit = ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i];
+      p.evaluated = p.outlier == OutlierReason::none || p.outlier == OutlierReason::large_deviation;
+      p.outlier_detail = outlier_detail(p);
+      if (p.in_fit) in_fit_.push_back(p.deviation);
+    }
   }
-  result.rms_after = rms(in_fit);
-  const double redundancy = static_cast<double>(in_fit.size()) - fitted;
-  result.sigma = redundancy > 0 ? rms(in_fit) * std::sqrt(in_fit.size() / redundancy) : 0;
-  if (too_few.empty() && redundancy <= 0) {
-    too_few = std::to_string(in_fit.size()) + " points in the fit for " + std::to_string(fitted) +
-              " degrees of freedom: they fit exactly and verify nothing";
-    result.status = too_few;
-  }
-  if (!too_few.empty()) {
-    result.converged = false;
-    result.outcome = FitOutcome::too_few_points;
-  } else {
-    result.outcome = result.converged ? FitOutcome::converged : FitOutcome::not_converged;
-  }
-  note("observability");
-  result.observability = observability_at_solution(finder.part(), result.points, options);
-  // Which of them the fit left where the coarse start put them.
-  for (WeakDirection& d : result.observability.weak)
-    d.held = holding == Holding::all || (holding == Holding::exact_only && d.ratio < kExactlyFree);
-  for (WeakDirection& d : result.held)
-    d.held = holding == Holding::all || (holding == Holding::exact_only && d.ratio < kExactlyFree);
 
-  result.parameters = fit.parameters();
-  result.transform = rigid_motion(fit.parameters()) * result.coarse.transform;
-  // With all six DOF free, the covariance is that of a small correction on
-  // the final transform: re-base the points on it first.
-  if (options.dof.all_free()) fit.rebase();
-  result.covariance_status = "not computed";
-  note("covariance");
-  if (options.compute_covariance) {
-    if (auto c = fit.covariance(result.covariance_status)) {
-      result.covariance = (*c) * (result.sigma * result.sigma);
-      for (std::size_t i = 0; i < n; ++i) {
-        const Eigen::Matrix<double, 1, 6> j = fit.jacobian(i);
-        result.points[i].uncertainty =
-            std::sqrt(std::max(0.0, (j * (*result.covariance) * j.transpose())(0)));
+  std::string outlier_detail(const RegisteredPoint& p) const {
+    if (p.outlier == OutlierReason::beyond_edge)
+      return "foot on the " + std::string(to_string(p.foot.location)) + ", point " +
+             number(sideways(p.registered, p.foot)) + " mm beside the surface, " + number(std::abs(p.deviation)) +
+             " mm from it, |d - median| > " + number(numbers_.limit) + " mm";
+    if (p.outlier == OutlierReason::no_foot_point) return "closest-point search did not converge";
+    if (p.outlier != OutlierReason::none)
+      return "|d - median| = " + number(std::abs(p.deviation - numbers_.median)) + " mm > " +
+             number(numbers_.limit) + " mm (" + number(options_.outlier_sigma) + " x robust sigma " +
+             number(numbers_.robust_sigma) + " mm, floor " + number(options_.outlier_floor) + " mm)";
+    return "";
+  }
+
+  // The spread of the points in the fit and what the fit can claim.
+  void judge_outcome() {
+    result_.rms_after = rms(in_fit_);
+    const double redundancy = static_cast<double>(in_fit_.size()) - fitted_;
+    result_.sigma = redundancy > 0 ? rms(in_fit_) * std::sqrt(in_fit_.size() / redundancy) : 0;
+    if (too_few_.empty() && redundancy <= 0) {
+      too_few_ = std::to_string(in_fit_.size()) + " points in the fit for " + std::to_string(fitted_) +
+                 " degrees of freedom: they fit exactly and verify nothing";
+      result_.status = too_few_;
+    }
+    if (!too_few_.empty()) {
+      result_.converged = false;
+      result_.outcome = FitOutcome::too_few_points;
+    } else {
+      result_.outcome = result_.converged ? FitOutcome::converged : FitOutcome::not_converged;
+    }
+  }
+
+  void transform_and_uncertainty() {
+    result_.parameters = fit_->parameters();
+    result_.transform = rigid_motion(fit_->parameters()) * result_.coarse.transform;
+    // With all six DOF free, the covariance is that of a small correction on
+    // the final transform: re-base the points on it first.
+    if (options_.dof.all_free()) fit_->rebase();
+    result_.covariance_status = "not computed";
+    note("covariance");
+    if (!options_.compute_covariance) return;
+    if (auto c = fit_->covariance(result_.covariance_status)) {
+      result_.covariance = (*c) * (result_.sigma * result_.sigma);
+      for (std::size_t i = 0; i < n_; ++i) {
+        const Eigen::Matrix<double, 1, 6> j = fit_->jacobian(i);
+        result_.points[i].uncertainty = std::sqrt(std::max(0.0, (j * (*result_.covariance) * j.transpose())(0)));
       }
     }
   }
-  return result;
+
+  const ClosestPointFinder& finder_;
+  const MeasurementSet& set_;
+  const InspectionPlan* plan_;
+  const RegistrationOptions& options_;
+  const std::size_t n_;
+  const OutlierRule rule_;
+  RegistrationResult result_;
+  std::unique_ptr<SurfaceFit> fit_;
+  std::unique_ptr<Workspace> ws_;  // refers to *fit_ and result_.points
+  double reach_ = 0;               // largest |point| after the coarse start [mm]
+  MotionBasis release_{6, 0};      // the weak directions the points see, released at the end
+  MotionBasis held_basis_{6, 0};   // the weak directions held (columns)
+  Holding holding_ = Holding::none;
+  int fitted_ = 0;
+  std::string too_few_, solver_message_;
+  std::vector<OutlierReason> verdict_;
+  OutlierVerdict numbers_;
+  std::vector<double> in_fit_;
+};
+
+}  // namespace
+
+RegistrationResult register_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
+                                         const InspectionPlan* plan, const RegistrationOptions& options) {
+  if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
+    throw InputError("the weak-direction ratio must lie in (0, 1)");
+  return RegistrationRun(finder, set, plan, options).run();
 }
 
 }  // namespace furrow
