@@ -8,6 +8,7 @@
 // the fit without the off-part points.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -246,6 +247,132 @@ TEST_CASE("edge points: probe balls touching a face's rim are kept in the fit wi
     CHECK(beside >= 12);
     CHECK(r.in_fit_count() == set.points.size());
   }
+}
+
+// The distance from q to a planar region bounded by a polygon (the plate
+// less its drilled hole, as the trim polygon says): the height above the
+// plane where q's projection is inside the region, else the distance to the
+// nearest polygon edge, a 3-D segment. Exact, by construction.
+double planar_region_distance(const Eigen::Vector3d& q, const Eigen::Vector3d& origin, const Eigen::Vector3d& eu,
+                              const Eigen::Vector3d& ev, const Trim& trim) {
+  const Eigen::Vector3d n = eu.cross(ev).normalized();
+  // (u, v) of q's projection: the plane is origin + u eu + v ev.
+  Eigen::Matrix<double, 3, 2> m;
+  m << eu, ev;
+  const Eigen::Vector2d uv = (m.transpose() * m).ldlt().solve(m.transpose() * (q - origin));
+  if (trim.contains(uv)) return std::abs((q - origin).dot(n));
+  double best = std::numeric_limits<double>::infinity();
+  for (const UvLoop& loop : trim.loops())
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Eigen::Vector3d a = origin + m * loop[k], b = origin + m * loop[(k + 1) % loop.size()];
+      const double t = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      best = std::min(best, (a + t * (b - a) - q).norm());
+    }
+  return best;
+}
+
+// A 100 x 80 mm plate with a 30 mm hole, the hole a 360-gon in (u,v) as CAD
+// import writes trims; a 10 x 8 grid of balls on the plate and 24 balls
+// touching the hole's rim at the middle of every 15th polygon edge, centre
+// `sideways(k)` over the hole (beyond the trim edge), in the plane of the
+// normal and the direction across the edge.
+struct HolePlate {
+  Eigen::Vector3d origin{-50, -40, 0}, eu{100, 0, 0}, ev{0, 80, 0};
+  Trim trim;
+  Part part;
+  Scenario s;
+};
+
+template <class Sideways>
+HolePlate hole_plate(Sideways sideways) {
+  HolePlate h;
+  const Eigen::Vector2d centre_uv(0.55, 0.45);
+  const double hole = 15;  // [mm]
+  UvLoop outer = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, rim;
+  constexpr int kSides = 360;
+  for (int k = 0; k < kSides; ++k) {
+    const double a = -2 * M_PI * k / kSides;  // clockwise: a hole
+    rim.emplace_back(centre_uv.x() + hole / 100 * std::cos(a), centre_uv.y() + hole / 80 * std::sin(a));
+  }
+  h.trim = Trim({outer, rim});
+  h.part.faces.emplace_back("plate", make_plane(h.origin, h.eu, h.ev), h.trim);
+  Scenario& s = h.s;
+  s.plan.probe = {"ball 4 mm", 2 * kRadius};
+  auto at = [&](const Eigen::Vector2d& uv) { return Eigen::Vector3d(h.origin + h.eu * uv.x() + h.ev * uv.y()); };
+  auto add = [&](const std::string& id, const Eigen::Vector2d& uv, const Eigen::Vector3d& centre) {
+    PlannedPoint p;
+    p.id = id;
+    p.face = "plate";
+    p.uv = uv;
+    p.ijk = Eigen::Vector3d::UnitZ();
+    p.xyz = centre - kRadius * p.ijk;
+    s.plan.points.push_back(p);
+    s.centres.push_back(centre);
+  };
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 8; ++j) {
+      const Eigen::Vector2d uv((i + 0.5) / 10, (j + 0.5) / 8);
+      if (!h.trim.contains(uv) || h.trim.distance_to_boundary(uv) < 0.05) continue;
+      add("G" + std::to_string(i) + "_" + std::to_string(j), uv, at(uv) + kRadius * Eigen::Vector3d::UnitZ());
+    }
+  s.rim_begin = s.plan.points.size();
+  for (int k = 0; k < 24; ++k) {
+    const int side = k * (kSides / 24);
+    const Eigen::Vector2d uv = 0.5 * (rim[static_cast<std::size_t>(side)] + rim[static_cast<std::size_t>(side + 1) % kSides]);
+    const Eigen::Vector3d inward = (at(centre_uv) - at(uv)).normalized();  // across the edge, into the hole
+    const double beside = sideways(k);
+    const double height = std::sqrt(kRadius * kRadius - beside * beside);
+    add("E" + std::to_string(k), uv, at(uv) + beside * inward + height * Eigen::Vector3d::UnitZ());
+  }
+  s.rim_end = s.plan.points.size();
+  for (std::size_t k = 0; k < s.plan.points.size(); ++k) s.plan.points[k].order = static_cast<int>(k) + 1;
+  return h;
+}
+
+// Registers the plate's balls measured at `truth` and checks every rim
+// ball: foot on the trim edge, kept, its deviation the exact distance to the
+// plate less its hole (less the radius) and within the noise.
+void check_hole_rim(const HolePlate& h) {
+  const ClosestPointFinder finder(h.part);
+  const Eigen::Isometry3d truth = motion({2, -3, 25}, {8, 5, -3});
+  const MeasurementSet set = measure(h.s.centres, h.s.plan, truth, 17);
+  const RegistrationResult r = register_measurements(finder, set, &h.s.plan, options());
+  REQUIRE(r.converged);
+  CHECK(r.in_fit_count() == set.points.size());
+  int beside = 0;
+  for (std::size_t i = h.s.rim_begin; i < h.s.rim_end; ++i) {
+    CAPTURE(i);
+    const RegisteredPoint& p = r.points[i];
+    CHECK(p.foot.location == FootLocation::trim_edge);
+    CHECK(p.outlier == OutlierReason::none);
+    CHECK(p.in_fit);
+    CHECK(p.evaluated);
+    const Eigen::Vector3d offset = p.registered - p.foot.point;
+    beside += (offset - offset.dot(p.foot.normal) * p.foot.normal).norm() > 0.05;
+    // The foot is converged to 1e-9 mm on the polygon edge.
+    const double oracle = planar_region_distance(p.registered, h.origin, h.eu, h.ev, h.trim) - kRadius;
+    CAPTURE(oracle - p.deviation);
+    CHECK(std::abs(p.deviation - oracle) < 1e-7);
+    CHECK(std::abs(p.deviation) < 5 * kNoise);
+  }
+  CHECK(beside >= 12);
+}
+
+TEST_CASE("edge points: probe balls touching a drilled hole's rim on a trimmed plate keep the exact distance to the trim") {
+  // Offsets from 0.05 to 1.8 mm, the same on opposite sides of the hole.
+  check_hole_rim(hole_plate([](int k) { return 0.05 + 1.75 * ((k * 7) % 12) / 11.0; }));
+}
+
+// Known limitation (docs/registration.md "Points at an edge"): a plate's
+// slides and turn are held and settled by its edge points, each pulled
+// toward f + r n - a ball above the face. A ball that touches the rim from
+// beyond on purpose sits beside that target, so when such balls are not
+// balanced around the hole their pull drags the held motions by a
+// fraction of a millimetre and the rim balls end up off the part. Telling
+// a rim contact from a point the start left off the face needs more than
+// the point itself (the plan's nominal contact); until then this fails.
+TEST_CASE("edge points: unbalanced rim contacts around a hole drag the held slides" * doctest::should_fail()) {
+  check_hole_rim(hole_plate([](int k) { return 0.05 + 1.75 * ((k * 7) % 24) / 23.0; }));
 }
 
 TEST_CASE("edge points: a fit started with corner points off the face never loses them and recovers the transform") {
