@@ -98,10 +98,13 @@ void fill_triangle(PartRaster& r, const Vertex& a, const Vertex& b, const Vertex
   if (!(std::abs(area) > 1e-12)) return;
   const double x_lo = std::min({a.xy.x(), b.xy.x(), c.xy.x()}), x_hi = std::max({a.xy.x(), b.xy.x(), c.xy.x()});
   const double y_lo = std::min({a.xy.y(), b.xy.y(), c.xy.y()}), y_hi = std::max({a.xy.y(), b.xy.y(), c.xy.y()});
-  const int x0 = std::max(0, static_cast<int>(std::ceil(x_lo - 0.5)));
-  const int x1 = std::min(r.width - 1, static_cast<int>(std::floor(x_hi - 0.5)));
-  const int y0 = std::max(0, static_cast<int>(std::ceil(y_lo - 0.5)));
-  const int y1 = std::min(r.height - 1, static_cast<int>(std::floor(y_hi - 0.5)));
+  // Clamped in double first: a face reaching far beyond the view (an
+  // untrimmed surface around a small trimmed patch) must not overflow int.
+  if (!(x_hi >= 0 && y_hi >= 0 && x_lo <= r.width && y_lo <= r.height)) return;
+  const int x0 = static_cast<int>(std::max(0.0, std::ceil(x_lo - 0.5)));
+  const int x1 = static_cast<int>(std::min(r.width - 1.0, std::floor(x_hi - 0.5)));
+  const int y0 = static_cast<int>(std::max(0.0, std::ceil(y_lo - 0.5)));
+  const int y1 = static_cast<int>(std::min(r.height - 1.0, std::floor(y_hi - 0.5)));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       const Eigen::Vector2d p(x + 0.5, y + 0.5);
@@ -139,6 +142,7 @@ std::pair<int, int> tessellation(const Face& face, const ViewCamera& camera) {
     along_v = std::max(along_v, lv);
   }
   auto lines = [](double pixels) {
+    if (!std::isfinite(pixels)) return 1024;  // a face beyond any scale: the finest tessellation
     return static_cast<int>(std::clamp(std::ceil(pixels / 2), 2.0, 1024.0));
   };
   return {lines(along_u), lines(along_v)};
@@ -164,8 +168,8 @@ ViewCamera centred_camera(ViewDirection direction, const Eigen::AlignedBox3d& bo
 
 bool PartRaster::visible(const Eigen::Vector3d& p, double tolerance) const {
   const Eigen::Vector2d xy = camera.to_pixel(p);
-  const int x = static_cast<int>(std::floor(xy.x())), y = static_cast<int>(std::floor(xy.y()));
-  if (!(x >= 0 && y >= 0 && x < width && y < height)) return false;
+  if (!(xy.x() >= 0 && xy.y() >= 0 && xy.x() < width && xy.y() < height)) return false;  // NaN too
+  const int x = static_cast<int>(xy.x()), y = static_cast<int>(xy.y());
   const double d = camera.depth(p);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {

@@ -239,3 +239,25 @@ TEST_CASE("part views: every pixel is its face's paint, shaded, or a line where 
   CHECK(lines < painted / 10);
   CHECK(part_views_png(fig) == part_views_png(draw_part_views("test", part, paint, {})));
 }
+
+TEST_CASE("part views: a huge surface of which the trim keeps a small square is drawn at the square's scale") {
+  // A plane 1.8e6 mm wide trimmed to a 10 mm square near its middle: the
+  // surface around the square projects some 1e8 pixels away.
+  const double half = 9e5;  // within the coordinate limit (docs/formats.md "Limits")
+  Part part;
+  const double a = 0.5 - 5 / (2 * half), b = 0.5 + 5 / (2 * half);
+  part.faces.emplace_back("square", make_plane({-half, -half, 3}, {2 * half, 0, 0}, {0, 2 * half, 0}),
+                          Trim({{{a, a}, {b, a}, {b, b}, {a, b}}}));
+  const PartViewsFigure fig = draw_part_views("huge", part, [](std::size_t, const Eigen::Vector2d&) {
+    return SurfacePaint{Rgb{200, 100, 50}, 0};
+  }, {});
+  const PartRaster& top = fig.panels[0].raster;
+  int covered = 0;
+  for (int y = 0; y < top.height; ++y)
+    for (int x = 0; x < top.width; ++x) covered += top.covered(x, y);
+  // The square fills the panel less its margin (the views share one scale,
+  // set by the view that needs the most room).
+  const double side = 10 * top.camera.scale;
+  CHECK(covered == doctest::Approx(side * side).epsilon(0.05));
+  CHECK(side > 200);
+}
