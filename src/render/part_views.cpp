@@ -154,12 +154,21 @@ PartViewsFigure draw_part_views(const std::string& title, const Part& part, cons
     plot::text(img, view_caption(directions[k]), {panel.left + 8, panel.top - 6}, 0.45);
     draw_scale_bar(img, panel);
     const double tolerance = 1.5 / scale;
+    // In the given order, each where it overlaps no label already placed
+    // in this view (dense views would otherwise print one over another).
+    std::vector<cv::Rect> placed;
     for (const ViewLabel& label : labels) {
       const auto seen = key_pixels.find(label.key);
       if (seen == key_pixels.end() || seen->second < label.min_pixels) continue;
       if (!panel.raster.visible(label.at, tolerance)) continue;
       const Eigen::Vector2d at = panel.to_figure(label.at);
       const cv::Point p(static_cast<int>(std::lround(at.x())), static_cast<int>(std::lround(at.y())));
+      int baseline = 0;
+      const cv::Size size = cv::getTextSize(label.text, plot::kFont, 0.4, 4, &baseline);
+      const cv::Rect box(p.x - size.width / 2 - 2, p.y - size.height / 2 - 2, size.width + 4, size.height + 4);
+      if (std::any_of(placed.begin(), placed.end(), [&](const cv::Rect& r) { return (r & box).area() > 0; }))
+        continue;
+      placed.push_back(box);
       plot::text_centred(img, label.text, p, 0.4, plot::kPaper, 4);
       plot::text_centred(img, label.text, p, 0.4, plot::kInk, 1);
     }

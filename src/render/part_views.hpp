@@ -48,7 +48,8 @@ struct LegendEntry {
 
 // A text placed at a point of the part in every view that sees the point
 // and shows at least `min_pixels` pixels of `key` (so a sliver seen edge-on
-// gets no label).
+// gets no label), unless it would overlap a label placed before it in that
+// view (labels are placed in the order given).
 struct ViewLabel {
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   std::string text;
