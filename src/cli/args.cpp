@@ -142,30 +142,6 @@ void Args::finish() const {
   }
 }
 
-std::pair<int, int> parse_grid(const std::string& text, const std::string& option) {
-  const auto x = text.find('x');
-  auto bad = [&]() -> std::pair<int, int> {
-    throw InputError("--" + option + " expects COUNTUxCOUNTV with counts of at least 1 "
-                     "(e.g. 400x300), got " + quote_field(text));
-  };
-  if (x == std::string::npos) {
-    // A single count means the same in both directions.
-    char* end = nullptr;
-    const long n = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || end != text.c_str() + text.size() || n < 1 || n > 100000) return bad();
-    return {static_cast<int>(n), static_cast<int>(n)};
-  }
-  const std::string a = text.substr(0, x), b = text.substr(x + 1);
-  char* ea = nullptr;
-  char* eb = nullptr;
-  const long nu = std::strtol(a.c_str(), &ea, 10);
-  const long nv = std::strtol(b.c_str(), &eb, 10);
-  if (a.empty() || b.empty() || ea != a.c_str() + a.size() || eb != b.c_str() + b.size() ||
-      nu < 1 || nv < 1 || nu > 100000 || nv > 100000)
-    return bad();
-  return {static_cast<int>(nu), static_cast<int>(nv)};
-}
-
 std::vector<double> parse_number_list(const std::string& text, std::size_t count,
                                       const std::string& option) {
   std::vector<double> out;

@@ -52,8 +52,6 @@ class Args {
   std::vector<bool> used_;
 };
 
-// Parses "400x300" into two counts >= 1; throws naming `option`.
-std::pair<int, int> parse_grid(const std::string& text, const std::string& option);
 // Parses a comma-separated list of numbers of the given count.
 std::vector<double> parse_number_list(const std::string& text, std::size_t count,
                                       const std::string& option);

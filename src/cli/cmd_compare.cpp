@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
 #include "base/output_set.hpp"
@@ -17,6 +18,7 @@
 #include "partition/regions_file.hpp"
 #include "report/qa_report.hpp"
 #include "report/report_qif.hpp"
+#include "stage/compare_options.hpp"
 #include "stage/compare_stage.hpp"
 
 namespace furrow::cli {
@@ -34,9 +36,6 @@ int run_compare(Args& args) {
   const auto qif_path = args.option("qif");  // QIF 3.0 Results next to comparison.json (docs/qif.md)
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
-  const std::string align = args.option_or("align", "bestfit");
-  const std::string dof = args.option_or("dof", "all");
-  const std::string loss = args.option_or("loss", "cauchy");
   const auto points = args.option("points");
   const auto probe_diameter = args.number("probe-diameter");
   const auto units_option = args.option("units");
@@ -45,34 +44,16 @@ int run_compare(Args& args) {
   const bool decimal_comma = args.flag("decimal-comma");
   const auto columns = args.option("columns");
   const auto ipp_program = args.option("ipp-program");
-  const double sigmas = args.positive_or("outlier-sigma", 5);
-  const bool keep_all = args.flag("no-outlier-rejection");
   CompareOptions options;
-  PredictionComparisonOptions& pc = options.prediction;
-  pc.probe_sigma = args.positive_or("probe-sigma", pc.probe_sigma);
-  pc.max_normalised_rms = args.positive_or("explained-rms", pc.max_normalised_rms);
-  pc.align = !args.flag("no-prediction-alignment");
-  GougeConfirmationOptions& gc = options.gouges;
-  gc.overcut_sigmas = args.positive_or("overcut-sigmas", gc.overcut_sigmas);
-  gc.tolerance_fraction = args.non_negative_or("overcut-fraction", gc.tolerance_fraction);
-  gc.site_margin = args.non_negative_or("site-margin", gc.site_margin);
-  gc.contact_cluster_distance = args.non_negative_or("contact-cluster", gc.contact_cluster_distance);
-  gc.overcut_cluster_distance = args.non_negative_or("overcut-cluster", gc.overcut_cluster_distance);
-  if (gc.tolerance_fraction > 1) args.fail("--overcut-fraction must lie between 0 and 1");
+  read_option_flags(args, compare_option_table(), options);
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
 
   options.tolerance =
       ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
-  options.align = parse_align_method(align, "--align");
-  RegistrationOptions& reg = options.registration;
-  reg.dof = DegreesOfFreedom::parse(dof, "--dof");
-  reg.loss = parse_robust_loss(loss, "--loss");
   scale_registration_to_tolerance(options);
-  reg.outlier_sigma = sigmas;
-  reg.flag_outliers = !keep_all;
   if (isatty(STDERR_FILENO))
-    reg.progress = [](const std::string& what) {
+    options.registration.progress = [](const std::string& what) {
       std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
     };
 
@@ -139,7 +120,7 @@ int run_compare(Args& args) {
     return compare_stage(part, set, plan ? &*plan : nullptr, regions ? &*regions : nullptr,
                          prediction ? &*prediction : nullptr, options);
   });
-  if (reg.progress) std::fprintf(stderr, "\r%-34s\r", "");
+  if (options.registration.progress) std::fprintf(stderr, "\r%-34s\r", "");
   ComparisonSources sources;
   sources.part = part_path;
   sources.measurements = measurements;
@@ -193,7 +174,7 @@ int run_compare(Args& args) {
     const ResidualStatistics& o = c.prediction->overall;
     std::printf("prediction: %zu points compared, residual rms %.4f mm, normalised rms %.2f, "
                 "%.1f %% within %g sigma -> %s\n",
-                o.count, o.rms, o.normalised_rms, 100 * o.within_share, pc.within_sigmas,
+                o.count, o.rms, o.normalised_rms, 100 * o.within_share, options.prediction.within_sigmas,
                 to_string(o.verdict));
     std::size_t by_status[3] = {0, 0, 0};
     for (const GougeSiteCheck& site : c.gouges->sites) ++by_status[static_cast<int>(site.status)];
@@ -207,6 +188,8 @@ int run_compare(Args& args) {
   for (const InconclusiveReason& r : s.inconclusive) std::printf("  %s\n", r.text.c_str());
   return exit_status(s.verdict, s.alignment);
 }
+
+std::string compare_options_help() { return option_help_lines(describe(compare_option_table())); }
 
 }  // namespace
 
@@ -237,20 +220,9 @@ const Command kCompareCommand = {
     "  --regions FILE       regions.json of PART (furrow partition): each point's\n"
     "                       region is the one holding its foot point; statistics\n"
     "                       per region (default: the plan points' regions)\n"
-    "  --align A            bestfit (default: a robust best fit, form only), cmm\n"
-    "                       (the CMM program aligned the part: evaluated as\n"
-    "                       measured, no fit) or datums (the 3-2-1 datum frame\n"
-    "                       from the plan's datum points, needs --plan: form +\n"
-    "                       location); cmm and datums also give the best-fit\n"
-    "                       profile (docs/registration.md \"Alignments\")\n"
     "  --tolerance T        profile tolerance zone width in mm (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2 =\n"
     "                       bilateral; T unilateral outside, 0 unilateral inside)\n"
-    "  --dof D              all (default), translation, rotation, or a list of\n"
-    "                       rx,ry,rz,tx,ty,tz to fit; locked ones stay at zero and\n"
-    "                       the fit starts from the CMM frame as is\n"
-    "  --loss L             cauchy (default), huber or none (first fit; the final\n"
-    "                       fit after outlier rejection is least squares)\n"
     "  --points K           centre (default for CSV/XYZ) or contact (default for\n"
     "                       DMIS and I++ DME)\n"
     "  --probe-diameter D   ball diameter in mm (default: the plan's probe)\n"
@@ -266,25 +238,16 @@ const Command kCompareCommand = {
     "                       columns, units); the options above override it\n"
     "  --ipp-program FILE   the .prg an I++ DME response log answers: its PtMeas\n"
     "                       targets become the points' nominals\n"
-    "  --outlier-sigma K    robust sigmas that make a deviation large (default 5)\n"
-    "  --no-outlier-rejection  keep every point in the fit\n"
     "  --out FILE           comparison.json to write\n"
     "  --qif FILE           also write the results as a QIF 3.0 Results document\n"
     "                       (ISO 23952): points, surface profile, per-point\n"
     "                       status, verdict, inputs with SHA-256 (docs/qif.md)\n"
-    "\n"
-    "Verification against a machining prediction (docs/verification.md):\n"
     "  --prediction FILE    prediction.json of PART (furrow predict): predicted vs\n"
-    "                       measured and gouge confirmation; a CONFIRMED gouge\n"
-    "                       fails the part\n"
-    "  --probe-sigma S      probing noise 1-sigma in mm (default 0.002)\n"
-    "  --explained-rms R    largest RMS of residual/sigma for \"explained\" (1.5)\n"
-    "  --no-prediction-alignment  compare best-fit deviations as they are\n"
-    "  --overcut-sigmas K   an overcut exceeds K sigma of the deviation (3) ...\n"
-    "  --overcut-fraction F ... and F times the zone's lower limit (0.5)\n"
-    "  --site-margin M      mm around a predicted site where points count (1)\n"
-    "  --contact-cluster D  local-gouge contacts within D mm form one site (2)\n"
-    "  --overcut-cluster D  unexplained overcuts within D mm form one cluster (5)\n",
-    run_compare};
+    "                       measured and gouge confirmation (docs/verification.md);\n"
+    "                       a CONFIRMED gouge fails the part\n"
+    "\n"
+    "Comparison options (a job file's \"comparison\" members, docs/options.md); the\n"
+    "last eight apply to the verification against a prediction:\n",
+    run_compare, compare_options_help};
 
 }  // namespace furrow::cli

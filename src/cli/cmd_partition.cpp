@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
+#include "stage/partition_options.hpp"
 #include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/output_set.hpp"
@@ -55,28 +57,14 @@ void print_summary(std::ostream& out, const std::string& path, const PartitionRe
 }
 
 int run_partition(Args& args) {
-  const auto grid = args.option("grid");
-  const auto spacing = args.number("spacing");
-  const auto eps = args.number("eps");
-  const auto min_area = args.number("min-area");
+  PartitionOptions options;
+  read_option_flags(args, partition_option_table(), options);
   const std::string out_path = args.required_option("out");
   const auto image_path = args.option("image");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
 
-  PartitionOptions options;
-  if (grid && spacing) args.fail("--grid and --spacing exclude each other");
-  if (grid) {
-    const auto [nu, nv] = parse_grid(*grid, "grid");
-    options.grid = GridSize{nu, nv};
-  }
-  if (spacing && !(*spacing > 0)) args.fail("--spacing must be positive (mm), got " + general(*spacing));
-  options.spacing = spacing;
-  if (eps && *eps < 0) args.fail("--eps must not be negative, got " + general(*eps));
-  options.eps = eps;
-  if (min_area && *min_area < 0)
-    args.fail("--min-area must not be negative, got " + general(*min_area));
-  options.min_area = min_area;
+  check_partition_options(options, "furrow partition: --grid, --spacing");
   if (lower_extension(out_path) != ".json") args.fail("--out " + out_path + ": expected a .json file name");
   if (image_path && lower_extension(*image_path) != ".png")
     args.fail("--image " + *image_path + ": expected a .png file name");
@@ -106,6 +94,8 @@ int run_partition(Args& args) {
   return kExitOk;
 }
 
+std::string partition_options_help() { return option_help_lines(describe(partition_option_table())); }
+
 }  // namespace
 
 const Command kPartitionCommand = {
@@ -124,12 +114,8 @@ const Command kPartitionCommand = {
     "\n"
     "  --out FILE       regions file to write (.json, required)\n"
     "  --image FILE     also draw the regions on the part in four views (.png)\n"
-    "  --grid NUxNV     cells per face along u and v (or N for NxN)\n"
-    "  --spacing MM     cell size on the surface instead (default: the largest face\n"
-    "                   gets 400 cells along its longest side)\n"
-    "  --eps K          curvature tolerance in 1/mm (default per face:\n"
-    "                   max(1e-4, 1% of the face's 90th-percentile |k|))\n"
-    "  --min-area MM2   smallest region kept (default 0.5% of each face's area)\n",
-    run_partition};
+    "\n"
+    "Partition options (a job file's \"partition\" members, docs/options.md):\n",
+    run_partition, partition_options_help};
 
 }  // namespace furrow::cli

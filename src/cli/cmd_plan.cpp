@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/probe_options.hpp"
+#include "cli/option_flags.hpp"
 #include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "base/atomic_file.hpp"
@@ -16,6 +16,7 @@
 #include "machining/prediction/prediction_file.hpp"
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
+#include "stage/plan_options.hpp"
 #include "stage/plan_stage.hpp"
 #include "inspection/tolerance_zone.hpp"
 #include "io/plan_file.hpp"
@@ -90,23 +91,8 @@ int run_plan(Args& args) {
   const std::string regions_path = args.required_option("regions");
   const std::string out = args.required_option("out");
   const std::optional<std::string> prediction_path = args.option("prediction");
-  o.points = args.integer("points");
-  o.density = args.number("density");
-  o.min_per_region = static_cast<int>(args.integer_or("min-per-region", o.min_per_region, 0));
-  if (const auto s = args.option("strategy")) o.strategy = parse_sampling_strategy(*s, "furrow plan: --strategy");
-  o.seed = static_cast<std::uint64_t>(args.integer_or("seed", 1, 0));
-  o.border = args.number("border");
-  o.probe_name = args.option_or("probe-name", o.probe_name);
-  o.probe_diameter = args.number_or("probe-diameter", o.probe_diameter);
-  read_probe_motion_options(args, o);
-  read_program_options(args, o);
-  read_datum_option(args, o);
+  read_option_flags(args, plan_option_table(), o);
   const std::optional<std::string> head_path = args.option("head");
-  o.motion.move_speed = args.number_or("move-speed", o.motion.move_speed);
-  o.motion.touch_speed = args.number_or("touch-speed", o.motion.touch_speed);
-  o.motion.acceleration = args.number_or("acceleration", o.motion.acceleration);
-  o.motion.dwell = args.number_or("dwell", o.motion.dwell);
-  o.gouge_points = static_cast<int>(args.integer_or("gouge-points", o.gouge_points, 1));
   // The profile zone plan.qif states (docs/qif.md), as `furrow compare` takes it.
   const double qif_tolerance = args.positive_or("tolerance", 0.05);
   const auto qif_outside = args.number("outside");
@@ -174,20 +160,15 @@ int run_plan(Args& args) {
   return stage.coverage.complete() || allow_uncovered ? kExitOk : kExitFail;
 }
 
+std::string plan_options_help() { return option_help_lines(describe(plan_option_table())); }
+
 }  // namespace
 
 const Command kPlanCommand = {
     "plan", "probe points per region, collision-checked, DMIS and I++ DME programs",
     "usage: furrow plan PART --regions REGIONS.json --out FOLDER [--prediction PREDICTION.json]\n"
-    "                   [--points N | --density PER_CM2] [--min-per-region N]\n"
-    "                   [--strategy hammersley|halton|stratified|grid|random|curvature|risk]\n"
-    "                   [--seed N] [--border MM] [--probe-name NAME] [--probe-diameter MM]\n"
-    "                   [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
-    "                   [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
-    "                   [--move-speed MM/S] [--touch-speed MM/S] [--acceleration MM/S2]\n"
-    "                   [--dwell S] [--gouge-points N] [--tolerance T] [--outside A]\n"
-    "                   [--revision TEXT] [--program-date YYYY-MM-DD] [--head-length MM]\n"
-    "                   [--datums auto|FACE,FACE,FACE] [--head HEAD.json] [--allow-uncovered]\n"
+    "                   [--tolerance T] [--outside A] [--head HEAD.json] [--allow-uncovered]\n"
+    "                   [plan options]\n"
     "\n"
     "Plans CMM probe points on every region of REGIONS.json (furrow partition), keeps\n"
     "them BORDER mm from the region edges, checks that a vertical stylus reaches each\n"
@@ -203,37 +184,9 @@ const Command kPlanCommand = {
     "  --prediction FILE    machining prediction of PART (furrow predict): more points\n"
     "                       where larger errors are predicted, points on every\n"
     "                       predicted gouge site, and --strategy risk\n"
-    "  --points N           total points, or\n"
-    "  --density D          points per cm^2 of region area (default 1)\n"
-    "  --min-per-region N   fewest points in any region (default 5)\n"
-    "  --strategy S         sampling inside regions (default hammersley, see docs/cmm.md;\n"
-    "                       risk: at the predicted error maxima, needs --prediction)\n"
-    "  --seed N             random seed (default 1)\n"
-    "  --border MM          clearance from region edges on the surface (default probe\n"
-    "                       radius + 1)\n"
-    "  --probe-name NAME    tool / sensor name on the CMM (default Probe1)\n"
-    "  --probe-diameter MM  ball diameter (default 2)\n"
-    "  --stylus-length MM   ball centre to probe body (default 20)\n"
-    "  --stylus-diameter MM shaft diameter (default 1)\n"
-    "  --approach MM        touch starts this far from the surface (default 3)\n"
-    "  --retract MM         back-off after the touch (default 3)\n"
-    "  --search MM          search past the nominal point (default = approach)\n"
-    "  --clearance MM       ball-to-part clearance of straight moves; the clearance\n"
-    "                       plane is this far above the part (default 2)\n"
-    "  --max-tilt DEG       largest angle between normal and vertical (default 75)\n"
-    "  --move-speed, --touch-speed  positioning and measuring speeds the programs set\n"
-    "                       (defaults 50 mm/s, 4 mm/s)\n"
-    "  --acceleration, --dwell  for the cycle time estimate (defaults 500 mm/s^2, 0.2 s)\n"
-    "  --gouge-points N     points on each predicted gouge site (default 1)\n"
     "  --tolerance T        profile zone width in mm stated in plan.qif and, per\n"
     "                       point, in the DMIS program (TOL/PROFP) (default 0.05)\n"
     "  --outside A          part of the zone on the + side in mm (default T/2)\n"
-    FURROW_PROGRAM_OPTIONS_HELP
-    "  --datums auto|A,B,C  part alignment measured first (docs/cmm.md \"Part\n"
-    "                       alignment\"): auto (default) proposes the largest plane\n"
-    "                       facing +z, the largest wall, the largest wall across it;\n"
-    "                       or three face names; a part without them gets a manual\n"
-    "                       best-fit alignment on three points\n"
     "  --head FILE          indexable probe head (docs/formats.md \"Probe head\"): each\n"
     "                       point gets a qualified tip that reaches it, points are\n"
     "                       grouped by tip; the file gives the stylus, and\n"
@@ -242,8 +195,10 @@ const Command kPlanCommand = {
     "                       --min-per-region points (they are still reported, and\n"
     "                       plan.json lists them so no verdict passes them unseen)\n"
     "\n"
+    "Plan options (a job file's \"plan\" members, docs/options.md):\n",
+    run_plan, plan_options_help,
+    "\n"
     "Exit status: 0 every region holds its minimum (or --allow-uncovered), 1 some\n"
-    "region does not (named with the reason; the files are written), 2 bad input.\n",
-    run_plan};
+    "region does not (named with the reason; the files are written), 2 bad input.\n"};
 
 }  // namespace furrow::cli

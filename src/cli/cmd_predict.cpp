@@ -8,6 +8,8 @@
 #include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
+#include "stage/prediction_options.hpp"
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
@@ -138,29 +140,13 @@ int run_predict(Args& args) {
   const auto map_path = args.option("map");
   const auto regions = args.option("regions");
   PathPredictionOptions options;
-  options.tolerance = args.positive_or("tolerance", 0.01);
-  options.gouge_threshold = args.positive_or("gouge-threshold", 2 * options.tolerance);
-  const auto resolution = args.number("resolution");
-  options.map.cell_size = args.positive_or("cell", 1.0);
+  read_option_flags(args, prediction_option_table(), options);
+  if (!(options.gouge_threshold > 0)) options.gouge_threshold = 2 * options.tolerance;
   const double scale_um = args.positive_or("map-scale", 2000 * options.tolerance);
   ToolpathReadOptions read_options;
   read_options.units = args.option_or("units", "mm");
-  const auto stock = args.option("stock");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
-  if (stock) {
-    const std::vector<double> b = parse_number_list(*stock, 6, "stock");
-    const Eigen::Vector3d lo(b[0], b[1], b[2]), hi(b[3], b[4], b[5]);
-    for (int a = 0; a < 3; ++a)
-      if (!(lo[a] < hi[a]))
-        args.fail("--stock " + *stock + ": expected xmin,ymin,zmin,xmax,ymax,zmax with each min below its max (" +
-                  std::string(1, char('x' + a)) + ")");
-    options.stock = Eigen::AlignedBox3d(lo, hi);
-  }
-  if (resolution) {
-    if (!(*resolution > 0)) args.fail("--resolution must be positive (mm)");
-    options.resolution = *resolution;
-  }
   // Only APT CL data names its cutter (CUTTER/): any other path needs --tool,
   // said before any file is read.
   const std::string path_ext = lower_extension(toolpath_path);
@@ -217,6 +203,8 @@ int run_predict(Args& args) {
   return predicted.record.rapids.gouges.empty() ? kExitOk : kExitFail;
 }
 
+std::string prediction_options_help() { return option_help_lines(describe(prediction_option_table())); }
+
 }  // namespace
 
 const Command kPredictCommand = {
@@ -263,17 +251,10 @@ const Command kPredictCommand = {
     "                        ridge (R) between passes marked and given under it\n"
     "  --regions FILE        regions.json of furrow partition for PART: error summary\n"
     "                        (mean, largest undercut and overcut) per region\n"
-    "  --tolerance MM        steps are compared with it (default 0.01)\n"
-    "  --gouge-threshold MM  overcut deeper than this is a gouge site (default: twice the\n"
-    "                        tolerance; a path planned to the tolerance overcuts up to it)\n"
-    "  --resolution MM       z-map node spacing (default from the tool and tolerance:\n"
-    "                        a tenth of the flat side step whose scallop is the\n"
-    "                        tolerance, rounded to 1/2/5; ball 6 mm at 0.01: 0.05)\n"
-    "  --cell MM             size of the stored error cells on the surface (default 1)\n"
     "  --map-scale UM        colour saturation of the PNG in um (default 2 x tolerance)\n"
     "  --units U             units of CSV paths and of G-code before G20/G21 (default mm)\n"
-    "  --stock BOX           raw stock box in the part frame, mm: a rapid whose tip is\n"
-    "                        below its top while the cutter is over it is a rapid gouge\n",
-    run_predict};
+    "\n"
+    "Prediction options (a job file's \"prediction\" members, docs/options.md):\n",
+    run_predict, prediction_options_help};
 
 }  // namespace furrow::cli

@@ -10,7 +10,8 @@
 #include "base/error.hpp"
 #include "base/output_set.hpp"
 #include "cli/commands.hpp"
-#include "cli/probe_options.hpp"
+#include "cli/option_flags.hpp"
+#include "stage/plan_options.hpp"
 #include "inspection/comparison_file.hpp"
 #include "io/cmm/dmis_writer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
@@ -23,6 +24,16 @@ namespace furrow::cli {
 
 namespace {
 
+// The plan options a re-measuring plan takes: the stylus, the moves and
+// what the programs state (the probe itself defaults to the plan's).
+OptionTable<PlannerOptions> remeasure_table() {
+  std::vector<std::string> keys = kProbeMotionKeys;
+  keys.insert(keys.end(), kProgramKeys.begin(), kProgramKeys.end());
+  return only_options(plan_option_table(), keys);
+}
+
+std::string remeasure_options_help() { return option_help_lines(describe(remeasure_table())); }
+
 int run_remeasure(Args& args) {
   const std::string out = args.required_option("out");
   const auto part_option = args.option("part");
@@ -34,10 +45,7 @@ int run_remeasure(Args& args) {
   PlannerOptions& p = o.planner;
   const auto probe_name = args.option("probe-name");
   if (probe_name) p.probe_name = *probe_name;
-  read_probe_motion_options(args, p);
-  read_program_options(args, p);
-  p.motion.move_speed = args.number_or("move-speed", p.motion.move_speed);
-  p.motion.touch_speed = args.number_or("touch-speed", p.motion.touch_speed);
+  read_option_flags(args, remeasure_table(), p);
   const std::string comparison_path = args.positional("COMPARISON (comparison.json of furrow compare)");
   args.finish();
 
@@ -124,10 +132,7 @@ const Command kRemeasureCommand = {
     "remeasure", "a plan and CMM programs that probe what an INCONCLUSIVE verdict left open",
     "usage: furrow remeasure COMPARISON.json --out FOLDER [--part PART] [--plan PLAN]\n"
     "                        [--radius MM] [--ring N] [--probe-diameter MM] [--probe-name NAME]\n"
-    "                        [--stylus-length MM] [--stylus-diameter MM] [--approach MM]\n"
-    "                        [--retract MM] [--search MM] [--clearance MM] [--max-tilt DEG]\n"
-    "                        [--move-speed MM/S] [--touch-speed MM/S] [--revision TEXT]\n"
-    "                        [--program-date YYYY-MM-DD] [--head-length MM]\n"
+    "                        [probe, move and program options]\n"
     "\n"
     "Reads the reasons of an INCONCLUSIVE comparison (furrow compare) and plans\n"
     "the points that answer them, in the part frame of the original plan:\n"
@@ -154,11 +159,8 @@ const Command kRemeasureCommand = {
     "  --probe-diameter MM  ball diameter (default: the plan's, else the\n"
     "                       comparison's)\n"
     "  --probe-name NAME    tool / sensor name (default: the plan's)\n"
-    "  --stylus-length, --stylus-diameter, --approach, --retract, --search,\n"
-    "  --clearance, --max-tilt   as for furrow plan\n"
-    "  --move-speed, --touch-speed  positioning and measuring speeds the programs\n"
-    "                       set (defaults 50 mm/s, 4 mm/s)\n"
-    FURROW_PROGRAM_OPTIONS_HELP,
-    run_remeasure};
+    "\n"
+    "Probe, move and program options, as for furrow plan (docs/options.md):\n",
+    run_remeasure, remeasure_options_help};
 
 }  // namespace furrow::cli

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
+#include "stage/simulation_options.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/prediction_comparison.hpp"
 #include "base/output_set.hpp"
@@ -19,30 +21,13 @@ namespace {
 int run_simulate(Args& args) {
   const std::string plan_path = args.required_option("plan");
   const std::string out = args.required_option("out");
-  const std::string misalign = args.option_or("misalign", "0,0,0,0,0,0");
-  const double noise = args.non_negative_or("noise", 0.002);
-  const long outliers = args.integer_or("outliers", 0, 0);
-  const std::string sizes = args.option_or("outlier-size", "0.1,1");
-  const long seed = args.integer_or("seed", 1, 0);
-  const std::string points = args.option_or("points", "centre");
-  const bool anonymous = args.flag("anonymous");
+  SimulationOptions o;
+  read_option_flags(args, simulation_option_table(), o);
   const auto prediction_path = args.option("prediction");
   const std::vector<std::string> bumps = args.repeated_option("bump");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
 
-  SimulationOptions o;
-  const std::vector<double> m = parse_number_list(misalign, 6, "misalign");
-  o.misalignment = {{m[0], m[1], m[2]}, {m[3], m[4], m[5]}};
-  o.noise_sigma = noise;
-  o.blunders = static_cast<int>(outliers);
-  const std::vector<double> range = parse_number_list(sizes, 2, "outlier-size");
-  o.blunder_min = range[0];
-  o.blunder_max = range[1];
-  if (seed > 0xffffffffL) args.fail("--seed must fit in 32 bits");
-  o.seed = static_cast<std::uint32_t>(seed);
-  o.kind = parse_probe_point_kind(points, "--points");
-  o.anonymous = anonymous;
   for (const std::string& text : bumps) {
     const std::vector<double> b = parse_number_list(text, 5, "bump");
     if (!(b[3] > 0)) args.fail("--bump \"" + text + "\": the radius must be positive");
@@ -75,7 +60,7 @@ int run_simulate(Args& args) {
   SimulatedMeasurement sim = simulate_measurement(plan, o, plan_path);
   // DMIS results carry the nominal F(label) of each point, as a CMM running
   // the plan's DMIS program writes them; a scan (--anonymous) has none.
-  if (!anonymous) {
+  if (!o.anonymous) {
     const auto index = plan.index_by_id();
     for (std::size_t k = 0; k < sim.set.points.size(); ++k) {
       const PlannedPoint& p = plan.points[index.at(sim.plan_ids[k])];
@@ -101,6 +86,8 @@ int run_simulate(Args& args) {
   return kExitOk;
 }
 
+std::string simulation_options_help() { return option_help_lines(describe(simulation_option_table())); }
+
 }  // namespace
 
 const Command kSimulateMeasurementCommand = {
@@ -114,14 +101,6 @@ const Command kSimulateMeasurementCommand = {
     "test and demo aid for `furrow compare`; every random draw comes from --seed.\n"
     "\n"
     "  --plan FILE          plan.json (points, normals, probe)\n"
-    "  --misalign R         \"rx,ry,rz,tx,ty,tz\": x_cmm = Rz Ry Rx x_part + t\n"
-    "                       (degrees, mm; default 0,0,0,0,0,0)\n"
-    "  --noise S            probing noise sigma in mm (default 0.002)\n"
-    "  --outliers N         number of blunders (default 0)\n"
-    "  --outlier-size A,B   blunder size range in mm, random sign (default 0.1,1)\n"
-    "  --seed S             random seed (default 1)\n"
-    "  --points K           centre (default) or contact\n"
-    "  --anonymous          no ids, points shuffled (as an unplanned scan)\n"
     "  --prediction FILE    prediction.json of PART: the machined surface is the\n"
     "                       nominal one plus the predicted error along the normal\n"
     "                       (nominal where the tool never reached; counted)\n"
@@ -132,7 +111,10 @@ const Command kSimulateMeasurementCommand = {
     "                       .csv (CSV), .dmo/.dms/.out (DMIS output: F() nominals\n"
     "                       and FA() actuals), .res/.log (I++ DME response log),\n"
     "                       .qif (QIF 3.0 Results, docs/qif.md); numbers read back\n"
-    "                       exactly (docs/formats.md)\n",
-    run_simulate};
+    "                       exactly (docs/formats.md)\n"
+    "\n"
+    "Simulation options (a job file's \"measurements\": {\"simulate\": ...} members,\n"
+    "docs/options.md):\n",
+    run_simulate, simulation_options_help};
 
 }  // namespace furrow::cli

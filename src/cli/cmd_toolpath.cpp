@@ -7,22 +7,17 @@
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
 #include "io/tool_file.hpp"
+#include "stage/toolpath_options.hpp"
 #include "stage/toolpath_stage.hpp"
 
 namespace furrow::cli {
 
 namespace {
-
-StepRule parse_rule(const std::string& text, Args& args) {
-  if (text == "exact") return StepRule::exact;
-  if (text == "chord") return StepRule::chord;
-  if (text == "circular-arc") return StepRule::circular_arc;
-  args.fail("--rule \"" + text + "\": expected exact, chord or circular-arc");
-}
 
 void print_summary(std::ostream& out, const ContactPlan& plan, const ContactPlanOptions& o) {
   double shortest = INFINITY, longest = 0, total = 0;
@@ -51,19 +46,10 @@ int run_toolpath(Args& args) {
   const std::string tool_path = args.required_option("tool");
   const std::string out_path = args.required_option("out");
   const auto contacts_option = args.option("contacts");
-  ContactPlanOptions options;
-  options.forward.tolerance = args.positive_or("tolerance", 0.01);
-  options.scallop = args.positive_or("scallop", 0.005);
-  options.forward.max_step = args.non_negative_or("max-step", 0);
-  const std::string direction_text = args.option_or("direction", "u");
-  const std::string rule_text = args.option_or("rule", "exact");
-  ToolpathWriteOptions write;
-  write.clearance = args.positive_or("clearance", 5.0);
-  write.feed = args.positive_or("feed", 1000);
+  ToolpathGeneration generation;
+  read_option_flags(args, toolpath_option_table(), generation);
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
-  const PassDirectionSpec direction = parse_pass_direction(direction_text, "--direction");
-  options.forward.rule = parse_rule(rule_text, args);
   std::string contacts_path = contacts_option.value_or(
       (std::filesystem::path(out_path).parent_path() / std::filesystem::path(out_path).stem()).string() + ".csv");
   OutputSet outputs;
@@ -76,7 +62,7 @@ int run_toolpath(Args& args) {
   const Cutter cutter(read_tool_file(tool_path));
   TerminalProgress progress;
   const GeneratedToolpath path = naming_inputs(part_path + " with " + tool_path, [&] {
-    return generate_toolpath(part, part_path, cutter, {direction, options, write}, [&](std::size_t d, std::size_t t) {
+    return generate_toolpath(part, part_path, cutter, generation, [&](std::size_t d, std::size_t t) {
       progress.update("planning passes", d, t);
     });
   });
@@ -84,18 +70,19 @@ int run_toolpath(Args& args) {
   outputs.file(contacts_path, path.contacts_csv);
   outputs.file(out_path, path.gcode);
   outputs.publish(out_path);
-  print_summary(std::cout, path.plan, options);
+  print_summary(std::cout, path.plan, generation.contacts);
   std::cout << "wrote " << out_path << " (tool tips) and " << contacts_path << " (contact points)\n";
   return kExitOk;
 }
+
+std::string toolpath_options_help() { return option_help_lines(describe(toolpath_option_table())); }
 
 }  // namespace
 
 const Command kToolpathCommand = {
     "toolpath", "plan a finishing path: contact points from a tolerance and a scallop height",
-    "usage: furrow toolpath PART --tool TOOL.json --out PATH.nc [--tolerance MM] [--scallop MM]\n"
-    "                       [--direction u|v|plane:ANGLE] [--rule exact|chord|circular-arc]\n"
-    "                       [--max-step MM] [--contacts FILE.csv] [--clearance MM] [--feed MM/MIN]\n"
+    "usage: furrow toolpath PART --tool TOOL.json --out PATH.nc [--contacts FILE.csv]\n"
+    "                       [tool-path options]\n"
     "\n"
     "Plans a 3-axis finishing path over PART: passes side by side, each next pass\n"
     "placed from the previous one so that the scallop between them stays at the\n"
@@ -106,16 +93,10 @@ const Command kToolpathCommand = {
     "\n"
     "  --tool FILE        tool JSON (ball, flat or bull; required)\n"
     "  --out FILE         G-code to write (required)\n"
-    "  --tolerance MM     largest error per step (default 0.01)\n"
-    "  --scallop MM       target scallop height between passes (default 0.005)\n"
-    "  --direction D      u or v: iso-parametric passes (v or u fixed); plane:ANGLE:\n"
-    "                     vertical sections at ANGLE degrees from +x (default u)\n"
-    "  --rule R           exact (default); chord: chord deviation = tolerance;\n"
-    "                     circular-arc: osculating-circle estimate (for comparison)\n"
-    "  --max-step MM      longest step (chord; default: no limit)\n"
     "  --contacts FILE    contact-point CSV (default: PATH with .csv)\n"
-    "  --clearance MM     rapid height above the highest tip (default 5)\n"
-    "  --feed MM/MIN      feed rate written on the first cut (default 1000)\n",
-    run_toolpath};
+    "\n"
+    "Tool-path options (a job file's \"toolpath\": {\"generate\": ...} members,\n"
+    "docs/options.md):\n",
+    run_toolpath, toolpath_options_help};
 
 }  // namespace furrow::cli

@@ -23,9 +23,18 @@ int exit_status(Verdict verdict, const std::string& alignment);
 struct Command {
   const char* name;
   const char* summary;  // one line for `furrow help`
-  const char* usage;    // full help for `furrow help NAME` / `furrow NAME --help`
+  const char* usage;    // help before the stage's options (synopsis, what it does, its own options)
   int (*run)(Args& args);
+  // The stage's option lines, written from its option table
+  // (base/option_table.hpp), and the help that follows them; none for a
+  // command without a stage table.
+  std::string (*stage_options)() = nullptr;
+  const char* usage_end = "";
 };
+
+// The full help of `furrow help NAME` / `furrow NAME --help`: usage, the
+// stage's options, usage_end.
+std::string usage_text(const Command& command);
 
 extern const Command kInfoCommand;
 extern const Command kImportCommand;

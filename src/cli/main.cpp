@@ -61,13 +61,17 @@ int main(int argc, char** argv) {
       furrow::cli::write_man_page(std::cout, kCommands);
       return furrow::cli::kExitOk;
     }
+    if (words.size() == 2 && words[1] == "--options") {
+      furrow::cli::write_options_reference(std::cout);
+      return furrow::cli::kExitOk;
+    }
     if (words.size() == 2 && words[1] == "--completion") {
       furrow::cli::write_bash_completion(std::cout, kCommands);
       return furrow::cli::kExitOk;
     }
     if (words.size() >= 2) {
       if (const Command* c = find_command(words[1])) {
-        std::cout << c->usage;
+        std::cout << furrow::cli::usage_text(*c);
         return furrow::cli::kExitOk;
       }
       std::cerr << "furrow: unknown command \"" << words[1] << "\"\n";
@@ -87,7 +91,7 @@ int main(int argc, char** argv) {
   }
   furrow::cli::Args args(words[0], std::vector<std::string>(words.begin() + 1, words.end()));
   if (args.wants_help()) {
-    std::cout << command->usage;
+    std::cout << furrow::cli::usage_text(*command);
     return furrow::cli::kExitOk;
   }
   try {

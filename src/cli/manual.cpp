@@ -4,7 +4,14 @@
 #include <regex>
 #include <sstream>
 
+#include "base/option_table.hpp"
 #include "io/cad/cad_module.hpp"
+#include "stage/compare_options.hpp"
+#include "stage/partition_options.hpp"
+#include "stage/plan_options.hpp"
+#include "stage/prediction_options.hpp"
+#include "stage/simulation_options.hpp"
+#include "stage/toolpath_options.hpp"
 
 namespace furrow::cli {
 
@@ -27,6 +34,12 @@ std::string troff_line(const std::string& line) {
 
 }  // namespace
 
+std::string usage_text(const Command& command) {
+  std::string text = command.usage;
+  if (command.stage_options) text += command.stage_options();
+  return text + command.usage_end;
+}
+
 std::vector<std::string> options_in_usage(const std::string& usage) {
   std::vector<std::string> out;
   static const std::regex option("--[a-z][a-z0-9-]*");
@@ -46,7 +59,7 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
       << ".SH COMMANDS\n";
   for (const Command* c : commands) {
     out << ".SS " << c->name << "\n" << troff_line(c->summary) << "\n.PP\n.nf\n";
-    std::istringstream usage(c->usage);
+    std::istringstream usage(usage_text(*c));
     for (std::string line; std::getline(usage, line);) out << troff_line(line) << "\n";
     out << ".fi\n";
   }
@@ -61,6 +74,37 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
          "can be loaded, a CAD import stops with exit status 3 and names every place looked at.\n";
 }
 
+void write_options_reference(std::ostream& out) {
+  out << "# Options of the stages\n\n"
+         "<!-- Written by `furrow help --options`; a test compares this file with its output. -->\n\n"
+         "Each stage option is described once in the code (src/stage/*_options.cpp) and\n"
+         "taken the same way on the command line (`--flag VALUE`; a true/false option is a\n"
+         "bare flag that sets the other value) and in a job file (the member, in the\n"
+         "stage's section; see formats.md \"Job file\"). A value is checked the same way\n"
+         "from both: a number must be finite and within its bounds, a word one of its\n"
+         "choices.\n";
+  const auto section = [&](const char* title, const char* where, const std::vector<OptionDoc>& docs) {
+    out << "\n## " << title << "\n\n" << where << "\n\n" << option_markdown_table(docs);
+  };
+  section("Partition", "`furrow partition`; the job file's `partition` section.", describe(partition_option_table()));
+  section("Tool path", "`furrow toolpath`; the job file's `toolpath` as `{\"generate\": {...}}`.",
+          describe(toolpath_option_table()));
+  section("Prediction",
+          "`furrow predict`; the job file's `prediction` section. The colour range of the error map is "
+          "`--map-scale` in µm on the command line and `map_scale` in mm in a job file.",
+          describe(prediction_option_table()));
+  section("Plan",
+          "`furrow plan`; the job file's `plan` section (`furrow remeasure` takes the stylus, move and "
+          "program options).",
+          describe(plan_option_table()));
+  section("Simulated measurement",
+          "`furrow simulate-measurement`; the job file's `measurements` as `{\"simulate\": {...}}`. Planted "
+          "bumps are `--bump X,Y,Z,R,H` (repeated) on the command line and `bumps` `[[x, y, z, r, h], ...]` in a "
+          "job file.",
+          describe(simulation_option_table()));
+  section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
+}
+
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {
   out << "# bash completion for furrow " << FURROW_VERSION << " (written by `furrow help --completion`)\n"
       << "_furrow() {\n"
@@ -72,7 +116,7 @@ void write_bash_completion(std::ostream& out, const std::vector<const Command*>&
       << "  case \"$cur\" in\n    -*)\n      case \"${COMP_WORDS[1]}\" in\n";
   for (const Command* c : commands) {
     out << "        " << c->name << ") COMPREPLY=($(compgen -W \"";
-    const std::vector<std::string> options = options_in_usage(c->usage);
+    const std::vector<std::string> options = options_in_usage(usage_text(*c));
     for (std::size_t k = 0; k < options.size(); ++k) out << (k ? " " : "") << options[k];
     out << "\" -- \"$cur\")) ;;\n";
   }

@@ -16,6 +16,9 @@ namespace furrow::cli {
 std::vector<std::string> options_in_usage(const std::string& usage);
 
 void write_man_page(std::ostream& out, const std::vector<const Command*>& commands);
+// docs/options.md: every stage's options as Markdown tables
+// (`furrow help --options`).
+void write_options_reference(std::ostream& out);
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands);
 
 }  // namespace furrow::cli

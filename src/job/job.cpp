@@ -9,7 +9,13 @@
 #include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 #include "io/part_file.hpp"
+#include "stage/compare_options.hpp"
 #include "stage/compare_stage.hpp"
+#include "stage/partition_options.hpp"
+#include "stage/plan_options.hpp"
+#include "stage/prediction_options.hpp"
+#include "stage/simulation_options.hpp"
+#include "stage/toolpath_options.hpp"
 
 namespace furrow {
 
@@ -44,22 +50,9 @@ std::string path_member(const JsonCursor& s, const std::string& key, const std::
   return resolve(folder, text);
 }
 
-StepRule parse_step_rule(const std::string& text, const std::string& where) {
-  for (StepRule r : {StepRule::exact, StepRule::chord, StepRule::circular_arc})
-    if (text == to_string(r)) return r;
-  throw InputError(where + ": unknown rule " + quote_field(text) + " (valid: exact, chord, circular_arc)");
-}
-
 void read_generation(const JsonCursor& g, Job& job) {
   ToolpathGeneration gen;
-  ContactPlanOptions& c = gen.contacts;
-  g.positive("tolerance", c.forward.tolerance);
-  g.positive("scallop", c.scallop);
-  g.non_negative("max_step", c.forward.max_step);
-  if (const auto d = g.optional_string("direction")) gen.direction = parse_pass_direction(*d, g.path("direction"));
-  if (const auto r = g.optional_string("rule")) c.forward.rule = parse_step_rule(*r, g.path("rule"));
-  g.positive("clearance", gen.write.clearance);
-  g.positive("feed", gen.write.feed);
+  read_option_members(g, toolpath_option_table(), gen);
   g.finish("docs/formats.md \"Job file\"");
   job.generate = gen;
 }
@@ -101,41 +94,14 @@ void read_tolerance(const JsonCursor& root, Job& job) {
 }
 
 void read_partition(const JsonCursor& p, Job& job) {
-  PartitionOptions& o = job.partition;
-  if (const json* grid = p.find("grid")) {
-    const std::vector<double> counts = jf::numbers(*grid, p.path("grid"));
-    if (counts.size() != 2) throw InputError(p.path("grid") + ": expected [cells along u, cells along v]");
-    const int nu = jf::integer((*grid)[0], jf::child(p.path("grid"), 0));
-    const int nv = jf::integer((*grid)[1], jf::child(p.path("grid"), 1));
-    if (nu < 1 || nv < 1) throw InputError(p.path("grid") + ": cell counts must be at least 1");
-    o.grid = GridSize{nu, nv};
-  }
-  p.positive("spacing", o.spacing);
-  if (o.grid && o.spacing) throw InputError(p.where() + ": grid and spacing exclude each other");
-  p.non_negative("eps", o.eps);
-  p.non_negative("min_area", o.min_area);
+  read_option_members(p, partition_option_table(), job.partition);
+  check_partition_options(job.partition, p.where());
   p.finish("docs/formats.md \"Job file\"");
 }
 
 void read_prediction(const JsonCursor& p, Job& job) {
-  PathPredictionOptions& o = job.prediction;
-  p.positive("tolerance", o.tolerance);
-  p.positive("gouge_threshold", o.gouge_threshold);
-  p.positive("resolution", o.resolution);
-  p.positive("cell", o.map.cell_size);
+  read_option_members(p, prediction_option_table(), job.prediction);
   p.positive("map_scale", job.prediction_map_scale);
-  if (const json* v = p.find("stock")) {
-    // The raw stock box, as `furrow predict --stock` (docs/architecture.md "Rapid moves").
-    const std::string w = p.path("stock");
-    const json& a = jf::array(*v, w);
-    if (a.size() != 6) throw InputError(w + ": expected [xmin, ymin, zmin, xmax, ymax, zmax]");
-    double b[6];
-    for (std::size_t k = 0; k < 6; ++k) b[k] = jf::number(a[k], jf::child(w, k));
-    for (int k = 0; k < 3; ++k)
-      if (!(b[k] < b[k + 3]))
-        throw InputError(w + ": each min must be below its max (" + std::string(1, char('x' + k)) + ")");
-    o.stock = Eigen::AlignedBox3d(Eigen::Vector3d(b[0], b[1], b[2]), Eigen::Vector3d(b[3], b[4], b[5]));
-  }
   p.finish("docs/formats.md \"Job file\"");
 }
 
@@ -143,38 +109,7 @@ void read_plan(const JsonCursor& p, Job& job) {
   PlannerOptions& o = job.plan;
   p.boolean("prediction", job.plan_with_prediction);
   p.boolean("allow_uncovered", job.plan_allow_uncovered);
-  if (const json* v = p.find("points")) {
-    const int n = jf::integer(*v, p.path("points"));
-    if (n < 1) throw InputError(p.path("points") + ": a plan needs at least 1 point");
-    o.points = n;
-  }
-  p.positive("density", o.density);
-  p.integer("min_per_region", o.min_per_region, 0);
-  if (const auto s = p.optional_string("strategy")) o.strategy = parse_sampling_strategy(*s, p.path("strategy"));
-  int seed = 1;
-  p.integer("seed", seed, 0);
-  o.seed = static_cast<std::uint64_t>(seed);
-  p.non_negative("border", o.border);
-  if (const auto name = p.optional_string("probe_name")) o.probe_name = *name;
-  p.positive("probe_diameter", o.probe_diameter);
-  p.positive("stylus_length", o.stylus_length);
-  p.positive("stylus_diameter", o.stylus_diameter);
-  p.positive("approach", o.approach);
-  p.positive("retract", o.retract);
-  p.positive("search", o.search);
-  p.non_negative("clearance", o.clearance);
-  p.positive("max_tilt", o.max_tilt_degrees);
-  p.positive("move_speed", o.motion.move_speed);
-  p.positive("touch_speed", o.motion.touch_speed);
-  p.positive("acceleration", o.motion.acceleration);
-  p.non_negative("dwell", o.motion.dwell);
-  p.integer("gouge_points", o.gouge_points, 1);
-  if (const auto r = p.optional_string("revision")) o.program.revision = *r;
-  if (const auto d = p.optional_string("program_date")) o.program.date = *d;
-  if (const auto d = p.optional_string("datums")) o.datums = parse_datum_choice(*d, p.path("datums"));
-  std::optional<double> head_length;
-  p.positive("head_length", head_length);
-  o.program.head_length = head_length;
+  read_option_members(p, plan_option_table(), o);
   p.finish("docs/formats.md \"Job file\"");
   with_context(p.where(), [&] { validate(o); });
   if (needs_risk(o.strategy) && !job.plan_with_prediction)
@@ -185,25 +120,7 @@ void read_simulation(const JsonCursor& s, Job& job) {
   MeasurementSimulationJob sim;
   SimulationOptions& o = sim.options;
   s.boolean("prediction", sim.from_prediction);
-  if (const json* m = s.find("misalign")) {
-    const std::vector<double> v = jf::numbers(*m, s.path("misalign"));
-    if (v.size() != 6) throw InputError(s.path("misalign") + ": expected [rx, ry, rz, tx, ty, tz] (degrees, mm)");
-    o.misalignment.rotation_deg = {v[0], v[1], v[2]};
-    o.misalignment.translation = {v[3], v[4], v[5]};
-  }
-  s.non_negative("noise", o.noise_sigma);
-  s.integer("blunders", o.blunders, 0);
-  if (const json* b = s.find("blunder_size")) {
-    const std::vector<double> v = jf::numbers(*b, s.path("blunder_size"));
-    if (v.size() != 2 || !(v[0] > 0) || !(v[1] >= v[0]))
-      throw InputError(s.path("blunder_size") + ": expected [smallest, largest] in mm, 0 < smallest <= largest");
-    o.blunder_min = v[0];
-    o.blunder_max = v[1];
-  }
-  int seed = 1;
-  s.integer("seed", seed, 0);
-  o.seed = static_cast<std::uint32_t>(seed);
-  if (const auto kind = s.optional_string("points")) o.kind = parse_probe_point_kind(*kind, s.path("points"));
+  read_option_members(s, simulation_option_table(), o);
   if (const json* bumps = s.find("bumps")) {
     const json& list = jf::array(*bumps, s.path("bumps"));
     for (std::size_t k = 0; k < list.size(); ++k) {
@@ -296,27 +213,8 @@ void read_measurements(const JsonCursor& root, Job& job, const std::string& fold
 }
 
 void read_comparison(const JsonCursor& c, Job& job) {
-  CompareOptions& o = job.compare;
-  RegistrationOptions& r = o.registration;
-  if (const auto align = c.optional_string("align")) o.align = parse_align_method(*align, c.path("align"));
-  if (const auto dof = c.optional_string("dof")) r.dof = DegreesOfFreedom::parse(*dof, c.path("dof"));
-  if (const auto loss = c.optional_string("loss")) r.loss = parse_robust_loss(*loss, c.path("loss"));
-  c.positive("outlier_sigma", r.outlier_sigma);
-  bool rejection = true;
-  c.boolean("outlier_rejection", rejection);
-  r.flag_outliers = rejection;
+  read_option_members(c, compare_option_table(), job.compare);
   c.boolean("prediction", job.compare_with_prediction);
-  PredictionComparisonOptions& p = o.prediction;
-  c.positive("probe_sigma", p.probe_sigma);
-  c.positive("explained_rms", p.max_normalised_rms);
-  c.boolean("prediction_alignment", p.align);
-  GougeConfirmationOptions& g = o.gouges;
-  c.positive("overcut_sigmas", g.overcut_sigmas);
-  c.non_negative("overcut_fraction", g.tolerance_fraction);
-  if (g.tolerance_fraction > 1) throw InputError(c.path("overcut_fraction") + ": must lie between 0 and 1");
-  c.non_negative("site_margin", g.site_margin);
-  c.non_negative("contact_cluster", g.contact_cluster_distance);
-  c.non_negative("overcut_cluster", g.overcut_cluster_distance);
   c.finish("docs/formats.md \"Job file\"");
 }
 

@@ -178,7 +178,7 @@ TEST_CASE("verification bad input: exit 2, one line naming the file, nothing wri
           "the radius must be positive");
   refused({"compare", kMould, "--measurements", f.dir + "/m.csv", "--plan", f.plan, "--prediction",
            f.clean, "--overcut-fraction", "2", "--out", out},
-          "--overcut-fraction must lie between 0 and 1");
+          "--overcut-fraction: must lie between 0 and 1");
   refused({"compare", kMould, "--measurements", f.dir + "/m.csv", "--plan", f.plan, "--prediction",
            f.clean, "--out", f.clean},
           "clean.json");

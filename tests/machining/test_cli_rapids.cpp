@@ -115,6 +115,6 @@ TEST_CASE("furrow predict --stock: rapids below the stock top are rapid gouges, 
   CHECK(few.err.find("--stock expects 6") != std::string::npos);
   const CliResult inverted = predict(dir, dir + "/clean.nc", dir + "/x.json", {"--stock", "-10,-10,-5,10,-20,2"});
   CHECK(inverted.status == 2);
-  CHECK(inverted.err.find("min below its max (y)") != std::string::npos);
+  CHECK(inverted.err.find("--stock: each min must be below its max (y)") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir + "/x.json"));
 }

@@ -83,7 +83,7 @@ TEST_CASE("furrow plan: bad input gives one line, exit 2 and no output folder") 
   };
   const Case cases[] = {
       {{}, other, "another part"},
-      {{"--points", "0"}, part, "--points must be at least 1"},
+      {{"--points", "0"}, part, "--points: must be at least 1"},
       {{"--probe-diameter", "-2"}, part, "--probe-diameter"},
       {{"--stylus-diameter", "0"}, part, "--stylus-diameter"},
       {{"--points", "10", "--density", "2"}, part, "exclude each other"},

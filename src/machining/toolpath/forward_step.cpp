@@ -1,5 +1,7 @@
 #include "machining/toolpath/forward_step.hpp"
+#include "base/error.hpp"
 #include "base/numbers.hpp"
+#include "base/text_fields.hpp"
 #include "machining/gouge/local_gouge.hpp"
 #include "machining/prediction/strip_step.hpp"
 
@@ -40,6 +42,13 @@ const char* to_string(StepRule rule) {
     case StepRule::circular_arc: return "circular_arc";
   }
   return "unknown";
+}
+
+StepRule parse_step_rule(const std::string& text, const std::string& where) {
+  for (StepRule r : {StepRule::exact, StepRule::chord, StepRule::circular_arc})
+    if (text == to_string(r)) return r;
+  if (text == "circular-arc") return StepRule::circular_arc;
+  throw InputError(where + ": unknown rule " + quote_field(text) + " (valid: exact, chord, circular_arc)");
 }
 
 double step_error(const Part& part, const Cutter& cutter, const SurfaceCurve& curve, StepRule rule,

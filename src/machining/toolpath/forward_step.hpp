@@ -42,12 +42,17 @@
 
 #include "machining/cutter/cutter.hpp"
 #include "machining/prediction/furrow_step.hpp"
+#include <string>
+
 #include "machining/toolpath/pass_curve.hpp"
 
 namespace furrow {
 
 enum class StepRule { exact, chord, circular_arc };
-const char* to_string(StepRule rule);
+const char* to_string(StepRule rule);  // "exact", "chord", "circular_arc"
+// The names of to_string, and "circular-arc" (the command line's older
+// spelling); InputError naming `where` for any other text.
+StepRule parse_step_rule(const std::string& text, const std::string& where);
 
 struct ForwardStepOptions {
   double tolerance = 0.01;  // [mm]
