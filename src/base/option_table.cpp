@@ -54,6 +54,38 @@ std::string default_value_text(const nlohmann::json& value) {
   return value.dump();
 }
 
+nlohmann::json nullable_schema(const nlohmann::json& schema, const std::string& help) {
+  if (schema.is_null()) return nullptr;
+  nlohmann::json out = {{"anyOf", nlohmann::json::array({schema, {{"type", "null"}}})}};
+  out["description"] = help;
+  return out;
+}
+
+nlohmann::json number_schema(Bound bound) {
+  nlohmann::json s = {{"type", "number"}};
+  switch (bound) {
+    case Bound::any:
+      break;
+    case Bound::positive:
+      s["exclusiveMinimum"] = 0;
+      break;
+    case Bound::non_negative:
+      s["minimum"] = 0;
+      break;
+    case Bound::fraction:
+      s["minimum"] = 0;
+      s["maximum"] = 1;
+      break;
+  }
+  return s;
+}
+
+nlohmann::json section_schema(const std::vector<OptionDoc>& docs, const nlohmann::json& extra) {
+  nlohmann::json properties = extra;
+  for (const OptionDoc& d : docs) properties[d.key] = d.schema;
+  return {{"type", "object"}, {"properties", properties}, {"additionalProperties", false}};
+}
+
 std::string option_flag(const std::string& key) {
   std::string flag = "--" + key;
   for (char& c : flag)

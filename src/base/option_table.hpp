@@ -52,6 +52,8 @@ struct OptionSpec {
                               // the tests; empty: made from the default
   std::size_t count = 0;      // how many numbers (OptionKind::numbers)
   std::string former_flag;    // an older command-line name still taken ("--outliers")
+  nlohmann::json schema;      // the value's JSON Schema (without null, which every
+                              // option takes for "the default")
   std::function<void(const nlohmann::json& value, const std::string& where, Options&)> read;
   std::function<nlohmann::json(const Options&)> write;
 };
@@ -72,7 +74,17 @@ struct OptionDoc {
   std::string default_text;  // "75", "none", "probe radius + 1"
   std::size_t count = 0;     // numbers in a list option
   std::string former_flag;   // older command-line name still taken, or empty
+  nlohmann::json schema;     // JSON Schema of the job-file member, null allowed
 };
+
+// `schema` with null allowed (an absent or null member keeps the default)
+// and `help` as its description.
+nlohmann::json nullable_schema(const nlohmann::json& schema, const std::string& help);
+// The JSON Schema of a number within `bound`.
+nlohmann::json number_schema(Bound bound);
+// The JSON Schema (draft 2020-12) of a section holding the members of
+// `docs` and `extra` (name -> schema), refusing any other member.
+nlohmann::json section_schema(const std::vector<OptionDoc>& docs, const nlohmann::json& extra = nlohmann::json::object());
 
 // A default as help states it: numbers in their shortest text ("2", not "2.0").
 std::string default_value_text(const nlohmann::json& value);
@@ -83,7 +95,9 @@ std::vector<OptionDoc> describe(const OptionTable<Options>& table) {
   std::vector<OptionDoc> docs;
   for (const OptionSpec<Options>& s : table) {
     const nlohmann::json d = s.write(defaults);
-    OptionDoc doc{option_flag(s.key), s.key, s.kind, s.value_name, s.help, s.default_text, s.count, s.former_flag};
+    OptionDoc doc{option_flag(s.key), s.key,   s.kind,        s.value_name,
+                  s.help,              s.default_text, s.count, s.former_flag,
+                  nullable_schema(s.schema, s.help)};
     if (s.kind == OptionKind::toggle && d.is_boolean() && d.get<bool>()) doc.flag = "--no-" + doc.flag.substr(2);
     if (doc.default_text.empty()) {
       if (d.is_null())
@@ -154,6 +168,7 @@ OptionSpec<Options> number_option(std::string key, std::string value_name, std::
   s.kind = OptionKind::number;
   s.value_name = std::move(value_name);
   s.help = std::move(help);
+  s.schema = number_schema(bound);
   s.read = [get, bound](const nlohmann::json& v, const std::string& where, Options& o) {
     get(o) = option_detail::checked_number(v, where, bound);
   };
@@ -176,6 +191,7 @@ OptionSpec<Options> integer_option(std::string key, std::string value_name, std:
   s.kind = OptionKind::integer;
   s.value_name = std::move(value_name);
   s.help = std::move(help);
+  s.schema = {{"type", "integer"}, {"minimum", min_value}};
   s.read = [get, min_value](const nlohmann::json& v, const std::string& where, Options& o) {
     auto& target = get(o);
     using T = std::decay_t<decltype(target)>;
@@ -203,6 +219,7 @@ OptionSpec<Options> text_option(std::string key, std::string value_name, std::st
   s.kind = OptionKind::text;
   s.value_name = std::move(value_name);
   s.help = std::move(help);
+  s.schema = {{"type", "string"}};
   s.read = [get](const nlohmann::json& v, const std::string& where, Options& o) {
     get(o) = option_detail::checked_text(v, where);
   };
@@ -221,6 +238,7 @@ OptionSpec<Options> parsed_option(std::string key, std::string value_name, std::
   s.value_name = std::move(value_name);
   s.help = std::move(help);
   s.choices = std::move(choices);
+  s.schema = {{"type", "string"}};  // the parser may take more spellings than `choices`
   s.read = [get, parse](const nlohmann::json& v, const std::string& where, Options& o) {
     get(o) = parse(option_detail::checked_text(v, where), where);
   };
@@ -236,6 +254,7 @@ OptionSpec<Options> toggle_option(std::string key, std::string help, Get get) {
   s.key = std::move(key);
   s.kind = OptionKind::toggle;
   s.help = std::move(help);
+  s.schema = {{"type", "boolean"}};
   s.read = [get](const nlohmann::json& v, const std::string& where, Options& o) {
     get(o) = json_fields::boolean(v, where);
   };
@@ -256,6 +275,7 @@ OptionSpec<Options> numbers_option(std::string key, std::string value_name, std:
   s.value_name = std::move(value_name);
   s.help = std::move(help);
   s.count = count;
+  s.schema = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", count}, {"maxItems", count}};
   s.read = [set, count](const nlohmann::json& v, const std::string& where, Options& o) {
     set(option_detail::checked_numbers(v, where, count), where, o);
   };

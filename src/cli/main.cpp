@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/manual.hpp"
+#include "job/job_schema.hpp"
 #include "base/error.hpp"
 
 namespace {
@@ -59,6 +60,10 @@ int main(int argc, char** argv) {
   if (words.empty() || words[0] == "help" || words[0] == "--help" || words[0] == "-h") {
     if (words.size() == 2 && words[1] == "--man") {
       furrow::cli::write_man_page(std::cout, kCommands);
+      return furrow::cli::kExitOk;
+    }
+    if (words.size() == 2 && words[1] == "--job-schema") {
+      std::cout << furrow::job_schema_json();
       return furrow::cli::kExitOk;
     }
     if (words.size() == 2 && words[1] == "--options") {

@@ -71,7 +71,11 @@ void write_man_page(std::ostream& out, const std::vector<const Command*>& comman
       << ".SH ENVIRONMENT\n.TP\n.B " << cad::kModuleOverride
       << "\nThe CAD module to load for STEP and IGES files instead of looking for " << cad::kModuleName
       << ".so next to the program and in the installed module folder (lib/furrow). Without a module that "
-         "can be loaded, a CAD import stops with exit status 3 and names every place looked at.\n";
+         "can be loaded, a CAD import stops with exit status 3 and names every place looked at.\n"
+      << ".SH SEE ALSO\n"
+         "\\fBfurrow help \\-\\-options\\fR writes the reference of every stage option (flag, job\\-file "
+         "member, default); \\fBfurrow help \\-\\-job\\-schema\\fR the JSON Schema of a job file. Both are "
+         "installed with the documentation as options.md and job.schema.json, next to report.schema.json.\n";
 }
 
 void write_options_reference(std::ostream& out) {

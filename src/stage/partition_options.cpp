@@ -42,6 +42,12 @@ OptionTable<PartitionOptions> make_table() {
   grid.help = "cells per face along u and v (N for NxN); a job file may also write [NU, NV]";
   grid.default_text = "from --spacing";
   grid.example = "40x30";
+  grid.schema = {{"anyOf",
+                  json::array({{{"type", "array"},
+                                {"items", {{"type", "integer"}, {"minimum", 1}, {"maximum", kMaxCells}}},
+                                {"minItems", 2},
+                                {"maxItems", 2}},
+                               {{"type", "string"}, {"pattern", "^[0-9]+(x[0-9]+)?$"}}})}};
   grid.read = [](const json& v, const std::string& where, O& o) { o.grid = read_grid(v, where); };
   grid.write = [](const O& o) { return o.grid ? json::array({o.grid->nu, o.grid->nv}) : json(nullptr); };
   t.push_back(grid);
