@@ -17,6 +17,7 @@
 //
 // This header exposes nlohmann::json; include it only from .cpp files.
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -154,6 +155,15 @@ struct is_optional : std::false_type {};
 template <class T>
 struct is_optional<std::optional<T>> : std::true_type {};
 }  // namespace option_detail
+
+// The words of a choice, in the order given: `choice_names({A::x, A::y})`
+// with the enum's to_string.
+template <class E>
+std::vector<std::string> choice_names(std::initializer_list<E> values) {
+  std::vector<std::string> out;
+  for (E v : values) out.push_back(to_string(v));
+  return out;
+}
 
 // Builders. `get` is a generic lambda returning the member, e.g.
 // `[](auto& o) -> auto& { return o.motion.move_speed; }`, so the same

@@ -4,13 +4,6 @@ namespace furrow {
 
 namespace {
 
-template <class E>
-std::vector<std::string> names(std::initializer_list<E> values) {
-  std::vector<std::string> out;
-  for (E v : values) out.push_back(to_string(v));
-  return out;
-}
-
 OptionTable<CompareOptions> make_table() {
   using O = CompareOptions;
   OptionTable<O> t;
@@ -21,7 +14,7 @@ OptionTable<CompareOptions> make_table() {
       "and datums also give the best-fit profile (docs/registration.md \"Alignments\")",
       [](auto& o) -> auto& { return o.align; }, parse_align_method,
       [](AlignMethod a) { return std::string(to_string(a)); },
-      names({AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums}));
+      choice_names({AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums}));
   align.example = "cmm";
   t.push_back(align);
   OptionSpec<O> dof = parsed_option<O>(
@@ -37,7 +30,7 @@ OptionTable<CompareOptions> make_table() {
       "rejection is least squares)",
       [](auto& o) -> auto& { return o.registration.loss; }, parse_robust_loss,
       [](RobustLoss l) { return std::string(to_string(l)); },
-      names({RobustLoss::cauchy, RobustLoss::huber, RobustLoss::none}));
+      choice_names({RobustLoss::cauchy, RobustLoss::huber, RobustLoss::none}));
   loss.example = "huber";
   t.push_back(loss);
   t.push_back(number_option<O>("outlier_sigma", "K", "robust sigmas that make a deviation large",

@@ -4,15 +4,6 @@ namespace furrow {
 
 namespace {
 
-std::vector<std::string> strategy_names() {
-  std::vector<std::string> out;
-  for (SamplingStrategy s : {SamplingStrategy::hammersley, SamplingStrategy::halton, SamplingStrategy::stratified,
-                             SamplingStrategy::grid, SamplingStrategy::random, SamplingStrategy::curvature,
-                             SamplingStrategy::risk})
-    out.push_back(to_string(s));
-  return out;
-}
-
 OptionTable<PlannerOptions> make_table() {
   using O = PlannerOptions;
   using nlohmann::json;
@@ -31,7 +22,9 @@ OptionTable<PlannerOptions> make_table() {
       "sampling inside regions: hammersley, halton, stratified, grid, random, curvature or risk (at the "
       "predicted error maxima, needs the prediction); docs/cmm.md",
       [](auto& o) -> auto& { return o.strategy; }, parse_sampling_strategy,
-      [](SamplingStrategy s) { return std::string(to_string(s)); }, strategy_names());
+      [](SamplingStrategy s) { return std::string(to_string(s)); }, choice_names({SamplingStrategy::hammersley, SamplingStrategy::halton, SamplingStrategy::stratified,
+                    SamplingStrategy::grid, SamplingStrategy::random, SamplingStrategy::curvature,
+                    SamplingStrategy::risk}));
   strategy.example = "halton";
   t.push_back(strategy);
   t.push_back(integer_option<O>("seed", "N", "random seed of the sampling", [](auto& o) -> auto& { return o.seed; },
