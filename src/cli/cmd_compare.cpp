@@ -34,6 +34,7 @@ int run_compare(Args& args) {
   const auto prediction_path = args.option("prediction");
   const std::string out = args.required_option("out");
   const auto qif_path = args.option("qif");  // QIF 3.0 Results next to comparison.json (docs/qif.md)
+  const auto rps_path = args.option("rps");  // the reference point system of --align rps
   const double tolerance = args.positive_or("tolerance", 0.05);
   const auto outside = args.number("outside");
   const auto points = args.option("points");
@@ -70,11 +71,14 @@ int run_compare(Args& args) {
   read.units = units_option.value_or(dialect.units.value_or("mm"));
   units_to_mm(read.units, "--units");
   if (ipp_program) read.ippdme_program = *ipp_program;
+  if ((options.align == AlignMethod::rps) != rps_path.has_value())
+    args.fail(rps_path ? "--rps is for --align rps" : "--align rps needs the reference point system (--rps FILE)");
 
   OutputSet outputs;
   outputs.add_input(part_path, "part");
   for (const std::string& m : measurement_files) outputs.add_input(m, "measurements");
   if (dialect_path) outputs.add_input(*dialect_path, "dialect");
+  if (rps_path) outputs.add_input(*rps_path, "rps");
   if (ipp_program) outputs.add_input(*ipp_program, "I++ DME program");
   if (plan_path) outputs.add_input(*plan_path, "plan");
   if (regions_path) outputs.add_input(*regions_path, "regions");
@@ -82,6 +86,7 @@ int run_compare(Args& args) {
   outputs.will_write(out);
   if (qif_path) outputs.will_write(*qif_path);
 
+  if (rps_path) options.rps = read_reference_points(*rps_path);
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
   if (plan_path) {
@@ -153,6 +158,10 @@ int run_compare(Args& args) {
       else
         std::printf("%s %.4f mm\n", d.kind == DatumFeature::Kind::plane ? "flatness" : "straightness", d.form_error);
     }
+  if (c.datum_frame)
+    for (const ReferencePointFit& f : c.datum_frame->reference_points)
+      std::printf("rps %s (fixes %s): largest residual %.4f mm\n", f.id.c_str(), f.directions.c_str(),
+                  f.residual.cwiseAbs().maxCoeff());
   std::printf("registration: %s (%s start), rms %.4f -> %.4f mm, %zu of %zu points in the fit\n",
               r.status.c_str(), to_string(r.coarse.method), r.rms_before, r.rms_after, s.in_fit,
               s.points);
@@ -217,6 +226,9 @@ const Command kCompareCommand = {
     "                       the order given, a later point replaces an earlier one\n"
     "                       with the same id (each file must carry ids)\n"
     "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"
+    "  --rps FILE           reference point system for --align rps (docs/formats.md\n"
+    "                       \"RPS file\"): named points, each fixing the part along\n"
+    "                       the axes it declares\n"
     "  --regions FILE       regions.json of PART (furrow partition): each point's\n"
     "                       region is the one holding its foot point; statistics\n"
     "                       per region (default: the plan points' regions)\n"

@@ -25,6 +25,8 @@ const char* to_string(CoarseMethod method) {
       return "dmis nominals";
     case CoarseMethod::global_search:
       return "global search";
+    case CoarseMethod::frame:
+      return "alignment frame";
   }
   return "?";
 }

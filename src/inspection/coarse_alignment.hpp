@@ -34,7 +34,9 @@
 
 namespace furrow {
 
-enum class CoarseMethod { identity, plan_ids, dmis_nominals, global_search };
+// frame: a start the caller already knows (RegistrationOptions::start: the
+// frame of a datum or RPS alignment), no search.
+enum class CoarseMethod { identity, plan_ids, dmis_nominals, global_search, frame };
 const char* to_string(CoarseMethod method);
 
 struct CoarseOptions {

@@ -38,14 +38,16 @@ const char* to_string(AlignMethod method) {
       return "cmm";
     case AlignMethod::datums:
       return "datums";
+    case AlignMethod::rps:
+      return "rps";
   }
   return "?";
 }
 
 AlignMethod parse_align_method(const std::string& text, const std::string& where) {
-  for (AlignMethod m : {AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums})
+  for (AlignMethod m : {AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums, AlignMethod::rps})
     if (text == to_string(m)) return m;
-  throw InputError(where + ": \"" + text + "\" is not an alignment (bestfit, cmm, datums)");
+  throw InputError(where + ": \"" + text + "\" is not an alignment (bestfit, cmm, datums, rps)");
 }
 
 namespace {
@@ -233,11 +235,13 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
   if (options.align == AlignMethod::bestfit) {
     c.registration = register_measurements(finder, set, plan, options.registration);
   } else {
-    if (options.align == AlignMethod::datums) {
+    if (options.align == AlignMethod::datums || options.align == AlignMethod::rps) {
       if (!options.datum_frame) throw std::logic_error("compare_measurements: datums without a datum frame");
       c.datum_frame = options.datum_frame;
       c.registration = evaluate_at_transform(finder, set, c.datum_frame->transform, options.registration,
-                                             "datum frame: evaluated as aligned by the datums, no fit");
+                                             options.align == AlignMethod::rps
+                                                 ? "RPS frame: evaluated as aligned by the reference points, no fit"
+                                                 : "datum frame: evaluated as aligned by the datums, no fit");
     } else {
       c.registration = evaluate_at_transform(finder, set, Eigen::Isometry3d::Identity(), options.registration,
                                              "cmm frame: evaluated as measured, no fit");
@@ -245,6 +249,9 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
     // The best fit of the same points: form alone, for comparison.
     RegistrationOptions quiet = options.registration;
     quiet.compute_covariance = false;
+    // From the datum or RPS frame: the best fit then needs no search (a
+    // part without ids, or a nearly flat one, could be found upside down).
+    if (c.datum_frame) quiet.start = c.datum_frame->transform;
     c.bestfit = register_measurements(finder, set, plan, quiet);
     double max_abs = 0;
     for (const RegisteredPoint& p : c.bestfit->points)

@@ -37,6 +37,7 @@
 #include "inspection/datum_frame.hpp"
 #include "inspection/gouge_confirmation.hpp"
 #include "inspection/prediction_comparison.hpp"
+#include "inspection/reference_points.hpp"
 #include "inspection/registration.hpp"
 #include "inspection/tolerance_zone.hpp"
 #include "partition/region_map.hpp"
@@ -89,9 +90,10 @@ struct ComparisonSummary {
 // How the measured points are put into the part frame (docs/registration.md
 // "Alignments"): a best fit (form only), the CMM's own frame as measured
 // (cmm: the program aligned the part), or the datum reference frame from
-// the plan's datum features (form + location).
-enum class AlignMethod { bestfit, cmm, datums };
-const char* to_string(AlignMethod method);  // "bestfit", "cmm", "datums"
+// the plan's datum features (form + location), or the frame a reference
+// point system fixes (rps, also form + location).
+enum class AlignMethod { bestfit, cmm, datums, rps };
+const char* to_string(AlignMethod method);  // "bestfit", "cmm", "datums", "rps"
 // Throws InputError naming `where` for any other text.
 AlignMethod parse_align_method(const std::string& text, const std::string& where);
 
@@ -120,9 +122,11 @@ struct Comparison {
 
 struct CompareOptions {
   AlignMethod align = AlignMethod::bestfit;
-  // datums: the frame fitted to the datum points (prepare_alignment,
-  // compare_stage.hpp); required then.
+  // datums and rps: the frame fitted to the datum or reference points
+  // (prepare_alignment, compare_stage.hpp); required then.
   std::optional<DatumFrame> datum_frame;
+  // rps: the reference point system (reference_points.hpp); required then.
+  std::optional<ReferencePointSystem> rps;
   RegistrationOptions registration;
   ToleranceZone tolerance;
   PredictionComparisonOptions prediction;  // used with a prediction only

@@ -109,13 +109,18 @@ struct ComparisonDocument {
     std::string method = "bestfit";  // "bestfit", "cmm", "datums"
     std::string note;                // cmm/datums: why there is no fit and no observability question
     struct Datum {
-      std::string label, kind;       // "A"; "plane", "line", "point"
+      std::string label, kind;       // "A"; "plane", "line", "point"; an RPS point: its id, "rps"
       std::vector<std::string> points;
-      Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // as measured, CMM frame [mm]
+      Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // as measured (rps: the contact), CMM frame [mm]
       Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // plane normal, line direction, point normal
-      double form_error = 0;         // plane flatness, line straightness, 0 for the point [mm]
+      // plane flatness, line straightness, 0 for the point, an RPS point's
+      // largest residual [mm]
+      double form_error = 0;
+      std::string directions;  // rps: the part axes the point fixes
+      Eigen::Vector3d residual = Eigen::Vector3d::Zero();   // rps: along those axes, part frame [mm]
+      double weight = 1;       // rps
     };
-    std::vector<Datum> datums;       // datums only
+    std::vector<Datum> datums;       // datums and rps only
     // cmm/datums: the best fit of the same points, form alone [mm].
     std::optional<double> bestfit_profile;
     std::string bestfit_status;

@@ -98,7 +98,9 @@ json alignment_json(const Comparison& c) {
   j["note"] = c.align == AlignMethod::cmm
                   ? "the measurement frame is the part frame (the CMM program aligned the part): no fit, so "
                     "observability is not a question"
-                  : "the datum frame fixes the part: no fit, so observability is not a question";
+                  : c.align == AlignMethod::rps
+                        ? "the reference point system fixes the part: no fit, so observability is not a question"
+                        : "the datum frame fixes the part: no fit, so observability is not a question";
   json datums = json::array();
   if (c.datum_frame)
     for (const DatumFit& d : c.datum_frame->datums)
@@ -108,6 +110,19 @@ json alignment_json(const Comparison& c) {
                         {"origin", jf::vector_json(d.origin)},
                         {"direction", jf::vector_json(d.direction)},
                         {"form_error", jf::finite(d.form_error, "datum form error")}});
+  // An RPS point: its contact (CMM frame), the axes it fixes and its
+  // residual along them (part frame); form_error the largest of those.
+  if (c.datum_frame)
+    for (const ReferencePointFit& r : c.datum_frame->reference_points)
+      datums.push_back({{"label", r.id},
+                        {"kind", "rps"},
+                        {"points", json::array({r.id})},
+                        {"origin", jf::vector_json(r.contact)},
+                        {"direction", jf::vector_json(r.normal)},
+                        {"directions", r.directions},
+                        {"residual", jf::vector_json(r.residual)},
+                        {"weight", jf::finite(r.weight, "rps weight")},
+                        {"form_error", jf::finite(r.residual.cwiseAbs().maxCoeff(), "rps residual")}});
   j["datums"] = std::move(datums);
   j["bestfit"] = {{"profile", jf::finite(c.bestfit_profile.value_or(0), "best-fit profile")},
                   {"status", c.bestfit ? c.bestfit->status : std::string("not computed")},

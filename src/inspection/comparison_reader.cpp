@@ -124,9 +124,9 @@ ComparisonDocument::Registration read_registration(const JsonCursor& n) {
 ComparisonDocument::Alignment read_alignment(const JsonCursor& n) {
   ComparisonDocument::Alignment a;
   a.method = n.string("method");
-  if (a.method != "bestfit" && a.method != "cmm" && a.method != "datums")
+  if (a.method != "bestfit" && a.method != "cmm" && a.method != "datums" && a.method != "rps")
     throw InputError(n.path("method") + ": unknown alignment " + quote_field(a.method) +
-                     " (valid: bestfit, cmm, datums)");
+                     " (valid: bestfit, cmm, datums, rps)");
   if (a.method == "bestfit") return a;
   a.note = n.string("note");
   const json& list = n.array("datums");
@@ -143,6 +143,11 @@ ComparisonDocument::Alignment read_alignment(const JsonCursor& n) {
     x.origin = d.vector3("origin");
     x.direction = d.vector3("direction");
     x.form_error = d.non_negative("form_error");
+    if (x.kind == "rps") {
+      x.directions = d.string("directions");
+      x.residual = d.vector3("residual");
+      x.weight = d.positive("weight");
+    }
     a.datums.push_back(x);
   }
   const JsonCursor b = n.at("bestfit");

@@ -69,8 +69,21 @@ struct DatumFit {
   double form_error = 0;  // plane: flatness, line: straightness, point: 0 [mm]
 };
 
+// One point of a reference point system as fitted (rps_alignment.hpp).
+struct ReferencePointFit {
+  std::string id;
+  std::string directions;  // the part axes it fixes, "x", "yz", ...
+  double weight = 1;
+  Eigen::Vector3d contact = Eigen::Vector3d::Zero();   // measured contact point, CMM frame [mm]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // nominal outward normal, part frame
+  // Transformed contact minus nominal along each fixed axis, part frame
+  // [mm]; 0 along the axes the point does not fix.
+  Eigen::Vector3d residual = Eigen::Vector3d::Zero();
+};
+
 struct DatumFrame {
-  std::vector<DatumFit> datums;  // A, B, C as measured
+  std::vector<DatumFit> datums;  // A, B, C as measured (3-2-1)
+  std::vector<ReferencePointFit> reference_points;  // an RPS alignment instead
   Eigen::Isometry3d measured = Eigen::Isometry3d::Identity();  // frame -> CMM
   Eigen::Isometry3d nominal = Eigen::Isometry3d::Identity();   // frame -> part
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity(); // CMM -> part

@@ -305,7 +305,12 @@ class RegistrationRun {
 
   void coarse_start() {
     note("coarse start");
-    if (options_.dof.all_free() && enough()) {
+    if (options_.start) {
+      result_.coarse.method = CoarseMethod::frame;
+      result_.coarse.transform = *options_.start;
+      result_.coarse.median_distance =
+          median_surface_distance(finder_, set_, *options_.start, options_.coarse.refine_points);
+    } else if (options_.dof.all_free() && enough()) {
       result_.coarse = coarse_alignment(finder_, set_, plan_, options_.coarse);
     } else {
       result_.coarse.method = CoarseMethod::identity;

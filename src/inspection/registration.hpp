@@ -119,6 +119,10 @@ struct RegistrationOptions {
   bool flag_outliers = true;        // false: every point stays in the fit
   bool compute_covariance = true;
   CoarseOptions coarse;
+  // A start already known, CMM -> part (the frame of a datum or RPS
+  // alignment, when its best fit is computed beside it): used instead of the
+  // coarse search; none: coarse_alignment.
+  std::optional<Eigen::Isometry3d> start;
   // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
   // so a terminal can show progress; empty: silent.
   std::function<void(const std::string&)> progress;

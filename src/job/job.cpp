@@ -212,9 +212,16 @@ void read_measurements(const JsonCursor& root, Job& job, const std::string& fold
   m.finish("docs/formats.md \"Job file\"");
 }
 
-void read_comparison(const JsonCursor& c, Job& job) {
+void read_comparison(const JsonCursor& c, Job& job, const std::string& folder) {
   read_option_members(c, compare_option_table(), job.compare);
   c.boolean("prediction", job.compare_with_prediction);
+  if (c.find("rps")) {
+    job.rps_file = path_member(c, "rps", folder);
+    job.compare.rps = read_reference_points(job.rps_file);
+  }
+  if ((job.compare.align == AlignMethod::rps) != job.compare.rps.has_value())
+    throw InputError(job.compare.rps ? c.path("rps") + ": the reference point system is for \"align\": \"rps\""
+                                     : c.path("align") + ": rps needs the reference point system (\"rps\": FILE)");
   c.finish("docs/formats.md \"Job file\"");
 }
 
@@ -242,7 +249,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   if (auto s = root.optional_at("prediction")) read_prediction(*s, job);
   if (auto s = root.optional_at("plan")) read_plan(*s, job);
   read_measurements(root, job, folder);
-  if (auto s = root.optional_at("comparison")) read_comparison(*s, job);
+  if (auto s = root.optional_at("comparison")) read_comparison(*s, job, folder);
   if (const json* v = root.find("record")) {
     if (v->is_string()) {
       job.record_file = path_member(root, "record", folder);
@@ -259,7 +266,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   paper_size_css(job.paper, root.path("paper"));  // a4 or letter, checked before any work
   root.finish("docs/formats.md \"Job file\"");
   scale_registration_to_tolerance(job.compare);
-  for (const std::string* input : {&job.part, &job.tool, &job.record_file, &job.tool_table})
+  for (const std::string* input : {&job.part, &job.tool, &job.record_file, &job.tool_table, &job.rps_file})
     if (*input == job.output) throw InputError(root.path("output") + ": the output folder is an input file");
   return job;
 }

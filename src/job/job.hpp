@@ -67,6 +67,7 @@ struct Job {
   // Measurements: files (several: a re-measure, merged by id in this order,
   // measurement_merge.hpp), a simulation, or neither (the job stops after the plan).
   std::vector<std::string> measurement_files;
+  std::string rps_file;  // comparison.rps: the reference point system of "align": "rps" (in compare.rps); empty: none
   std::string measurement_dialect_file;  // a saved CSV dialect (measurement_read.dialect comes from it); empty: none
   MeasurementReadOptions measurement_read;  // probe diameter 0: the plan's probe
   std::optional<MeasurementSimulationJob> simulate;

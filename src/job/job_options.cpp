@@ -65,6 +65,7 @@ std::string job_options_json(const Job& job) {
   }
   j["comparison"] = option_members(compare_option_table(), job.compare);
   j["comparison"]["prediction"] = job.compare_with_prediction;
+  if (!job.rps_file.empty()) j["comparison"]["rps"] = job.rps_file;
   j["output"] = job.output;
   return jf::to_text(j);
 }

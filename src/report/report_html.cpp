@@ -139,11 +139,17 @@ std::string alignment_section(const ComparisonDocument& doc) {
   if (doc.alignment.method != "bestfit")
     kv.insert(kv.begin(), std::make_pair(std::string("Method"), escape(doc.alignment.method) +
                                          (doc.alignment.note.empty() ? "" : ": " + escape(doc.alignment.note))));
-  for (const auto& d : doc.alignment.datums)
+  for (const auto& d : doc.alignment.datums) {
+    if (d.kind == "rps") {  // a reference point: its residual along the axes it fixes
+      kv.push_back({"RPS point " + escape(d.label) + " (fixes " + escape(d.directions) + ")",
+                    "largest residual " + fixed(d.form_error * 1000, 1) + " &micro;m"});
+      continue;
+    }
     kv.push_back({"Datum " + escape(d.label) + " (" + escape(d.kind) + ", " + count(d.points.size()) + " points)",
                   d.kind == "plane"  ? "flatness " + fixed(d.form_error * 1000, 1) + " &micro;m"
                   : d.kind == "line" ? "straightness " + fixed(d.form_error * 1000, 1) + " &micro;m"
                                      : "sets the last origin"});
+  }
   if (r.covariance) {
     const auto& c = *r.covariance;
     const double deg = 180 / kPi;
@@ -176,7 +182,8 @@ std::string profile_text(const ComparisonDocument& doc) {
   const std::string frame = fixed(doc.summary.profile * 1000, 1) + " &micro;m";
   const auto& a = doc.alignment;
   if (a.method == "bestfit" || !a.bestfit_profile) return frame;
-  return frame + " in the " + (a.method == "datums" ? std::string("datum frame") : std::string("CMM frame")) +
+  const std::string name = a.method == "datums" ? "datum frame" : a.method == "rps" ? "RPS frame" : "CMM frame";
+  return frame + " in the " + name +
          " (form + location); " + fixed(*a.bestfit_profile * 1000, 1) + " &micro;m best fit (form)";
 }
 

@@ -129,13 +129,20 @@ json alignment_json(const ComparisonDocument& doc) {
   if (a.method != "bestfit") {
     j["note"] = a.note;
     json datums = json::array();
-    for (const auto& d : a.datums)
-      datums.push_back({{"label", d.label},
-                        {"kind", d.kind},
-                        {"points", d.points},
-                        {"origin", jf::vector_json(d.origin)},
-                        {"direction", jf::vector_json(d.direction)},
-                        {"form_error", num(d.form_error, "datum form error")}});
+    for (const auto& d : a.datums) {
+      json entry = {{"label", d.label},
+                    {"kind", d.kind},
+                    {"points", d.points},
+                    {"origin", jf::vector_json(d.origin)},
+                    {"direction", jf::vector_json(d.direction)},
+                    {"form_error", num(d.form_error, "datum form error")}};
+      if (d.kind == "rps") {
+        entry["directions"] = d.directions;
+        entry["residual"] = jf::vector_json(d.residual);
+        entry["weight"] = num(d.weight, "rps weight");
+      }
+      datums.push_back(std::move(entry));
+    }
     j["datums"] = std::move(datums);
     j["bestfit_profile"] = a.bestfit_profile ? num(*a.bestfit_profile, "best-fit profile") : json(nullptr);
     j["bestfit_status"] = a.bestfit_status;

@@ -10,11 +10,12 @@ OptionTable<CompareOptions> make_table() {
   OptionSpec<O> align = parsed_option<O>(
       "align", "A",
       "bestfit: a robust best fit, form only; cmm: the CMM program aligned the part, evaluated as measured, no "
-      "fit; datums: the 3-2-1 datum frame from the plan's datum points, needs the plan, form + location. cmm "
-      "and datums also give the best-fit profile (docs/registration.md \"Alignments\")",
+      "fit; datums: the 3-2-1 datum frame from the plan's datum points, needs the plan, form + location; rps: "
+      "the frame a reference point system fixes, needs the RPS file, form + location. cmm, datums and rps also "
+      "give the best-fit profile (docs/registration.md \"Alignments\")",
       [](auto& o) -> auto& { return o.align; }, parse_align_method,
       [](AlignMethod a) { return std::string(to_string(a)); },
-      choice_names({AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums}));
+      choice_names({AlignMethod::bestfit, AlignMethod::cmm, AlignMethod::datums, AlignMethod::rps}));
   align.example = "cmm";
   t.push_back(align);
   OptionSpec<O> dof = parsed_option<O>(

@@ -4,6 +4,7 @@
 
 #include "base/error.hpp"
 #include "geometry/closest_point.hpp"
+#include "inspection/rps_alignment.hpp"
 
 namespace furrow {
 
@@ -15,6 +16,11 @@ void scale_registration_to_tolerance(CompareOptions& options) {
 MeasurementSet prepare_alignment(CompareOptions& options, const MeasurementSet& set, const InspectionPlan* plan,
                                  const std::string& plan_name) {
   options.datum_frame.reset();
+  if (options.align == AlignMethod::rps) {
+    if (!options.rps) throw InputError("--align rps needs the reference point system (--rps FILE)");
+    options.datum_frame = fit_rps_alignment(*options.rps, set);
+    return without_reference_points(set, *options.rps);
+  }
   if (options.align != AlignMethod::datums) return set;
   if (!plan || !plan->alignment || plan->alignment->method != PartAlignment::Method::datums)
     throw InputError((plan ? plan_name + ": the plan has no datums alignment" : std::string("no plan given")) +

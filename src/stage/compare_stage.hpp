@@ -15,7 +15,10 @@ namespace furrow {
 void scale_registration_to_tolerance(CompareOptions& options);
 
 // The points to compare under options.align (docs/registration.md
-// "Alignments"): with datums, fits the datum frame to the plan's datum
+// "Alignments"): with rps, fits the frame of options.rps
+// (rps_alignment.hpp: InputError without one or with a point missing,
+// DatumFrameError when the points do not fix the part) and returns the
+// other points; with datums, fits the datum frame to the plan's datum
 // points (datum_frame.hpp: InputError without a datums alignment in `plan`
 // or with a datum point missing, DatumFrameError for degenerate data) into
 // options.datum_frame and returns the other points; else `set` as it is.

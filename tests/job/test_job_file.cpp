@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
@@ -282,4 +284,31 @@ TEST_CASE("prediction.stock: the raw stock box for the rapid check, echoed only 
         0);
   CHECK(error_of(minimal(R"( "prediction": {"stock": [0, 0, 5, 1, 1, 2]},)"))
             .find("job.json: prediction.stock: each min must be below its max (z)") == 0);
+}
+
+TEST_CASE("comparison.rps: the reference point system of an rps alignment, read with the job, relative to it") {
+  const std::string dir = std::string(FURROW_BINARY_DIR) + "/test-scratch/job-rps";
+  std::filesystem::create_directories(dir + "/jobs");
+  std::ofstream(dir + "/jobs/rps.json")
+      << R"({"format": "furrow-rps", "version": 1, "points": [
+        {"id": "R1", "nominal": [10, 10, 0], "normal": [0, 0, -1], "directions": "z"},
+        {"id": "R2", "nominal": [90, 10, 0], "normal": [0, 0, -1], "directions": "z"},
+        {"id": "R3", "nominal": [50, 55, 0], "normal": [0, 0, -1], "directions": "xyz"},
+        {"id": "R4", "nominal": [15, 0, 15], "normal": [0, -1, 0], "directions": "y"}]})";
+  const Job job = parse_job(minimal(R"( "comparison": {"align": "rps", "rps": "rps.json"},)"), "job.json", dir + "/jobs");
+  REQUIRE(job.compare.rps);
+  CHECK(job.compare.rps->points.size() == 4);
+  CHECK(job.compare.rps->constraints() == 6);
+  CHECK(job.rps_file == dir + "/jobs/rps.json");
+  const nlohmann::json echo = nlohmann::json::parse(job_options_json(job));
+  CHECK(echo["comparison"]["align"] == "rps");
+  CHECK(echo["comparison"]["rps"] == job.rps_file);
+  CHECK(error_of(minimal(R"( "comparison": {"align": "rps"},)")).find("job.json: comparison.align: rps needs") == 0);
+  std::string stray;
+  try {
+    parse_job(minimal(R"( "comparison": {"rps": "rps.json"},)"), "job.json", dir + "/jobs");
+  } catch (const InputError& e) {
+    stray = e.what();
+  }
+  CHECK(stray.find("job.json: comparison.rps: the reference point system is for") == 0);
 }
