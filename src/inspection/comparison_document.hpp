@@ -72,7 +72,7 @@ struct ComparisonDocument {
     // The part on the CMM: x_cmm = Rz Ry Rx x_part + t (simulate's --misalign).
     Eigen::Vector3d placement_rotation_deg = Eigen::Vector3d::Zero();
     Eigen::Vector3d placement_translation = Eigen::Vector3d::Zero();
-    std::string coarse_method;  // "plan ids", "dmis nominals", "global search", "identity"
+    std::string coarse_method;  // "plan ids", "dmis nominals", "global search", "identity", "alignment frame"
     int coarse_matched_ids = 0, coarse_candidates = 0;
     double coarse_median_distance = 0;
     bool coarse_ambiguous = false;

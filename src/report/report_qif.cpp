@@ -45,6 +45,17 @@ std::string comparison_to_qif(const ComparisonDocument& doc, const std::vector<I
   profile.value = doc.summary.profile;
   profile.status = qif_characteristic_status(doc.summary.verdict);
   d.profile = profile;
+  // The alignment the actuals went through (CMM -> part).
+  const ComparisonDocument::Alignment& a = doc.alignment;
+  QifAlignment qa;
+  qa.rotation = doc.registration.transform.topLeftCorner<3, 3>();
+  qa.origin = doc.registration.transform.topRightCorner<3, 1>();
+  qa.method = a.method;
+  qa.name = a.method == "bestfit" ? "CMM to part: best fit of the measured points"
+            : a.method == "cmm"   ? "CMM to part: identity, the CMM program aligned the part"
+            : a.method == "rps"   ? "CMM to part: reference point system"
+                                  : "CMM to part: datum reference frame";
+  d.alignment = qa;
   d.inspection_status = to_string(doc.summary.verdict);
   d.inspection_status_other = doc.summary.verdict == Verdict::inconclusive;
   if (record) {

@@ -180,7 +180,9 @@ TEST_CASE("without a record the header says so while report.json has null and th
   CHECK(html.find("id=\"record\"") == std::string::npos);
   CHECK(json::parse(file(files, "report.json"))["record"].is_null());
   const std::string& qif = file(files, "results.qif");
-  CHECK(qif.find("<Attributes") == std::string::npos);
+  // The only user attributes are the alignment's, inside ActualTransforms.
+  CHECK(qif.find("<Attributes") > qif.find("<ActualTransforms"));
+  CHECK(qif.find("<Attributes", qif.find("<Attributes") + 1) == std::string::npos);
   CHECK(qif.find("<InspectionOperator>") == std::string::npos);
 }
 

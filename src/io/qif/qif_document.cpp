@@ -163,6 +163,7 @@ struct Ids {
   std::size_t surface_definition = 0, point_definition = 0, surface_nominal = 0, point_nominal = 0;
   std::size_t surface_item = 0, point_item0 = 0;
   std::size_t results = 0, measurement0 = 0, point_set0 = 0, surface_measurement = 0, point_measurement0 = 0;
+  std::size_t transform = 0;
   std::size_t max = 0;
 };
 
@@ -196,6 +197,7 @@ Ids number_ids(const QifDocumentData& d, bool results) {
       ids.surface_measurement = block(1);
       ids.point_measurement0 = block(ids.n);
     }
+    if (d.alignment) ids.transform = block(1);
   }
   ids.max = next - 1;
   return ids;
@@ -406,7 +408,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   w.text += '\n';
   // MeasurementResultsType: InspectionTraceability?, ThisResultsInstanceQPId?,
   // ExternalFileReferences?, MeasuredFeatures?, MeasuredPointSets?,
-  // MeasuredCharacteristics?, InspectionStatus.
+  // MeasuredCharacteristics?, ActualTransforms?, InspectionStatus.
   if (d.time || d.traceability) write_traceability(w, d);
   w.placeholder(4, "ThisResultsInstanceQPId", kResultsQpid);
   if (!d.inputs.empty()) {
@@ -496,6 +498,32 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
     }
     w.close(5, "CharacteristicMeasurements");
     w.close(4, "MeasuredCharacteristics");
+  }
+  if (d.alignment) {
+    // TransformListType: Transform (TransformInstanceType: Rotation?,
+    // Origin?, Attributes?, Name?; id), n.
+    const QifAlignment& a = *d.alignment;
+    w.open_n(4, "ActualTransforms", 1);
+    w.open_id(5, "Transform", ids.transform);
+    w.text += '\n';
+    w.indent(6);
+    w.text += "<Rotation>";
+    w.vec("XDirection", a.rotation.col(0));
+    w.vec("YDirection", a.rotation.col(1));
+    w.vec("ZDirection", a.rotation.col(2));
+    w.text += "</Rotation>\n";
+    w.indent(6);
+    w.vec("Origin", a.origin);
+    w.text += '\n';
+    w.open_n(6, "Attributes", 1);
+    w.indent(7);
+    w.text += "<AttributeStr name=\"alignment\" value=\"";
+    w.escaped(a.method);
+    w.text += "\"/>\n";
+    w.close(6, "Attributes");
+    w.leaf(6, "Name", a.name);
+    w.close(5, "Transform");
+    w.close(4, "ActualTransforms");
   }
   // InspectionStatusType: InspectionStatusEnum or OtherInspectionStatus.
   w.open(4, "InspectionStatus");

@@ -71,6 +71,20 @@ struct QifTraceability {
   std::vector<std::pair<std::string, std::string>> attributes;
 };
 
+// Results only: how the measured points reached the part frame
+// (MeasurementResults/ActualTransforms, IntermediatesPMI.xsd
+// TransformInstanceType): the transform CMM -> part, written as QIF's
+// Rotation (XDirection, YDirection, ZDirection: the matrix's columns, the
+// part-frame directions of the CMM's axes) and Origin (the translation),
+// named after the method ("bestfit", "cmm", "datums", "rps"), which an
+// AttributeStr "alignment" also carries for a reader that looks it up.
+struct QifAlignment {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // [mm]
+  std::string method;
+  std::string name;  // the Transform's Name, in words
+};
+
 struct QifDocumentData {
   std::string part_name;       // Part/ModelNumber
   std::string description;     // Header/Description (what made the document)
@@ -84,6 +98,7 @@ struct QifDocumentData {
   std::string inspection_status = "NOT_CALCULATED";
   bool inspection_status_other = false;
   std::optional<QifTraceability> traceability;  // Results only
+  std::optional<QifAlignment> alignment;        // Results only
 };
 
 // The QIF Results document: Features (nominals and items), the profile

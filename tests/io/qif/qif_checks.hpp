@@ -126,6 +126,11 @@ inline const std::map<std::string, Sequence>& qif_sequences() {
        {{"WorkInstructionIds", "Attributes", "PreferredActionMethodId", "AlternativeActionMethodIds",
          "PreferredResourceIds", "CharacteristicItemIds"},
         {"CharacteristicItemIds"}}},
+      // IntermediatesPMI.xsd TransformInstanceType (TransformMatrixType's
+      // Rotation and Origin, then its own Attributes and Name) and
+      // Primitives.xsd TransformRotationType
+      {"Transform", {{"Rotation", "Origin", "Attributes", "Name"}, {}}},
+      {"Rotation", {{"XDirection", "YDirection", "ZDirection"}, {"XDirection", "YDirection", "ZDirection"}}},
       // QIFResults.xsd / Primitives: ExternalFileReferenceType (order as in QIF_PTS_SAMPLE.QIF)
       {"ExternalFileReference", {{"URI", "FileSpec", "Description"}, {"URI"}}},
   };

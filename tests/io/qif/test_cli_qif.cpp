@@ -127,6 +127,32 @@ TEST_CASE("QIF end to end: simulated QIF compares like CSV, results.qif matches 
   CHECK(part_listed);
   CHECK(text.find("TimeCreated") == std::string::npos);  // comparison.json has no time
 
+  // The alignment: ActualTransforms holds the transform that takes each
+  // point as measured (a probe centre, CMM frame) to its actual - the
+  // registered centre moved back by the ball radius along the normal.
+  const pugi::xml_node transform = results.child("ActualTransforms").child("Transform");
+  REQUIRE(transform);
+  CHECK(std::string(transform.child("Attributes").child("AttributeStr").attribute("name").value()) == "alignment");
+  CHECK(std::string(transform.child("Attributes").child("AttributeStr").attribute("value").value()) == "bestfit");
+  Eigen::Matrix3d rotation;
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<double> c = triple(transform.child("Rotation").child_value(k == 0 ? "XDirection"
+                                                                                  : k == 1 ? "YDirection"
+                                                                                           : "ZDirection"));
+    REQUIRE(c.size() == 3);
+    rotation.col(k) = Eigen::Vector3d(c[0], c[1], c[2]);
+  }
+  const std::vector<double> origin = triple(transform.child_value("Origin"));
+  REQUIRE(origin.size() == 3);
+  CHECK((rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm() < 1e-12);
+  CHECK(rotation.determinant() > 0);
+  const double r = b.options.probe_diameter / 2;
+  REQUIRE(r > 0);
+  double worst = 0;
+  for (const ComparisonDocument::Point& p : b.points)
+    worst = std::max(worst, (rotation * p.measured + Eigen::Vector3d(origin[0], origin[1], origin[2]) - r * p.normal - p.contact).norm());
+  CHECK(worst < 1e-9);
+
   // Read back as measurements: the registered contact points, exactly.
   MeasurementReadOptions o;
   const MeasurementSet back = read_measurements(dir + "/results.qif", o);
