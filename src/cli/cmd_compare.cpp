@@ -156,7 +156,11 @@ int run_compare(Args& args) {
       if (d.kind == DatumFeature::Kind::point)
         std::printf("sets the last origin\n");
       else
-        std::printf("%s %.4f mm\n", d.kind == DatumFeature::Kind::plane ? "flatness" : "straightness", d.form_error);
+        std::printf("%s %.4f mm\n",
+                    d.kind == DatumFeature::Kind::plane      ? "flatness"
+                    : d.kind == DatumFeature::Kind::cylinder ? "roundness"
+                                                             : "straightness",
+                    d.form_error);
     }
   if (c.datum_frame)
     for (const ReferencePointFit& f : c.datum_frame->reference_points)

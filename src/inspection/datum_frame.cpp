@@ -7,6 +7,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -55,6 +56,131 @@ Eigen::Vector3d in_plane(const Eigen::Vector3d& d, const Eigen::Vector3d& z, con
   return p.normalized();
 }
 
+// The least-squares circle through points of a plane (2-D coordinates):
+// the algebraic fit as the start, then Gauss-Newton on the distances to the
+// circle. Throws DatumFrameError (naming `what`) for fewer than 3 points or
+// collinear ones.
+struct CircleFit {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 0;
+  double roundness = 0;  // max - min of the radial residuals [mm]
+};
+
+CircleFit fit_circle(const std::vector<Eigen::Vector2d>& q, const std::string& what) {
+  constexpr int kMaxIterations = 50;
+  constexpr double kStep = 1e-12;  // [mm] a step below this has converged
+  const auto n = static_cast<Eigen::Index>(q.size());
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : q) mean += p;
+  mean /= static_cast<double>(q.size());
+  // x^2 + y^2 + D x + E y + F = 0 about the mean (better conditioned).
+  Eigen::MatrixXd A(n, 3);
+  Eigen::VectorXd b(n);
+  double reach = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector2d p = q[i] - mean;
+    A.row(i) << p.x(), p.y(), 1;
+    b(i) = -p.squaredNorm();
+    reach = std::max(reach, p.norm());
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> algebraic(A, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::VectorXd sv = algebraic.singularValues();
+  if (n < 3 || !(reach > 0) || !(sv(2) > kDegenerate * sv(0)))
+    throw DatumFrameError(what + ": its points do not span a circle (fewer than 3, or collinear in the primary "
+                                 "plane)");
+  const Eigen::Vector3d def = algebraic.solve(b);
+  CircleFit c;
+  c.centre = -0.5 * def.head<2>();
+  c.radius = std::sqrt(std::max(0.0, c.centre.squaredNorm() - def(2)));
+  bool converged = false;
+  for (int iteration = 0; iteration < kMaxIterations && !converged; ++iteration) {
+    Eigen::MatrixXd J(n, 3);
+    Eigen::VectorXd r(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector2d d = q[i] - mean - c.centre;
+      const double len = d.norm();
+      if (!(len > 0)) throw DatumFrameError(what + ": a point lies on the fitted axis");
+      J.row(i) << -d.x() / len, -d.y() / len, -1;
+      r(i) = len - c.radius;
+    }
+    const Eigen::Vector3d step = J.colPivHouseholderQr().solve(-r);
+    c.centre += step.head<2>();
+    c.radius += step(2);
+    converged = step.norm() <= kStep * (1 + reach);
+  }
+  if (!converged)
+    throw DatumFrameError(what + ": the circle fit did not converge in " + std::to_string(kMaxIterations) +
+                          " iterations");
+  std::vector<double> radial;
+  for (const Eigen::Vector2d& p : q) radial.push_back((p - mean - c.centre).norm() - c.radius);
+  c.roundness = spread(radial);
+  c.centre += mean;
+  if (!c.centre.allFinite() || !std::isfinite(c.radius)) throw DatumFrameError(what + ": the circle fit failed");
+  return c;
+}
+
+// The frame of a plane A, a cylinder B perpendicular to it and a point C
+// (docs/registration.md "The 3-2-1 construction"): z = A's normal, the
+// origin where B's axis meets A, x toward C. `ids` are the datums' point ids.
+DatumFrame bore_frame(const std::vector<DatumFeature>& d, const std::vector<Eigen::Vector3d>& a,
+                      const std::vector<Eigen::Vector3d>& b, const Eigen::Vector3d& c, double r,
+                      const std::string& where) {
+  const Eigen::Vector3d zn = d[0].normal.normalized();
+  if (!(std::abs(d[1].direction.normalized().dot(zn)) >= std::cos(kPi / 180)))
+    throw InputError(where + ": datum " + d[1].label + " is a cylinder whose axis is not perpendicular to datum " +
+                     d[0].label + " (within 1 degree)");
+  // Nominal frame: where B's axis meets plane A, x toward C.
+  const Eigen::Vector3d on = d[1].origin - (d[1].origin - d[0].origin).dot(zn) * zn;
+  Eigen::Vector3d to_c = d[2].origin - on;
+  to_c -= to_c.dot(zn) * zn;
+  if (!(to_c.norm() > 1e-3))
+    throw InputError(where + ": datum " + d[2].label + " lies on the axis of datum " + d[1].label +
+                     ", so it fixes no turn about it");
+  DatumFrame out;
+  out.nominal = frame(on, to_c.normalized(), zn);
+
+  const PlaneFit pa = fit_plane(a, zn, "datum " + d[0].label);
+  const Eigen::Vector3d z = pa.normal, ca = pa.centroid - r * z;
+  // B's points seen along z: a circle whose centre is the axis (the same for
+  // centres and contacts: compensation only changes the radius).
+  const Eigen::Vector3d e1 = (std::abs(z.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY())
+                                 .cross(z)
+                                 .normalized();
+  const Eigen::Vector3d e2 = z.cross(e1);
+  std::vector<Eigen::Vector2d> q;
+  for (const Eigen::Vector3d& p : b) q.emplace_back((p - ca).dot(e1), (p - ca).dot(e2));
+  const CircleFit circle = fit_circle(q, "datum " + d[1].label);
+  const Eigen::Vector3d o = ca + circle.centre.x() * e1 + circle.centre.y() * e2;
+  // C is compensated along its nominal normal turned into the CMM frame, and
+  // that turn is the one C itself fixes: a few rounds settle it (the
+  // compensation moves C by r, mostly across x).
+  Eigen::Vector3d cp = c, x = Eigen::Vector3d::UnitX(), nc = Eigen::Vector3d::UnitZ();
+  for (int round = 0; round < 20; ++round) {
+    Eigen::Vector3d in_a = cp - o;
+    in_a -= in_a.dot(z) * z;
+    if (!(in_a.norm() > 1e-3))
+      throw DatumFrameError("datum " + d[2].label + " was measured on the axis of datum " + d[1].label +
+                            ", so it fixes no turn about it");
+    x = in_a.normalized();
+    const Eigen::Matrix3d rel = frame(Eigen::Vector3d::Zero(), x, z).linear() * out.nominal.linear().transpose();
+    nc = rel * d[2].normal.normalized();
+    const Eigen::Vector3d next = c - r * nc;
+    const bool settled = (next - cp).norm() <= 1e-13 * (1 + cp.norm());
+    cp = next;
+    if (settled) break;
+  }
+  out.measured = frame(o, x, z);
+  out.transform = out.nominal * out.measured.inverse();
+  std::vector<std::string> ids[3];
+  for (int k = 0; k < 3; ++k)
+    for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
+  out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
+  out.datums.push_back({d[1].label, d[1].kind, ids[1], o, z, circle.roundness});
+  out.datums.push_back({d[2].label, d[2].kind, ids[2], cp, nc, 0.0});
+  if (!out.transform.matrix().allFinite()) throw DatumFrameError("the datum frame is not finite");
+  return out;
+}
+
 }  // namespace
 
 PlaneFit fit_plane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& orientation,
@@ -80,9 +206,10 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
     throw InputError(where + ": alignment method is " + to_string(alignment.method) +
                      ", --align datums needs a datums alignment");
   const std::vector<DatumFeature>& d = alignment.datums;
-  if (d.size() != 3 || d[0].kind != DatumFeature::Kind::plane || d[1].kind != DatumFeature::Kind::line ||
-      d[2].kind != DatumFeature::Kind::point)
-    throw InputError(where + ": alignment.datums must be a plane, a line and a point (3-2-1)");
+  using Kind = DatumFeature::Kind;
+  if (d.size() != 3 || d[0].kind != Kind::plane || (d[1].kind != Kind::line && d[1].kind != Kind::cylinder) ||
+      d[2].kind != Kind::point)
+    throw InputError(where + ": alignment.datums must be a plane, a line or a cylinder, and a point (3-2-1)");
   if (!set.ids_from_file)
     throw InputError(set.source + ": the points carry no ids, so the datum points cannot be found");
   std::map<std::string, std::size_t> index;
@@ -99,8 +226,9 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
     return out;
   };
   const std::vector<Eigen::Vector3d> a = measured(d[0]), b = measured(d[1]), c = measured(d[2]);
-  if (b.size() < 2) throw DatumFrameError("datum " + d[1].label + ": a line needs 2 points");
   const double r = set.probe_radius;
+  if (d[1].kind == Kind::cylinder) return bore_frame(d, a, b, c[0], r, where);
+  if (b.size() < 2) throw DatumFrameError("datum " + d[1].label + ": a line needs 2 points");
 
   // The nominal frame first: its directions orient the measured ones.
   const Eigen::Vector3d zn = d[0].normal.normalized();

@@ -14,6 +14,14 @@
 //     like the nominal direction: x = d_B; y = z x x;
 //   tertiary C (point): fixes the origin along x; the origin is the point of
 //     line B (in A) nearest C along x: o = b + ((c - b).x) x.
+// Or, with a bore or boss perpendicular to A as secondary:
+//   secondary B (cylinder, >= 3 points): the points seen along z, the
+//     least-squares circle (algebraic start, Gauss-Newton, at most 50
+//     iterations); its centre is the axis, which meets plane A at the
+//     origin o (both in-plane translations); its form number is the
+//     roundness (max - min of the radial residuals);
+//   tertiary C (point): x = the in-plane direction from o to C (the turn
+//     about the axis).
 // Frame F maps frame coordinates to its space: F(q) = o + [x y z] q. The
 // transform CMM -> part is F_nominal F_measured^-1.
 //

@@ -7,6 +7,7 @@ const char* to_string(DatumFeature::Kind kind) {
     case DatumFeature::Kind::plane: return "plane";
     case DatumFeature::Kind::line: return "line";
     case DatumFeature::Kind::point: return "point";
+    case DatumFeature::Kind::cylinder: return "cylinder";
   }
   return "plane";
 }

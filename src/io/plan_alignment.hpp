@@ -32,17 +32,24 @@
 namespace furrow {
 
 struct DatumFeature {
-  enum class Kind { plane, line, point };
+  // cylinder: a bore or boss whose axis is perpendicular to the primary
+  // plane, as secondary datum (its axis fixes both in-plane origins; the
+  // tertiary then fixes the turn about it). Read by furrow compare --align
+  // datums; the planner does not propose it and the DMIS writer does not
+  // write it (docs/cmm.md "Part alignment").
+  enum class Kind { plane, line, point, cylinder };
   std::string label;  // "A", "B", "C": the DMIS feature is F(DATUM_<label>)
   Kind kind = Kind::plane;
   std::string face;   // the face the points lie on
   std::size_t face_index = 0;
   // Nominal geometry: plane: a point of it and its outward normal; line: its
   // first point and unit direction (first to last point, horizontal); point:
-  // the point and its outward normal.
+  // the point and its outward normal; cylinder: a point of its axis and the
+  // axis (unit), with `radius`.
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // outward normal of the face
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // outward normal of the face (cylinder: unused)
+  double radius = 0;  // cylinder only [mm]
   char axis = 'Z';    // the part axis this datum's direction sets ('X', 'Y', 'Z'), 0 for none
   char origin_axis = 'Z';  // the axis whose origin it sets
   std::vector<PlannedPoint> points;

@@ -133,7 +133,8 @@ PartAlignment parse_alignment(const JsonCursor& o, double scale) {
       if (kind == "plane") d.kind = DatumFeature::Kind::plane;
       else if (kind == "line") d.kind = DatumFeature::Kind::line;
       else if (kind == "point") d.kind = DatumFeature::Kind::point;
-      else throw InputError(f.path("kind") + ": " + quote_field(kind) + " is not plane, line or point");
+      else if (kind == "cylinder") d.kind = DatumFeature::Kind::cylinder;
+      else throw InputError(f.path("kind") + ": " + quote_field(kind) + " is not plane, line, point or cylinder");
       d.face = f.string("face");
       const int fi = f.integer("face_index");
       if (fi < 0) throw InputError(f.path("face_index") + ": must not be negative");
@@ -144,7 +145,10 @@ PartAlignment parse_alignment(const JsonCursor& o, double scale) {
       d.axis = axis_letter(f, "axis", true);
       d.origin_axis = axis_letter(f, "origin_axis", false);
       d.points = parse_points(f, "points", scale);
-      const std::size_t need = d.kind == DatumFeature::Kind::plane ? 3 : d.kind == DatumFeature::Kind::line ? 2 : 1;
+      if (d.kind == DatumFeature::Kind::cylinder) d.radius = scale * f.positive("radius");
+      const std::size_t need = d.kind == DatumFeature::Kind::plane || d.kind == DatumFeature::Kind::cylinder ? 3
+                               : d.kind == DatumFeature::Kind::line                                     ? 2
+                                                                                                        : 1;
       if (d.points.size() < need)
         throw InputError(f.path("points") + ": a " + kind + " needs at least " + std::to_string(need) + " points");
       a.datums.push_back(std::move(d));
@@ -165,17 +169,20 @@ json alignment_json(const PartAlignment& a) {
   if (a.method == PartAlignment::Method::datums) {
     j["origin"] = jf::vector_json(a.origin);
     json datums = json::array();
-    for (const DatumFeature& d : a.datums)
-      datums.push_back({{"label", d.label},
-                        {"kind", to_string(d.kind)},
-                        {"face", d.face},
-                        {"face_index", d.face_index},
-                        {"origin", jf::vector_json(d.origin)},
-                        {"direction", jf::vector_json(d.direction)},
-                        {"normal", jf::vector_json(d.normal)},
-                        {"axis", d.axis ? std::string(1, d.axis) : std::string()},
-                        {"origin_axis", std::string(1, d.origin_axis)},
-                        {"points", points_json(d.points)}});
+    for (const DatumFeature& d : a.datums) {
+      json entry = {{"label", d.label},
+                    {"kind", to_string(d.kind)},
+                    {"face", d.face},
+                    {"face_index", d.face_index},
+                    {"origin", jf::vector_json(d.origin)},
+                    {"direction", jf::vector_json(d.direction)},
+                    {"normal", jf::vector_json(d.normal)},
+                    {"axis", d.axis ? std::string(1, d.axis) : std::string()},
+                    {"origin_axis", std::string(1, d.origin_axis)},
+                    {"points", points_json(d.points)}};
+      if (d.kind == DatumFeature::Kind::cylinder) entry["radius"] = jf::finite(d.radius, "datum radius");
+      datums.push_back(std::move(entry));
+    }
     j["datums"] = std::move(datums);
   } else {
     j["manual"] = points_json(a.manual);

@@ -148,6 +148,7 @@ std::string alignment_section(const ComparisonDocument& doc) {
     kv.push_back({"Datum " + escape(d.label) + " (" + escape(d.kind) + ", " + count(d.points.size()) + " points)",
                   d.kind == "plane"  ? "flatness " + fixed(d.form_error * 1000, 1) + " &micro;m"
                   : d.kind == "line" ? "straightness " + fixed(d.form_error * 1000, 1) + " &micro;m"
+                  : d.kind == "cylinder" ? "roundness " + fixed(d.form_error * 1000, 1) + " &micro;m"
                                      : "sets the last origin"});
   }
   if (r.covariance) {

@@ -123,7 +123,7 @@ TEST_CASE("rps: a 3-2-1 system recovers the planted placement exactly, probe cen
   }
 }
 
-TEST_CASE("rps: six constraints are met exactly whatever the touch errors; the frame follows them") {
+TEST_CASE("rps: six constraints are met exactly whatever the touch errors, and the frame follows them") {
   // A point touched 0.02 mm proud of its nominal moves the frame by exactly
   // that along its axis: the bottom's three points 0.02 high lift the part.
   const ReferencePointSystem rps = three_two_one();

@@ -100,6 +100,12 @@ void check_program(const ProbeProgram& program, const std::string& format) {
                      "\" must be 1-32 letters, digits or '_' (a DMIS sensor label and an I++ tool name)");
   if (!is_quoted_text(program.part))
     throw InputError(what + ": the part name must be printable ASCII without quotes");
+  // The programs' alignment measures planes, lines and points; a cylinder
+  // datum (plan_alignment.hpp) is for furrow compare only.
+  if (program.alignment)
+    for (const DatumFeature& d : program.alignment->datums)
+      if (d.kind == DatumFeature::Kind::cylinder)
+        throw InputError(what + ": datum " + d.label + " is a cylinder, which the programs do not measure yet");
   ProgramSettings settings;
   settings.revision = program.revision;
   settings.date = program.date;
