@@ -319,8 +319,12 @@ void write_characteristics(Writer& w, const QifDocumentData& d, const Ids& ids, 
   w.open_id(3, "SurfaceProfileCharacteristicItem", ids.surface_item);
   w.text += "\n";
   w.leaf(4, "Name", "surface profile");
-  w.open_n(4, "FeatureItemIds", ids.n);
+  std::size_t profiled = 0;
+  for (const QifPoint& p : d.points) profiled += p.profiled;
+  if (profiled == 0) throw std::invalid_argument("QIF: a surface profile over no point");
+  w.open_n(4, "FeatureItemIds", profiled);
   for (std::size_t i = 0; i < ids.n; ++i) {
+    if (!d.points[i].profiled) continue;
     w.indent(5);
     w.ref("Id", ids.item0 + i);
     w.text += '\n';

@@ -46,6 +46,9 @@ struct QifPoint {
   // CharacteristicStatusEnum ("PASS", "FAIL", "NOT_ANALYZED").
   std::optional<double> deviation;
   std::string status;
+  // Under the surface profile characteristic; false for a plan's alignment
+  // point, which is measured (first) but not evaluated.
+  bool profiled = true;
 };
 
 // The surface profile characteristic over all points.

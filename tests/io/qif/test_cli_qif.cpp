@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <pugixml.hpp>
 
 #include "base/json_fields.hpp"
@@ -184,7 +185,7 @@ TEST_CASE("QIF end to end: simulated QIF compares like CSV, results.qif matches 
   CHECK(test::slurp(dir + "/again.qif") == text);
 }
 
-TEST_CASE("furrow plan writes plan.qif: the plan's points as nominals and the profile zone") {
+TEST_CASE("furrow plan writes plan.qif: the alignment and plan points as nominals and the profile zone") {
   const std::string dir = test::scratch_dir("cli-qif-plan");
   REQUIRE(test::run_furrow({"partition", kMould, "--out", dir + "/regions.json", "--grid", "100x80"}).status == 0);
   const auto r = test::run_furrow({"plan", kMould, "--regions", dir + "/regions.json", "--out", dir + "/p",
@@ -201,8 +202,21 @@ TEST_CASE("furrow plan writes plan.qif: the plan's points as nominals and the pr
   std::vector<pugi::xml_node> nominals, items;
   for (pugi::xml_node n : features.child("FeatureNominals").children("PointFeatureNominal")) nominals.push_back(n);
   for (pugi::xml_node n : features.child("FeatureItems").children("PointFeatureItem")) items.push_back(n);
-  REQUIRE(nominals.size() == plan.points.size());
-  REQUIRE(items.size() == plan.points.size());
+  // The part alignment's points first (the mould's manual best fit), then the plan's.
+  REQUIRE(plan.alignment);
+  const std::vector<PlannedPoint> aligned = plan.alignment->points();
+  REQUIRE(aligned.size() >= 3);
+  const std::size_t k0 = aligned.size();
+  REQUIRE(nominals.size() == k0 + plan.points.size());
+  REQUIRE(items.size() == k0 + plan.points.size());
+  for (std::size_t i = 0; i < k0; ++i) {
+    CHECK(std::string(items[i].child_value("FeatureName")) == aligned[i].id);
+    CHECK(triple(nominals[i].child_value("Location")) ==
+          std::vector<double>{aligned[i].xyz.x(), aligned[i].xyz.y(), aligned[i].xyz.z()});
+  }
+  nominals.erase(nominals.begin(), nominals.begin() + static_cast<long>(k0));
+  std::vector<pugi::xml_node> alignment_items(items.begin(), items.begin() + static_cast<long>(k0));
+  items.erase(items.begin(), items.begin() + static_cast<long>(k0));
   for (std::size_t i = 0; i < plan.points.size(); ++i) {
     const PlannedPoint& p = plan.points[i];
     CHECK(std::string(items[i].child_value("FeatureName")) == p.id);
@@ -213,21 +227,30 @@ TEST_CASE("furrow plan writes plan.qif: the plan's points as nominals and the pr
       root.child("Characteristics").child("CharacteristicDefinitions").child("SurfaceProfileCharacteristicDefinition");
   CHECK(std::stod(definition.child_value("ToleranceValue")) == 0.1);
   CHECK(std::stod(definition.child_value("OuterDisposition")) == 0.1);  // unilateral outside
-  CHECK(std::string(root.child("Characteristics").child("CharacteristicItems").child(
-                        "SurfaceProfileCharacteristicItem").child("FeatureItemIds").attribute("n").value()) ==
-        std::to_string(plan.points.size()));
+  const pugi::xml_node profiled = root.child("Characteristics").child("CharacteristicItems").child(
+      "SurfaceProfileCharacteristicItem").child("FeatureItemIds");
+  CHECK(std::string(profiled.attribute("n").value()) == std::to_string(plan.points.size()));
+  // The profile names the plan's points only, not the alignment's.
+  std::set<std::string> profiled_ids;
+  for (pugi::xml_node id : profiled.children("Id")) profiled_ids.insert(id.child_value());
+  for (const pugi::xml_node& item : alignment_items) CHECK(profiled_ids.count(item.attribute("id").value()) == 0);
+  for (const pugi::xml_node& item : items) CHECK(profiled_ids.count(item.attribute("id").value()) == 1);
   // The Plan measures every point in the plan's execution order, then
   // evaluates the profile: step k names the item of the point with order k.
   std::map<std::string, std::string> item_name;
   for (const pugi::xml_node& item : items) item_name[item.attribute("id").value()] = item.child_value("FeatureName");
+  for (const pugi::xml_node& item : alignment_items)
+    item_name[item.attribute("id").value()] = item.child_value("FeatureName");
+  // Steps: the alignment's points, then the plan's by order.
   std::map<int, std::string> id_by_order;
-  for (const PlannedPoint& p : plan.points) id_by_order[p.order] = p.id;
+  for (std::size_t i = 0; i < k0; ++i) id_by_order[static_cast<int>(i) + 1] = aligned[i].id;
+  for (const PlannedPoint& p : plan.points) id_by_order[static_cast<int>(k0) + p.order] = p.id;
   const pugi::xml_node steps = root.child("Plan").child("OrderedPlanRoot").child("Steps");
   REQUIRE(steps);
   std::vector<pugi::xml_node> numbered;
   for (pugi::xml_node n : steps.children("NumberedPlanElement")) numbered.push_back(n);
-  REQUIRE(numbered.size() == plan.points.size() + 1);
-  for (std::size_t k = 0; k < plan.points.size(); ++k) {
+  REQUIRE(numbered.size() == k0 + plan.points.size() + 1);
+  for (std::size_t k = 0; k < k0 + plan.points.size(); ++k) {
     CHECK(std::stoi(numbered[k].child_value("SequenceNumber")) == static_cast<int>(k) + 1);
     const std::string ref = numbered[k].child("MeasureSpecifiedFeatures").child("FeatureItemIds").child_value("Id");
     CHECK(item_name[ref] == id_by_order[static_cast<int>(k) + 1]);
