@@ -56,6 +56,51 @@ int nearest_tip(const std::vector<ProbeGeometry>& tips, const Eigen::Vector3d& n
   return best;
 }
 
+// With a head, the tips nearest the normal that relocation tries in turn
+// for a point no tip reaches (each over the relocation's rings): a tilted
+// wall is reached by the tips leaning towards its normal, and trying all of
+// a 21-tip head would cost 21 relocations per point.
+constexpr std::size_t kRelocationTips = 3;
+
+// A point the probe (no tip of the head) cannot take, moved to the nearest
+// place in its region that it (one of the tips nearest its normal) can;
+// with a head, which tips reach it there is recomputed.
+void relocate_candidate(PlanCandidate& c, const PlanState& s, const RegionDomain& domain, double spacing) {
+  const PlannerOptions& options = s.options;
+  const RelocationOptions ro{options.max_move_fraction * spacing, options.relocation_rings,
+                             options.relocation_directions};
+  std::function<bool(const Eigen::Vector2d&)> keep;
+  if (!c.site.empty()) keep = [&c](const Eigen::Vector2d& uv) { return c.site_box.contains(uv); };
+  std::vector<const ProbeGeometry*> probes;
+  if (s.tips.empty()) {
+    probes.push_back(&s.result.probe);
+  } else {
+    std::vector<std::size_t> order(s.tips.size());
+    for (std::size_t t = 0; t < order.size(); ++t) order[t] = t;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return c.normal.dot(s.tips[a].axis) > c.normal.dot(s.tips[b].axis);
+    });
+    for (std::size_t k = 0; k < std::min(kRelocationTips, order.size()); ++k) probes.push_back(&s.tips[order[k]]);
+  }
+  for (const ProbeGeometry* probe : probes) {
+    const std::optional<Relocated> moved =
+        relocate(domain, s.finder, c.uv, *probe, s.access, ro, !c.site.empty(), keep);
+    if (!moved) continue;
+    c.kept = c.moved = true;
+    c.uv = moved->uv;
+    c.xyz = moved->xyz;
+    c.normal = moved->normal;
+    c.moved_by = moved->distance;
+    if (!s.tips.empty()) {
+      for (std::size_t t = 0; t < s.tips.size(); ++t)
+        c.reach[t] = check_access(s.finder, c.xyz, c.normal, s.tips[t], s.access).ok();
+      c.nearest_tip = nearest_tip(s.tips, c.normal, nullptr);
+      c.access = check_access(s.finder, c.xyz, c.normal, s.tips[static_cast<std::size_t>(c.nearest_tip)], s.access);
+    }
+    return;
+  }
+}
+
 bool samplable(const RegionDomain& domain) {
   for (const DomainCell& c : domain.cells())
     if (c.inside && domain.admissible(c.uv)) return true;
@@ -259,7 +304,6 @@ void sample(PlanState& s) {
 // In parallel, each candidate into its own slot.
 void check_reach(PlanState& s) {
   PlanResult& result = s.result;
-  const PlannerOptions& options = s.options;
   const RegionMap& map = s.map;
   const std::vector<ProbeGeometry>& tips = s.tips;
   const AccessOptions& access = s.access;
@@ -294,19 +338,7 @@ void check_reach(PlanState& s) {
       c.access = g.degenerate ? AccessResult{AccessProblem::tilt} : check_access(finder, c.xyz, c.normal, result.probe, access);
       c.kept = !g.degenerate && c.access.ok();
     }
-    if (!c.kept && tips.empty()) {
-      RelocationOptions ro{options.max_move_fraction * spacing[static_cast<std::size_t>(c.region)], options.relocation_rings,
-                           options.relocation_directions};
-      std::function<bool(const Eigen::Vector2d&)> keep;
-      if (!c.site.empty()) keep = [&c](const Eigen::Vector2d& uv) { return c.site_box.contains(uv); };
-      if (const std::optional<Relocated> moved = relocate(domain, finder, c.uv, result.probe, access, ro, !c.site.empty(), keep)) {
-        c.kept = c.moved = true;
-        c.uv = moved->uv;
-        c.xyz = moved->xyz;
-        c.normal = moved->normal;
-        c.moved_by = moved->distance;
-      }
-    }
+    if (!c.kept) relocate_candidate(c, s, domain, spacing[static_cast<std::size_t>(c.region)]);
 #pragma omp critical(plan_progress)
     {
       ++checked;
