@@ -282,15 +282,19 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
   return out;
 }
 
+MeasurementSet without_points(const MeasurementSet& set, const std::set<std::string>& ids) {
+  MeasurementSet out = set;
+  out.points.clear();
+  for (const MeasuredPoint& p : set.points)
+    if (!ids.count(p.id)) out.points.push_back(p);
+  return out;
+}
+
 MeasurementSet without_datum_points(const MeasurementSet& set, const PartAlignment& alignment) {
   std::set<std::string> datum_ids;
   for (const DatumFeature& f : alignment.datums)
     for (const PlannedPoint& p : f.points) datum_ids.insert(p.id);
-  MeasurementSet out = set;
-  out.points.clear();
-  for (const MeasuredPoint& p : set.points)
-    if (!datum_ids.count(p.id)) out.points.push_back(p);
-  return out;
+  return without_points(set, datum_ids);
 }
 
 }  // namespace furrow

@@ -41,6 +41,7 @@
 // the line) throw DatumFrameError with the reason (exit 3: the computation
 // did not succeed). Never NaN.
 #include <Eigen/Geometry>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -105,5 +106,8 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
 // The set without the alignment's datum points (the free-form points that
 // the datum frame evaluates).
 MeasurementSet without_datum_points(const MeasurementSet& set, const PartAlignment& alignment);
+
+// The set without the points of these ids, in their order.
+MeasurementSet without_points(const MeasurementSet& set, const std::set<std::string>& ids);
 
 }  // namespace furrow

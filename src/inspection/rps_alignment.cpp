@@ -131,11 +131,7 @@ DatumFrame fit_rps_alignment(const ReferencePointSystem& rps, const MeasurementS
 MeasurementSet without_reference_points(const MeasurementSet& set, const ReferencePointSystem& rps) {
   std::set<std::string> ids;
   for (const ReferencePoint& p : rps.points) ids.insert(p.id);
-  MeasurementSet out = set;
-  out.points.clear();
-  for (const MeasuredPoint& p : set.points)
-    if (!ids.count(p.id)) out.points.push_back(p);
-  return out;
+  return without_points(set, ids);
 }
 
 }  // namespace furrow

@@ -24,6 +24,26 @@ inline Part one_face(const NurbsSurface& surface, const std::string& name = "fac
 // The curvature partition at nu x nv cells per face (plan_fixtures.cpp).
 RegionMap partition_of(const Part& part, int nu = 120, int nv = 120);
 
+// A floor z = 0 over x in [x_min, 5], y in [-half_width, half_width], and
+// a wall x = 5 facing -x, z in [0, height]: where an indexable head's
+// assembly meets a wall (test_head_access.cpp, test_head_relocation.cpp).
+inline Part floor_and_wall(double x_min, double half_width, double height) {
+  Part part;
+  part.faces.emplace_back("floor", make_plane({x_min, -half_width, 0}, {5 - x_min, 0, 0}, {0, 2 * half_width, 0}));
+  part.faces.emplace_back("wall", make_plane({5, -half_width, 0}, {0, 0, height}, {0, 2 * half_width, 0}));
+  return part;
+}
+
+// Samples of both faces of floor_and_wall() every h mm (brute-force oracles).
+inline std::vector<Eigen::Vector3d> floor_and_wall_samples(double h, double x_min, double half_width, double height) {
+  std::vector<Eigen::Vector3d> s;
+  for (double y = -half_width; y <= half_width + 1e-9; y += h) {
+    for (double x = x_min; x <= 5 + 1e-9; x += h) s.emplace_back(x, y, 0);
+    for (double z = h; z <= height + 1e-9; z += h) s.emplace_back(5, y, z);
+  }
+  return s;
+}
+
 inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }
 
 // A flat floor z = 0 over x in [-10, 10], y in [0, 20], cut by a groove of

@@ -20,21 +20,9 @@ namespace {
 
 // Floor z = 0 over x in [-20, 5], y in [-10, 10]; a wall x = 5 facing -x,
 // z in [0, 30].
-Part floor_and_wall() {
-  Part part;
-  part.faces.emplace_back("floor", make_plane({-20, -10, 0}, {25, 0, 0}, {0, 20, 0}));
-  part.faces.emplace_back("wall", make_plane({5, -10, 0}, {0, 0, 30}, {0, 20, 0}));
-  return part;
-}
+Part floor_and_wall() { return test::floor_and_wall(-20, 10, 30); }
 
-std::vector<Eigen::Vector3d> floor_and_wall_samples(double h) {
-  std::vector<Eigen::Vector3d> s;
-  for (double y = -10; y <= 10 + 1e-9; y += h) {
-    for (double x = -20; x <= 5 + 1e-9; x += h) s.emplace_back(x, y, 0);
-    for (double z = h; z <= 30 + 1e-9; z += h) s.emplace_back(5, y, z);
-  }
-  return s;
-}
+std::vector<Eigen::Vector3d> floor_and_wall_samples(double h) { return test::floor_and_wall_samples(h, -20, 10, 30); }
 
 const OracleHead kHead{1, 0.5, 20, 25, 6.5, 30, 12};
 

@@ -21,24 +21,10 @@ using namespace furrow::test;
 
 namespace {
 
-// A floor z = 0 over x in [-40, 5], y in [-15, 15], and a wall x = 5 facing
-// -x, 30 mm high: next to the wall the vertical tip's probe body (radius
-// 6.6, from 21 to 46 mm above the ball) runs into it.
-Part floor_and_wall() {
-  Part part;
-  part.faces.emplace_back("floor", make_plane({-40, -15, 0}, {45, 0, 0}, {0, 30, 0}));
-  part.faces.emplace_back("wall", make_plane({5, -15, 0}, {0, 0, 30}, {0, 30, 0}));
-  return part;
-}
-
-std::vector<Eigen::Vector3d> samples(double h) {
-  std::vector<Eigen::Vector3d> s;
-  for (double y = -15; y <= 15 + 1e-9; y += h) {
-    for (double x = -40; x <= 5 + 1e-9; x += h) s.emplace_back(x, y, 0);
-    for (double z = h; z <= 30 + 1e-9; z += h) s.emplace_back(5, y, z);
-  }
-  return s;
-}
+// A floor over x in [-40, 5], y in [-15, 15], and a wall 30 mm high at
+// x = 5: next to the wall the vertical tip's probe body (radius 6.6, from 21
+// to 46 mm above the ball) runs into it.
+constexpr double kFloorX = -40, kHalfWidth = 15, kWallHeight = 30;
 
 // A vertical tip, which cannot lean away from the wall, and a horizontal
 // one for the wall itself, which cannot take the floor (90 degrees off).
@@ -54,7 +40,7 @@ const OracleHead kOracleHead{1, 0.5, 20, 25, 6.6, 30, 12};
 }  // namespace
 
 TEST_CASE("indexable head: a point no tip reaches is moved to where one does") {
-  const Part part = floor_and_wall();
+  const Part part = floor_and_wall(kFloorX, kHalfWidth, kWallHeight);
   const RegionMap map = partition_of(part, 60, 60);
   PlannerOptions o;
   o.points = 60;
@@ -65,7 +51,7 @@ TEST_CASE("indexable head: a point no tip reaches is moved to where one does") {
   for (const PlannedPoint& p : r.plan.points) by_id[p.id] = &p;
 
   const double h = 0.25;
-  const std::vector<Eigen::Vector3d> part_samples = samples(h);
+  const std::vector<Eigen::Vector3d> part_samples = floor_and_wall_samples(h, kFloorX, kHalfWidth, kWallHeight);
   // A sampled plane overestimates a distance d >= 0.5 by at most h^2 / (4 d).
   const double sampling = h * h / 2 + 1e-6;
   int moved = 0;
