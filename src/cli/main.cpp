@@ -48,7 +48,9 @@ void print_overview(std::ostream& out) {
     name.resize(std::max<std::size_t>(18, name.size() + 2), ' ');
     out << "  " << name << c->summary << "\n";
   }
-  out << "\n'furrow help COMMAND' shows a command's options.\n"
+  out << "\n'furrow help COMMAND' shows a command's options; 'furrow help --options' lists every stage\n"
+         "option with its job-file member and default, 'furrow help --job-schema' writes the job file's\n"
+         "JSON Schema.\n"
          "Exit status: 0 ok/pass, 1 fail, 2 bad input, 3 the computation did not succeed,\n"
          "4 inconclusive (nothing failed, but not everything was shown to be good).\n";
 }

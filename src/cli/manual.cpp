@@ -117,7 +117,8 @@ void write_bash_completion(std::ostream& out, const std::vector<const Command*>&
       << "    COMPREPLY=($(compgen -W \"help --version";
   for (const Command* c : commands) out << " " << c->name;
   out << "\" -- \"$cur\"))\n    return\n  fi\n"
-      << "  case \"$cur\" in\n    -*)\n      case \"${COMP_WORDS[1]}\" in\n";
+      << "  case \"$cur\" in\n    -*)\n      case \"${COMP_WORDS[1]}\" in\n";  out << "        help) COMPREPLY=($(compgen -W \"--man --completion --options --job-schema\" -- \"$cur\")) ;;\n";
+
   for (const Command* c : commands) {
     out << "        " << c->name << ") COMPREPLY=($(compgen -W \"";
     const std::vector<std::string> options = options_in_usage(usage_text(*c));
