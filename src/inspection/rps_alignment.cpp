@@ -68,6 +68,9 @@ DatumFrame fit_rps_alignment(const ReferencePointSystem& rps, const MeasurementS
 
   std::size_t rows = 0;
   for (const Matched& m : points) rows += m.rps->directions.size();
+  if (rows < 6)
+    throw DatumFrameError(rps.source + ": the RPS points fix " + std::to_string(rows) +
+                          " coordinates, fewer than the part's 6 degrees of freedom");
   bool converged = false;
   for (int iteration = 0; iteration < options.max_iterations && !converged; ++iteration) {
     // Rows: sqrt(w) e_a . (x - target), x = T m; columns: the turn about g

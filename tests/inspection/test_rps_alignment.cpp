@@ -199,6 +199,10 @@ TEST_CASE("rps: points that leave the part free, lie on a line or were not measu
   }
   CHECK(error_of(line, measure(line, placement(), 0.0, [](std::size_t) { return 0.0; })).find("on a line") !=
         std::string::npos);
+  // Five constraints, built in code (the file reader refuses them earlier).
+  ReferencePointSystem five = three_two_one();
+  five.points.pop_back();
+  CHECK(error_of(five, set).find("frame: rps.json: the RPS points fix 5 coordinates") == 0);
   MeasurementSet missing = set;
   missing.points.erase(missing.points.begin() + 4);
   CHECK(error_of(three_two_one(), missing) == "input: measured.csv: RPS point \"R5\" of rps.json was not measured");
