@@ -12,7 +12,7 @@ namespace furrow {
 
 namespace {
 
-constexpr int kSub = 4;  // sub-samples per cell and direction: (kSub + 1)^2 points
+constexpr int kSub = 8;  // sub-samples per cell and direction: (kSub + 1)^2 points
 
 // Clips segment a-b to the box [lo, hi] (Liang-Barsky); false when it misses.
 bool clip_segment(Eigen::Vector2d& a, Eigen::Vector2d& b, const Eigen::Vector2d& lo,
@@ -83,6 +83,12 @@ bool in_cone_reach(const Eigen::Vector3d& local, const Eigen::Vector3d& half_ext
 
 bool CellBounds::may_hold_foot(const Eigen::Vector3d& q) const {
   return in_cone_reach(axes * (q - centre), half_extent, cone_tan);
+}
+
+bool CellBounds::may_hold_foot_near(const Eigen::Vector3d& c, double radius) const {
+  // Growing the box by `radius` lowers q's sideways distance and raises its
+  // height by at least as much as moving q by `radius` could.
+  return in_cone_reach(axes * (c - centre), half_extent.array() + radius, cone_tan);
 }
 
 double CellBounds::squared_screen(const Eigen::Vector3d& q) const {
@@ -186,15 +192,22 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       bool regular = true;
       Eigen::AlignedBox3d box;
       const Eigen::Vector2d h = (cell.hi - cell.lo) / kSub;
+      // The cell's Bezier form, where it has one, evaluates the sub-samples
+      // without knot searches (bezier_patch.hpp).
+      const std::optional<BezierPatch> piece = BezierPatch::within_span(s, cell.lo, cell.hi);
+      auto sub_sample = [&](int a, int b) {  // the far sides exactly at hi
+        return Eigen::Vector2d(a == kSub ? cell.hi.x() : cell.lo.x() + a * h.x(),
+                               b == kSub ? cell.hi.y() : cell.lo.y() + b * h.y());
+      };
       for (int a = 0; a <= kSub; ++a)
         for (int b = 0; b <= kSub; ++b) {
-          const SurfaceDerivatives d =
-              s.evaluate(cell.lo.x() + a * h.x(), cell.lo.y() + b * h.y(), 2);
+          const Eigen::Vector2d uv = sub_sample(a, b);
+          const SurfaceDerivatives d = piece ? piece->evaluate(uv.x(), uv.y(), 2) : s.evaluate(uv.x(), uv.y(), 2);
           pts[a][b] = d.S;
           box.extend(d.S);
-          max_uu = std::max(max_uu, d.Suu.norm());
-          max_uv = std::max(max_uv, d.Suv.norm());
-          max_vv = std::max(max_vv, d.Svv.norm());
+          max_uu = std::max(max_uu, d.Suu.squaredNorm());  // squared here, rooted below
+          max_uv = std::max(max_uv, d.Suv.squaredNorm());
+          max_vv = std::max(max_vv, d.Svv.squaredNorm());
           const Eigen::Vector3d n = d.Su.cross(d.Sv);
           const double area = n.norm();
           regular = regular && area > kDegenerateRelativeTolerance * d.Su.norm() * d.Sv.norm();
@@ -204,6 +217,9 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
             max_nv = std::max(max_nv, (d.Suv.cross(d.Sv).norm() + d.Su.cross(d.Svv).norm()) / area);
           }
         }
+      max_uu = std::sqrt(max_uu);
+      max_uv = std::sqrt(max_uv);
+      max_vv = std::sqrt(max_vv);
       bounds.centre = box.center();
       const SurfaceDerivatives middle = s.evaluate(mid.x(), mid.y(), 1);
       cell.middle_su = middle.Su;
@@ -228,16 +244,21 @@ void SeedGrid::add_face(const Part& part, std::size_t face_index,
       if (regular && !on_domain_edge && !cell.cut_by_trim) {
         // The box's third axis is the middle normal: the cone's axis.
         const Eigen::Vector3d axis = bounds.axes.row(2).transpose();
-        double widest = 0;
+        double narrowest_cosine = 1;
         for (auto& row : normals)
-          for (auto& n : row) widest = std::max(widest, std::acos(std::clamp(n.dot(axis), -1.0, 1.0)));
-        const double angle = widest + 2.0 * (h.x() * max_nu + h.y() * max_nv);
+          for (auto& n : row) narrowest_cosine = std::min(narrowest_cosine, n.dot(axis));
+        const double widest = std::acos(std::clamp(narrowest_cosine, -1.0, 1.0));
+        // Every point of the cell is within half a sub-step in u and in v
+        // of a sub-sample: its normal turns from that sample's by at most
+        // (hu / 2) sup |dn/du| + (hv / 2) sup |dn/dv|, the sups taken as
+        // twice the sampled maxima.
+        const double angle = widest + h.x() * max_nu + h.y() * max_nv;
         if (std::isfinite(angle) && angle < radians(80.0)) bounds.cone_tan = std::tan(angle);
       }
       const int corner[5][2] = {{0, 0}, {kSub, 0}, {0, kSub}, {kSub, kSub}, {kSub / 2, kSub / 2}};
       cell.sample_kept = 0;
       for (int k = 0; k < 5; ++k) {
-        cell.sample_uv[k] = cell.lo + Eigen::Vector2d(corner[k][0] * h.x(), corner[k][1] * h.y());
+        cell.sample_uv[k] = sub_sample(corner[k][0], corner[k][1]);
         cell.sample_point[k] = pts[corner[k][0]][corner[k][1]];
         if (!cell.cut_by_trim || trim.contains(cell.sample_uv[k])) cell.sample_kept |= 1u << k;
       }

@@ -8,7 +8,7 @@
 // and direction, at least min_cells and at most max_cells per direction), so
 // a cell is polynomial and small against the surface's features.
 //
-// Bounding volumes are conservative: oriented boxes hold a 5 x 5 sub-sample
+// Bounding volumes are conservative: oriented boxes hold a 9 x 9 sub-sample
 // of the cell grown by a bound on how far the surface can bulge between
 // sub-samples, (hu^2 |Suu| + 2 hu hv |Suv| + hv^2 |Svv|) / 8 with the
 // sampled maxima doubled. The distance from q to a cell's box is a lower
@@ -19,9 +19,9 @@
 //
 // Cones of normals (CellBounds::may_hold_foot) are bounded the same way: the
 // angle between the middle normal and the normals at the sub-samples, plus
-// the most the normal can turn between sub-samples, |dn/du| <= (|Suu x Sv| +
-// |Su x Suv|) / |Su x Sv| (and likewise along v) with the sampled maxima
-// doubled.
+// the most the normal can turn from the nearest sub-sample (half a sub-step
+// in u and in v), |dn/du| <= (|Suu x Sv| + |Su x Suv|) / |Su x Sv| (and
+// likewise along v) with the sampled maxima doubled.
 //
 // Trims: cells wholly trimmed away are dropped; cells cut by a trim loop keep
 // the loop segments clipped to their box, so the search can minimise along
@@ -80,6 +80,10 @@ struct CellBounds {
   // minimum inside the face's domain is such a foot (the distance is
   // stationary there), so a cell for which this is false cannot hold it.
   bool may_hold_foot(const Eigen::Vector3d& q) const;
+  // False when no point within `radius` of `c` can have an orthogonal foot
+  // in the cell: the same test with every coordinate of q free to move by
+  // `radius` (candidate_voxels.hpp).
+  bool may_hold_foot_near(const Eigen::Vector3d& c, double radius) const;
   // A lower bound on the squared distance from q to any surface point of
   // the cell (to the oriented box), or infinity when the cell cannot hold
   // an orthogonal foot of q: both tests share q in the box's frame.
