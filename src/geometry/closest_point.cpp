@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "geometry/candidate_voxels.hpp"
 #include "geometry/local_foot_point.hpp"
 #include "geometry/seed_grid.hpp"
 
@@ -173,6 +174,7 @@ ClosestPointFinder::ClosestPointFinder(const Part& part, ClosestPointOptions opt
     : part_(&part), options_(options) {
   check_options(options_);
   grid_ = std::make_unique<SeedGrid>(part, options_);
+  if (options_.candidate_voxels) voxels_ = std::make_unique<CandidateVoxels>(*grid_);
 }
 
 ClosestPointFinder::~ClosestPointFinder() = default;
@@ -259,23 +261,29 @@ ClosestPoint ClosestPointFinder::search(const Eigen::Vector3d& q, const ClosestP
     count = 0;
     upper = std::min(upper, best.squared_distance);
   };
+  auto screen = [&](std::uint32_t index) {
+    if (static_cast<int>(index) == hint_cell || (excluded != kNoFace && cells[index].face == excluded)) return;
+    const CellBounds& cell = bounds[index];
+    upper = std::min(upper, (cell.surface_point - q).squaredNorm());
+    const double bound = cell.squared_screen(q);
+    if (!(bound < upper)) return;
+    // A full list is solved at once (the walk goes on with its best).
+    if (count == kMaxCandidates) solve_candidates();
+    candidates[count++] = {bound, index};
+  };
+  // In the voxel lattice, the cube's list stands for the walk; a search
+  // that excludes a face walks the tree (the lists do not know it).
+  const CandidateCells near = voxels_ && excluded == kNoFace ? voxels_->cells_near(q) : CandidateCells{};
+  if (near) {
+    for (const std::uint32_t index : near) screen(index);
+    top = 0;
+  }
   while (top > 0) {
     const Pending pending = stack[--top];
     if (pending.squared_distance >= upper) continue;
     const SeedNode& node = nodes[pending.node];
     if (node.left < 0) {
-      for (std::uint32_t k = 0; k < node.count; ++k) {
-        const std::uint32_t index = node.first + k;
-        if (static_cast<int>(index) == hint_cell || (excluded != kNoFace && cells[index].face == excluded))
-          continue;
-        const CellBounds& cell = bounds[index];
-        upper = std::min(upper, (cell.surface_point - q).squaredNorm());
-        const double bound = cell.squared_screen(q);
-        if (!(bound < upper)) continue;
-        // A full list is solved at once (the walk goes on with its best).
-        if (count == kMaxCandidates) solve_candidates();
-        candidates[count++] = {bound, index};
-      }
+      for (std::uint32_t k = 0; k < node.count; ++k) screen(node.first + k);
       continue;
     }
     const double bl = nodes[node.left].box.squaredExteriorDistance(q);
