@@ -122,22 +122,52 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& q, const std::string& w
 // The frame of a plane A, a cylinder B perpendicular to it and a point C
 // (docs/registration.md "The 3-2-1 construction"): z = A's normal, the
 // origin where B's axis meets A, x toward C. `ids` are the datums' point ids.
+// A datum line's points seen along z (the primary plane's normal through
+// `ca`): the least-squares line, its direction oriented by the order the
+// plan lists the points in (first to last along the nominal direction, the
+// order the program measures them: a placement cannot reverse it).
+struct PlaneLine {
+  Eigen::Vector3d point, direction;
+  std::vector<double> across;  // each point's offset across the line
+};
+PlaneLine fit_line_in_plane(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& ca,
+                            const Eigen::Vector3d& z, const std::string& label, const std::string& primary) {
+  std::vector<Eigen::Vector3d> q;
+  for (const Eigen::Vector3d& p : points) q.push_back(p - (p - ca).dot(z) * z);
+  PlaneLine out;
+  out.point = centroid_of(q);
+  const auto svd = principal(q, out.point);
+  double reach = 0;
+  for (const Eigen::Vector3d& p : points) reach = std::max(reach, (p - centroid_of(points)).norm());
+  if (!(svd.singularValues()(0) > kDegenerate * std::max(reach, 1.0)))
+    throw DatumFrameError("datum " + label + ": its points coincide once projected into datum " + primary +
+                          " (the line runs along the primary plane's normal), so it fixes no direction");
+  out.direction = in_plane(svd.matrixV().col(0), z, "datum " + label);
+  if ((q.back() - q.front()).dot(out.direction) < 0) out.direction = -out.direction;
+  for (const Eigen::Vector3d& p : q) out.across.push_back((p - out.point).dot(z.cross(out.direction)));
+  return out;
+}
+
 DatumFrame bore_frame(const std::vector<DatumFeature>& d, const std::vector<Eigen::Vector3d>& a,
-                      const std::vector<Eigen::Vector3d>& b, const Eigen::Vector3d& c, double r,
+                      const std::vector<Eigen::Vector3d>& b, const std::vector<Eigen::Vector3d>& c_points, double r,
                       const std::string& where) {
   const Eigen::Vector3d zn = d[0].normal.normalized();
   if (!(std::abs(d[1].direction.normalized().dot(zn)) >= std::cos(kPi / 180)))
     throw InputError(where + ": datum " + d[1].label + " is a cylinder whose axis is not perpendicular to datum " +
                      d[0].label + " (within 1 degree)");
-  // Nominal frame: where B's axis meets plane A, x toward C.
+  // Nominal frame: where B's axis meets plane A, x toward C (a point) or
+  // along C (a line on a wall).
   const Eigen::Vector3d on = d[1].origin - (d[1].origin - d[0].origin).dot(zn) * zn;
-  Eigen::Vector3d to_c = d[2].origin - on;
+  const bool c_line = d[2].kind == DatumFeature::Kind::line;
+  Eigen::Vector3d to_c = c_line ? d[2].direction : Eigen::Vector3d(d[2].origin - on);
   to_c -= to_c.dot(zn) * zn;
   if (!(to_c.norm() > 1e-3))
-    throw InputError(where + ": datum " + d[2].label + " lies on the axis of datum " + d[1].label +
-                     ", so it fixes no turn about it");
+    throw InputError(where + ": datum " + d[2].label +
+                     (c_line ? " runs along the primary plane's normal, so it fixes no turn"
+                             : " lies on the axis of datum " + d[1].label + ", so it fixes no turn about it"));
   DatumFrame out;
   out.nominal = frame(on, to_c.normalized(), zn);
+  const Eigen::Vector3d c = c_points[0];
 
   const PlaneFit pa = fit_plane(a, zn, "datum " + d[0].label);
   const Eigen::Vector3d z = pa.normal, ca = pa.centroid - r * z;
@@ -151,6 +181,21 @@ DatumFrame bore_frame(const std::vector<DatumFeature>& d, const std::vector<Eige
   for (const Eigen::Vector3d& p : b) q.emplace_back((p - ca).dot(e1), (p - ca).dot(e2));
   const CircleFit circle = fit_circle(q, "datum " + d[1].label);
   const Eigen::Vector3d o = ca + circle.centre.x() * e1 + circle.centre.y() * e2;
+  if (c_line) {
+    // C's direction sets x; compensation moves the line sideways, never
+    // turns it.
+    const PlaneLine line = fit_line_in_plane(c_points, ca, z, d[2].label, d[0].label);
+    out.measured = frame(o, line.direction, z);
+    out.transform = out.nominal * out.measured.inverse();
+    std::vector<std::string> ids[3];
+    for (int k = 0; k < 3; ++k)
+      for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
+    out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
+    out.datums.push_back({d[1].label, d[1].kind, ids[1], o, z, circle.roundness});
+    out.datums.push_back({d[2].label, d[2].kind, ids[2], line.point, line.direction, spread(line.across)});
+    if (!out.transform.matrix().allFinite()) throw DatumFrameError("the datum frame is not finite");
+    return out;
+  }
   // C is compensated along its nominal normal turned into the CMM frame, and
   // that turn is the one C itself fixes: a few rounds settle it (the
   // compensation moves C by r, mostly across x).
@@ -208,8 +253,9 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
   const std::vector<DatumFeature>& d = alignment.datums;
   using Kind = DatumFeature::Kind;
   if (d.size() != 3 || d[0].kind != Kind::plane || (d[1].kind != Kind::line && d[1].kind != Kind::cylinder) ||
-      d[2].kind != Kind::point)
-    throw InputError(where + ": alignment.datums must be a plane, a line or a cylinder, and a point (3-2-1)");
+      !(d[2].kind == Kind::point || (d[1].kind == Kind::cylinder && d[2].kind == Kind::line)))
+    throw InputError(where + ": alignment.datums must be a plane, a line and a point, or a plane, a cylinder and "
+                     "a point or a line (3-2-1)");
   if (!set.ids_from_file)
     throw InputError(set.source + ": the points carry no ids, so the datum points cannot be found");
   std::map<std::string, std::size_t> index;
@@ -227,7 +273,7 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
   };
   const std::vector<Eigen::Vector3d> a = measured(d[0]), b = measured(d[1]), c = measured(d[2]);
   const double r = set.probe_radius;
-  if (d[1].kind == Kind::cylinder) return bore_frame(d, a, b, c[0], r, where);
+  if (d[1].kind == Kind::cylinder) return bore_frame(d, a, b, c, r, where);
   if (b.size() < 2) throw DatumFrameError("datum " + d[1].label + ": a line needs 2 points");
 
   // The nominal frame first: its directions orient the measured ones.
@@ -244,28 +290,14 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
   const PlaneFit pa = fit_plane(a, zn, "datum " + d[0].label);
   const Eigen::Vector3d z = pa.normal, ca = pa.centroid - r * z;
   // Secondary: its points in plane A, the least-squares line.
-  std::vector<Eigen::Vector3d> q;
-  for (const Eigen::Vector3d& p : b) q.push_back(p - (p - ca).dot(z) * z);
-  const Eigen::Vector3d qc = centroid_of(q);
-  const auto svd = principal(q, qc);
-  double reach = 0;
-  for (const Eigen::Vector3d& p : b) reach = std::max(reach, (p - centroid_of(b)).norm());
-  if (!(svd.singularValues()(0) > kDegenerate * std::max(reach, 1.0)))
-    throw DatumFrameError("datum " + d[1].label + ": its points coincide once projected into datum " + d[0].label +
-                          " (the line runs along the primary plane's normal), so it fixes no direction");
-  // The plan lists B's points first to last along its nominal direction,
-  // and the program measures them in that order: their order orients x
-  // (a placement cannot reverse it, whatever it is).
-  Eigen::Vector3d x = in_plane(svd.matrixV().col(0), z, "datum " + d[1].label);
-  if ((q.back() - q.front()).dot(x) < 0) x = -x;
+  const PlaneLine line = fit_line_in_plane(b, ca, z, d[1].label, d[0].label);
+  const Eigen::Vector3d x = line.direction, qc = line.point;
   // Rotation taking part directions to CMM directions: where B's and C's
   // outward normals point on the CMM, for the probe compensation.
   const Eigen::Matrix3d rel = frame(Eigen::Vector3d::Zero(), x, z).linear() * out.nominal.linear().transpose();
   const Eigen::Vector3d nb = rel * d[1].normal.normalized(), nc = rel * d[2].normal.normalized();
   const Eigen::Vector3d nb_plane = nb - nb.dot(z) * z;
   const Eigen::Vector3d line_point = qc - r * nb_plane;
-  std::vector<double> across;
-  for (const Eigen::Vector3d& p : q) across.push_back((p - qc).dot(z.cross(x)));
   // Tertiary: the point, moved back by the radius along its normal.
   const Eigen::Vector3d cp = c[0] - r * nc;
   out.measured = frame(line_point + (cp - line_point).dot(x) * x, x, z);
@@ -275,7 +307,7 @@ DatumFrame fit_datum_frame(const PartAlignment& alignment, const MeasurementSet&
   for (int k = 0; k < 3; ++k)
     for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
   out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
-  out.datums.push_back({d[1].label, d[1].kind, ids[1], line_point, x, spread(across)});
+  out.datums.push_back({d[1].label, d[1].kind, ids[1], line_point, x, spread(line.across)});
   out.datums.push_back({d[2].label, d[2].kind, ids[2], cp, nc, 0.0});
   const Eigen::Matrix4d m = out.transform.matrix();
   if (!m.allFinite()) throw DatumFrameError("the datum frame is not finite");

@@ -11,7 +11,9 @@
 //              plane perpendicular to B's (the last origin). DMIS DATSET can
 //              only name axes, so datum planes are parallel to the CAD axes;
 //              `origin` is where the three meet, in CAD coordinates, which
-//              the program translates back to the CAD origin.
+//              the program translates back to the CAD origin. Without two
+//              such walls: A, B a bore or boss with a vertical axis (both
+//              in-plane origins), C a line on a wall (the direction).
 //   free_form  no such planes (a single free-form face): `manual` holds
 //              three well-spread points on the part the operator touches to
 //              set the frame by the CMM's own best fit; furrow compare's
@@ -34,9 +36,9 @@ namespace furrow {
 struct DatumFeature {
   // cylinder: a bore or boss whose axis is perpendicular to the primary
   // plane, as secondary datum (its axis fixes both in-plane origins; the
-  // tertiary then fixes the turn about it). Read by furrow compare --align
-  // datums; the planner does not propose it and the DMIS writer does not
-  // write it (docs/cmm.md "Part alignment").
+  // tertiary, a point or a line on a wall, then fixes the turn about it).
+  // The planner proposes it with a wall line as tertiary; DMIS measures it
+  // as a circle (docs/cmm.md "Part alignment").
   enum class Kind { plane, line, point, cylinder };
   std::string label;  // "A", "B", "C": the DMIS feature is F(DATUM_<label>)
   Kind kind = Kind::plane;
@@ -51,7 +53,9 @@ struct DatumFeature {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // outward normal of the face (cylinder: unused)
   double radius = 0;  // cylinder only [mm]
   char axis = 'Z';    // the part axis this datum's direction sets ('X', 'Y', 'Z'), 0 for none
-  char origin_axis = 'Z';  // the axis whose origin it sets
+  // The axis whose origin it sets, 0 for none (a cylinder sets both
+  // in-plane origins by its kind; a line after a cylinder sets none).
+  char origin_axis = 'Z';
   std::vector<PlannedPoint> points;
 };
 const char* to_string(DatumFeature::Kind kind);

@@ -143,9 +143,11 @@ PartAlignment parse_alignment(const JsonCursor& o, double scale) {
       d.direction = unit(f.vector3("direction"), f.path("direction"));
       d.normal = unit(f.vector3("normal"), f.path("normal"));
       d.axis = axis_letter(f, "axis", true);
-      d.origin_axis = axis_letter(f, "origin_axis", false);
+      d.origin_axis = axis_letter(f, "origin_axis", true);
       d.points = parse_points(f, "points", scale);
       if (d.kind == DatumFeature::Kind::cylinder) d.radius = scale * f.positive("radius");
+      if (!d.axis && !d.origin_axis && d.kind != DatumFeature::Kind::cylinder)
+        throw InputError(f.path("origin_axis") + ": datum " + d.label + " sets neither a direction (axis) nor an origin");
       const std::size_t need = d.kind == DatumFeature::Kind::plane || d.kind == DatumFeature::Kind::cylinder ? 3
                                : d.kind == DatumFeature::Kind::line                                     ? 2
                                                                                                         : 1;
@@ -178,7 +180,7 @@ json alignment_json(const PartAlignment& a) {
                     {"direction", jf::vector_json(d.direction)},
                     {"normal", jf::vector_json(d.normal)},
                     {"axis", d.axis ? std::string(1, d.axis) : std::string()},
-                    {"origin_axis", std::string(1, d.origin_axis)},
+                    {"origin_axis", d.origin_axis ? std::string(1, d.origin_axis) : std::string()},
                     {"points", points_json(d.points)}};
       if (d.kind == DatumFeature::Kind::cylinder) entry["radius"] = jf::finite(d.radius, "datum radius");
       datums.push_back(std::move(entry));

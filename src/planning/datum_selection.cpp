@@ -142,11 +142,15 @@ struct Builder {
   const DatumOptions& o;
   int order = 0;
 
-  // Empty when the face cannot hold the feature.
-  std::optional<DatumFeature> feature(const FaceInfo& f, char role, std::string* why) {
+  // Empty when the face cannot hold the feature. `line_sets_origin`: a line
+  // sets an origin (B of plane, wall, wall), or only a direction (C after a
+  // bore, which sets both in-plane origins).
+  std::optional<DatumFeature> feature(const FaceInfo& f, char role, DatumFeature::Kind kind, bool line_sets_origin,
+                                      std::string* why) {
     const std::vector<Candidate> c = candidates(part.faces[f.index], finder, probe, access, o);
     DatumFeature d;
     d.label = std::string(1, role);
+    d.kind = kind;
     d.face = part.faces[f.index].name();
     d.face_index = f.index;
     d.normal = f.normal;
@@ -154,20 +158,32 @@ struct Builder {
     auto add = [&](std::size_t k, int n) {
       d.points.push_back(plan_point(part, f.index, c[k], prefix + std::to_string(n), ++order, probe, access));
     };
-    if (role == 'A') {
+    // The candidates at the height of the one nearest mid-height (a
+    // horizontal line or circle where possible).
+    auto one_height = [&] {
+      double zmin = c[0].xyz.z(), zmax = zmin;
+      for (const Candidate& x : c) zmin = std::min(zmin, x.xyz.z()), zmax = std::max(zmax, x.xyz.z());
+      std::size_t mid = 0;
+      for (std::size_t k = 0; k < c.size(); ++k)
+        if (std::abs(c[k].xyz.z() - (zmin + zmax) / 2) < std::abs(c[mid].xyz.z() - (zmin + zmax) / 2)) mid = k;
+      std::vector<std::size_t> level;
+      for (std::size_t k = 0; k < c.size(); ++k)
+        if (std::abs(c[k].xyz.z() - c[mid].xyz.z()) <= 1e-6) level.push_back(k);
+      return level;
+    };
+    if (kind == DatumFeature::Kind::plane) {
       const std::vector<std::size_t> pick = spread(c, o.plane_points);
       if (static_cast<int>(pick.size()) < 3) {
         *why = "fewer than 3 admissible, reachable points";
         return std::nullopt;
       }
-      d.kind = DatumFeature::Kind::plane;
       int n = 0;
       for (std::size_t k : pick) add(k, ++n);
       d.origin = d.points.front().xyz;
       d.direction = f.normal;
       d.axis = 'Z';
       d.origin_axis = 'Z';
-    } else if (role == 'B') {
+    } else if (kind == DatumFeature::Kind::line) {
       // Horizontal direction along the wall, pointing to + of its axis.
       const char wall = horizontal_axis(f.normal);
       const Eigen::Vector3d t = wall == 'X' ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
@@ -175,16 +191,10 @@ struct Builder {
         *why = "fewer than 2 admissible, reachable points";
         return std::nullopt;
       }
-      // The pair farthest apart along the wall, at the height of the
-      // candidate nearest mid-height (a horizontal line where possible).
-      double zmin = c[0].xyz.z(), zmax = zmin;
-      for (const Candidate& x : c) zmin = std::min(zmin, x.xyz.z()), zmax = std::max(zmax, x.xyz.z());
-      std::size_t mid = 0;
-      for (std::size_t k = 0; k < c.size(); ++k)
-        if (std::abs(c[k].xyz.z() - (zmin + zmax) / 2) < std::abs(c[mid].xyz.z() - (zmin + zmax) / 2)) mid = k;
-      std::size_t lo = mid, hi = mid;
-      for (std::size_t k = 0; k < c.size(); ++k) {
-        if (std::abs(c[k].xyz.z() - c[mid].xyz.z()) > 1e-6) continue;
+      // The pair farthest apart along the wall at one height.
+      const std::vector<std::size_t> level = one_height();
+      std::size_t lo = level[0], hi = level[0];
+      for (std::size_t k : level) {
         if (c[k].xyz.dot(t) < c[lo].xyz.dot(t)) lo = k;
         if (c[k].xyz.dot(t) > c[hi].xyz.dot(t)) hi = k;
       }
@@ -192,13 +202,62 @@ struct Builder {
         *why = "no two admissible, reachable points at one height";
         return std::nullopt;
       }
-      d.kind = DatumFeature::Kind::line;
       add(lo, 1);
       add(hi, 2);
       d.origin = d.points[0].xyz;
       d.direction = t;
       d.axis = wall == 'X' ? 'Y' : 'X';
-      d.origin_axis = wall;
+      d.origin_axis = line_sets_origin ? wall : 0;
+    } else if (kind == DatumFeature::Kind::cylinder) {
+      // A bore or boss: points around the axis at one height, spread by
+      // angle; the face must go most of the way round, or the circle fit
+      // would be poorly conditioned.
+      const AnalyticSurface& cyl = *part.faces[f.index].analytic();
+      if (c.size() < 3) {
+        *why = "fewer than 3 admissible, reachable points";
+        return std::nullopt;
+      }
+      const std::vector<std::size_t> level = one_height();
+      const double height = c[level[0]].xyz.z();
+      const Eigen::Vector3d centre = cyl.origin + (height - cyl.origin.z()) / cyl.axis.z() * cyl.axis;
+      std::vector<std::pair<double, std::size_t>> around;
+      for (std::size_t k : level)
+        around.push_back({std::atan2(c[k].xyz.y() - centre.y(), c[k].xyz.x() - centre.x()), k});
+      std::sort(around.begin(), around.end());
+      double widest_gap = 0;
+      for (std::size_t k = 0; k < around.size(); ++k) {
+        const double next = k + 1 < around.size() ? around[k + 1].first : around[0].first + 2 * kPi;
+        widest_gap = std::max(widest_gap, next - around[k].first);
+      }
+      if (around.size() < 3 || widest_gap > radians(o.bore_max_gap_degrees)) {
+        *why = "its reachable points do not go round the axis (a gap wider than " +
+               general(o.bore_max_gap_degrees) + " degrees)";
+        return std::nullopt;
+      }
+      // Farthest-point selection by angle, from the first.
+      std::vector<std::size_t> chosen{0};
+      while (static_cast<int>(chosen.size()) < o.bore_points && chosen.size() < around.size()) {
+        std::size_t next = 0;
+        double best = -1;
+        for (std::size_t k = 0; k < around.size(); ++k) {
+          double nearest = 2 * kPi;
+          for (std::size_t j : chosen) {
+            const double gap = std::abs(around[k].first - around[j].first);
+            nearest = std::min(nearest, std::min(gap, 2 * kPi - gap));
+          }
+          if (nearest > best + 1e-12) best = nearest, next = k;
+        }
+        chosen.push_back(next);
+      }
+      std::sort(chosen.begin(), chosen.end());  // measured round the circle
+      int n = 0;
+      for (std::size_t k : chosen) add(around[k].second, ++n);
+      d.origin = centre;
+      d.direction = Eigen::Vector3d::UnitZ();
+      d.normal = Eigen::Vector3d::UnitZ();
+      d.radius = cyl.radius;
+      d.axis = 0;
+      d.origin_axis = 0;  // a cylinder sets both in-plane origins
     } else {
       if (c.empty()) {
         *why = "no admissible, reachable point";
@@ -210,7 +269,6 @@ struct Builder {
       std::size_t best = 0;
       for (std::size_t k = 1; k < c.size(); ++k)
         if ((c[k].xyz - centroid).norm() < (c[best].xyz - centroid).norm() - 1e-12) best = k;
-      d.kind = DatumFeature::Kind::point;
       add(best, 1);
       d.origin = d.points[0].xyz;
       d.direction = f.normal;
@@ -220,6 +278,12 @@ struct Builder {
     return d;
   }
 };
+
+// A cylinder whose axis is vertical: a bore or boss perpendicular to A.
+bool vertical_cylinder(const Face& face) {
+  const std::optional<AnalyticSurface>& s = face.analytic();
+  return s && s->type == AnalyticSurface::Type::cylinder && std::abs(std::abs(s->axis.z()) - 1) < kAxisTolerance;
+}
 
 std::string describe_face(const Part& part, std::size_t k) {
   return "face " + std::to_string(k) + " " + quote_field(part.faces[k].name());
@@ -280,8 +344,10 @@ PartAlignment choose_alignment(const Part& part, const ClosestPointFinder& finde
   PartAlignment a;
   a.method = PartAlignment::Method::datums;
 
+  using Kind = DatumFeature::Kind;
   if (!choice.faces.empty()) {
     const char roles[3] = {'A', 'B', 'C'};
+    bool bore = false;
     for (int r = 0; r < 3; ++r) {
       const std::string& name = choice.faces[static_cast<std::size_t>(r)];
       std::optional<std::size_t> index;
@@ -293,13 +359,22 @@ PartAlignment choose_alignment(const Part& part, const ClosestPointFinder& finde
       if (!index) throw InputError("--datums: the part has no face named " + quote_field(name));
       const FaceInfo& f = faces[*index];
       const std::string what = "--datums: " + describe_face(part, *index);
-      if (!f.plane) throw InputError(what + " is not a plane (datums are planes parallel to the CAD axes)");
+      Kind kind = r == 0 ? Kind::plane : r == 1 ? Kind::line : Kind::point;
+      if (r == 1 && vertical_cylinder(part.faces[*index])) {
+        kind = Kind::cylinder;  // a bore or boss: C is then a wall giving the direction
+        bore = true;
+      } else if (!f.plane) {
+        throw InputError(what + (r == 1 ? " is neither a plane nor a cylinder with a vertical axis"
+                                        : " is not a plane (datums are planes parallel to the CAD axes)"));
+      }
+      if (r == 2 && bore) kind = Kind::line;
       if (r == 0 && !faces_up(f.normal)) throw InputError(what + " does not face +z (the primary datum sets z)");
-      if (r > 0 && !horizontal_axis(f.normal)) throw InputError(what + " is not a vertical plane facing ±x or ±y");
-      if (r == 2 && horizontal_axis(f.normal) == a.datums[1].origin_axis)
+      if (r > 0 && kind != Kind::cylinder && !horizontal_axis(f.normal))
+        throw InputError(what + " is not a vertical plane facing ±x or ±y");
+      if (r == 2 && !bore && horizontal_axis(f.normal) == a.datums[1].origin_axis)
         throw InputError(what + " is parallel to the secondary datum");
       std::string why;
-      std::optional<DatumFeature> d = b.feature(f, roles[r], &why);
+      std::optional<DatumFeature> d = b.feature(f, roles[r], kind, !bore, &why);
       if (!d) throw InputError(what + ": " + why);
       a.datums.push_back(std::move(*d));
     }
@@ -310,29 +385,43 @@ PartAlignment choose_alignment(const Part& part, const ClosestPointFinder& finde
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return faces[x].area > faces[y].area; });
     std::string missing;
-    auto pick = [&](char role, auto&& fits) -> bool {
+    auto pick = [&](char role, Kind kind, bool sets_origin, auto&& fits) -> bool {
       for (std::size_t k : order) {
-        if (!faces[k].plane || !fits(faces[k])) continue;
+        if (!fits(faces[k])) continue;
         std::string why;
-        if (std::optional<DatumFeature> d = b.feature(faces[k], role, &why)) {
+        if (std::optional<DatumFeature> d = b.feature(faces[k], role, kind, sets_origin, &why)) {
           a.datums.push_back(std::move(*d));
           return true;
         }
       }
       return false;
     };
-    if (!pick('A', [](const FaceInfo& f) { return faces_up(f.normal); }))
+    auto wall = [](const FaceInfo& f) { return f.plane && horizontal_axis(f.normal) != 0; };
+    if (!pick('A', Kind::plane, true, [](const FaceInfo& f) { return f.plane && faces_up(f.normal); })) {
       missing = "no plane facing +z with 3 reachable points";
-    else if (!pick('B', [](const FaceInfo& f) { return horizontal_axis(f.normal) != 0; }))
-      missing = "no vertical plane facing ±x or ±y with 2 reachable points at one height";
-    else if (!pick('C', [&](const FaceInfo& f) {
-               const char w = horizontal_axis(f.normal);
-               return w != 0 && w != a.datums[1].origin_axis;
-             }))
-      missing = "no vertical plane perpendicular to the secondary datum with a reachable point";
-    if (missing.empty()) {
-      a.reason = "largest plane facing +z, largest wall, largest wall perpendicular to it";
     } else {
+      const int after_a = b.order;
+      const bool walls = pick('B', Kind::line, true, wall) && pick('C', Kind::point, true, [&](const FaceInfo& f) {
+                           return wall(f) && horizontal_axis(f.normal) != a.datums[1].origin_axis;
+                         });
+      if (walls) {
+        a.reason = "largest plane facing +z, largest wall, largest wall perpendicular to it";
+      } else {
+        // No two perpendicular walls: a bore or boss for the in-plane
+        // origin, a wall for the direction.
+        a.datums.resize(1);
+        b.order = after_a;
+        const bool bore = pick('B', Kind::cylinder, false,
+                               [&](const FaceInfo& f) { return vertical_cylinder(part.faces[f.index]); }) &&
+                          pick('C', Kind::line, false, wall);
+        if (bore)
+          a.reason = "largest plane facing +z, largest bore or boss perpendicular to it, largest wall";
+        else
+          missing = "no two perpendicular walls with 2 and 1 reachable points, nor a bore or boss perpendicular to "
+                    "the primary plane with a wall";
+      }
+    }
+    if (!missing.empty()) {
       // Free-form part: three spread points on the largest face with any.
       a = PartAlignment{};
       a.method = PartAlignment::Method::free_form;
@@ -356,6 +445,7 @@ PartAlignment choose_alignment(const Part& part, const ClosestPointFinder& finde
     }
   }
   for (const DatumFeature& d : a.datums) {
+    if (d.kind == Kind::cylinder) a.origin.x() = d.origin.x(), a.origin.y() = d.origin.y();
     if (d.origin_axis == 'X') a.origin.x() = d.origin.x();
     if (d.origin_axis == 'Y') a.origin.y() = d.origin.y();
     if (d.origin_axis == 'Z') a.origin.z() = d.origin.z();

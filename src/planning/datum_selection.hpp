@@ -10,14 +10,24 @@
 //     line of two points (a wall: the ball touches it horizontally with the
 //     stylus vertical, where the shaft clears the part);
 //   C tertiary: the largest vertical plane perpendicular to B, one point.
+// Without two such walls, a bore or boss instead:
+//   B secondary: the largest cylinder face with a vertical axis whose
+//     reachable points at one height go round the axis (no gap wider than
+//     `bore_max_gap_degrees`), 4 points spread by angle: its axis sets both
+//     in-plane origins;
+//   C tertiary: the largest vertical plane facing ±x or ±y, a line of two
+//     points: its direction sets x or y (no origin).
+// (A second bore for the direction would need a constructed line in DMIS,
+// which this does not write.)
 // Ties go to the lower face index. A face serves only when enough of its
 // candidate points are admissible: inside its trim, `border` mm from its
 // edges (trim loops and parameter boundary, edge_distance.hpp) and
 // accessible (accessibility.hpp; tilt allowed up to 90 degrees for walls).
 // Datum planes must be parallel to the CAD axes because DMIS DATSET names
 // axes; a tilted plane is not a candidate.
-// Named choice (`--datums FACE,FACE,FACE`): the same roles in that order;
-// a face that cannot play its role is an InputError naming it and why.
+// Named choice (`--datums FACE,FACE,FACE`): the same roles in that order
+// (a cylinder named second makes the bore variant); a face that cannot
+// play its role is an InputError naming it and why.
 // When no A, B and C can be found automatically (a part of free-form faces,
 // e.g. the mould), the alignment is `free_form`: three well-spread points on
 // the largest face for the operator's best fit, the reason saying what was
@@ -53,6 +63,11 @@ struct DatumOptions {
   int grid = 24;       // candidate grid per parameter direction
   int area_grid = 64;  // midpoint-rule grid for face areas
   double border = 2;   // clearance from the face's edges [mm]
+  int bore_points = 4;  // on a bore or boss, round the axis
+  // A bore or boss serves when its reachable points at one height leave no
+  // gap round the axis wider than this [degrees]: a half cylinder (a
+  // rounded end) fixes its centre poorly.
+  double bore_max_gap_degrees = 120;
 };
 
 // Area of the face's trimmed part [mm^2] (midpoint rule on `grid` x `grid`

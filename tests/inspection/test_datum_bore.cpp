@@ -91,6 +91,65 @@ TEST_CASE("bore datum: plane, bore and point recover a known placement exactly")
   }
 }
 
+// bore_plan() with C the line of datum_plan()'s wall B (y = 0, along +x):
+// the bore sets both in-plane origins, the wall only the direction, as
+// furrow plan proposes without two perpendicular walls.
+InspectionPlan bore_and_wall_plan(const Part& part) {
+  InspectionPlan plan = bore_plan(part);
+  DatumFeature c = datum_plan(part).alignment->datums[1];
+  c.label = "C";
+  c.axis = 'X';
+  c.origin_axis = 0;
+  for (PlannedPoint& p : c.points) p.id = "C" + p.id.substr(1);
+  plan.alignment->datums[2] = c;
+  int order = 0;
+  for (DatumFeature& f : plan.alignment->datums)
+    for (PlannedPoint& p : f.points) p.order = ++order;
+  return plan;
+}
+
+TEST_CASE("bore datum with a wall for the direction: plane, bore and line recover a known placement exactly") {
+  const Part part = datum_part();
+  const InspectionPlan plan = bore_and_wall_plan(part);
+  for (const double r : {0.0, 1.0}) {
+    CAPTURE(r);
+    const MeasurementSet set = measure(plan, placement(), r, [](const PlannedPoint&) { return 0.0; });
+    const DatumFrame f = fit_datum_frame(*plan.alignment, set, "plan.json");
+    const Eigen::Isometry3d error = f.transform * placement();
+    CHECK(angle_of(error.linear()) < 1e-12);
+    CHECK(error.translation().norm() < 1e-9);
+    REQUIRE(f.datums.size() == 3);
+    CHECK(f.datums[2].kind == DatumFeature::Kind::line);
+    CHECK(f.datums[2].form_error < 1e-9);  // straightness of an exact line
+    CHECK((f.datums[1].origin - placement() * kBoreCentre).norm() < 1e-9);
+  }
+  // The wall machined 0.02 mm off (moved along its normal) moves nothing:
+  // it sets only the direction. Turned by 1 mrad about z instead, it turns
+  // the frame by exactly that.
+  MeasurementSet moved = measure(plan, placement(), 1.0, [](const PlannedPoint& p) { return p.id[0] == 'C' ? 0.02 : 0.0; });
+  CHECK((fit_datum_frame(*plan.alignment, moved, "plan.json").transform * placement()).translation().norm() < 1e-9);
+  const double turn = 1e-3;
+  MeasurementSet turned = measure(plan, placement(), 0.0, [](const PlannedPoint&) { return 0.0; });
+  for (const PlannedPoint& p : plan.alignment->datums[2].points)
+    for (MeasuredPoint& m : turned.points)
+      if (m.id == p.id) {
+        // Turned about the bore's axis: the wall's points keep their height.
+        const Eigen::Vector3d about = p.xyz - kBoreCentre;
+        m.xyz = placement() * (kBoreCentre + Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * about);
+      }
+  const Eigen::Isometry3d error = fit_datum_frame(*plan.alignment, turned, "plan.json").transform * placement();
+  CHECK(angle_of(error.linear()) == doctest::Approx(turn).epsilon(1e-9));
+  // A wall line whose points coincide in plan view fixes no direction.
+  MeasurementSet stacked = measure(plan, placement(), 0.0, [](const PlannedPoint&) { return 0.0; });
+  const std::string c1 = plan.alignment->datums[2].points[0].id, c2 = plan.alignment->datums[2].points[1].id;
+  for (MeasuredPoint& m : stacked.points)
+    if (m.id == c2)
+      for (const MeasuredPoint& n : stacked.points)
+        if (n.id == c1) m.xyz = n.xyz + placement().linear() * Eigen::Vector3d(0, 0, 3);
+  CHECK_THROWS_WITH_AS(fit_datum_frame(*plan.alignment, stacked, "plan.json"), doctest::Contains("fixes no direction"),
+                       DatumFrameError);
+}
+
 TEST_CASE("bore datum: with 0.1 um probing noise the frame is within 1 um and 1e-5 rad") {
   const Part part = datum_part();
   const InspectionPlan plan = bore_plan(part);

@@ -105,7 +105,13 @@ std::vector<Eigen::Vector3d> read_moves(Cursor& in) {
 }
 
 const char* meas_word(DatumFeature::Kind k) {
-  return k == DatumFeature::Kind::plane ? "PLANE" : k == DatumFeature::Kind::line ? "LINE" : "POINT";
+  switch (k) {
+    case DatumFeature::Kind::plane: return "PLANE";
+    case DatumFeature::Kind::line: return "LINE";
+    case DatumFeature::Kind::cylinder: return "CIRCLE";
+    case DatumFeature::Kind::point: break;
+  }
+  return "POINT";
 }
 
 // The 3-2-1 alignment or the manual points (dmis_writer.hpp); checks that
@@ -116,6 +122,7 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
   const std::regex plane("F\\(DATUM_" + kLabel + "\\)=FEAT/PLANE,CART" + n6);
   const std::regex line("F\\(DATUM_" + kLabel + "\\)=FEAT/LINE,BND,CART" + n6 + "," + kNum + "," + kNum + "," + kNum);
   const std::regex point("F\\(DATUM_" + kLabel + "\\)=FEAT/POINT,CART" + n6);
+  const std::regex circle("F\\(DATUM_" + kLabel + "\\)=FEAT/CIRCLE,(?:INNER|OUTER),CART" + n6 + "," + kNum);
   const std::regex manual_point("F\\(" + kLabel + "\\)=FEAT/POINT,CART" + n6);
   PartAlignment a;
   if (in.next_is(plane)) {
@@ -138,8 +145,20 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
         if (!(t.norm() > 0)) fail(name, in.line(), "a datum line needs two points apart horizontally");
         d.direction = t.normalized();
         d.normal = vec(m, 8, name, in.line());
+      } else if (in.next_is(circle)) {
+        // A bore or boss at the points' height: its axis (the circle's
+        // normal) must be vertical, as the DATSET's XORIG,YORIG assume.
+        m = in.expect(circle, "a datum circle");
+        d.kind = DatumFeature::Kind::cylinder;
+        d.origin = vec(m, 2, name, in.line());
+        d.direction = vec(m, 5, name, in.line());
+        d.normal = d.direction;
+        d.radius = std::stod(m[8]) / 2;
+        if (!(d.radius > 0) || !std::isfinite(d.radius)) fail(name, in.line(), "a datum circle needs a positive diameter");
+        if (!(std::abs(std::abs(d.direction.normalized().z()) - 1) < 1e-6))
+          fail(name, in.line(), "a datum circle's axis must be vertical (i,j,k = 0,0,+-1)");
       } else {
-        m = in.expect(point, "F(DATUM_LABEL)=FEAT/PLANE|LINE|POINT,...");
+        m = in.expect(point, "F(DATUM_LABEL)=FEAT/PLANE|LINE|CIRCLE|POINT,...");
         d.kind = DatumFeature::Kind::point;
         d.origin = vec(m, 2, name, in.line());
         d.direction = vec(m, 5, name, in.line());
@@ -161,31 +180,37 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
           std::regex(std::string("MEAS/") + meas_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
           "MEAS/kind,F(DATUM_label),n of the datum defined in that place");
       counts.push_back(std::stoi(m[1]));
-      const int need = d.kind == DatumFeature::Kind::plane ? 3 : d.kind == DatumFeature::Kind::line ? 2 : 1;
+      const int need = d.kind == DatumFeature::Kind::plane || d.kind == DatumFeature::Kind::cylinder ? 3
+                       : d.kind == DatumFeature::Kind::line                                       ? 2
+                                                                                                  : 1;
       if (counts.back() < need || counts.back() > 1000) fail(name, in.line(), "too few or too many points for datum " + d.label);
       in.expect(std::regex("ENDMES"), "ENDMES");
     }
-    // DATSET: every datum in order, with the axis it directs and the origin it sets.
+    // DATSET: every datum in order, with the axis it directs and the origin
+    // it sets (a circle: both in-plane origins).
     std::string ds = "DATSET";
     char sep = '/';
     for (const DatumFeature& d : a.datums) {
-      ds += sep + std::string("FA\\(DATUM_") + d.label + "\\)(,[XYZ]DIR)?,[XYZ]ORIG";
+      ds += sep + std::string("FA\\(DATUM_") + d.label + "\\)" +
+            (d.kind == DatumFeature::Kind::cylinder ? ",XORIG,YORIG" : "(,[XYZ]DIR)?(,[XYZ]ORIG)?");
       sep = ',';
     }
     const std::regex datset_manual("D\\(MANUAL\\)=(" + ds + ")");
     const std::regex trans("D\\((MANUAL_CAD|PART)\\)=TRANS/XORIG," + kNum + ",YORIG," + kNum + ",ZORIG," + kNum);
     const std::string datset_text = in.expect(datset_manual, "D(MANUAL)=DATSET/FA(DATUM_A),...")[1];
     {
-      // Axes: from the DATSET text, one datum after the other.
+      // Axes: from the DATSET text, one datum's words after the other.
       std::size_t at = 0;
       for (DatumFeature& d : a.datums) {
         at = datset_text.find("FA(DATUM_" + d.label + ")", at);
-        const std::size_t end = datset_text.find("ORIG", at);
-        const std::string part = datset_text.substr(at, end - at);
-        d.origin_axis = datset_text[end - 1];
-        const std::size_t dir = part.find("DIR");
-        d.axis = dir == std::string::npos ? 0 : part[dir - 1];
-        at = end;
+        const std::size_t next = datset_text.find(",FA(", at);
+        const std::string words = datset_text.substr(at, next == std::string::npos ? std::string::npos : next - at);
+        const std::size_t dir = words.find("DIR"), orig = words.find("ORIG");
+        d.axis = dir == std::string::npos ? 0 : words[dir - 1];
+        d.origin_axis = orig == std::string::npos || d.kind == DatumFeature::Kind::cylinder ? 0 : words[orig - 1];
+        if (!d.axis && !d.origin_axis && d.kind != DatumFeature::Kind::cylinder)
+          fail(name, in.line(), "datum " + d.label + " sets neither a direction nor an origin");
+        at += words.size();
       }
     }
     const std::vector<std::string> t = in.expect(trans, "D(MANUAL_CAD)=TRANS/XORIG,x,YORIG,y,ZORIG,z");

@@ -29,9 +29,28 @@ std::string near_text(const Eigen::Vector3d& p) {
 }
 
 const char* meas_word(DatumFeature::Kind k) {
-  return k == DatumFeature::Kind::plane ? "PLANE" : k == DatumFeature::Kind::line ? "LINE" : "POINT";
+  switch (k) {
+    case DatumFeature::Kind::plane: return "PLANE";
+    case DatumFeature::Kind::line: return "LINE";
+    case DatumFeature::Kind::cylinder: return "CIRCLE";
+    case DatumFeature::Kind::point: break;
+  }
+  return "POINT";
 }
 
+// A bore's wall faces its axis, a boss's faces away.
+bool is_bore(const DatumFeature& d) {
+  double outward = 0;
+  for (const PlannedPoint& p : d.points) {
+    Eigen::Vector3d radial = p.xyz - d.origin;
+    radial -= radial.dot(d.direction) * d.direction;
+    outward += p.ijk.dot(radial);
+  }
+  return outward < 0;
+}
+
+// Each datum with the axis it directs and the origins it sets; a circle
+// (a bore or boss on the vertical axis) sets both in-plane origins.
 std::string datset(const PartAlignment& a) {
   std::string s = "DATSET";
   char sep = '/';
@@ -39,7 +58,8 @@ std::string datset(const PartAlignment& a) {
     s += sep + std::string("FA(DATUM_") + d.label + ")";
     sep = ',';
     if (d.axis) s += std::string(",") + d.axis + "DIR";
-    s += std::string(",") + d.origin_axis + "ORIG";
+    if (d.kind == DatumFeature::Kind::cylinder) s += ",XORIG,YORIG";
+    if (d.origin_axis) s += std::string(",") + d.origin_axis + "ORIG";
   }
   return s;
 }
@@ -81,6 +101,9 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
       else if (d.kind == DatumFeature::Kind::line)
         f += "LINE,BND,CART," + xyz_text(d.points.front().xyz) + "," + xyz_text(d.points.back().xyz) + "," +
              ijk_text(d.normal);
+      else if (d.kind == DatumFeature::Kind::cylinder)  // measured as a circle at the points' height
+        f += std::string("CIRCLE,") + (is_bore(d) ? "INNER" : "OUTER") + ",CART," + xyz_text(d.origin) + "," +
+             ijk_text(d.direction) + "," + fixed_number(2 * d.radius, kProgramDecimals);
       else
         f += "POINT,CART," + xyz_text(d.origin) + "," + ijk_text(d.normal);
       line(f);

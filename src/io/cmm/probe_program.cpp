@@ -100,12 +100,6 @@ void check_program(const ProbeProgram& program, const std::string& format) {
                      "\" must be 1-32 letters, digits or '_' (a DMIS sensor label and an I++ tool name)");
   if (!is_quoted_text(program.part))
     throw InputError(what + ": the part name must be printable ASCII without quotes");
-  // The programs' alignment measures planes, lines and points; a cylinder
-  // datum (plan_alignment.hpp) is for furrow compare only.
-  if (program.alignment)
-    for (const DatumFeature& d : program.alignment->datums)
-      if (d.kind == DatumFeature::Kind::cylinder)
-        throw InputError(what + ": datum " + d.label + " is a cylinder, which the programs do not measure yet");
   ProgramSettings settings;
   settings.revision = program.revision;
   settings.date = program.date;
@@ -147,9 +141,20 @@ void check_program(const ProbeProgram& program, const std::string& format) {
                        std::to_string(program.alignment_steps.size()) + " steps");
     if (a.method == PartAlignment::Method::datums) {
       if (a.datums.size() != 3) throw InputError(what + ": a 3-2-1 alignment needs 3 datums");
-      for (const DatumFeature& d : a.datums)
-        if (!is_label(d.label) || d.points.empty() || !(d.origin_axis == 'X' || d.origin_axis == 'Y' || d.origin_axis == 'Z'))
+      for (const DatumFeature& d : a.datums) {
+        // Each datum sets a direction, an origin or both; a cylinder (a
+        // circle in DMIS) sets both in-plane origins, and must have a
+        // vertical axis for that.
+        const bool sets_origin = d.origin_axis == 'X' || d.origin_axis == 'Y' || d.origin_axis == 'Z';
+        const bool sets_axis = d.axis == 'X' || d.axis == 'Y' || d.axis == 'Z';
+        const bool circle = d.kind == DatumFeature::Kind::cylinder && std::abs(std::abs(d.direction.z()) - 1) < 1e-9 &&
+                            d.radius > 0 && std::isfinite(d.radius);
+        if (!is_label(d.label) || d.points.empty() ||
+            !(d.kind == DatumFeature::Kind::cylinder ? circle && d.origin_axis == 0 && d.axis == 0
+                                                     : sets_origin || sets_axis))
           throw InputError(what + ": datum " + quote_field(d.label) + " cannot be written");
+        check_vector(d.origin, what + ": datum " + d.label);
+      }
       check_vector(a.origin, what + ": alignment origin");
     }
   } else if (!program.alignment_steps.empty()) {

@@ -158,14 +158,32 @@ TEST_CASE("named datums take the faces in the order given, a face that cannot se
   CHECK(b.datums[1].face == a.datums[2].face);
   CHECK(b.datums[2].face == a.datums[1].face);
   CHECK(b.datums[1].origin_axis == a.datums[2].origin_axis);
-  // The boss (a cylinder) is no datum plane; a wall cannot be primary.
-  std::string cylinder;
-  for (const Face& face : f.part.faces)
+  // The boss (a vertical cylinder) named second is a boss datum: both
+  // in-plane origins at its axis (OpenCASCADE built it there), the wall
+  // named third a line for the direction; a boss is measured from outside.
+  std::string cylinder, sphere;
+  for (const Face& face : f.part.faces) {
     if (face.analytic() && face.analytic()->type == AnalyticSurface::Type::cylinder) cylinder = face.name();
+    if (face.analytic() && face.analytic()->type == AnalyticSurface::Type::sphere) sphere = face.name();
+  }
   REQUIRE_FALSE(cylinder.empty());
+  REQUIRE_FALSE(sphere.empty());
   named.faces = {a.datums[0].face, cylinder, a.datums[2].face};
+  const PartAlignment boss = choose_alignment(f.part, *f.finder, f.probe, f.access, named);
+  REQUIRE(boss.datums.size() == 3);
+  CHECK(boss.datums[1].kind == DatumFeature::Kind::cylinder);
+  CHECK(boss.datums[1].radius == doctest::Approx(ReferenceGeometry::boss_r).epsilon(1e-9));
+  CHECK(boss.origin.x() == doctest::Approx(ReferenceGeometry::boss_x).epsilon(1e-9));
+  CHECK(boss.origin.y() == doctest::Approx(ReferenceGeometry::boss_y).epsilon(1e-9));
+  CHECK(boss.datums[2].kind == DatumFeature::Kind::line);
+  for (const PlannedPoint& p : boss.datums[1].points) CHECK(p.ijk.dot(p.xyz - boss.datums[1].origin) > 0);
+  ProbeProgram program = tiny_program();
+  add_alignment_moves(program, boss, f.access.clearance_z, {5, 5, f.access.clearance_z});
+  CHECK(dmis_program_text(program).find("F(DATUM_B)=FEAT/CIRCLE,OUTER,CART,20.000000,30.000000,") != std::string::npos);
+  // The dimple (a sphere) can be neither; a wall cannot be primary.
+  named.faces = {a.datums[0].face, sphere, a.datums[2].face};
   CHECK_THROWS_WITH_AS(choose_alignment(f.part, *f.finder, f.probe, f.access, named),
-                       doctest::Contains("is not a plane"), InputError);
+                       doctest::Contains("is neither a plane nor a cylinder"), InputError);
   named.faces = {a.datums[1].face, a.datums[0].face, a.datums[2].face};
   CHECK_THROWS_WITH_AS(choose_alignment(f.part, *f.finder, f.probe, f.access, named),
                        doctest::Contains("does not face +z"), InputError);
