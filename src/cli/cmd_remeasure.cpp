@@ -113,7 +113,11 @@ int run_remeasure(Args& args) {
   if (base.empty() || base == "." || base == "..")
     base = std::filesystem::path(out).lexically_normal().parent_path().filename().string();
   const std::string name = cmm_program_name(base, "furrow_remeasure");
-  const ProbeProgram program = make_probe_program(r.result, name, p);
+  ProbeProgram program = make_probe_program(r.result, name, p);
+  // The first program aligned the part with datums and saved that frame:
+  // this one runs on the same set-up.
+  if (plan && plan->alignment && plan->alignment->method == PartAlignment::Method::datums)
+    program.recalled_alignment = "PART";
   const std::string staging = outputs.folder(out);
   write_file_atomically(staging + "/plan.json", plan_to_json_text(planned));
   write_file_atomically(staging + "/plan.csv", plan_to_csv_text(planned));

@@ -98,6 +98,10 @@ TEST_CASE("remeasure: a one-point dent is re-probed with a ring, the dent confir
   // The DMIS program probes those points under those labels.
   const std::string dmis = test::slurp(dir + "/again/" + program + ".dmi");
   for (const PlannedPoint& p : again.points) CHECK(dmis.find("F(" + p.id + ")=FEAT/POINT") != std::string::npos);
+  // The first plan set up no datum frame (a grid on the free-form mould),
+  // so there is no saved alignment to recall.
+  CHECK_FALSE((plan.alignment && plan.alignment->method == PartAlignment::Method::datums));
+  CHECK(dmis.find("RECALL/DA") == std::string::npos);
 
   // The dent is real: the re-measure sees it at the point and its ring.
   REQUIRE(run({"simulate-measurement", kMould, "--plan", dir + "/again/plan.json", "--noise", "0.002",

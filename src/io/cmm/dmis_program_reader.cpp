@@ -248,6 +248,7 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
       fail(name, in.line(), "D(PART)=TRANS differs from D(MANUAL_CAD)");
     for (const DatumFeature& d : a.datums)
       in.expect(std::regex("OUTPUT/FA\\(DATUM_" + d.label + "\\)"), "OUTPUT/FA(DATUM_label) of every datum in order");
+    in.expect(std::regex("SAVE/DA\\(PART\\)"), "SAVE/DA(PART) after the datums' outputs");
   } else if (in.next_is(std::regex("MODE/MAN"))) {
     a.method = PartAlignment::Method::free_form;
     in.expect(std::regex("MODE/MAN"), "MODE/MAN");
@@ -272,7 +273,10 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
     if (a.manual.size() < 3) fail(name, in.line(), "a manual alignment needs at least 3 points");
     in.expect(std::regex("MODE/PROG,MAN"), "MODE/PROG,MAN");
   } else {
-    return;  // no alignment
+    // No alignment of its own; perhaps one recalled from a first program.
+    const std::regex recall("RECALL/DA\\((" + kLabel + ")\\)");
+    if (in.next_is(recall)) program.recalled_alignment = in.expect(recall, "RECALL/DA(label)")[1];
+    return;
   }
   program.alignment = std::move(a);
 }

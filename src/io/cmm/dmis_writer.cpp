@@ -136,6 +136,9 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
     line("D(DATUMS)=" + datset(a));
     line("D(PART)=" + trans(a));
     for (const DatumFeature& d : a.datums) line("OUTPUT/FA(DATUM_" + d.label + ")");
+    // Saved for the programs that run on this set-up (furrow remeasure's
+    // RECALL/DA(PART)).
+    line("SAVE/DA(PART)");
   }
 }
 
@@ -156,6 +159,8 @@ std::string dmis_program_text(const ProbeProgram& program) {
   line("$$ Coordinates are the part's CAD frame: establish the part coordinate system");
   if (program.alignment)
     line("$$ with the alignment this program begins with; start with the probe qualified and above the clearance plane.");
+  else if (!program.recalled_alignment.empty())
+    line("$$ recalled from the first program (RECALL/DA), the part not moved since; start with the probe qualified and above the clearance plane.");
   else
     line("$$ (alignment) before running, with the probe qualified and above the clearance plane.");
   line("DMISMN/'" + program.name + "',05.2");
@@ -190,6 +195,7 @@ std::string dmis_program_text(const ProbeProgram& program) {
   line("OPEN/DID(RESULTS),FDATA,DMIS,OUTPUT");
   line("MODE/PROG,MAN");
   if (program.alignment) write_alignment(program, line);
+  if (!program.recalled_alignment.empty()) line("RECALL/DA(" + dmis_label(program.recalled_alignment) + ")");
   const std::string tolerance_output = program.tolerance ? ",TA(PROFILE)" : "";
   std::optional<TipAngles> tip = program.start_tip;
   for (const ProgramStep& step : program.steps) {

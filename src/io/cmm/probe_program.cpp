@@ -160,6 +160,9 @@ void check_program(const ProbeProgram& program, const std::string& format) {
   } else if (!program.alignment_steps.empty()) {
     throw InputError(what + ": alignment steps without an alignment");
   }
+  if (!program.recalled_alignment.empty() && (program.alignment || !is_label(program.recalled_alignment)))
+    throw InputError(what + ": recalled alignment " + quote_field(program.recalled_alignment) +
+                     (program.alignment ? " beside an alignment of its own" : " is not a label"));
   std::vector<const ProgramStep*> all;
   for (const ProgramStep& s : program.alignment_steps) all.push_back(&s);
   for (const ProgramStep& s : program.steps) all.push_back(&s);

@@ -88,6 +88,11 @@ struct ProbeProgram {
   // order with its moves, and the moves from the last one to the start of
   // the steps (the clearance plane above the first approach point).
   std::optional<PartAlignment> alignment;
+  // DMIS: a program without an alignment of its own that runs in the one a
+  // first program set up and saved (SAVE/DA(PART) after its datums): that
+  // label, recalled at the start (RECALL/DA(label)). Empty: the operator
+  // establishes the frame. furrow remeasure sets it.
+  std::string recalled_alignment;
   std::vector<ProgramStep> alignment_steps;
   std::vector<Eigen::Vector3d> alignment_final_moves;
   std::vector<ProgramStep> steps;

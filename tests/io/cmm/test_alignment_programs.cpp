@@ -211,6 +211,10 @@ TEST_CASE("programs measure the datums first, and the strict readers give back t
   CHECK(manual < datset);
   CHECK(datset < part_frame);
   CHECK(part_frame < first);
+  // The frame is saved for the programs that run on this set-up.
+  const std::size_t saved = dmi.find("SAVE/DA(PART)\r\n");
+  CHECK(part_frame < saved);
+  CHECK(saved < first);
   const ProbeProgram back = parse_dmis_program(dmi, "box.dmi");
   REQUIRE(back.alignment.has_value());
   const std::vector<PlannedPoint> want = a.points();
@@ -245,6 +249,28 @@ TEST_CASE("programs measure the datums first, and the strict readers give back t
     CHECK((ipp.alignment_steps[k].point.xyz - want[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
   REQUIRE(ipp.steps.size() == p.steps.size());
   CHECK(ipp.steps[0].point.order == 1);
+}
+
+TEST_CASE("a program on the first one's set-up recalls its saved alignment, and reads back") {
+  ProbeProgram p = tiny_program();
+  p.recalled_alignment = "PART";
+  const std::string dmi = dmis_program_text(p);
+  const std::size_t recall = dmi.find("\r\nRECALL/DA(PART)\r\n");
+  REQUIRE(recall != std::string::npos);
+  CHECK(recall < dmi.find("F(P0001)=FEAT/POINT"));
+  CHECK(dmi.find("recalled from the first program") != std::string::npos);
+  const ProbeProgram back = parse_dmis_program(dmi, "again.dmi");
+  CHECK(back.recalled_alignment == "PART");
+  CHECK_FALSE(back.alignment.has_value());
+  // Not beside an alignment of its own, and only a label.
+  Fixture& f = box();
+  ProbeProgram both = tiny_program();
+  add_alignment_moves(both, choose_alignment(f.part, *f.finder, f.probe, f.access, {}), f.access.clearance_z,
+                      {5, 5, f.access.clearance_z});
+  both.recalled_alignment = "PART";
+  CHECK_THROWS_WITH_AS(dmis_program_text(both), doctest::Contains("beside an alignment"), InputError);
+  p.recalled_alignment = "PART)";
+  CHECK_THROWS_WITH_AS(dmis_program_text(p), doctest::Contains("is not a label"), InputError);
 }
 
 TEST_CASE("plan.json carries the alignment and reads it back bit for bit") {
