@@ -181,38 +181,37 @@ DatumFrame bore_frame(const std::vector<DatumFeature>& d, const std::vector<Eige
   for (const Eigen::Vector3d& p : b) q.emplace_back((p - ca).dot(e1), (p - ca).dot(e2));
   const CircleFit circle = fit_circle(q, "datum " + d[1].label);
   const Eigen::Vector3d o = ca + circle.centre.x() * e1 + circle.centre.y() * e2;
+  // C: a line's direction sets x (compensation moves the line sideways,
+  // never turns it), or a point's direction from the axis does.
+  Eigen::Vector3d x, c_at, c_direction;
+  double c_form = 0;
   if (c_line) {
-    // C's direction sets x; compensation moves the line sideways, never
-    // turns it.
     const PlaneLine line = fit_line_in_plane(c_points, ca, z, d[2].label, d[0].label);
-    out.measured = frame(o, line.direction, z);
-    out.transform = out.nominal * out.measured.inverse();
-    std::vector<std::string> ids[3];
-    for (int k = 0; k < 3; ++k)
-      for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
-    out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
-    out.datums.push_back({d[1].label, d[1].kind, ids[1], o, z, circle.roundness});
-    out.datums.push_back({d[2].label, d[2].kind, ids[2], line.point, line.direction, spread(line.across)});
-    if (!out.transform.matrix().allFinite()) throw DatumFrameError("the datum frame is not finite");
-    return out;
-  }
-  // C is compensated along its nominal normal turned into the CMM frame, and
-  // that turn is the one C itself fixes: a few rounds settle it (the
-  // compensation moves C by r, mostly across x).
-  Eigen::Vector3d cp = c, x = Eigen::Vector3d::UnitX(), nc = Eigen::Vector3d::UnitZ();
-  for (int round = 0; round < 20; ++round) {
-    Eigen::Vector3d in_a = cp - o;
-    in_a -= in_a.dot(z) * z;
-    if (!(in_a.norm() > 1e-3))
-      throw DatumFrameError("datum " + d[2].label + " was measured on the axis of datum " + d[1].label +
-                            ", so it fixes no turn about it");
-    x = in_a.normalized();
-    const Eigen::Matrix3d rel = frame(Eigen::Vector3d::Zero(), x, z).linear() * out.nominal.linear().transpose();
-    nc = rel * d[2].normal.normalized();
-    const Eigen::Vector3d next = c - r * nc;
-    const bool settled = (next - cp).norm() <= 1e-13 * (1 + cp.norm());
-    cp = next;
-    if (settled) break;
+    x = c_direction = line.direction;
+    c_at = line.point;
+    c_form = spread(line.across);
+  } else {
+    // C is compensated along its nominal normal turned into the CMM frame,
+    // and that turn is the one C itself fixes: a few rounds settle it (the
+    // compensation moves C by r, mostly across x).
+    Eigen::Vector3d cp = c, nc = Eigen::Vector3d::UnitZ();
+    x = Eigen::Vector3d::UnitX();
+    for (int round = 0; round < 20; ++round) {
+      Eigen::Vector3d in_a = cp - o;
+      in_a -= in_a.dot(z) * z;
+      if (!(in_a.norm() > 1e-3))
+        throw DatumFrameError("datum " + d[2].label + " was measured on the axis of datum " + d[1].label +
+                              ", so it fixes no turn about it");
+      x = in_a.normalized();
+      const Eigen::Matrix3d rel = frame(Eigen::Vector3d::Zero(), x, z).linear() * out.nominal.linear().transpose();
+      nc = rel * d[2].normal.normalized();
+      const Eigen::Vector3d next = c - r * nc;
+      const bool settled = (next - cp).norm() <= 1e-13 * (1 + cp.norm());
+      cp = next;
+      if (settled) break;
+    }
+    c_at = cp;
+    c_direction = nc;
   }
   out.measured = frame(o, x, z);
   out.transform = out.nominal * out.measured.inverse();
@@ -221,7 +220,7 @@ DatumFrame bore_frame(const std::vector<DatumFeature>& d, const std::vector<Eige
     for (const PlannedPoint& p : d[k].points) ids[k].push_back(p.id);
   out.datums.push_back({d[0].label, d[0].kind, ids[0], ca, z, pa.flatness});
   out.datums.push_back({d[1].label, d[1].kind, ids[1], o, z, circle.roundness});
-  out.datums.push_back({d[2].label, d[2].kind, ids[2], cp, nc, 0.0});
+  out.datums.push_back({d[2].label, d[2].kind, ids[2], c_at, c_direction, c_form});
   if (!out.transform.matrix().allFinite()) throw DatumFrameError("the datum frame is not finite");
   return out;
 }

@@ -104,16 +104,6 @@ std::vector<Eigen::Vector3d> read_moves(Cursor& in) {
   return moves;
 }
 
-const char* meas_word(DatumFeature::Kind k) {
-  switch (k) {
-    case DatumFeature::Kind::plane: return "PLANE";
-    case DatumFeature::Kind::line: return "LINE";
-    case DatumFeature::Kind::cylinder: return "CIRCLE";
-    case DatumFeature::Kind::point: break;
-  }
-  return "POINT";
-}
-
 // The 3-2-1 alignment or the manual points (dmis_writer.hpp); checks that
 // the DCC pass measures what the features and the manual pass name.
 void read_alignment(Cursor& in, ProbeProgram& program) {
@@ -177,7 +167,7 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
     for (const DatumFeature& d : a.datums) {
       in.expect(kText, "TEXT/MAN,'prompt'");
       const std::vector<std::string> m = in.expect(
-          std::regex(std::string("MEAS/") + meas_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
+          std::regex(std::string("MEAS/") + dmis_measure_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
           "MEAS/kind,F(DATUM_label),n of the datum defined in that place");
       counts.push_back(std::stoi(m[1]));
       const int need = d.kind == DatumFeature::Kind::plane || d.kind == DatumFeature::Kind::cylinder ? 3
@@ -222,7 +212,7 @@ void read_alignment(Cursor& in, ProbeProgram& program) {
     for (std::size_t k = 0; k < a.datums.size(); ++k) {
       DatumFeature& d = a.datums[k];
       const std::vector<std::string> m = in.expect(
-          std::regex(std::string("MEAS/") + meas_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
+          std::regex(std::string("MEAS/") + dmis_measure_word(d.kind) + ",F\\(DATUM_" + d.label + "\\),([0-9]+)"),
           "MEAS/kind,F(DATUM_label),n as in the manual pass");
       if (std::stoi(m[1]) != counts[k]) fail(name, in.line(), "datum " + d.label + " has another point count than in the manual pass");
       for (int n = 1; n <= counts[k]; ++n) {

@@ -28,16 +28,6 @@ std::string near_text(const Eigen::Vector3d& p) {
   return "(" + fixed_number(p.x(), 1) + ", " + fixed_number(p.y(), 1) + ", " + fixed_number(p.z(), 1) + ")";
 }
 
-const char* meas_word(DatumFeature::Kind k) {
-  switch (k) {
-    case DatumFeature::Kind::plane: return "PLANE";
-    case DatumFeature::Kind::line: return "LINE";
-    case DatumFeature::Kind::cylinder: return "CIRCLE";
-    case DatumFeature::Kind::point: break;
-  }
-  return "POINT";
-}
-
 // A bore's wall faces its axis, a boss's faces away.
 bool is_bore(const DatumFeature& d) {
   double outward = 0;
@@ -114,7 +104,7 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
       for (const PlannedPoint& p : d.points) near += (near.empty() ? "" : ", ") + near_text(p.xyz);
       line("TEXT/MAN,'" + prompt_text("Datum " + d.label + ": touch " + std::to_string(d.points.size()) +
                                       " point(s) on face " + d.face + " near " + near) + "'");
-      line(std::string("MEAS/") + meas_word(d.kind) + ",F(DATUM_" + d.label + ")," + std::to_string(d.points.size()));
+      line(std::string("MEAS/") + dmis_measure_word(d.kind) + ",F(DATUM_" + d.label + ")," + std::to_string(d.points.size()));
       line("ENDMES");
     }
     line("D(MANUAL)=" + datset(a));
@@ -122,7 +112,7 @@ void write_alignment(const ProbeProgram& program, const std::function<void(const
     line("MODE/PROG,MAN");
     std::size_t k = 0;
     for (const DatumFeature& d : a.datums) {
-      line(std::string("MEAS/") + meas_word(d.kind) + ",F(DATUM_" + d.label + ")," + std::to_string(d.points.size()));
+      line(std::string("MEAS/") + dmis_measure_word(d.kind) + ",F(DATUM_" + d.label + ")," + std::to_string(d.points.size()));
       for (std::size_t n = 0; n < d.points.size(); ++n, ++k) {
         const ProgramStep& step = program.alignment_steps[k];
         for (const Eigen::Vector3d& m : step.moves_before) line("GOTO/" + xyz_text(m));

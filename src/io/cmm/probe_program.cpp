@@ -91,6 +91,16 @@ std::string tip_sensor_name(const ProbeProgram& program, const TipAngles& tip) {
   return program.probe.name + "_" + tip_name(tip);
 }
 
+const char* dmis_measure_word(DatumFeature::Kind kind) {
+  switch (kind) {
+    case DatumFeature::Kind::plane: return "PLANE";
+    case DatumFeature::Kind::line: return "LINE";
+    case DatumFeature::Kind::cylinder: return "CIRCLE";
+    case DatumFeature::Kind::point: break;
+  }
+  return "POINT";
+}
+
 void check_program(const ProbeProgram& program, const std::string& format) {
   const std::string what = format + " program";
   if (!is_name(program.name))

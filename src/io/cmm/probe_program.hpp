@@ -120,6 +120,11 @@ std::string fixed_number(double value, int decimals);
 // programmers write them and DMIS prints its own words.
 std::string dmis_label(const std::string& label);
 
+// The DMIS feature word a datum of this kind is defined and measured as
+// (FEAT/..., MEAS/...): PLANE, LINE, POINT, and CIRCLE for a cylinder (a
+// bore or boss, measured at one height).
+const char* dmis_measure_word(DatumFeature::Kind kind);
+
 // Throws InputError when a name, label or number cannot be written into a
 // program: empty or non-ASCII names, ids that are not DMIS labels
 // ([A-Za-z0-9_]) or that become the same label in upper case, non-finite

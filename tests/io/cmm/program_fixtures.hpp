@@ -3,6 +3,7 @@
 // tilted normal, one move over the clearance plane at z = 12), written by
 // hand so the golden files check the writers, not the planner.
 #include "io/cmm/probe_program.hpp"
+#include "io/plan_file.hpp"
 
 namespace furrow::test {
 
@@ -38,6 +39,41 @@ inline ProbeProgram tiny_program() {
   p.steps.push_back({point("P0003", 3, {10, 15, 5}, {0, 0.6, 0.8}), {{15, 5, 12}, {10, 17.4, 12}, {10, 17.4, 8.2}}});
   p.final_moves = {{10, 17.4, 12}};
   return p;
+}
+
+// A plan holding `alignment` and one free-form point (a copy of a point of
+// the first datum under its own id): enough for plan.json round trips.
+inline InspectionPlan plan_with_alignment(PartAlignment alignment) {
+  InspectionPlan plan;
+  plan.probe = {"Probe1", 2};
+  plan.alignment = std::move(alignment);
+  plan.points.push_back(plan.alignment->datums[0].points[1]);
+  plan.points[0].id = "P0001";
+  plan.points[0].order = 1;
+  return plan;
+}
+
+// A DMIS program read back (`back`) holds the alignment `a` it was written
+// with: every alignment point in order under its id, to the program's
+// 1e-6 mm rounding, with its approach as the last move before it; each
+// datum's label, kind, axis and origin axis; the frame's origin.
+inline void check_alignment_read_back(const ProbeProgram& back, const PartAlignment& a) {
+  REQUIRE(back.alignment.has_value());
+  const std::vector<PlannedPoint> want = a.points();
+  REQUIRE(back.alignment_steps.size() == want.size());
+  for (std::size_t k = 0; k < want.size(); ++k) {
+    CHECK(back.alignment_steps[k].point.id == want[k].id);
+    CHECK((back.alignment_steps[k].point.xyz - want[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
+    CHECK((back.alignment_steps[k].moves_before.back() - want[k].approach).cwiseAbs().maxCoeff() <= 5e-7);
+  }
+  REQUIRE(back.alignment->datums.size() == a.datums.size());
+  for (std::size_t k = 0; k < a.datums.size(); ++k) {
+    CHECK(back.alignment->datums[k].label == a.datums[k].label);
+    CHECK(back.alignment->datums[k].kind == a.datums[k].kind);
+    CHECK(back.alignment->datums[k].axis == a.datums[k].axis);
+    CHECK(back.alignment->datums[k].origin_axis == a.datums[k].origin_axis);
+  }
+  CHECK((back.alignment->origin - a.origin).cwiseAbs().maxCoeff() <= 5e-7);
 }
 
 }  // namespace furrow::test

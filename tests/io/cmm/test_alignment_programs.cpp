@@ -216,21 +216,8 @@ TEST_CASE("programs measure the datums first, and the strict readers give back t
   CHECK(part_frame < saved);
   CHECK(saved < first);
   const ProbeProgram back = parse_dmis_program(dmi, "box.dmi");
-  REQUIRE(back.alignment.has_value());
+  check_alignment_read_back(back, a);
   const std::vector<PlannedPoint> want = a.points();
-  REQUIRE(back.alignment_steps.size() == want.size());
-  for (std::size_t k = 0; k < want.size(); ++k) {
-    CHECK(back.alignment_steps[k].point.id == want[k].id);
-    CHECK((back.alignment_steps[k].point.xyz - want[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
-    CHECK((back.alignment_steps[k].moves_before.back() - want[k].approach).cwiseAbs().maxCoeff() <= 5e-7);
-  }
-  for (std::size_t k = 0; k < 3; ++k) {
-    CHECK(back.alignment->datums[k].label == a.datums[k].label);
-    CHECK(back.alignment->datums[k].kind == a.datums[k].kind);
-    CHECK(back.alignment->datums[k].axis == a.datums[k].axis);
-    CHECK(back.alignment->datums[k].origin_axis == a.datums[k].origin_axis);
-  }
-  CHECK((back.alignment->origin - a.origin).cwiseAbs().maxCoeff() <= 5e-7);
   REQUIRE(back.steps.size() == p.steps.size());
   for (std::size_t k = 0; k < p.steps.size(); ++k) {
     CHECK(back.steps[k].point.xyz == p.steps[k].point.xyz);
@@ -275,13 +262,7 @@ TEST_CASE("a program on the first one's set-up recalls its saved alignment, and 
 
 TEST_CASE("plan.json carries the alignment and reads it back bit for bit") {
   Fixture& f = box();
-  InspectionPlan plan;
-  plan.probe = {"Probe1", 2};
-  plan.alignment = choose_alignment(f.part, *f.finder, f.probe, f.access, {});
-  // One free-form point on the part (a copy of a datum point under its own id).
-  plan.points.push_back(plan.alignment->datums[0].points[1]);
-  plan.points[0].id = "P0001";
-  plan.points[0].order = 1;
+  InspectionPlan plan = plan_with_alignment(choose_alignment(f.part, *f.finder, f.probe, f.access, {}));
   const std::string text = plan_to_json_text(plan);
   const InspectionPlan back = parse_plan(text, "plan.json");
   REQUIRE(back.alignment.has_value());
