@@ -256,8 +256,8 @@ std::vector<Candidate> refine_placements(const ClosestPointFinder& finder, const
                                          const SearchTarget& target, const std::vector<Candidate>& screened,
                                          const std::vector<Eigen::Vector3d>& refine, const CoarseOptions& options) {
   std::vector<Candidate> refined;
-  const std::size_t n = std::min<std::size_t>(screened.size(),
-                                              static_cast<std::size_t>(std::max(1, options.refine_candidates)));
+  const int wanted = refine.size() < options.few_points ? options.refine_candidates_few : options.refine_candidates;
+  const std::size_t n = std::min<std::size_t>(screened.size(), static_cast<std::size_t>(std::max(1, wanted)));
   for (std::size_t k = 0; k < n; ++k) {
     Eigen::Isometry3d t = trimmed_icp(target, refine, screened[k].transform, options.refine_iterations,
                                       target.diagonal / 10, options.icp_tolerance);

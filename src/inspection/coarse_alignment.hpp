@@ -48,7 +48,14 @@ struct CoarseOptions {
   std::size_t refine_points = 1000;     // measured points in the long ICP
   int screen_iterations = 10;           // ICP iterations per candidate
   int refine_iterations = 30;           // ICP iterations for the best candidates
-  int refine_candidates = 4;            // how many candidates get the long ICP
+  int refine_candidates = 4;            // how many candidates get the long ICP ...
+  // ... and how many when fewer than `few_points` points are usable: their
+  // screening medians rank the candidates poorly (a plane's other side
+  // fell out of the best four at 16 and 30 points), and the long ICP of a
+  // few points is cheap. With many points more candidates only add
+  // equally good in-plane placements of a weak shape to choose from.
+  int refine_candidates_few = 12;
+  std::size_t few_points = 100;
   double icp_tolerance = 1e-12;         // ICP stops when the 4x4 matrix changes less than this
   double ambiguity_ratio = 1.5;         // a runner-up within this factor of the best median ...
   double ambiguity_angle_deg = 5;       // ... and rotated at least this much from it is reported
