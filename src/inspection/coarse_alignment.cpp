@@ -277,6 +277,7 @@ CoarseResult best_placement(const std::vector<Candidate>& refined, int candidate
   out.transform = refined[0].transform;
   out.median_distance = refined[0].score;
   out.candidates = candidates;
+  for (std::size_t k = 1; k < refined.size(); ++k) out.alternatives.push_back(refined[k].transform);
   const double angle_limit = options.ambiguity_angle_deg * kPi / 180;
   for (std::size_t k = 1; k < refined.size(); ++k) {
     if (rotation_angle(refined[k].transform.linear(), out.transform.linear()) < angle_limit) continue;

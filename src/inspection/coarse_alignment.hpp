@@ -27,6 +27,7 @@
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "geometry/closest_point.hpp"
 #include "io/cmm/measurement_file.hpp"
@@ -69,6 +70,10 @@ struct CoarseResult {
   double median_distance = 0;   // median |point-to-surface distance - probe radius| [mm]
   bool ambiguous = false;       // another orientation fits about as well
   double runner_up_median = 0;  // its median distance [mm] (global search)
+  // Global search: the other refined placements, best first (CMM -> part).
+  // With few points the fine fit starts from each of them as well
+  // (registration.hpp).
+  std::vector<Eigen::Isometry3d> alternatives;
 };
 
 // Chooses and runs the methods above. `plan` may be null.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <utility>
@@ -597,11 +598,51 @@ class RegistrationRun {
 
 }  // namespace
 
+namespace {
+
+// How well a result explains every point (registration.hpp "Few points
+// without ids"): the truncated square sum, min(d^2, T^2) with T the
+// smallest deviation the outlier rule calls large (MSAC): a point is either
+// fitted, and counts by its residual, or not, and counts the same whatever
+// its size. A point without a foot counts as not fitted.
+double explained_cost(const RegistrationResult& r, const RegistrationOptions& o) {
+  const double t2 = o.outlier_floor * o.outlier_floor;
+  double sum = 0;
+  for (const RegisteredPoint& p : r.points) {
+    const bool footless = p.outlier == OutlierReason::no_foot_point || !std::isfinite(p.deviation);
+    sum += footless ? t2 : std::min(p.deviation * p.deviation, t2);
+  }
+  return sum;
+}
+
+}  // namespace
+
 RegistrationResult register_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
                                          const InspectionPlan* plan, const RegistrationOptions& options) {
   if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
     throw InputError("the weak-direction ratio must lie in (0, 1)");
-  return RegistrationRun(finder, set, plan, options).run();
+  RegistrationResult best = RegistrationRun(finder, set, plan, options).run();
+  if (!options.multi_start_few || options.start || best.coarse.method != CoarseMethod::global_search ||
+      set.points.size() >= options.coarse.few_points || best.coarse.alternatives.empty())
+    return best;
+  // Few points from the global search: every other refined placement is a
+  // start too; the lowest robust cost wins, ties to the search's best.
+  const CoarseResult search = best.coarse;
+  double lowest = best.converged ? explained_cost(best, options) : std::numeric_limits<double>::infinity();
+  for (const Eigen::Isometry3d& start : search.alternatives) {
+    RegistrationOptions o = options;
+    o.start = start;
+    o.progress = nullptr;
+    RegistrationResult r = RegistrationRun(finder, set, plan, o).run();
+    if (!r.converged) continue;
+    const double cost = explained_cost(r, options);
+    if (!(cost < lowest * (1 - 1e-9))) continue;
+    lowest = cost;
+    r.coarse = search;
+    r.coarse.transform = start;
+    best = std::move(r);
+  }
+  return best;
 }
 
 }  // namespace furrow

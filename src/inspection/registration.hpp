@@ -122,6 +122,17 @@ struct RegistrationOptions {
   // A start already known, CMM -> part (the frame of a datum or RPS
   // alignment, when its best fit is computed beside it): used instead of the
   // coarse search; none: coarse_alignment.
+  //
+  // Few points without ids (fewer than coarse.few_points, started by the
+  // global search): a handful of points on a symmetric part, one of them a
+  // blunder, can lead the fine fit from the best coarse placement into a
+  // wrong local minimum that keeps the blunder and drops good points. The
+  // fit is then run from every other refined placement too
+  // (CoarseResult::alternatives), and the result that explains the points
+  // best is kept: the least sum over all points of min(d_i^2, T^2), T the
+  // outlier floor (a point without a foot counts T^2). The coarse result
+  // reported stays the search's, with the start that won.
+  bool multi_start_few = true;
   std::optional<Eigen::Isometry3d> start;
   // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
   // so a terminal can show progress; empty: silent.
