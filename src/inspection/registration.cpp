@@ -638,8 +638,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
     const double cost = explained_cost(r, options);
     if (!(cost < lowest * (1 - 1e-9))) continue;
     lowest = cost;
+    const double median = r.coarse.median_distance;  // of this start
     r.coarse = search;
     r.coarse.transform = start;
+    r.coarse.median_distance = median;
     best = std::move(r);
   }
   return best;
