@@ -10,11 +10,23 @@
 #include <cmath>
 
 #include "base/number_text.hpp"
+#include "inspection/motion_manifold.hpp"
 #include "inspection/registration.hpp"
 
 namespace furrow {
 
 namespace {
+
+// Ceres iterations of the second attempt of a solve whose every step was
+// rejected (solve()): the trust region shrinks by factors 2, 4, 8, ... per
+// rejected step, so 40 of them span any scale a step can need.
+constexpr int kRejectedStepRetry = 40;
+
+// The first trust region of a solve (solve()) lies between these: Ceres'
+// own default, and one below which the problem has converged for any
+// motion a part can make.
+constexpr double kFirstTrustRadius = 1e4;
+constexpr double kSmallestTrustRadius = 1e-12;
 
 // The residual of one point as a function of the six parameters (rotation
 // vector, translation), its foot held: with e = R y + t - f, n . e - r for a
@@ -51,43 +63,6 @@ struct BoundedDistance {
     residual[0] = along;
     return true;
   }
-};
-
-// x + B delta: the parameters move only within span(B). The locked degrees
-// of freedom (B: unit vectors) and the held weak directions
-// (observability.hpp) are the same mechanism.
-class SubspaceManifold : public ceres::Manifold {
- public:
-  explicit SubspaceManifold(const MotionBasis& basis)
-      : basis_(basis), left_inverse_(basis.completeOrthogonalDecomposition().pseudoInverse()) {}
-  int AmbientSize() const override { return 6; }
-  int TangentSize() const override { return static_cast<int>(basis_.cols()); }
-  bool Plus(const double* x, const double* delta, double* x_plus_delta) const override {
-    using Vec6 = Eigen::Matrix<double, 6, 1>;
-    Eigen::Map<Vec6> out(x_plus_delta);
-    out = Eigen::Map<const Vec6>(x) + basis_ * Eigen::Map<const Eigen::VectorXd>(delta, basis_.cols());
-    return true;
-  }
-  bool PlusJacobian(const double*, double* jacobian) const override {
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(jacobian, 6, basis_.cols());
-    out = basis_;
-    return true;
-  }
-  bool Minus(const double* y, const double* x, double* y_minus_x) const override {
-    using Vec6 = Eigen::Matrix<double, 6, 1>;
-    Eigen::Map<Eigen::VectorXd> out(y_minus_x, basis_.cols());
-    out = left_inverse_ * (Eigen::Map<const Vec6>(y) - Eigen::Map<const Vec6>(x));
-    return true;
-  }
-  bool MinusJacobian(const double*, double* jacobian) const override {
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(jacobian, basis_.cols(), 6);
-    out = left_inverse_;
-    return true;
-  }
-
- private:
-  MotionBasis basis_;
-  Eigen::MatrixXd left_inverse_;
 };
 
 // One point's residual block: BoundedDistance differentiated exactly as
@@ -158,18 +133,26 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
   restrict_motion(free_parameter_basis(dof_.free));
 }
 
-void SurfaceFit::restrict_motion(const MotionBasis& basis) {
+MotionBasis SurfaceFit::plus_basis() const {
+  return frame_ == MotionFrame::twist ? MotionBasis(twist_to_parameters(parameters_) * basis_) : basis_;
+}
+
+Eigen::Matrix<double, 6, 6> SurfaceFit::projector() const {
+  const MotionBasis b = plus_basis();
+  return b.cols() > 0 ? Eigen::Matrix<double, 6, 6>(b * b.completeOrthogonalDecomposition().pseudoInverse())
+                      : Eigen::Matrix<double, 6, 6>::Zero();
+}
+
+void SurfaceFit::restrict_motion(const MotionBasis& basis, MotionFrame frame) {
   basis_ = basis;
-  projector_ = basis.cols() > 0 ? Eigen::Matrix<double, 6, 6>(
-                                      basis * basis.completeOrthogonalDecomposition().pseudoInverse())
-                                : Eigen::Matrix<double, 6, 6>::Zero();
+  frame_ = frame;
   // All six free: no manifold at all (the plain problem, as fast as can be).
   // Ceres refuses a block with no tangent space; an empty basis is the
   // caller's to avoid (registration.cpp reports it instead of fitting).
   if (basis.cols() == 6)
     impl_->problem->SetManifold(parameters_.data(), nullptr);
   else if (basis.cols() > 0)
-    impl_->problem->SetManifold(parameters_.data(), new SubspaceManifold(basis));
+    impl_->problem->SetManifold(parameters_.data(), make_motion_manifold(basis, frame).release());
 }
 
 SurfaceFit::~SurfaceFit() = default;
@@ -216,7 +199,7 @@ Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
     // with u the residual's direction (direction()).
     const Eigen::Vector3d u = direction(i);
     j << points_[i].y.cross(u).transpose(), u.transpose();
-    return j * projector_;
+    return basis_.cols() == 6 ? j : j * projector();
   }
   Point p = points_[i];
   p.active = true;
@@ -225,7 +208,7 @@ Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
   double r = 0;
   double* jac[1] = {j.data()};
   cost.Evaluate(params, &r, jac);
-  return j * projector_;
+  return basis_.cols() == 6 ? j : j * projector();
 }
 
 void SurfaceFit::set_loss(RobustLoss loss, double loss_scale) {
@@ -248,10 +231,43 @@ int SurfaceFit::solve(std::string& message) {
   o.parameter_tolerance = 1e-14;
   o.num_threads = 1;
   o.logging_type = ceres::SILENT;
+  // Ceres' first trust region, or the one a solve whose every step was
+  // rejected ended with (below).
+  o.initial_trust_region_radius = trust_radius_;
+  trust_radius_ = kFirstTrustRadius;
   ceres::Solver::Summary summary;
   ceres::Solve(o, impl_->problem.get(), &summary);
+  // Iteration 0 is the start; none at all when Ceres refused the problem.
+  if (summary.iterations.empty()) {
+    message = summary.message;
+    return 0;
+  }
+  int iterations = static_cast<int>(summary.iterations.size()) - 1;
+  // Every step rejected: a step along a barely constrained motion can need
+  // a trust region far smaller than the first one (its linear model fails
+  // within micrometres of the cost), and five halvings need not reach it.
+  // The parameters did not move, which the outer loop would read as
+  // convergence: the region is let shrink on until a step is taken, and the
+  // next solve starts from where it ended. Any other solve leaves the next
+  // one Ceres' first region: started small, the steps near the optimum are
+  // damped below the motion tolerance before they reach it.
+  const auto taken = [&] {  // iteration 0, the start, counts as successful
+    return std::any_of(summary.iterations.begin() + 1, summary.iterations.end(),
+                       [](const ceres::IterationSummary& it) { return it.step_is_successful; });
+  };
+  if (summary.termination_type == ceres::NO_CONVERGENCE && !taken()) {
+    o.max_num_iterations = kRejectedStepRetry;
+    o.initial_trust_region_radius =
+        std::clamp(summary.iterations.back().trust_region_radius, kSmallestTrustRadius, kFirstTrustRadius);
+    ceres::Solve(o, impl_->problem.get(), &summary);
+    if (!summary.iterations.empty()) {
+      iterations += static_cast<int>(summary.iterations.size()) - 1;
+      trust_radius_ =
+          std::clamp(summary.iterations.back().trust_region_radius, kSmallestTrustRadius, kFirstTrustRadius);
+    }
+  }
   message = summary.IsSolutionUsable() ? std::string() : summary.message;
-  return static_cast<int>(summary.iterations.size()) - 1;  // iteration 0 is the start
+  return iterations;
 }
 
 void SurfaceFit::rebase() {
@@ -300,6 +316,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
   // values and right vectors, the same accuracy: no normal equations).
   const bool restricted = basis_.cols() < 6;  // a Ceres manifold is set (restrict_motion)
   const Eigen::Index m = restricted ? basis_.cols() : 6;
+  const MotionBasis tangent_basis = plus_basis();
   constexpr Eigen::Index kChunk = 4096;
   Eigen::MatrixXd stack = Eigen::MatrixXd::Zero(m + kChunk, m);
   Eigen::MatrixXd r = Eigen::MatrixXd::Zero(m, m);
@@ -327,7 +344,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
     double scale = std::sqrt(rho[1]);
     if (sq > 0 && rho[2] > 0) scale *= std::sqrt(1 + 2 * sq * rho[2] / rho[1]);
     if (restricted)
-      stack.row(m + rows) = scale * (j * basis_);
+      stack.row(m + rows) = scale * (j * tangent_basis);
     else
       stack.row(m + rows) = scale * j;
     if (++rows == kChunk) fold();
@@ -346,7 +363,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
       svd.matrixV() * sv.cwiseProduct(sv).cwiseInverse().asDiagonal() * svd.matrixV().transpose();
   status = "ok";
   if (!restricted) return Eigen::Matrix<double, 6, 6>(tangent);
-  return Eigen::Matrix<double, 6, 6>(basis_ * tangent * basis_.transpose());
+  return Eigen::Matrix<double, 6, 6>(tangent_basis * tangent * tangent_basis.transpose());
 }
 
 }  // namespace furrow

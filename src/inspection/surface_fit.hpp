@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "inspection/degrees_of_freedom.hpp"
+#include "inspection/motion_manifold.hpp"
 #include "inspection/observability.hpp"
 
 namespace furrow {
@@ -78,12 +79,16 @@ class SurfaceFit {
   // projected onto the allowed motions (zero in locked components).
   Eigen::Matrix<double, 1, 6> jacobian(std::size_t i) const;
 
-  // Restricts the correction to parameters + span(basis) from now on (the
-  // columns: origin parameters rx ry rz tx ty tz; a subset of the free
-  // degrees of freedom's span). The motions left out stay where they are:
-  // the weak directions of registration.hpp.
-  void restrict_motion(const MotionBasis& basis);
+  // Restricts the correction to the motions span(basis) from now on (the
+  // columns: rx ry rz tx ty tz; a subset of the free degrees of freedom's
+  // span), in the sense `frame` (motion_manifold.hpp): changes of the
+  // parameters (locked degrees of freedom) or motions of the corrected
+  // points about the part origin (the weak directions of registration.hpp,
+  // found at the current correction). The motions left out stay where they
+  // are.
+  void restrict_motion(const MotionBasis& basis, MotionFrame frame = MotionFrame::parameters);
   const MotionBasis& motion_basis() const { return basis_; }
+  MotionFrame motion_frame() const { return frame_; }
 
   // Replaces the robust loss (the outlier-free final fit is plain least
   // squares, see registration.hpp).
@@ -110,9 +115,15 @@ class SurfaceFit {
   std::vector<Point> points_;
   double probe_radius_;
   DegreesOfFreedom dof_;
+  // The allowed parameter changes at the current parameters: basis_, or
+  // for twists their image (twist_to_parameters); and the projector on them.
+  MotionBasis plus_basis() const;
+  Eigen::Matrix<double, 6, 6> projector() const;
+
   MotionBasis basis_;  // the allowed motions (columns)
-  Eigen::Matrix<double, 6, 6> projector_ = Eigen::Matrix<double, 6, 6>::Identity();  // onto span(basis_)
+  MotionFrame frame_ = MotionFrame::parameters;
   int max_iterations_;
+  double trust_radius_ = 1e4;  // the next solve's first trust region (surface_fit.cpp solve())
   Eigen::Matrix<double, 6, 1> parameters_ = Eigen::Matrix<double, 6, 1>::Zero();
   std::unique_ptr<Impl> impl_;
 };
