@@ -96,6 +96,12 @@ struct ClosestPoint {
 class SeedGrid;
 class CandidateVoxels;
 
+// Loops of projections run in parallel from this many points on (OpenMP
+// `if` clause). Below it the threads' wake-up costs more than the work, and
+// on a loaded machine OpenMP's spinning threads slow the few-point
+// registrations (dozens of fits of 8 to 100 points) many times over.
+constexpr std::size_t kParallelProjections = 512;
+
 class ClosestPointFinder {
  public:
   // Builds the seed cells of every face (cost: ~25 surface evaluations per

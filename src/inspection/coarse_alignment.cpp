@@ -131,7 +131,7 @@ double median_surface_distance(const ClosestPointFinder& finder, const Measureme
   const std::vector<std::size_t> subset = spread_subset(all, near, max_points);
   if (subset.empty()) return std::numeric_limits<double>::infinity();
   std::vector<double> d(subset.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (subset.size() >= kParallelProjections)
   for (std::size_t k = 0; k < subset.size(); ++k) {
     const ClosestPoint c = finder.project(all[subset[k]]);
     d[k] = std::abs(c.signed_distance - set.probe_radius);

@@ -18,7 +18,7 @@ RegistrationResult evaluate_at_transform(const ClosestPointFinder& finder, const
   r.covariance_status = "not computed: no fit";
   const std::size_t n = set.points.size();
   r.points.resize(n);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n >= kParallelProjections)
   for (std::size_t i = 0; i < n; ++i) {
     RegisteredPoint& p = r.points[i];
     p.registered = transform * set.points[i].xyz;
