@@ -99,13 +99,25 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
 std::string alignment_status(const RegistrationResult& r) {
   if (r.outcome == FitOutcome::too_few_points) return "too_few_points";
   if (!r.converged) return "not_converged";
+  if (!r.ambiguous_outliers.empty()) return "ambiguous_outliers";
   for (const WeakDirection& d : r.observability.weak)
     if (d.from_points) return "weakly_constrained";
   return "ok";
 }
 
 // What went wrong and how to constrain it, for people.
-std::string alignment_advice(const RegistrationResult& r, const std::string& status) {
+std::string alignment_advice(const RegistrationResult& r, const std::string& status,
+                             const std::vector<std::string>& ids) {
+  if (status == "ambiguous_outliers") {
+    std::string s = "the points cannot tell which of points ";
+    for (std::size_t k = 0; k < r.ambiguous_outliers.size(); ++k) {
+      const std::size_t i = r.ambiguous_outliers[k];
+      s += (k == 0 ? "" : k + 1 == r.ambiguous_outliers.size() ? " and " : ", ") +
+           (i < ids.size() ? ids[i] : std::to_string(i + 1));
+    }
+    return s + " are blunders: fits that flag different ones of them explain the others equally well; "
+               "re-measure them, or measure more points";
+  }
   if (status == "weakly_constrained") {
     std::string s = "the alignment is weakly constrained: the measured points do not fix the ";
     bool first = true;
@@ -175,7 +187,7 @@ void summarize(Comparison& c) {
   const RegistrationResult& r = c.registration;
   s.alignment = alignment_status(r);
   if (s.alignment != "ok") {
-    s.inconclusive = {{"alignment_failed", "", alignment_advice(r, s.alignment)}};
+    s.inconclusive = {{"alignment_failed", "", alignment_advice(r, s.alignment, c.point_ids)}};
     s.verdict = Verdict::inconclusive;
   } else {
     const bool failed = s.evaluated == 0 || s.out_of_tolerance > 0 || s.confirmed_gouges > 0;

@@ -80,7 +80,7 @@ struct ComparisonSummary {
   std::size_t unexplained_overcuts = 0;   // clusters of UNEXPLAINED overcut (with a prediction)
   Verdict verdict = Verdict::fail;
   // "ok", or why the alignment did not succeed: "not_converged",
-  // "too_few_points", "weakly_constrained".
+  // "too_few_points", "ambiguous_outliers", "weakly_constrained".
   std::string alignment = "ok";
   std::vector<InconclusiveReason> inconclusive;  // set when verdict is inconclusive
   bool pass = false;                             // verdict == pass

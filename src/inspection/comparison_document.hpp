@@ -98,6 +98,9 @@ struct ComparisonDocument {
     std::vector<WeakDirection> weak;
     std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
     std::string covariance_status;
+    // Point ids whose outlier status the points cannot decide
+    // (few_point_search.hpp); files written before have none.
+    std::vector<std::string> ambiguous_outliers;
     // Outliers by reason: "blunder", "large_deviation", "beyond_edge",
     // "no_foot_point" (every reason present, zero when none).
     std::map<std::string, std::size_t> outliers;

@@ -30,7 +30,8 @@ void set_placement(const Eigen::Isometry3d& cmm_to_part, ComparisonDocument::Reg
 
 // The registration as comparison_document.hpp holds it, so that one writer
 // (comparison_json.hpp) serves comparison.json and report.json.
-ComparisonDocument::Registration document_registration(const RegistrationResult& r) {
+ComparisonDocument::Registration document_registration(const RegistrationResult& r,
+                                                       const std::vector<std::string>& ids) {
   ComparisonDocument::Registration d;
   d.transform = r.transform.matrix();
   set_placement(r.transform, d);
@@ -60,7 +61,7 @@ ComparisonDocument::Registration document_registration(const RegistrationResult&
     x.pitch = w.pitch;
     x.ratio = w.ratio;
     const double sd = w.sigma_mm(r.sigma);
-    if (std::isfinite(sd) && sd < 1e6) x.sigma = sd;
+    if (std::isfinite(sd)) x.sigma = sd;
     x.held = held;
     x.from_points = w.from_points;
     return x;
@@ -70,11 +71,13 @@ ComparisonDocument::Registration document_registration(const RegistrationResult&
     for (const WeakDirection& w : r.held) d.weak.push_back(record(w, true));
   d.covariance = r.covariance;
   d.covariance_status = r.covariance_status;
+  for (const std::size_t i : r.ambiguous_outliers)
+    d.ambiguous_outliers.push_back(i < ids.size() ? ids[i] : std::to_string(i + 1));
   return d;
 }
 
-json registration_json(const RegistrationResult& r, const RegistrationOptions& o) {
-  json j = cj::registration_json(document_registration(r));
+json registration_json(const RegistrationResult& r, const RegistrationOptions& o, const std::vector<std::string>& ids) {
+  json j = cj::registration_json(document_registration(r, ids));
   json dof = json::array();
   for (int k = 0; k < 6; ++k)
     if (o.dof.free[k]) dof.push_back(dof_name(k));
@@ -260,7 +263,7 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                       {"lower", jf::finite(c.tolerance.lower(), "lower limit")},
                       {"upper", jf::finite(c.tolerance.upper(), "upper limit")},
                       {"disposition", c.tolerance.disposition()}};
-  doc["registration"] = registration_json(c.registration, options.registration);
+  doc["registration"] = registration_json(c.registration, options.registration, c.point_ids);
   doc["alignment"] = alignment_json(c);
   doc["summary"] = {{"points", s.points},
                     {"in_fit", s.in_fit},

@@ -84,6 +84,7 @@ json registration_json(const ComparisonDocument::Registration& r) {
     weak.push_back(std::move(d));
   }
   j["weak_directions"] = std::move(weak);
+  j["ambiguous_outliers"] = r.ambiguous_outliers;
   j["covariance_status"] = r.covariance_status;
   if (r.covariance) {
     j["covariance"] = matrix_json(*r.covariance, "covariance");

@@ -118,6 +118,14 @@ ComparisonDocument::Registration read_registration(const JsonCursor& n) {
     }
   }
   if (!n.is_null("covariance")) r.covariance = matrix<6, 6>(n.raw("covariance"), n.path("covariance"));
+  if (n.has("ambiguous_outliers")) {
+    const json& list = n.array("ambiguous_outliers");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (!list[k].is_string())
+        throw InputError(jf::child(n.path("ambiguous_outliers"), k) + ": expected a point id (a string)");
+      r.ambiguous_outliers.push_back(list[k].get<std::string>());
+    }
+  }
   return r;
 }
 
@@ -207,9 +215,9 @@ ComparisonSummary read_summary(const JsonCursor& n) {
   if (n.has("alignment")) {
     s.alignment = n.string("alignment");
     if (s.alignment != "ok" && s.alignment != "not_converged" && s.alignment != "too_few_points" &&
-        s.alignment != "weakly_constrained")
+        s.alignment != "ambiguous_outliers" && s.alignment != "weakly_constrained")
       throw InputError(n.path("alignment") + ": unknown alignment state " + quote_field(s.alignment) +
-                       " (valid: ok, not_converged, too_few_points, weakly_constrained)");
+                       " (valid: ok, not_converged, too_few_points, ambiguous_outliers, weakly_constrained)");
   }
   if (n.has("inconclusive")) {
     const json& list = n.array("inconclusive");

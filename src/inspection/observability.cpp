@@ -210,7 +210,7 @@ std::string WeakDirection::describe() const {
 }
 
 double WeakDirection::sigma_mm(double sigma) const {
-  if (!(information > 0)) return std::numeric_limits<double>::infinity();
+  if (!(information > 0) || !(ratio >= kUnseenRatio)) return std::numeric_limits<double>::infinity();
   return sigma / std::sqrt(information);
 }
 

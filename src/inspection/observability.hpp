@@ -29,6 +29,11 @@ namespace furrow {
 
 using MotionBasis = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 
+// Below this share of the largest (ratio) a motion is not seen at all: an
+// exact symmetry of the measured surface, whose computed information is
+// round-off.
+constexpr double kUnseenRatio = 1e-8;
+
 struct WeakDirection {
   // The motion per 1 mm RMS displacement of the points: rx ry rz [rad]
   // (about the part origin), tx ty tz [mm].
@@ -50,7 +55,9 @@ struct WeakDirection {
   // through (x, y, z) mm along (a, b, c)".
   std::string describe() const;
   // 1-sigma of the motion for a residual standard deviation `sigma` [mm]:
-  // the points' RMS displacement [mm] (infinity when nothing constrains it).
+  // the points' RMS displacement [mm]. Infinity when nothing constrains it:
+  // no information, or a share below kUnseenRatio (round-off of an exact
+  // symmetry, whose "sigma" would be a meaningless 1e13 mm).
   double sigma_mm(double sigma) const;
 };
 

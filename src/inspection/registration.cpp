@@ -9,7 +9,9 @@
 
 #include "base/number_text.hpp"
 #include "base/error.hpp"
+#include "inspection/few_point_search.hpp"
 #include "inspection/outlier_detection.hpp"
+#include "inspection/registration_run.hpp"
 #include "inspection/surface_sampling.hpp"
 #include "inspection/surface_fit.hpp"
 
@@ -69,9 +71,8 @@ std::size_t RegistrationResult::in_fit_count() const {
 
 namespace {
 
-// Below this share (observability.hpp) a motion is not seen at all: an
-// exact symmetry of the measured surface, held for good.
-constexpr double kExactlyFree = 1e-8;
+// Motions not seen at all (observability.hpp) are held for good.
+constexpr double kExactlyFree = kUnseenRatio;
 
 // Cells per direction of the grid over each measured face that tells the
 // surface's own free motions from those the points leave free.
@@ -111,7 +112,7 @@ struct Workspace {
   // and hands feet and activity to the fit.
   void project() {
     const std::size_t n = fit.size();
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n >= kParallelProjections)
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d x = fit.moved(i);
       ClosestPoint& f = foot(i);
@@ -257,6 +258,12 @@ class RegistrationRun {
       : finder_(finder), set_(set), plan_(plan), options_(options), n_(set.points.size()),
         rule_{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours, options.neighbour_radius},
         verdict_(set.points.size(), OutlierReason::none) {}
+  // `left_out`: registration_run.hpp.
+  RegistrationRun(const ClosestPointFinder& finder, const MeasurementSet& set, const InspectionPlan* plan,
+                  const RegistrationOptions& options, std::size_t left_out)
+      : RegistrationRun(finder, set, plan, options) {
+    left_out_ = left_out;
+  }
   RegistrationRun(const RegistrationRun&) = delete;
   RegistrationRun& operator=(const RegistrationRun&) = delete;
 
@@ -334,6 +341,7 @@ class RegistrationRun {
     ws_.reset(new Workspace{finder_, set_, options_, *fit_, result_.points,
                             std::vector<OutlierReason>(n_, OutlierReason::none), std::vector<bool>(n_, false),
                             std::vector<bool>(n_, false)});
+    if (left_out_ < n_) ws_->excluded[left_out_] = true;
     ws_->project();
   }
 
@@ -341,9 +349,29 @@ class RegistrationRun {
   // hold_weak those are held, and the ones the points see at all are kept
   // for release once the others have converged.
   void hold_weak_directions() {
+    const Observability start = observability_on_part(options_.weak_ratio);
+    if (options_.hold_weak && !start.weak.empty()) {
+      fit_->restrict_motion(start.constrained, weak_frame());
+      result_.held = start.weak;
+      held_basis_.resize(6, static_cast<Eigen::Index>(start.weak.size()));
+      for (std::size_t k = 0; k < start.weak.size(); ++k)
+        held_basis_.col(static_cast<Eigen::Index>(k)) = start.weak[k].parameters;
+      holding_ = Holding::all;
+    }
+  }
+
+  // The weak directions are motions of the points where they are now
+  // (motion_manifold.hpp "twist"); with degrees of freedom locked they are
+  // combinations of the free parameters, and stay changes of them.
+  MotionFrame weak_frame() const {
+    return options_.dof.all_free() ? MotionFrame::twist : MotionFrame::parameters;
+  }
+
+  // The motions of the points on the part, at their current feet, split at
+  // `ratio` (observability.hpp).
+  Observability observability_on_part(double ratio) const {
     std::vector<Eigen::Vector3d> x, normal;
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < n_; ++i) count += ws_->on_part(i);
+    const std::size_t count = on_part_count();
     x.reserve(count);
     normal.reserve(count);
     for (std::size_t i = 0; i < n_; ++i)
@@ -351,18 +379,7 @@ class RegistrationRun {
         x.push_back(fit_->moved(i));
         normal.push_back(ws_->foot(i).normal);
       }
-    const MotionBasis allowed = free_parameter_basis(options_.dof.free);
-    const Observability start = analyse_observability(x, normal, allowed, options_.weak_ratio);
-    if (options_.hold_weak && !start.weak.empty()) {
-      fit_->restrict_motion(start.constrained);
-      result_.held = start.weak;
-      held_basis_.resize(6, static_cast<Eigen::Index>(start.weak.size()));
-      for (std::size_t k = 0; k < start.weak.size(); ++k)
-        held_basis_.col(static_cast<Eigen::Index>(k)) = start.weak[k].parameters;
-      holding_ = Holding::all;
-      release_ = analyse_observability(x, normal, allowed, kExactlyFree).constrained;
-      if (release_.cols() == start.constrained.cols()) release_.resize(6, 0);
-    }
+    return analyse_observability(x, normal, free_parameter_basis(options_.dof.free), ratio);
   }
 
   // Too few points or motions fixed; the residuals at the start.
@@ -470,9 +487,17 @@ class RegistrationRun {
   // leaves the part and the fit converges; otherwise the held fit stands
   // (docs/registration.md "Weakly constrained directions").
   void release_weak_directions() {
-    if (release_.cols() == 0 || !result_.converged || !fine()) return;
+    if (holding_ != Holding::all || !result_.converged || !fine()) return;
+    // Which motions are exactly free is decided where the points have
+    // settled: at the start, off the surface by the misplacement, an exact
+    // symmetry (the turn about a bore's axis) comes out mixed with motions
+    // the points do see, and holding that mixture would keep part of them
+    // from the fit.
+    const MotionBasis release = observability_on_part(kExactlyFree).constrained;
+    if (release.cols() == fit_->motion_basis().cols()) return;
     const Eigen::Matrix<double, 6, 1> held_parameters = fit_->parameters();
     const MotionBasis held_motion = fit_->motion_basis();
+    const MotionFrame held_frame = fit_->motion_frame();
     const std::size_t held_active = on_part_count();
     // The sum of squared residuals of the points in the fit: more freedom
     // cannot raise it at a true minimum, so a released fit that ends higher
@@ -487,8 +512,8 @@ class RegistrationRun {
     const double held_squares = squares();
     const int held_fitted = fitted_;
     const int outer_before = result_.outer_iterations;
-    fit_->restrict_motion(release_);
-    fitted_ = static_cast<int>(release_.cols());
+    fit_->restrict_motion(release, weak_frame());
+    fitted_ = static_cast<int>(release.cols());
     iterate("released");
     if (result_.converged && on_part_count() >= held_active && squares() <= held_squares * (1 + 1e-9)) {
       holding_ = Holding::exact_only;
@@ -496,7 +521,7 @@ class RegistrationRun {
     }
     too_few_.clear();
     solver_message_.clear();
-    fit_->restrict_motion(held_motion);
+    fit_->restrict_motion(held_motion, held_frame);
     fit_->set_parameters(held_parameters);
     fitted_ = held_fitted;
     ws_->project();
@@ -586,7 +611,6 @@ class RegistrationRun {
   std::unique_ptr<SurfaceFit> fit_;
   std::unique_ptr<Workspace> ws_;  // refers to *fit_ and result_.points
   double reach_ = 0;               // largest |point| after the coarse start [mm]
-  MotionBasis release_{6, 0};      // the weak directions the points see, released at the end
   MotionBasis held_basis_{6, 0};   // the weak directions held (columns)
   Holding holding_ = Holding::none;
   int fitted_ = 0;
@@ -594,57 +618,24 @@ class RegistrationRun {
   std::vector<OutlierReason> verdict_;
   OutlierVerdict numbers_;
   std::vector<double> in_fit_;
+  std::size_t left_out_ = kNoPointLeftOut;
 };
 
 }  // namespace
 
-namespace {
-
-// How well a result explains every point (registration.hpp "Few points
-// without ids"): the truncated square sum, min(d^2, T^2) with T the
-// smallest deviation the outlier rule calls large (MSAC): a point is either
-// fitted, and counts by its residual, or not, and counts the same whatever
-// its size. A point without a foot counts as not fitted.
-double explained_cost(const RegistrationResult& r, const RegistrationOptions& o) {
-  const double t2 = o.outlier_floor * o.outlier_floor;
-  double sum = 0;
-  for (const RegisteredPoint& p : r.points) {
-    const bool footless = p.outlier == OutlierReason::no_foot_point || !std::isfinite(p.deviation);
-    sum += footless ? t2 : std::min(p.deviation * p.deviation, t2);
-  }
-  return sum;
+RegistrationResult run_registration(const ClosestPointFinder& finder, const MeasurementSet& set,
+                                    const InspectionPlan* plan, const RegistrationOptions& options,
+                                    std::size_t left_out) {
+  return RegistrationRun(finder, set, plan, options, left_out).run();
 }
-
-}  // namespace
 
 RegistrationResult register_measurements(const ClosestPointFinder& finder, const MeasurementSet& set,
                                          const InspectionPlan* plan, const RegistrationOptions& options) {
   if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
     throw InputError("the weak-direction ratio must lie in (0, 1)");
-  RegistrationResult best = RegistrationRun(finder, set, plan, options).run();
-  if (!options.multi_start_few || options.start || best.coarse.method != CoarseMethod::global_search ||
-      set.points.size() >= options.coarse.few_points || best.coarse.alternatives.empty())
-    return best;
-  // Few points from the global search: every other refined placement is a
-  // start too; the lowest robust cost wins, ties to the search's best.
-  const CoarseResult search = best.coarse;
-  double lowest = best.converged ? explained_cost(best, options) : std::numeric_limits<double>::infinity();
-  for (const Eigen::Isometry3d& start : search.alternatives) {
-    RegistrationOptions o = options;
-    o.start = start;
-    o.progress = nullptr;
-    RegistrationResult r = RegistrationRun(finder, set, plan, o).run();
-    if (!r.converged) continue;
-    const double cost = explained_cost(r, options);
-    if (!(cost < lowest * (1 - 1e-9))) continue;
-    lowest = cost;
-    const double median = r.coarse.median_distance;  // of this start
-    r.coarse = search;
-    r.coarse.transform = start;
-    r.coarse.median_distance = median;
-    best = std::move(r);
-  }
-  return best;
+  RegistrationResult first = run_registration(finder, set, plan, options);
+  if (!options.multi_start_few || set.points.size() >= options.coarse.few_points) return first;
+  return search_few_points(std::move(first), finder, set, plan, options);
 }
 
 }  // namespace furrow

@@ -123,15 +123,10 @@ struct RegistrationOptions {
   // alignment, when its best fit is computed beside it): used instead of the
   // coarse search; none: coarse_alignment.
   //
-  // Few points without ids (fewer than coarse.few_points, started by the
-  // global search): a handful of points on a symmetric part, one of them a
-  // blunder, can lead the fine fit from the best coarse placement into a
-  // wrong local minimum that keeps the blunder and drops good points. The
-  // fit is then run from every other refined placement too
-  // (CoarseResult::alternatives), and the result that explains the points
-  // best is kept: the least sum over all points of min(d_i^2, T^2), T the
-  // outlier floor (a point without a foot counts T^2). The coarse result
-  // reported stays the search's, with the start that won.
+  // Few points (fewer than coarse.few_points): the fit is run again from
+  // other starts and the one that explains the points best is kept, and
+  // outliers the points cannot tell apart are reported
+  // (few_point_search.hpp).
   bool multi_start_few = true;
   std::optional<Eigen::Isometry3d> start;
   // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
@@ -172,6 +167,10 @@ struct RegistrationResult {
   std::optional<Eigen::Matrix<double, 6, 6>> covariance;  // rx ry rz [rad], tx ty tz [mm]
   std::string covariance_status;        // "ok", "not computed", or why it is missing
   std::vector<RegisteredPoint> points;  // same order as the measurement set
+  // Few points: indices of points that another fit, as good, flags where
+  // this one keeps them or keeps where this one flags them - which are the
+  // blunders the points cannot tell (few_point_search.hpp). Sorted.
+  std::vector<std::size_t> ambiguous_outliers;
   std::size_t in_fit_count() const;
 };
 

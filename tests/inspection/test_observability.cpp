@@ -51,7 +51,7 @@ Cloud plane_patch(const Eigen::Vector3d& origin) {
 }  // namespace
 
 TEST_CASE("observability: a plane leaves the two slides in it and the turn about its normal") {
-  for (const Eigen::Vector3d origin : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1000, -2000, 500)}) {
+  for (const Eigen::Vector3d& origin : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1000, -2000, 500)}) {
     CAPTURE(origin.transpose());
     const Cloud c = plane_patch(origin);
     const Observability o = analyse_observability(c.x, c.n, kAll, 1e-3);

@@ -1,0 +1,118 @@
+#include "inspection/few_point_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "inspection/registration_run.hpp"
+
+namespace furrow {
+
+namespace {
+
+// Normal score of the chi-square quantile that bounds an alternative's
+// scatter (99.9 %, one-sided).
+constexpr double kScatterScore = 3.09;
+
+// A converged fit, as the search compares them.
+struct Candidate {
+  double cost = 0;                  // sum of min(d^2, T^2) over all points
+  std::vector<std::size_t> flagged; // left out by the outlier rule (not for want of a foot)
+  double squares = 0;               // sum of d^2 over the points in the fit
+  double nu = 0;                    // points in the fit less motions fitted
+};
+
+Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
+  const double t2 = o.outlier_floor * o.outlier_floor;
+  Candidate c;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const RegisteredPoint& p = r.points[i];
+    const bool footless = p.outlier == OutlierReason::no_foot_point || !std::isfinite(p.deviation);
+    c.cost += footless ? t2 : std::min(p.deviation * p.deviation, t2);
+    if (p.in_fit) {
+      c.squares += p.deviation * p.deviation;
+      c.nu += 1;
+    } else if (!footless) {
+      c.flagged.push_back(i);
+    }
+  }
+  c.nu -= r.fitted_dof;
+  return c;
+}
+
+// The points flagged by one fit and kept by the other (both sorted).
+std::vector<std::size_t> exchanged(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
+  std::vector<std::size_t> out;
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+}  // namespace
+
+double chi_square_quantile(double nu, double z) {
+  const double h = 2 / (9 * nu);
+  return nu * std::pow(std::max(0.0, 1 - h + z * std::sqrt(h)), 3);
+}
+
+RegistrationResult search_few_points(RegistrationResult first, const ClosestPointFinder& finder,
+                                     const MeasurementSet& set, const InspectionPlan* plan,
+                                     const RegistrationOptions& options) {
+  const CoarseResult coarse = first.coarse;
+  std::vector<Candidate> tried;
+  RegistrationResult best = std::move(first);
+  double lowest = std::numeric_limits<double>::infinity();
+  if (best.converged) {
+    tried.push_back(describe(best, options));
+    lowest = tried.back().cost;
+  }
+  const auto consider = [&](RegistrationResult r, const Eigen::Isometry3d& start, bool search_start) {
+    if (!r.converged) return;
+    tried.push_back(describe(r, options));
+    const double cost = tried.back().cost;
+    if (!(cost < lowest * (1 - 1e-9))) return;  // ties to the earlier
+    lowest = cost;
+    const double median = r.coarse.median_distance;  // of this start
+    r.coarse = coarse;
+    if (search_start) {
+      r.coarse.transform = start;
+      r.coarse.median_distance = median;
+    }
+    best = std::move(r);
+  };
+  RegistrationOptions o = options;
+  o.progress = nullptr;
+  if (!options.start && coarse.method == CoarseMethod::global_search)
+    for (const Eigen::Isometry3d& start : coarse.alternatives) {
+      o.start = start;
+      consider(run_registration(finder, set, plan, o), start, true);
+    }
+  if (!best.converged) return best;
+  const Candidate winner = describe(best, options);
+  if (!winner.flagged.empty()) {
+    o.start = best.transform;
+    const Eigen::Isometry3d from = best.transform;
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < best.points.size(); ++i)
+      if (best.points[i].in_fit) kept.push_back(i);
+    for (const std::size_t i : kept) consider(run_registration(finder, set, plan, o, i), from, false);
+  }
+
+  const Candidate final = describe(best, options);
+  if (final.flagged.empty() || !(final.nu >= 1)) return best;
+  const double variance = final.squares / final.nu;
+  std::vector<std::size_t> ambiguous;
+  for (const Candidate& c : tried) {
+    if (c.flagged.size() != final.flagged.size() || c.flagged == final.flagged || !(c.nu >= 1)) continue;
+    if (!(c.squares <= variance * chi_square_quantile(c.nu, kScatterScore))) continue;
+    const std::vector<std::size_t> more = exchanged(c.flagged, final.flagged);
+    ambiguous.insert(ambiguous.end(), more.begin(), more.end());
+  }
+  std::sort(ambiguous.begin(), ambiguous.end());
+  ambiguous.erase(std::unique(ambiguous.begin(), ambiguous.end()), ambiguous.end());
+  best.ambiguous_outliers = std::move(ambiguous);
+  return best;
+}
+
+}  // namespace furrow

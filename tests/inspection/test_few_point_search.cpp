@@ -1,0 +1,169 @@
+// The search after a registration of few points (few_point_search.hpp),
+// on the case that needs every part of it: eight points without ids on a
+// full bore (four around the axis at two heights), one of them a blunder.
+// Each ring of four has its centre free, so a blunder on one point can be
+// moved onto the opposite point by shifting the centre: the data cannot
+// tell the two apart. Oracle: a least-squares cylinder fit written here
+// (analytic axis and radius, Gauss-Newton) of every single-outlier
+// hypothesis, judged by the rule of the header - no registration code.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "inspection/comparison_file.hpp"
+#include "inspection/few_point_search.hpp"
+#include "inspection/measurement_simulation.hpp"
+#include "inspection/registration.hpp"
+#include "io/plan_file.hpp"
+#include "support/run_cli.hpp"
+#include "support/weak_shapes.hpp"
+
+using namespace furrow;
+
+namespace {
+
+constexpr double kBoreRadius = 15;  // weak_shapes.hpp: axis the y axis
+constexpr double kProbeRadius = 1;  // ball of 2 mm
+
+// The measurement of the corpus case (test_registration_corpus.cpp: 4 x 2
+// points, the quarter turn, seed 402).
+struct BoreCase {
+  test::WeakShape shape = test::weak_shapes(test::source_path("examples/parts/mould.json"))[3];
+  InspectionPlan plan;
+  SimulatedMeasurement m;
+  BoreCase() {
+    REQUIRE(std::string(shape.name) == "bore");
+    plan = grid_plan(shape.part, 4, 2, {"ball", 2 * kProbeRadius});
+    SimulationOptions sim;
+    sim.misalignment = {{1.5, -2, -97}, {-14, 20, -9}};
+    sim.noise_sigma = 0.002;
+    sim.blunders = 1;
+    sim.seed = 402;
+    sim.anonymous = true;
+    m = simulate_measurement(plan, sim);
+  }
+};
+
+RegistrationOptions corpus_options() {
+  RegistrationOptions o;
+  o.loss_scale = 0.025;
+  o.outlier_floor = 0.025;
+  return o;
+}
+
+// Least-squares cylinder of radius `radius` through `q`: axis through
+// (a, 0, b) along (c, 1, d) normalised, from the y axis; residuals are the
+// distances from the axis less the radius. Returns the sum of squares and
+// (in `residual`) every point's residual, `left_out` included.
+double fit_cylinder(const std::vector<Eigen::Vector3d>& q, std::size_t left_out, double radius,
+                    std::vector<double>& residual) {
+  Eigen::Vector4d x = Eigen::Vector4d::Zero();
+  const auto residuals = [&](const Eigen::Vector4d& p) {
+    const Eigen::Vector3d point(p(0), 0, p(1));
+    const Eigen::Vector3d axis = Eigen::Vector3d(p(2), 1, p(3)).normalized();
+    std::vector<double> r(q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) r[i] = (q[i] - point).cross(axis).norm() - radius;
+    return r;
+  };
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const std::vector<double> r0 = residuals(x);
+    Eigen::MatrixXd j(q.size() - 1, 4);
+    Eigen::VectorXd r(q.size() - 1);
+    for (int k = 0; k < 4; ++k) {
+      Eigen::Vector4d h = x;
+      h(k) += 1e-7;
+      const std::vector<double> r1 = residuals(h);
+      for (std::size_t i = 0, row = 0; i < q.size(); ++i)
+        if (i != left_out) j(static_cast<Eigen::Index>(row++), k) = (r1[i] - r0[i]) / 1e-7;
+    }
+    for (std::size_t i = 0, row = 0; i < q.size(); ++i)
+      if (i != left_out) r(static_cast<Eigen::Index>(row++)) = r0[i];
+    const Eigen::Vector4d step = j.colPivHouseholderQr().solve(-r);
+    x += step;
+    if (step.norm() < 1e-13) break;
+  }
+  residual = residuals(x);
+  double sum = 0;
+  for (std::size_t i = 0; i < q.size(); ++i)
+    if (i != left_out) sum += residual[i] * residual[i];
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("few points: a blunder on a bore of four points per ring is ambiguous, as every single-outlier fit says") {
+  const BoreCase bore;
+  const ClosestPointFinder finder(bore.shape.part);
+  const RegistrationResult r = register_measurements(finder, bore.m.set, nullptr, corpus_options());
+  REQUIRE(r.converged);
+
+  // The probe centres in the part frame of the result: a cylinder of radius
+  // 14 about an axis near the y axis (inside the bore).
+  std::vector<Eigen::Vector3d> q;
+  for (const MeasuredPoint& p : bore.m.set.points) q.push_back(r.transform * p.xyz);
+  const std::size_t n = q.size();
+  std::vector<double> squares(n);
+  std::vector<bool> flagged(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<double> residual;
+    squares[j] = fit_cylinder(q, j, kBoreRadius - kProbeRadius, residual);
+    // The left-out point must be one the outlier rule flags: beyond the
+    // floor (0.025 mm; the robust sigma of micrometre noise is far below).
+    flagged[j] = std::abs(residual[j]) > 0.025;
+  }
+  const std::size_t best = static_cast<std::size_t>(std::min_element(squares.begin(), squares.end()) - squares.begin());
+  const double nu = static_cast<double>(n) - 1 - 4;  // 7 points, 4 motions (slide and turn along the axis free)
+  const double bound = squares[best] / nu * chi_square_quantile(nu, 3.09);
+  std::vector<std::size_t> expected;
+  for (std::size_t j = 0; j < n; ++j)
+    if (flagged[j] && squares[j] <= bound) expected.push_back(j);
+  CAPTURE(squares[best]);
+  CAPTURE(bound);
+
+  // The oracle finds the blunder and one more point (the ring's opposite).
+  REQUIRE(expected.size() == 2);
+  std::size_t blunder = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (bore.m.blunder[i]) blunder = i;
+  CHECK(std::count(expected.begin(), expected.end(), blunder) == 1);
+  CHECK(r.ambiguous_outliers == expected);
+  // The result keeps one of them out and the fit is the oracle's.
+  std::size_t out = n;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!r.points[i].in_fit) out = i;
+  REQUIRE(out < n);
+  CHECK(std::count(expected.begin(), expected.end(), out) == 1);
+  double sum = 0;
+  for (const RegisteredPoint& p : r.points)
+    if (p.in_fit) sum += p.deviation * p.deviation;
+  CHECK(sum == doctest::Approx(squares[out]).epsilon(1e-4));
+}
+
+TEST_CASE("few points: ambiguous outliers make compare exit 3 and name the points, never a verdict") {
+  const BoreCase bore;
+  const std::string dir = test::scratch_dir("few-point-ambiguous");
+  write_part_json(bore.shape.part, dir + "/bore.json");
+  InspectionPlan plan = bore.plan;
+  plan.part = dir + "/bore.json";
+  write_plan(plan, dir + "/plan.json");
+  const test::CliResult sim = test::run_furrow(
+      {"simulate-measurement", dir + "/bore.json", "--plan", dir + "/plan.json", "--out", dir + "/m.csv",
+       "--misalign", "1.5,-2,-97,-14,20,-9", "--noise", "0.002", "--blunders", "1", "--seed", "402", "--anonymous"});
+  REQUIRE(sim.status == 0);
+  const test::CliResult r = test::run_furrow({"compare", dir + "/bore.json", "--measurements", dir + "/m.csv",
+                                              "--probe-diameter", "2", "--tolerance", "0.05", "--out", dir + "/comparison.json"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 3);
+  CHECK(r.out.find("PASS") == std::string::npos);
+  const ComparisonDocument doc = read_comparison(dir + "/comparison.json");
+  CHECK(doc.summary.verdict == Verdict::inconclusive);
+  CHECK(doc.summary.alignment == "ambiguous_outliers");
+  REQUIRE(doc.registration.ambiguous_outliers.size() == 2);
+  REQUIRE(doc.summary.inconclusive.size() == 1);
+  const std::string& text = doc.summary.inconclusive[0].text;
+  CHECK(text.find(doc.registration.ambiguous_outliers[0]) != std::string::npos);
+  CHECK(text.find(doc.registration.ambiguous_outliers[1]) != std::string::npos);
+}
