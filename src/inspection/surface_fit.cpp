@@ -22,6 +22,9 @@ namespace {
 // rejected step, so 40 of them span any scale a step can need.
 constexpr int kRejectedStepRetry = 40;
 
+// A model decrease below this share of the cost is round-off (solve()).
+constexpr double kNegligibleDecrease = 1e-12;
+
 // The first trust region of a solve (solve()) lies between these: Ceres'
 // own default, and one below which the problem has converged for any
 // motion a part can make.
@@ -255,7 +258,18 @@ int SurfaceFit::solve(std::string& message) {
     return std::any_of(summary.iterations.begin() + 1, summary.iterations.end(),
                        [](const ceres::IterationSummary& it) { return it.step_is_successful; });
   };
-  if (summary.termination_type == ceres::NO_CONVERGENCE && !taken()) {
+  // At the optimum every step is rejected too, for round-off: there the
+  // first step's model promised next to nothing (the cost change it
+  // predicted, change / relative decrease, below kNegligibleDecrease of the
+  // cost), and the parameters standing still is convergence.
+  const auto promised = [&] {
+    if (summary.iterations.size() < 2) return false;
+    const ceres::IterationSummary& first = summary.iterations[1];
+    if (!(first.relative_decrease != 0)) return true;
+    const double predicted = first.cost_change / first.relative_decrease;
+    return predicted > kNegligibleDecrease * summary.iterations[0].cost;
+  };
+  if (summary.termination_type == ceres::NO_CONVERGENCE && !taken() && promised()) {
     o.max_num_iterations = kRejectedStepRetry;
     o.initial_trust_region_radius =
         std::clamp(summary.iterations.back().trust_region_radius, kSmallestTrustRadius, kFirstTrustRadius);
