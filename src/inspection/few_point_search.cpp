@@ -89,8 +89,7 @@ RegistrationResult search_few_points(RegistrationResult first, const ClosestPoin
       consider(run_registration(finder, set, plan, o), start, true);
     }
   if (!best.converged) return best;
-  const Candidate winner = describe(best, options);
-  if (!winner.flagged.empty()) {
+  if (!describe(best, options).flagged.empty()) {
     o.start = best.transform;
     const Eigen::Isometry3d from = best.transform;
     std::vector<std::size_t> kept;

@@ -84,13 +84,7 @@ class MotionSubspace : public ceres::Manifold {
   }
   bool Minus(const double* y, const double* x, double* y_minus_x) const override {
     const Eigen::Map<const Vector6> to(y), from(x);
-    Vector6 difference = to - from;
-    if (frame_ == MotionFrame::twist) {
-      // The twist (w, v) with compose_twist((w, v), x) = y.
-      const Eigen::Matrix3d rw = rotation(to.head<3>()) * rotation(from.head<3>()).transpose();
-      difference.head<3>() = rotation_vector(rw);
-      difference.tail<3>() = to.tail<3>() - rw * from.tail<3>();
-    }
+    const Vector6 difference = frame_ == MotionFrame::twist ? twist_between(to, from) : Vector6(to - from);
     Eigen::Map<Eigen::VectorXd> out(y_minus_x, basis_.cols());
     out = left_inverse_ * difference;
     return true;
@@ -123,6 +117,14 @@ Matrix6 twist_to_parameters(const Vector6& x) {
   m.bottomLeftCorner<3, 3>() = -skew(x.tail<3>());
   m.bottomRightCorner<3, 3>().setIdentity();
   return m;
+}
+
+Vector6 twist_between(const Vector6& to, const Vector6& from) {
+  const Eigen::Matrix3d rw = rotation(to.head<3>()) * rotation(from.head<3>()).transpose();
+  Vector6 out;
+  out.head<3>() = rotation_vector(rw);
+  out.tail<3>() = to.tail<3>() - rw * from.tail<3>();
+  return out;
 }
 
 Vector6 compose_twist(const Vector6& twist, const Vector6& x) {

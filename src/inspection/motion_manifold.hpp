@@ -46,4 +46,8 @@ Eigen::Matrix<double, 6, 6> twist_to_parameters(const Eigen::Matrix<double, 6, 1
 Eigen::Matrix<double, 6, 1> compose_twist(const Eigen::Matrix<double, 6, 1>& twist,
                                           const Eigen::Matrix<double, 6, 1>& x);
 
+// The twist (w, v) with compose_twist((w, v), from) = to.
+Eigen::Matrix<double, 6, 1> twist_between(const Eigen::Matrix<double, 6, 1>& to,
+                                          const Eigen::Matrix<double, 6, 1>& from);
+
 }  // namespace furrow

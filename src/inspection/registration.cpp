@@ -78,6 +78,9 @@ constexpr double kExactlyFree = kUnseenRatio;
 // surface's own free motions from those the points leave free.
 constexpr int kObservabilityGrid = 24;
 
+// Halvings of an outer step that raised the true cost (backtrack()).
+constexpr int kBacktracks = 20;
+
 // Rounds of settling the held directions and re-fitting the others.
 constexpr int kSettleRounds = 20;
 
@@ -442,14 +445,38 @@ class RegistrationRun {
                    std::to_string(fitted_) + " degrees of freedom and check the rest";
         return;
       }
+      const double cost_before = fit_->cost();
       result_.solver_iterations += fit_->solve(solver_message_);
       ws_->project();
       if (!solver_message_.empty()) return;
+      backtrack(before, cost_before);
       if (motion(before, fit_->parameters(), reach_) <= options_.motion_tolerance) {
         result_.converged = true;
         return;
       }
     }
+  }
+
+  // The solve minimised the cost with the feet held; re-projected, the true
+  // cost can be higher - with few points the tangent planes let a step run
+  // far along a motion they barely see, and the next solve runs back: an
+  // outer loop that alternated between two placements 5 mm apart for good.
+  // So the step is halved, re-projected each time, until the true cost is
+  // no higher than before it (up to round-off), at most kBacktracks times;
+  // then it is taken back whole (nothing moved: the outer loop stops).
+  void backtrack(const Eigen::Matrix<double, 6, 1>& before, double cost_before) {
+    const double allowed = cost_before * (1 + 1e-12) + 1e-30;
+    if (!(fit_->cost() > allowed)) return;
+    const Eigen::Matrix<double, 6, 1> after = fit_->parameters();
+    double t = 1;
+    for (int k = 0; k < kBacktracks; ++k) {
+      t /= 2;
+      fit_->set_parameters(fit_->between(before, after, t));
+      ws_->project();
+      if (!(fit_->cost() > allowed)) return;
+    }
+    fit_->set_parameters(before);
+    ws_->project();
   }
 
   void fit_with_outlier_passes() {

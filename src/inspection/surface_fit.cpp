@@ -214,6 +214,25 @@ Eigen::Matrix<double, 1, 6> SurfaceFit::jacobian(std::size_t i) const {
   return basis_.cols() == 6 ? j : j * projector();
 }
 
+double SurfaceFit::cost() const {
+  // Summed in point order: the same bits whatever the threads did before.
+  double sum = 0;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (!points_[i].active) continue;
+    const double r = residual(i);
+    double rho[3] = {r * r, 1, 0};
+    if (const ceres::LossFunction* loss = impl_->loss.get(); loss) loss->Evaluate(r * r, rho);
+    sum += rho[0];
+  }
+  return sum / 2;
+}
+
+Eigen::Matrix<double, 6, 1> SurfaceFit::between(const Eigen::Matrix<double, 6, 1>& from,
+                                                 const Eigen::Matrix<double, 6, 1>& to, double t) const {
+  if (frame_ == MotionFrame::parameters) return from + t * (to - from);
+  return compose_twist(t * twist_between(to, from), from);
+}
+
 void SurfaceFit::set_loss(RobustLoss loss, double loss_scale) {
   impl_->loss->Reset(make_loss(loss, loss_scale), ceres::TAKE_OWNERSHIP);
 }

@@ -94,6 +94,15 @@ class SurfaceFit {
   // squares, see registration.hpp).
   void set_loss(RobustLoss loss, double loss_scale);
 
+  // Half the sum over the active points of the loss of their residuals, as
+  // Ceres counts cost: with feet just projected, the true distances' cost.
+  double cost() const;
+  // The parameters a share `t` of the way from `from` to `to` along the
+  // allowed motions (a straight line in the parameters, or the twist
+  // scaled, motion_manifold.hpp).
+  Eigen::Matrix<double, 6, 1> between(const Eigen::Matrix<double, 6, 1>& from,
+                                      const Eigen::Matrix<double, 6, 1>& to, double t) const;
+
   // Solves from the current parameters; returns the Ceres iterations used.
   // `message` receives Ceres' termination text when it is not a success.
   int solve(std::string& message);

@@ -66,6 +66,7 @@ TEST_CASE("motion manifold: a twist moves the corrected points by that rigid mot
     // The oracle: the twist's motion applied after the correction's.
     const Eigen::Vector3d expected = motion_of(twist) * (motion_of(x) * y);
     DOCTEST_CHECK((motion_of(after) * y - expected).norm() < 1e-9);
+    DOCTEST_CHECK((twist_between(after, x) - twist).norm() < 1e-9);
   }
 }
 
