@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "inspection/coarse_alignment.hpp"
 #include "inspection/registration_run.hpp"
 
 namespace furrow {
@@ -15,6 +16,10 @@ namespace {
 // Normal score of the chi-square quantile that bounds an alternative's
 // scatter (99.9 %, one-sided).
 constexpr double kScatterScore = 3.09;
+
+// Up to this many points without ids the global search is also run
+// without each point in turn (search_few_points).
+constexpr std::size_t kLeaveOutSearchPoints = 16;
 
 // A converged fit, as the search compares them.
 struct Candidate {
@@ -88,6 +93,19 @@ RegistrationResult search_few_points(RegistrationResult first, const ClosestPoin
       o.start = start;
       consider(run_registration(finder, set, plan, o), start, true);
     }
+  // Very few points: one blunder can move the whole coarse search, so it
+  // runs again without each point in turn, and the fit from its placement
+  // leaves that point out of its first pass.
+  if (!options.start && coarse.method == CoarseMethod::global_search &&
+      set.points.size() <= kLeaveOutSearchPoints) {
+    for (std::size_t i = 0; i < set.points.size(); ++i) {
+      MeasurementSet without = set;
+      without.points.erase(without.points.begin() + static_cast<std::ptrdiff_t>(i));
+      const CoarseResult placed = coarse_global_search(finder, without, options.coarse);
+      o.start = placed.transform;
+      consider(run_registration(finder, set, plan, o, i), placed.transform, true);
+    }
+  }
   if (!best.converged) return best;
   if (!describe(best, options).flagged.empty()) {
     o.start = best.transform;

@@ -9,6 +9,10 @@
 // Fits tried besides the first:
 //   * without ids (the first started by the global search): one from every
 //     other placement the search refined (CoarseResult::alternatives);
+//   * without ids and at most 16 points: the global search run again
+//     without each point in turn (one blunder among so few can move every
+//     placement it refines), and a fit from its placement with that point
+//     left out of the first pass;
 //   * when the best fit so far flags points: one from its transform with
 //     each point it kept left out of the first pass in turn, so that a
 //     blunder the fit absorbed gets judged from a fit without it.
