@@ -337,5 +337,3 @@ TEST_CASE("registration corpus without ids: the plane and the ruled patch at 16 
       for (const Case& c : cases(shape.name, {{4, 4}, {6, 5}}, true, seed)) check_case(shape, c);
   }
 }
-
-
