@@ -1,11 +1,13 @@
 #include "inspection/few_point_search.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
 #include <vector>
 
+#include "base/numbers.hpp"
 #include "inspection/coarse_alignment.hpp"
 #include "inspection/registration_run.hpp"
 
@@ -27,6 +29,7 @@ struct Candidate {
   std::vector<std::size_t> flagged; // left out by the outlier rule (not for want of a foot)
   double squares = 0;               // sum of d^2 over the points in the fit
   double nu = 0;                    // points in the fit less motions fitted
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
 };
 
 Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
@@ -44,6 +47,7 @@ Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
     }
   }
   c.nu -= r.fitted_dof;
+  c.transform = r.transform;
   return c;
 }
 
@@ -117,6 +121,15 @@ RegistrationResult search_few_points(RegistrationResult first, const ClosestPoin
   }
 
   const Candidate final = describe(best, options);
+  // Another orientation that explains the points about as well: the coarse
+  // search's rule (CoarseOptions ambiguity_ratio, ambiguity_angle_deg) on
+  // the fits' robust costs. A search without one point can find the other
+  // side of a flat part without calling it ambiguous.
+  for (const Candidate& c : tried) {
+    const double angle = Eigen::AngleAxisd(final.transform.linear().transpose() * c.transform.linear()).angle();
+    if (angle > radians(options.coarse.ambiguity_angle_deg) && c.cost <= options.coarse.ambiguity_ratio * final.cost)
+      best.coarse.ambiguous = true;
+  }
   if (final.flagged.empty() || !(final.nu >= 1)) return best;
   const double variance = final.squares / final.nu;
   std::vector<std::size_t> ambiguous;

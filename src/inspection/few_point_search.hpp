@@ -21,6 +21,11 @@
 // foot counts T^2). Its coarse result is the first fit's, with the start
 // that won.
 //
+// Ambiguous orientation: another fit rotated more than the coarse search's
+// ambiguity angle from the best, with a robust cost within its ambiguity
+// ratio, makes the result's coarse.ambiguous true, as the search would
+// (a search without one point can find the other side of a flat part).
+//
 // Ambiguous outliers: another converged fit that flags as many points,
 // but other ones, and whose points in the fit scatter within what the
 // best fit's residual sigma allows (sum of squares below sigma^2 times the
