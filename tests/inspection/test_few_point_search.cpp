@@ -29,6 +29,20 @@ namespace {
 constexpr double kBoreRadius = 15;  // weak_shapes.hpp: axis the y axis
 constexpr double kProbeRadius = 1;  // ball of 2 mm
 
+// The corpus's misplacement (the quarter turn), 2 um noise, one blunder,
+// no ids.
+const Misalignment kQuarterTurn{{1.5, -2, -97}, {-14, 20, -9}};
+
+SimulatedMeasurement corpus_measurement(const InspectionPlan& plan, std::uint32_t seed) {
+  SimulationOptions sim;
+  sim.misalignment = kQuarterTurn;
+  sim.noise_sigma = 0.002;
+  sim.blunders = 1;
+  sim.seed = seed;
+  sim.anonymous = true;
+  return simulate_measurement(plan, sim);
+}
+
 // The measurement of the corpus case (test_registration_corpus.cpp: 4 x 2
 // points, the quarter turn, seed 402).
 struct BoreCase {
@@ -38,13 +52,7 @@ struct BoreCase {
   BoreCase() {
     REQUIRE(std::string(shape.name) == "bore");
     plan = grid_plan(shape.part, 4, 2, {"ball", 2 * kProbeRadius});
-    SimulationOptions sim;
-    sim.misalignment = {{1.5, -2, -97}, {-14, 20, -9}};
-    sim.noise_sigma = 0.002;
-    sim.blunders = 1;
-    sim.seed = 402;
-    sim.anonymous = true;
-    m = simulate_measurement(plan, sim);
+    m = corpus_measurement(plan, 402);
   }
 };
 
@@ -177,13 +185,7 @@ TEST_CASE("few points: ambiguous outliers make compare exit 3 and name the point
 TEST_CASE("few points: a blunder that moves the whole coarse search is found by searching without each point") {
   const test::WeakShape shape = test::weak_shapes(test::source_path("examples/parts/mould.json"))[3];
   const InspectionPlan plan = grid_plan(shape.part, 4, 2, {"ball", 2 * kProbeRadius});
-  SimulationOptions sim;
-  sim.misalignment = {{1.5, -2, -97}, {-14, 20, -9}};
-  sim.noise_sigma = 0.002;
-  sim.blunders = 1;
-  sim.seed = 602;
-  sim.anonymous = true;
-  const SimulatedMeasurement m = simulate_measurement(plan, sim);
+  const SimulatedMeasurement m = corpus_measurement(plan, 602);
   const ClosestPointFinder finder(shape.part);
   const RegistrationResult r = register_measurements(finder, m.set, nullptr, corpus_options());
   REQUIRE(r.converged);
@@ -206,13 +208,7 @@ TEST_CASE("few points: a blunder that moves the whole coarse search is found by 
 TEST_CASE("few points: an outer step that raises the true cost is halved, so the fit converges instead of alternating") {
   const test::WeakShape shape = test::weak_shapes(test::source_path("examples/parts/mould.json"))[3];
   const InspectionPlan plan = grid_plan(shape.part, 4, 2, {"ball", 2 * kProbeRadius});
-  SimulationOptions sim;
-  sim.misalignment = {{1.5, -2, -97}, {-14, 20, -9}};
-  sim.noise_sigma = 0.002;
-  sim.blunders = 1;
-  sim.seed = 602;
-  sim.anonymous = true;
-  const SimulatedMeasurement m = simulate_measurement(plan, sim);
+  const SimulatedMeasurement m = corpus_measurement(plan, 602);
   const ClosestPointFinder finder(shape.part);
   RegistrationOptions o = corpus_options();
   const RegistrationResult first = run_registration(finder, m.set, nullptr, o);
@@ -240,19 +236,13 @@ TEST_CASE("few points: a fit upside down on a flat part, found by a search witho
   const InspectionPlan plan = grid_plan(shape.part, 4, 2, {"ball", 2 * kProbeRadius});
   for (const std::uint32_t seed : {462u, 482u}) {
     CAPTURE(seed);
-    SimulationOptions sim;
-    sim.misalignment = {{1.5, -2, -97}, {-14, 20, -9}};
-    sim.noise_sigma = 0.002;
-    sim.blunders = 1;
-    sim.seed = seed;
-    sim.anonymous = true;
-    const SimulatedMeasurement m = simulate_measurement(plan, sim);
+    const SimulatedMeasurement m = corpus_measurement(plan, seed);
     const ClosestPointFinder finder(shape.part);
     const RegistrationResult r = register_measurements(finder, m.set, nullptr, corpus_options());
     REQUIRE(r.converged);
     // The error of the result after the planted placement: turned over
     // (its z axis pointing down) means upside down.
-    const Eigen::Isometry3d error = r.transform * sim.misalignment.part_to_cmm();
+    const Eigen::Isometry3d error = r.transform * kQuarterTurn.part_to_cmm();
     const bool upside_down = error.linear()(2, 2) < 0;
     CHECK((!upside_down || r.coarse.ambiguous));
   }
