@@ -173,6 +173,8 @@ TEST_CASE("comparison.json reader: errors name the file and the field") {
   refused("\"evaluated\":true", "\"evaluated\":false", "c.json: points[0].in_tolerance: must be null for a point not evaluated");
   refused("\"id\":\"P00002\"", "\"id\":\"P00001\"", "c.json: points[1].id: duplicate id \"P00001\"");
   refused("\"probe_diameter\"", "\"probe_diameter_mm\"", "c.json: options.probe_diameter: missing");
+  refused("\"ambiguous_outliers\": []", "\"ambiguous_outliers\": [7]",
+          "c.json: registration.ambiguous_outliers[0]: expected a point id (a string)");
   CHECK_THROWS_WITH_AS(read_comparison("/nonexistent/c.json"), doctest::Contains("/nonexistent/c.json"), InputError);
 }
 

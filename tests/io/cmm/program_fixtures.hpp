@@ -4,6 +4,7 @@
 // hand so the golden files check the writers, not the planner.
 #include "io/cmm/probe_program.hpp"
 #include "io/plan_file.hpp"
+#include "planning/alignment_moves.hpp"
 
 namespace furrow::test {
 
@@ -38,6 +39,14 @@ inline ProbeProgram tiny_program() {
   p.steps.push_back({point("P0002", 2, {15, 5, 5}, {0, 0, 1}), {{15, 5, 9}}});
   p.steps.push_back({point("P0003", 3, {10, 15, 5}, {0, 0.6, 0.8}), {{15, 5, 12}, {10, 17.4, 12}, {10, 17.4, 8.2}}});
   p.final_moves = {{10, 17.4, 12}};
+  return p;
+}
+
+// tiny_program() with `alignment`'s datum moves first, from (5, 5) over a
+// clearance plane at `clearance_z`.
+inline ProbeProgram tiny_program_with_alignment(const PartAlignment& alignment, double clearance_z) {
+  ProbeProgram p = tiny_program();
+  add_alignment_moves(p, alignment, clearance_z, {5, 5, clearance_z});
   return p;
 }
 

@@ -23,6 +23,7 @@
 #include "io/plan_file.hpp"
 #include "planning/alignment_moves.hpp"
 #include "planning/datum_selection.hpp"
+#include "cad_part_fixture.hpp"
 #include "program_fixtures.hpp"
 #include "support/run_cli.hpp"
 
@@ -57,19 +58,10 @@ double occ_distance(const TopoDS_Face& f, const Eigen::Vector3d& p) {
   return d.Value();
 }
 
-struct Fixture {
-  ReferenceModel model = make_reference_model();
-  Part part;
-  std::unique_ptr<ClosestPointFinder> finder;
-  ProbeGeometry probe;
-  AccessOptions access;
-  Fixture() {
-    const std::string path = scratch_dir("alignment-box") + "/box.step";
-    write_step(model.solids[0], path);
-    part = import_cad(path).part;
-    finder = std::make_unique<ClosestPointFinder>(part);
-    access.clearance_z = part.control_box().max().z() + probe.ball_radius + 2;
-  }
+struct Fixture : test::CadPart {
+  ReferenceModel model;
+  Fixture() : Fixture(make_reference_model()) {}
+  explicit Fixture(ReferenceModel m) : CadPart(m.solids[0], "alignment-box"), model(std::move(m)) {}
 };
 
 Fixture& box() {
@@ -177,8 +169,7 @@ TEST_CASE("named datums take the faces in the order given, a face that cannot se
   CHECK(boss.origin.y() == doctest::Approx(ReferenceGeometry::boss_y).epsilon(1e-9));
   CHECK(boss.datums[2].kind == DatumFeature::Kind::line);
   for (const PlannedPoint& p : boss.datums[1].points) CHECK(p.ijk.dot(p.xyz - boss.datums[1].origin) > 0);
-  ProbeProgram program = tiny_program();
-  add_alignment_moves(program, boss, f.access.clearance_z, {5, 5, f.access.clearance_z});
+  const ProbeProgram program = tiny_program_with_alignment(boss, f.access.clearance_z);
   CHECK(dmis_program_text(program).find("F(DATUM_B)=FEAT/CIRCLE,OUTER,CART,20.000000,30.000000,") != std::string::npos);
   // The dimple (a sphere) can be neither; a wall cannot be primary.
   named.faces = {a.datums[0].face, sphere, a.datums[2].face};
@@ -193,8 +184,7 @@ TEST_CASE("named datums take the faces in the order given, a face that cannot se
 TEST_CASE("programs measure the datums first, and the strict readers give back the same points") {
   Fixture& f = box();
   const PartAlignment a = choose_alignment(f.part, *f.finder, f.probe, f.access, {});
-  ProbeProgram p = tiny_program();
-  add_alignment_moves(p, a, f.access.clearance_z, {5, 5, f.access.clearance_z});
+  ProbeProgram p = tiny_program_with_alignment(a, f.access.clearance_z);
   const std::string dmi = dmis_program_text(p);
   const std::size_t datum_a = dmi.find("F(DATUM_A)=FEAT/PLANE,CART,");
   const std::size_t manual = dmi.find("D(MANUAL)=DATSET/FA(DATUM_A),ZDIR,ZORIG,FA(DATUM_B),");
@@ -251,9 +241,8 @@ TEST_CASE("a program on the first one's set-up recalls its saved alignment, and 
   CHECK_FALSE(back.alignment.has_value());
   // Not beside an alignment of its own, and only a label.
   Fixture& f = box();
-  ProbeProgram both = tiny_program();
-  add_alignment_moves(both, choose_alignment(f.part, *f.finder, f.probe, f.access, {}), f.access.clearance_z,
-                      {5, 5, f.access.clearance_z});
+  ProbeProgram both =
+      tiny_program_with_alignment(choose_alignment(f.part, *f.finder, f.probe, f.access, {}), f.access.clearance_z);
   both.recalled_alignment = "PART";
   CHECK_THROWS_WITH_AS(dmis_program_text(both), doctest::Contains("beside an alignment"), InputError);
   p.recalled_alignment = "PART)";
@@ -300,8 +289,7 @@ TEST_CASE("a part of one free-form face gets a manual best-fit alignment, docume
   const double side = std::min({(a.manual[0].xyz - a.manual[1].xyz).norm(), (a.manual[1].xyz - a.manual[2].xyz).norm(),
                                 (a.manual[2].xyz - a.manual[0].xyz).norm()});
   CHECK(side > 0.3 * mould.control_box().sizes().head<2>().minCoeff());
-  ProbeProgram p = tiny_program();
-  add_alignment_moves(p, a, access.clearance_z, {5, 5, access.clearance_z});
+  ProbeProgram p = tiny_program_with_alignment(a, access.clearance_z);
   const std::string dmi = dmis_program_text(p);
   CHECK(dmi.find("TEXT/MAN,'Touch M1 on face") < dmi.find("F(P0001)=FEAT"));
   const ProbeProgram back = parse_dmis_program(dmi, "mould.dmi");

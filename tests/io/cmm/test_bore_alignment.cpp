@@ -24,6 +24,7 @@
 #include "io/plan_file.hpp"
 #include "planning/alignment_moves.hpp"
 #include "planning/datum_selection.hpp"
+#include "cad_part_fixture.hpp"
 #include "program_fixtures.hpp"
 #include "support/run_cli.hpp"
 
@@ -48,20 +49,12 @@ TopoDS_Shape rounded_plate_with_bore() {
   return BRepAlgoAPI_Cut(plate, bore).Shape();
 }
 
-struct Fixture {
-  TopoDS_Shape shape = rounded_plate_with_bore();
-  Part part;
-  std::unique_ptr<ClosestPointFinder> finder;
-  ProbeGeometry probe;
-  AccessOptions access;
+struct Fixture : test::CadPart {
+  TopoDS_Shape shape;
   TopoDS_Face bore_face;
   std::vector<TopoDS_Face> faces;
-  Fixture() {
-    const std::string path = scratch_dir("alignment-bore") + "/plate.step";
-    write_step(shape, path);
-    part = import_cad(path).part;
-    finder = std::make_unique<ClosestPointFinder>(part);
-    access.clearance_z = part.control_box().max().z() + probe.ball_radius + 2;
+  Fixture() : Fixture(rounded_plate_with_bore()) {}
+  explicit Fixture(const TopoDS_Shape& s) : CadPart(s, "alignment-bore"), shape(s) {
     faces = faces_of(shape);
     for (const TopoDS_Face& f : faces) {
       BRepAdaptor_Surface s(f);
@@ -165,8 +158,7 @@ TEST_CASE("bore alignment: named faces, and a rounded end refused as a bore with
 TEST_CASE("bore alignment: DMIS measures the bore as a circle, sets both origins from it, and reads back") {
   Fixture& f = plate();
   const PartAlignment a = choose_alignment(f.part, *f.finder, f.probe, f.access, {});
-  ProbeProgram p = tiny_program();
-  add_alignment_moves(p, a, f.access.clearance_z, {5, 5, f.access.clearance_z});
+  ProbeProgram p = tiny_program_with_alignment(a, f.access.clearance_z);
   const std::string dmi = dmis_program_text(p);
   const std::size_t circle = dmi.find("F(DATUM_B)=FEAT/CIRCLE,INNER,CART,50.000000,25.000000,");
   REQUIRE(circle != std::string::npos);
