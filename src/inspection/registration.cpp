@@ -494,19 +494,27 @@ class RegistrationRun {
         if (motion(before, fit_->parameters(), reach_) <= options_.motion_tolerance) break;
         iterate(std::to_string(pass) + " settled");
       }
-      if (!options_.flag_outliers || !fine()) break;
-      std::vector<bool> usable;
-      numbers_ = classify(usable);
-      std::vector<bool> excluded(n_);
-      for (std::size_t i = 0; i < n_; ++i) excluded[i] = usable[i] && verdict_[i] != OutlierReason::none;
-      if (excluded == ws_->excluded) break;
-      if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) <= fitted_) break;
-      ws_->excluded = excluded;
-      fit_->set_loss(RobustLoss::none, options_.loss_scale);
-      for (std::size_t i = 0; i < n_; ++i)
-        fit_->set_foot(i, ws_->foot(i).point, ws_->foot(i).normal, usable[i] && !excluded[i],
-                       ws_->foot(i).converged && ws_->foot(i).location != FootLocation::interior);
+      if (!options_.flag_outliers || !fine() || !reclassify()) break;
     }
+  }
+
+  // The outlier rule on the converged fit; true when it changed which
+  // points are left out (they are then, and the rest re-fitted by plain
+  // least squares), false when it leaves them as they are - or would leave
+  // too few to check anything.
+  bool reclassify() {
+    std::vector<bool> usable;
+    numbers_ = classify(usable);
+    std::vector<bool> excluded(n_);
+    for (std::size_t i = 0; i < n_; ++i) excluded[i] = usable[i] && verdict_[i] != OutlierReason::none;
+    if (excluded == ws_->excluded) return false;
+    if (static_cast<int>(std::count(excluded.begin(), excluded.end(), false)) <= fitted_) return false;
+    ws_->excluded = excluded;
+    fit_->set_loss(RobustLoss::none, options_.loss_scale);
+    for (std::size_t i = 0; i < n_; ++i)
+      fit_->set_foot(i, ws_->foot(i).point, ws_->foot(i).normal, usable[i] && !excluded[i],
+                     ws_->foot(i).converged && ws_->foot(i).location != FootLocation::interior);
+    return true;
   }
 
   // The weak directions the points do see, released: the data decide them
@@ -544,6 +552,16 @@ class RegistrationRun {
     iterate("released");
     if (result_.converged && on_part_count() >= held_active && squares() <= held_squares * (1 + 1e-9)) {
       holding_ = Holding::exact_only;
+      // The released fit moved: its points are classified again, as the
+      // held fit's were. A point the held fit absorbed (few points: a
+      // blunder spread over the rest) can stand out only now, and would
+      // otherwise stay in the fit unflagged, whatever its residual.
+      for (int pass = 1; options_.flag_outliers && pass <= options_.max_outlier_passes; ++pass) {
+        if (!reclassify()) break;
+        ++result_.outlier_passes;
+        iterate("released." + std::to_string(pass));
+        if (!result_.converged || !fine()) break;
+      }
       return;
     }
     too_few_.clear();
