@@ -66,6 +66,20 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
                    "re-measure point " + id + ": its deviation " + micrometres(p.deviation) +
                        " is outside the zone, but the outlier rule suspects a blunder (" + p.outlier_detail + ")"});
   }
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const RegisteredPoint& p = pts[i];
+    if (!p.in_fit || !p.evaluated || !(p.redundancy < kCheckedRedundancy)) continue;
+    const std::string id = i < c.point_ids.size() ? c.point_ids[i] : std::to_string(i + 1);
+    const double reach = std::max(c.tolerance.upper(), -c.tolerance.lower());
+    const std::string hidden =
+        p.redundancy * 1e6 < reach ? "no deviation there would show"
+                                   : "a deviation of up to " + fixed(reach / p.redundancy, 3) +
+                                         " mm there would still read inside the zone";
+    out.push_back({"point_not_checked", id,
+                   "point " + id + " is not checked by the best fit: it fixes the alignment instead, only " +
+                       fixed(100 * p.redundancy, 1) + " % of a deviation there shows in its reading and " + hidden +
+                       "; measure more points around it (furrow remeasure), or align on datums"});
+  }
   if (c.gouges)
     for (const GougeSiteCheck& site : c.gouges->sites)
       if (site.status == GougeSiteStatus::not_measured)

@@ -11,7 +11,9 @@
 //   to be good: a point outside the zone that the outlier rule suspects of
 //   being a blunder (re-measure it), a predicted gouge site with no point on
 //   it, a plan region with fewer evaluated points than its minimum, or an
-//   alignment that the points do not determine (rank-deficient);
+//   alignment that the points do not determine (rank-deficient), or a
+//   point in the best fit that the fit follows instead of checking it (its
+//   redundancy, registration.hpp, below kCheckedRedundancy);
 // - PASS: neither. PASS is never given for what was not seen.
 // An alignment that did not succeed (not converged, too few points on the
 // part, or weakly constrained: a motion that the measured faces would fix
@@ -59,7 +61,7 @@ Verdict parse_verdict(const std::string& text, const std::string& where);
 // Why a comparison that found nothing bad still cannot pass.
 struct InconclusiveReason {
   // "suspected_blunder", "gouge_not_measured", "region_below_minimum",
-  // "alignment_undetermined" or "alignment_failed"
+  // "point_not_checked", "alignment_undetermined" or "alignment_failed"
   std::string kind;
   std::string subject;  // the point id, the gouge site id, "region N", or "" for the alignment
   std::string text;     // for people, saying what to do ("re-measure point P0006: ...")
@@ -132,6 +134,15 @@ struct CompareOptions {
   PredictionComparisonOptions prediction;  // used with a prediction only
   GougeConfirmationOptions gouges;         // likewise
 };
+
+// A point of the best fit with a smaller share of its deviation in its
+// reading (RegisteredPoint::redundancy) is not checked by the fit: a
+// deviation there moves the part instead of showing, ten times the
+// tolerance reads as less than the tolerance, and a blunder hides below
+// ten times the outlier limit. 0.1 is the bound of geodesy's reliability
+// analysis below which an observation is called uncontrolled
+// (docs/registration.md "Points the fit cannot check").
+constexpr double kCheckedRedundancy = 0.1;
 
 // The planner's default fewest points per region (PlannerOptions::
 // min_per_region) and the prediction comparison's "too few points" count.

@@ -143,6 +143,7 @@ struct ComparisonDocument {
     std::string foot_location;          // interior, domain_edge, trim_edge
     double deviation = 0;               // [mm]
     std::optional<double> uncertainty;  // 1-sigma from the registration covariance [mm]
+    std::optional<double> redundancy;   // share of a deviation that shows (RegisteredPoint), likewise
     bool evaluated = false;
     std::optional<bool> in_tolerance;   // unset for points not evaluated
     bool in_fit = false;

@@ -207,6 +207,7 @@ json point_json(const Comparison& c, const MeasurementSet& set, const Part& part
   j["foot_location"] = to_string(p.foot.location);
   j["deviation"] = jf::finite(p.deviation, "deviation");
   j["uncertainty"] = have_covariance ? jf::finite(p.uncertainty, "uncertainty") : json(nullptr);
+  j["redundancy"] = have_covariance ? jf::finite(p.redundancy, "redundancy") : json(nullptr);
   j["evaluated"] = p.evaluated;
   j["in_tolerance"] = p.evaluated ? json(bool(c.in_tolerance[i])) : json(nullptr);
   j["in_fit"] = p.in_fit;

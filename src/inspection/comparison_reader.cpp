@@ -178,6 +178,10 @@ ComparisonDocument::Point read_point(const JsonCursor& n) {
   p.foot_location = n.string("foot_location");
   p.deviation = n.number("deviation");
   p.uncertainty = n.nullable_number("uncertainty");
+  // Optional: files written before it was reported read as without it.
+  if (n.has("redundancy") && !n.is_null("redundancy")) p.redundancy = n.number("redundancy");
+  if (p.redundancy && !(*p.redundancy >= 0 && *p.redundancy <= 1))
+    throw InputError(n.path("redundancy") + ": must lie between 0 and 1");
   p.evaluated = n.boolean("evaluated");
   if (!n.is_null("in_tolerance")) p.in_tolerance = n.boolean("in_tolerance");
   if (p.evaluated != p.in_tolerance.has_value())

@@ -640,8 +640,14 @@ class RegistrationRun {
     if (auto c = fit_->covariance(result_.covariance_status)) {
       result_.covariance = (*c) * (result_.sigma * result_.sigma);
       for (std::size_t i = 0; i < n_; ++i) {
+        RegisteredPoint& p = result_.points[i];
         const Eigen::Matrix<double, 1, 6> j = fit_->jacobian(i);
-        result_.points[i].uncertainty = std::sqrt(std::max(0.0, (j * (*result_.covariance) * j.transpose())(0)));
+        p.uncertainty = std::sqrt(std::max(0.0, (j * (*result_.covariance) * j.transpose())(0)));
+        const double spread = (j * (*c) * j.transpose())(0);
+        // Leverage h = w J C J^T: a deviation delta at the point moves the
+        // fit so that its own d changes by (1 - h) delta (docs/registration.md
+        // "Points the fit cannot check").
+        if (p.in_fit) p.redundancy = std::clamp(1 - fit_->loss_weight(i) * spread, 0.0, 1.0);
       }
     }
   }

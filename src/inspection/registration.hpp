@@ -139,6 +139,10 @@ struct RegisteredPoint {
   ClosestPoint foot;                                     // of `registered`
   double deviation = 0;    // d (above; bounded distance on a boundary) [mm]; + material left, - removed
   double uncertainty = 0;  // 1-sigma of d from the transform's covariance [mm]
+  // The share of a deviation at this point that stays in its d: 1 - its
+  // leverage in the fit (below). 1 for a point not in the fit, and where
+  // the covariance was not computed.
+  double redundancy = 1;
   OutlierReason outlier = OutlierReason::none;
   std::string outlier_detail;  // numbers behind the decision
   bool in_fit = true;          // took part in the final fit

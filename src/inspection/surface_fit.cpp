@@ -17,6 +17,19 @@ namespace furrow {
 
 namespace {
 
+// The square of the factor Ceres' loss correction puts on a one-residual
+// block's Jacobian row: J sqrt(rho') (1 - alpha) with alpha = 1 - sqrt(1 +
+// 2 s rho'' / rho'), and alpha = 0 where rho'' <= 0 (Cauchy, Huber) or s =
+// 0 (s the squared residual). 1 without a loss.
+double corrected_weight(const ceres::LossFunction* loss, double residual) {
+  const double sq = residual * residual;
+  double rho[3] = {sq, 1, 0};
+  if (loss) loss->Evaluate(sq, rho);
+  double weight = rho[1];
+  if (sq > 0 && rho[2] > 0) weight *= 1 + 2 * sq * rho[2] / rho[1];
+  return weight;
+}
+
 // Ceres iterations of the second attempt of a solve whose every step was
 // rejected (solve()): the trust region shrinks by factors 2, 4, 8, ... per
 // rejected step, so 40 of them span any scale a step can need.
@@ -308,6 +321,13 @@ void SurfaceFit::rebase() {
   parameters_.setZero();
 }
 
+double SurfaceFit::loss_weight(std::size_t i) const {
+  const double* params[1] = {parameters_.data()};
+  double residual = 0;
+  impl_->costs[i].Evaluate(params, &residual, nullptr);
+  return corrected_weight(impl_->loss.get(), residual);
+}
+
 std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& status) const {
   // Rank check first (ceres::Covariance would log to stderr and fail): a
   // motion still allowed whose share of displacement along the normals is
@@ -368,14 +388,7 @@ std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& s
     Eigen::Matrix<double, 1, 6> j = Eigen::Matrix<double, 1, 6>::Zero();
     double* jac[1] = {j.data()};
     impl_->costs[i].Evaluate(params, &residual, jac);
-    // Ceres' loss correction of a one-residual block: J sqrt(rho') (1 -
-    // alpha) with alpha = 1 - sqrt(1 + 2 s rho'' / rho'), and alpha = 0
-    // where rho'' <= 0 (Cauchy, Huber) or s = 0.
-    const double sq = residual * residual;
-    double rho[3] = {sq, 1, 0};
-    if (const ceres::LossFunction* loss = impl_->loss.get(); loss) loss->Evaluate(sq, rho);
-    double scale = std::sqrt(rho[1]);
-    if (sq > 0 && rho[2] > 0) scale *= std::sqrt(1 + 2 * sq * rho[2] / rho[1]);
+    const double scale = std::sqrt(corrected_weight(impl_->loss.get(), residual));
     if (restricted)
       stack.row(m + rows) = scale * (j * tangent_basis);
     else

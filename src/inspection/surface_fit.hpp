@@ -118,6 +118,10 @@ class SurfaceFit {
   // with `status` saying why (rank deficiency: the surface does not fix
   // every free parameter, or a singular value below 1e-7 of the largest).
   std::optional<Eigen::Matrix<double, 6, 6>> covariance(std::string& status) const;
+  // The weight the loss gives point i's row in covariance() at the current
+  // parameters (1 without a loss): its leverage in the fit is
+  // loss_weight(i) jacobian(i) C jacobian(i)^T, C = covariance().
+  double loss_weight(std::size_t i) const;
 
  private:
   struct Impl;

@@ -194,7 +194,7 @@ RemeasurePlan plan_remeasure(const Part& part, const ComparisonDocument& c, cons
   const auto plan_index = plan ? plan->index_by_id() : std::unordered_map<std::string, std::size_t>{};
   for (const InconclusiveReason& reason : c.summary.inconclusive) {
     RemeasureTarget target{reason.kind, reason.subject, {}, {}};
-    if (reason.kind == "suspected_blunder") {
+    if (reason.kind == "suspected_blunder" || reason.kind == "point_not_checked") {
       const auto k = c.points_by_id.find(reason.subject);
       if (k == c.points_by_id.end())
         throw InputError("the verdict names point " + reason.subject + ", which the comparison does not hold");
@@ -208,7 +208,9 @@ RemeasurePlan plan_remeasure(const Part& part, const ComparisonDocument& c, cons
         const DifferentialGeometry g = part.faces[static_cast<std::size_t>(p.face_index)].geometry(p.uv.x(), p.uv.y());
         centre = {p.id, static_cast<std::size_t>(p.face_index), p.uv, g.point, g.normal, p.region};
       }
-      builder.add(centre, target);
+      // A point the fit could not check was measured well: its neighbours
+      // are what it lacks.
+      if (reason.kind == "suspected_blunder") builder.add(centre, target);
       builder.ring(centre, target);
     } else if (reason.kind == "gouge_not_measured") {
       const GougeSiteCheck* site = nullptr;

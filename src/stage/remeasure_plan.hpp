@@ -23,6 +23,10 @@
 //                         3 mm would sit on its rim and see nothing),
 //                         beyond the ball radius of usual styli (a contact
 //                         of its own) and beyond a speck of dirt.
+//   point_not_checked P   the ring around P alone (P was measured well;
+//                         the best fit followed it for want of neighbours,
+//                         comparison.hpp kCheckedRedundancy): their
+//                         deviations show where P's could not.
 //   gouge_not_measured S  the site's uv-box centre (id S_C) and
 //                         `ring_points` points on the ellipse at half the
 //                         box's half-extents (S_R1..): all inside the

@@ -132,6 +132,8 @@ TEST_CASE("comparison.json round trip: every number read back is the one compute
     CHECK(p.deviation == q.deviation);
     REQUIRE(p.uncertainty.has_value());
     CHECK(*p.uncertainty == q.uncertainty);
+    REQUIRE(p.redundancy.has_value());
+    CHECK(*p.redundancy == q.redundancy);
     CHECK(p.evaluated == q.evaluated);
     CHECK(p.in_fit == q.in_fit);
     CHECK(p.in_tolerance.has_value() == q.evaluated);
@@ -175,6 +177,7 @@ TEST_CASE("comparison.json reader: errors name the file and the field") {
   refused("\"probe_diameter\"", "\"probe_diameter_mm\"", "c.json: options.probe_diameter: missing");
   refused("\"ambiguous_outliers\": []", "\"ambiguous_outliers\": [7]",
           "c.json: registration.ambiguous_outliers[0]: expected a point id (a string)");
+  refused("\"redundancy\":", "\"redundancy\":1.5,\"old\":", "c.json: points[0].redundancy: must lie between 0 and 1");
   CHECK_THROWS_WITH_AS(read_comparison("/nonexistent/c.json"), doctest::Contains("/nonexistent/c.json"), InputError);
 }
 

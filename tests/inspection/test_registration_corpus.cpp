@@ -166,6 +166,27 @@ void check_case(const test::WeakShape& shape, const Case& c) {
     return;
   }
 
+  // A blunder left in the fit unflagged must be one the data cannot show:
+  // the fit follows its point, so only the share r (the point's
+  // redundancy) of it is in the point's reading - below the outlier floor
+  // plus the noise there. The verdict does not pass such a point (r below
+  // kCheckedRedundancy, test_registration_redundancy.cpp); the checks
+  // below do not apply, the blunder being spread over the others.
+  bool hidden = false;
+  for (std::size_t i = 0; i < m.set.points.size(); ++i) {
+    if (!m.blunder[i] || r.points[i].outlier == OutlierReason::blunder) continue;
+    CAPTURE(i);
+    CAPTURE(r.points[i].redundancy);
+    CAPTURE(m.true_deviation[i]);
+    CHECK(r.points[i].in_fit);
+    CHECK(r.points[i].redundancy * std::abs(m.true_deviation[i]) < options.outlier_floor + 3.29 * kNoise);
+    hidden = true;
+  }
+  if (hidden) {
+    CHECK(n < 100);
+    return;
+  }
+
   // Every blunder flagged, every good point in the fit and evaluated.
   std::map<std::string, const PlannedPoint*> by_id;
   for (const PlannedPoint& p : plan.points) by_id[p.id] = &p;
@@ -323,6 +344,16 @@ TEST_CASE("registration corpus: 10 000 points on the full bore and the mould, wi
 TEST_CASE("registration corpus without ids: 8 points, every shape, 0 and 1 blunder") {
   for (const test::WeakShape& shape : shapes())
     for (const Case& c : cases(shape.name, {{4, 2}}, true, 400)) check_case(shape, c);
+}
+
+// The mould's two 8-point cases with a blunder that once failed: one
+// released its held motions and kept a 0.62 mm blunder unflagged, the other
+// has its blunder on a point of redundancy 0.05.
+TEST_CASE("registration corpus without ids: the mould at 8 points with a blunder, seeds 442 and 462") {
+  for (const test::WeakShape& shape : shapes())
+    if (std::string(shape.name) == "mould")
+      for (const std::uint32_t seed : {440u, 460u})
+        for (const Case& c : cases(shape.name, {{4, 2}}, true, seed)) check_case(shape, c);
 }
 
 // Found with ten seeds at 16 and 30 points: the flat shapes turned over
