@@ -71,9 +71,6 @@ std::size_t RegistrationResult::in_fit_count() const {
 
 namespace {
 
-// Motions not seen at all (observability.hpp) are held for good.
-constexpr double kExactlyFree = kUnseenRatio;
-
 // Cells per direction of the grid over each measured face that tells the
 // surface's own free motions from those the points leave free.
 constexpr int kObservabilityGrid = 24;
@@ -256,17 +253,12 @@ Observability observability_at_solution(const Part& part, const std::vector<Regi
 // what the steps hand on to each other.
 class RegistrationRun {
  public:
-  RegistrationRun(const ClosestPointFinder& finder, const MeasurementSet& set, const InspectionPlan* plan,
-                  const RegistrationOptions& options)
-      : finder_(finder), set_(set), plan_(plan), options_(options), n_(set.points.size()),
-        rule_{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours, options.neighbour_radius},
-        verdict_(set.points.size(), OutlierReason::none) {}
   // `left_out`: registration_run.hpp.
   RegistrationRun(const ClosestPointFinder& finder, const MeasurementSet& set, const InspectionPlan* plan,
-                  const RegistrationOptions& options, std::size_t left_out)
-      : RegistrationRun(finder, set, plan, options) {
-    left_out_ = left_out;
-  }
+                  const RegistrationOptions& options, std::size_t left_out = kNoPointLeftOut)
+      : finder_(finder), set_(set), plan_(plan), options_(options), n_(set.points.size()),
+        rule_{options.outlier_sigma, options.outlier_floor, options.confirm_neighbours, options.neighbour_radius},
+        verdict_(set.points.size(), OutlierReason::none), left_out_(left_out) {}
   RegistrationRun(const RegistrationRun&) = delete;
   RegistrationRun& operator=(const RegistrationRun&) = delete;
 
@@ -307,7 +299,7 @@ class RegistrationRun {
   }
   bool fine() const { return too_few_.empty() && solver_message_.empty(); }
   bool held(const WeakDirection& d) const {
-    return holding_ == Holding::all || (holding_ == Holding::exact_only && d.ratio < kExactlyFree);
+    return holding_ == Holding::all || (holding_ == Holding::exact_only && d.ratio < kUnseenRatio);
   }
 
   // Fewer points than free parameters: nothing to fit, and the coarse
@@ -528,7 +520,7 @@ class RegistrationRun {
     // symmetry (the turn about a bore's axis) comes out mixed with motions
     // the points do see, and holding that mixture would keep part of them
     // from the fit.
-    const MotionBasis release = observability_on_part(kExactlyFree).constrained;
+    const MotionBasis release = observability_on_part(kUnseenRatio).constrained;
     if (release.cols() == fit_->motion_basis().cols()) return;
     const Eigen::Matrix<double, 6, 1> held_parameters = fit_->parameters();
     const MotionBasis held_motion = fit_->motion_basis();
@@ -669,7 +661,7 @@ class RegistrationRun {
   std::vector<OutlierReason> verdict_;
   OutlierVerdict numbers_;
   std::vector<double> in_fit_;
-  std::size_t left_out_ = kNoPointLeftOut;
+  std::size_t left_out_;
 };
 
 }  // namespace
