@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "base/numbers.hpp"
 #include "inspection/coarse_alignment.hpp"
+#include "inspection/orientation_check.hpp"
 #include "inspection/registration_run.hpp"
 
 namespace furrow {
@@ -33,12 +33,11 @@ struct Candidate {
 };
 
 Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
-  const double t2 = o.outlier_floor * o.outlier_floor;
   Candidate c;
+  c.cost = fit_cost(r, o);
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const RegisteredPoint& p = r.points[i];
     const bool footless = p.outlier == OutlierReason::no_foot_point || !std::isfinite(p.deviation);
-    c.cost += footless ? t2 : std::min(p.deviation * p.deviation, t2);
     if (p.in_fit) {
       c.squares += p.deviation * p.deviation;
       c.nu += 1;
@@ -121,14 +120,15 @@ RegistrationResult search_few_points(RegistrationResult first, const ClosestPoin
   }
 
   const Candidate final = describe(best, options);
-  // Another orientation that explains the points about as well: the coarse
-  // search's rule (CoarseOptions ambiguity_ratio, ambiguity_angle_deg) on
-  // the fits' robust costs. A search without one point can find the other
-  // side of a flat part without calling it ambiguous.
-  for (const Candidate& c : tried) {
-    const double angle = Eigen::AngleAxisd(final.transform.linear().transpose() * c.transform.linear()).angle();
-    if (angle > radians(options.coarse.ambiguity_angle_deg) && c.cost <= options.coarse.ambiguity_ratio * final.cost)
-      best.coarse.ambiguous = true;
+  // Another orientation that explains the points about as well, decided on
+  // the fits (orientation_check.hpp), not on the coarse scores: a search
+  // without one point can find the other side of a flat part without
+  // calling it ambiguous, and the search's own call can be wrong.
+  if (coarse.method == CoarseMethod::global_search && !options.start) {
+    best.coarse.ambiguous = false;
+    for (const Candidate& c : tried)
+      if (another_orientation(final.transform, final.cost, c.transform, c.cost, options.coarse))
+        best.coarse.ambiguous = true;
   }
   if (final.flagged.empty() || !(final.nu >= 1)) return best;
   const double variance = final.squares / final.nu;

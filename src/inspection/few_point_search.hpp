@@ -16,15 +16,15 @@
 //   * when the best fit so far flags points: one from its transform with
 //     each point it kept left out of the first pass in turn, so that a
 //     blunder the fit absorbed gets judged from a fit without it.
-// The fit that explains the points best is kept: the least sum over all
-// points of min(d_i^2, T^2), T the outlier floor (MSAC; a point without a
-// foot counts T^2). Its coarse result is the first fit's, with the start
-// that won.
+// The fit that explains the points best is kept: the least robust cost
+// (orientation_check.hpp fit_cost). Its coarse result is the first fit's,
+// with the start that won.
 //
-// Ambiguous orientation: another fit rotated more than the coarse search's
-// ambiguity angle from the best, with a robust cost within its ambiguity
-// ratio, makes the result's coarse.ambiguous true, as the search would
-// (a search without one point can find the other side of a flat part).
+// Ambiguous orientation: after a global search the result's
+// coarse.ambiguous says whether another of these fits passes
+// orientation_check.hpp's another_orientation - whatever the search said
+// (a search without one point can find the other side of a flat part, and
+// the search's coarse scores can call a part with no symmetry ambiguous).
 //
 // Ambiguous outliers: another converged fit that flags as many points,
 // but other ones, and whose points in the fit scatter within what the

@@ -10,6 +10,7 @@
 #include "base/number_text.hpp"
 #include "base/error.hpp"
 #include "inspection/few_point_search.hpp"
+#include "inspection/orientation_check.hpp"
 #include "inspection/outlier_detection.hpp"
 #include "inspection/registration_run.hpp"
 #include "inspection/surface_sampling.hpp"
@@ -677,7 +678,8 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
   if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
     throw InputError("the weak-direction ratio must lie in (0, 1)");
   RegistrationResult first = run_registration(finder, set, plan, options);
-  if (!options.multi_start_few || set.points.size() >= options.coarse.few_points) return first;
+  if (!options.multi_start_few || set.points.size() >= options.coarse.few_points)
+    return settle_orientation(std::move(first), finder, set, plan, options);
   return search_few_points(std::move(first), finder, set, plan, options);
 }
 

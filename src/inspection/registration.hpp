@@ -126,7 +126,9 @@ struct RegistrationOptions {
   // Few points (fewer than coarse.few_points): the fit is run again from
   // other starts and the one that explains the points best is kept, and
   // outliers the points cannot tell apart are reported
-  // (few_point_search.hpp).
+  // (few_point_search.hpp). More points: a search that called its
+  // placement ambiguous is checked by a fit from its runner-up
+  // (orientation_check.hpp).
   bool multi_start_few = true;
   std::optional<Eigen::Isometry3d> start;
   // Called with a short note at each stage ("coarse start", "fit 1.3", ...)
