@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/number_text.hpp"
+#include "base/numbers.hpp"
 #include "base/error.hpp"
 #include "inspection/fixed_alignment.hpp"
 
@@ -109,28 +110,59 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
   return out;
 }
 
+// The points evaluated by both orientations of an ambiguous fit that one
+// puts inside the zone and the other outside.
+std::vector<std::size_t> orientation_dependent(const Comparison& c) {
+  std::vector<std::size_t> out;
+  const RegistrationResult& r = c.registration;
+  if (!r.coarse.ambiguous || !r.other_orientation) return out;
+  for (std::size_t i = 0; i < r.points.size() && i < r.other_orientation->deviation.size(); ++i) {
+    const std::optional<double>& other = r.other_orientation->deviation[i];
+    if (r.points[i].evaluated && other && c.tolerance.contains(r.points[i].deviation) != c.tolerance.contains(*other))
+      out.push_back(i);
+  }
+  return out;
+}
+
 // The alignment's state (the header's rule).
-std::string alignment_status(const RegistrationResult& r) {
+std::string alignment_status(const Comparison& c) {
+  const RegistrationResult& r = c.registration;
   if (r.outcome == FitOutcome::too_few_points) return "too_few_points";
   if (!r.converged) return "not_converged";
   if (!r.ambiguous_outliers.empty()) return "ambiguous_outliers";
   for (const WeakDirection& d : r.observability.weak)
     if (d.from_points) return "weakly_constrained";
+  if (!orientation_dependent(c).empty()) return "ambiguous_orientation";
   return "ok";
 }
 
+std::string point_list(const std::vector<std::size_t>& points, const std::vector<std::string>& ids) {
+  std::string s;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t i = points[k];
+    s += (k == 0 ? "" : k + 1 == points.size() ? " and " : ", ") + (i < ids.size() ? ids[i] : std::to_string(i + 1));
+  }
+  return s;
+}
+
 // What went wrong and how to constrain it, for people.
-std::string alignment_advice(const RegistrationResult& r, const std::string& status,
-                             const std::vector<std::string>& ids) {
-  if (status == "ambiguous_outliers") {
-    std::string s = "the points cannot tell which of points ";
-    for (std::size_t k = 0; k < r.ambiguous_outliers.size(); ++k) {
-      const std::size_t i = r.ambiguous_outliers[k];
-      s += (k == 0 ? "" : k + 1 == r.ambiguous_outliers.size() ? " and " : ", ") +
-           (i < ids.size() ? ids[i] : std::to_string(i + 1));
-    }
-    return s + " are blunders: fits that flag different ones of them explain the others equally well; "
-               "re-measure them, or measure more points";
+std::string alignment_advice(const Comparison& c, const std::string& status) {
+  const RegistrationResult& r = c.registration;
+  const std::vector<std::string>& ids = c.point_ids;
+  if (status == "ambiguous_outliers")
+    return "the points cannot tell which of points " + point_list(r.ambiguous_outliers, ids) +
+           " are blunders: fits that flag different ones of them explain the others equally well; "
+           "re-measure them, or measure more points";
+  if (status == "ambiguous_orientation") {
+    const double turn = Eigen::AngleAxisd(r.transform.linear() * r.other_orientation->transform.linear().transpose())
+                            .angle();
+    std::vector<std::size_t> points = orientation_dependent(c);
+    const std::size_t more = points.size() > 10 ? points.size() - 10 : 0;
+    points.resize(points.size() - more);
+    return "the points cannot tell the part's orientation: another one, turned " + fixed(degrees(turn), 1) +
+           " degrees from this, explains them as well, and it puts point" + (points.size() + more == 1 ? " " : "s ") +
+           point_list(points, ids) + (more ? " and " + std::to_string(more) + " more" : "") +
+           " on the other side of the zone; measure with the plan's ids (--plan), or align on datums";
   }
   if (status == "weakly_constrained") {
     std::string s = "the alignment is weakly constrained: the measured points do not fix the ";
@@ -198,10 +230,9 @@ void summarize(Comparison& c) {
     s.unexplained_overcuts = c.gouges->unexplained.size();
   }
   // An alignment that did not succeed cannot certify anything, good or bad.
-  const RegistrationResult& r = c.registration;
-  s.alignment = alignment_status(r);
+  s.alignment = alignment_status(c);
   if (s.alignment != "ok") {
-    s.inconclusive = {{"alignment_failed", "", alignment_advice(r, s.alignment, c.point_ids)}};
+    s.inconclusive = {{"alignment_failed", "", alignment_advice(c, s.alignment)}};
     s.verdict = Verdict::inconclusive;
   } else {
     const bool failed = s.evaluated == 0 || s.out_of_tolerance > 0 || s.confirmed_gouges > 0;

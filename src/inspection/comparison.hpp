@@ -16,8 +16,10 @@
 //   redundancy, registration.hpp, below kCheckedRedundancy);
 // - PASS: neither. PASS is never given for what was not seen.
 // An alignment that did not succeed (not converged, too few points on the
-// part, or weakly constrained: a motion that the measured faces would fix
-// but the points do not, registration.hpp) certifies nothing either way:
+// part, weakly constrained: a motion that the measured faces would fix but
+// the points do not, registration.hpp; or an orientation the points cannot
+// tell from another that puts some evaluated point on the other side of
+// the zone, orientation_check.hpp) certifies nothing either way:
 // the verdict is INCONCLUSIVE with the reason, and `alignment` says which,
 // so that the commands exit with 3 (the computation did not succeed).
 //
@@ -82,7 +84,8 @@ struct ComparisonSummary {
   std::size_t unexplained_overcuts = 0;   // clusters of UNEXPLAINED overcut (with a prediction)
   Verdict verdict = Verdict::fail;
   // "ok", or why the alignment did not succeed: "not_converged",
-  // "too_few_points", "ambiguous_outliers", "weakly_constrained".
+  // "too_few_points", "ambiguous_outliers", "weakly_constrained",
+  // "ambiguous_orientation".
   std::string alignment = "ok";
   std::vector<InconclusiveReason> inconclusive;  // set when verdict is inconclusive
   bool pass = false;                             // verdict == pass

@@ -219,9 +219,11 @@ ComparisonSummary read_summary(const JsonCursor& n) {
   if (n.has("alignment")) {
     s.alignment = n.string("alignment");
     if (s.alignment != "ok" && s.alignment != "not_converged" && s.alignment != "too_few_points" &&
-        s.alignment != "ambiguous_outliers" && s.alignment != "weakly_constrained")
+        s.alignment != "ambiguous_outliers" && s.alignment != "weakly_constrained" &&
+        s.alignment != "ambiguous_orientation")
       throw InputError(n.path("alignment") + ": unknown alignment state " + quote_field(s.alignment) +
-                       " (valid: ok, not_converged, too_few_points, ambiguous_outliers, weakly_constrained)");
+                       " (valid: ok, not_converged, too_few_points, ambiguous_outliers, weakly_constrained, "
+                       "ambiguous_orientation)");
   }
   if (n.has("inconclusive")) {
     const json& list = n.array("inconclusive");

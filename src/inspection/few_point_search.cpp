@@ -30,6 +30,7 @@ struct Candidate {
   double squares = 0;               // sum of d^2 over the points in the fit
   double nu = 0;                    // points in the fit less motions fitted
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
+  OtherOrientation orientation;     // the fit as another orientation of the kept one
 };
 
 Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
@@ -47,6 +48,7 @@ Candidate describe(const RegistrationResult& r, const RegistrationOptions& o) {
   }
   c.nu -= r.fitted_dof;
   c.transform = r.transform;
+  c.orientation = orientation_of(r);
   return c;
 }
 
@@ -125,10 +127,15 @@ RegistrationResult search_few_points(RegistrationResult first, const ClosestPoin
   // without one point can find the other side of a flat part without
   // calling it ambiguous, and the search's own call can be wrong.
   if (coarse.method == CoarseMethod::global_search && !options.start) {
-    best.coarse.ambiguous = false;
+    // The other orientation reported is the cheapest that passes.
+    const Candidate* other = nullptr;
     for (const Candidate& c : tried)
-      if (another_orientation(final.transform, final.cost, c.transform, c.cost, options.coarse))
-        best.coarse.ambiguous = true;
+      if (another_orientation(final.transform, final.cost, c.transform, c.cost, options.coarse) &&
+          (!other || c.cost < other->cost))
+        other = &c;
+    best.coarse.ambiguous = other != nullptr;
+    best.other_orientation.reset();
+    if (other) best.other_orientation = other->orientation;
   }
   if (final.flagged.empty() || !(final.nu >= 1)) return best;
   const double variance = final.squares / final.nu;

@@ -27,6 +27,15 @@ double fit_cost(const RegistrationResult& r, const RegistrationOptions& options)
   return cost;
 }
 
+OtherOrientation orientation_of(const RegistrationResult& fit) {
+  OtherOrientation o;
+  o.transform = fit.transform;
+  o.deviation.reserve(fit.points.size());
+  for (const RegisteredPoint& p : fit.points)
+    o.deviation.push_back(p.evaluated ? std::optional<double>(p.deviation) : std::nullopt);
+  return o;
+}
+
 bool another_orientation(const Eigen::Isometry3d& kept, double kept_cost, const Eigen::Isometry3d& other,
                          double other_cost, const CoarseOptions& options) {
   return turn_between(kept, other) > radians(options.ambiguity_angle_deg) &&
@@ -58,6 +67,7 @@ RegistrationResult settle_orientation(RegistrationResult first, const ClosestPoi
   if (!(other_cost < first_cost * (1 - 1e-9))) {
     first.coarse.ambiguous =
         another_orientation(first.transform, first_cost, other.transform, other_cost, options.coarse);
+    if (first.coarse.ambiguous) first.other_orientation = orientation_of(other);
     return first;
   }
   // The runner-up's fit explains the points better: it is the result, with
@@ -68,6 +78,7 @@ RegistrationResult settle_orientation(RegistrationResult first, const ClosestPoi
   other.coarse.median_distance = median;
   other.coarse.ambiguous =
       another_orientation(other.transform, other_cost, first.transform, first_cost, options.coarse);
+  if (other.coarse.ambiguous) other.other_orientation = orientation_of(first);
   return other;
 }
 

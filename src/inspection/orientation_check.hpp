@@ -22,11 +22,17 @@
 //     explains the points better is kept, and the result is ambiguous only
 //     if the other one passes another_orientation. Few points
 //     (few_point_search.hpp) apply the same rule to all their fits.
+// An ambiguous result carries the other fit's deviations
+// (RegistrationResult::other_orientation, from orientation_of): whether
+// the two disagree about the tolerance is the comparison's question
+// (comparison.hpp).
 #include "inspection/registration.hpp"
 
 namespace furrow {
 
 double fit_cost(const RegistrationResult& r, const RegistrationOptions& options);
+
+OtherOrientation orientation_of(const RegistrationResult& fit);
 
 bool another_orientation(const Eigen::Isometry3d& kept, double kept_cost, const Eigen::Isometry3d& other,
                          double other_cost, const CoarseOptions& options);

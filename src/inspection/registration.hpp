@@ -151,6 +151,14 @@ struct RegisteredPoint {
   bool evaluated = true;       // counts for the tolerance (false for blunders, beyond_edge, no foot)
 };
 
+// The fit of another orientation that explains the points about as well
+// as the result's (orientation_check.hpp): its transform and, per point,
+// its deviation where it evaluated the point.
+struct OtherOrientation {
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // CMM -> part
+  std::vector<std::optional<double>> deviation;                  // [mm], same order as the points
+};
+
 struct RegistrationResult {
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();                   // CMM -> part
   Eigen::Matrix<double, 6, 1> parameters = Eigen::Matrix<double, 6, 1>::Zero();  // last correction
@@ -177,6 +185,10 @@ struct RegistrationResult {
   // this one keeps them or keeps where this one flags them - which are the
   // blunders the points cannot tell (few_point_search.hpp). Sorted.
   std::vector<std::size_t> ambiguous_outliers;
+  // The other orientation's fit, when fits decided coarse.ambiguous
+  // (orientation_check.hpp); empty when not ambiguous, and when no fit
+  // checked the search's call (the first did not converge).
+  std::optional<OtherOrientation> other_orientation;
   std::size_t in_fit_count() const;
 };
 

@@ -6,14 +6,18 @@
 // leaving only the noise.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "base/numbers.hpp"
 #include "inspection/coarse_alignment.hpp"
+#include "inspection/comparison_file.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/orientation_check.hpp"
 #include "inspection/registration.hpp"
 #include "io/part_file.hpp"
+#include "io/plan_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/weak_shapes.hpp"
 
@@ -102,4 +106,82 @@ TEST_CASE("orientation: a plane stays ambiguous, both sides fitted to the noise"
     CHECK(another_orientation(r.transform, fit_cost(r, options), other.transform, fit_cost(other, options),
                               options.coarse));
   }
+}
+
+TEST_CASE("orientation: an ambiguous fit whose other orientation moves a point across the zone is not a verdict") {
+  const std::string dir = test::scratch_dir("orientation-verdict");
+  const Part plane = test::one_face("plane", make_plane({-50, -30, 0}, {100, 0, 0}, {0, 60, 0}));
+  write_part_json(plane, dir + "/plane.json");
+  InspectionPlan plan = grid_plan(plane, 20, 20, {"ruby 2 mm", 2});
+  plan.part = dir + "/plane.json";
+  write_plan(plan, dir + "/plan.json");
+  // A bump 30 um high and 16 mm across: +30 um the right way up, -30 um
+  // turned over.
+  const auto simulate = [&](const std::string& out, bool anonymous) {
+    std::vector<std::string> args = {"simulate-measurement", dir + "/plane.json", "--plan", dir + "/plan.json",
+                                     "--misalign", "0,0,180,20,-12,5", "--seed", "3", "--outliers", "0",
+                                     "--bump", "10,5,0,8,0.03", "--out", out};
+    if (anonymous) args.push_back("--anonymous");
+    REQUIRE(test::run_furrow(args).status == 0);
+  };
+  simulate(dir + "/anonymous.csv", true);
+  simulate(dir + "/ids.csv", false);
+  const auto compare = [&](const std::string& measurements, const std::vector<std::string>& zone,
+                           const std::string& out, bool with_plan) {
+    std::vector<std::string> args = {"compare", dir + "/plane.json", "--measurements", measurements,
+                                     "--probe-diameter", "2", "--out", out};
+    if (with_plan) args.insert(args.end(), {"--plan", dir + "/plan.json"});
+    args.insert(args.end(), zone.begin(), zone.end());
+    return test::run_furrow(args);
+  };
+  // Zone -10 / +40 um: the bump is inside read one way, outside the other.
+  const std::vector<std::string> unequal = {"--tolerance", "0.05", "--outside", "0.04"};
+  const test::CliResult guessed = compare(dir + "/anonymous.csv", unequal, dir + "/guessed.json", false);
+  INFO(guessed.out << guessed.err);
+  CHECK(guessed.status == 3);
+  const ComparisonDocument g = read_comparison(dir + "/guessed.json");
+  CHECK(g.summary.verdict == Verdict::inconclusive);
+  CHECK(g.summary.alignment == "ambiguous_orientation");
+  REQUIRE(g.summary.inconclusive.size() == 1);
+  CHECK(g.summary.inconclusive[0].text.find("cannot tell the part's orientation") != std::string::npos);
+  CHECK(guessed.out.find("cannot tell the part's orientation") != std::string::npos);
+  // The points named are the bump's: the ones whose reading, +h or -h
+  // with h the planted height there, leaves the zone one way.
+  // (Points within three noise sigmas of the zone's -10 um either way
+  // are not judged here.)
+  const std::string& text = g.summary.inconclusive[0].text;
+  const std::size_t from = text.find("puts point"), to = text.find(" on the other side");
+  REQUIRE(from != std::string::npos);
+  REQUIRE(to != std::string::npos);
+  std::string list = text.substr(text.find(' ', from + 5) + 1, to - text.find(' ', from + 5) - 1);
+  for (std::size_t at; (at = list.find(" and ")) != std::string::npos;) list.replace(at, 5, ", ");
+  std::set<std::string> named;
+  for (std::size_t start = 0; start <= list.size();) {
+    const std::size_t end = std::min(list.find(", ", start), list.size());
+    named.insert(list.substr(start, end - start));
+    start = end + 2;
+  }
+  std::size_t expected = 0;
+  for (const ComparisonDocument::Point& p : g.points) {
+    if (!p.evaluated) continue;
+    CAPTURE(p.id);
+    CAPTURE(p.deviation);
+    const double h = std::abs(p.deviation);
+    if (h > 0.01 + 3 * 0.002) {
+      CHECK(named.count(p.id) == 1);
+      ++expected;
+    } else if (h < 0.01 - 3 * 0.002) {
+      CHECK(named.count(p.id) == 0);
+    }
+  }
+  CHECK(expected >= 3);
+  // Zone +-35 um: inside either way, the verdict stands.
+  const test::CliResult both = compare(dir + "/anonymous.csv", {"--tolerance", "0.07"}, dir + "/both.json", false);
+  INFO(both.out << both.err);
+  CHECK(both.status == 0);
+  CHECK(read_comparison(dir + "/both.json").registration.coarse_ambiguous);
+  // With the plan's ids there is one orientation: the bump reads +30 um.
+  const test::CliResult ids = compare(dir + "/ids.csv", unequal, dir + "/ids.json", true);
+  INFO(ids.out << ids.err);
+  CHECK(ids.status == 0);
 }
