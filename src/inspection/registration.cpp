@@ -636,11 +636,13 @@ class RegistrationRun {
         RegisteredPoint& p = result_.points[i];
         const Eigen::Matrix<double, 1, 6> j = fit_->jacobian(i);
         p.uncertainty = std::sqrt(std::max(0.0, (j * (*result_.covariance) * j.transpose())(0)));
-        const double spread = (j * (*c) * j.transpose())(0);
         // Leverage h = w J C J^T: a deviation delta at the point moves the
         // fit so that its own d changes by (1 - h) delta (docs/registration.md
-        // "Points the fit cannot check").
-        if (p.in_fit) p.redundancy = std::clamp(1 - fit_->loss_weight(i) * spread, 0.0, 1.0);
+        // "Points the fit cannot check"). One that is not a number checks
+        // nothing: 0.
+        if (!p.in_fit) continue;
+        const double leverage = fit_->loss_weight(i) * (j * (*c) * j.transpose())(0);
+        p.redundancy = std::isfinite(leverage) ? std::clamp(1 - leverage, 0.0, 1.0) : 0.0;
       }
     }
   }
