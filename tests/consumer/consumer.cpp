@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <string>
 
-#include "base/error.hpp"
-#include "geometry/differential_geometry.hpp"
-#include "geometry/primitives.hpp"
-#include "io/cad/cad_import.hpp"
+#include <furrow/base/error.hpp>
+#include <furrow/geometry/differential_geometry.hpp>
+#include <furrow/geometry/primitives.hpp>
+#include <furrow/io/cad/cad_import.hpp>
 
 int main(int argc, char** argv) {
   if (argc > 1) {

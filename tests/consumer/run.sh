@@ -12,6 +12,14 @@ test -x "$work/prefix/bin/furrow"
 test -f "$work/prefix/share/man/man1/furrow.1"
 test -f "$work/prefix/share/bash-completion/completions/furrow"
 ls "$work"/prefix/lib*/libfurrow_core.a "$work"/prefix/lib*/libfurrow_core.so >/dev/null
+# Installed headers include one another as "furrow/...", never by a bare
+# module folder ("geometry/..."), which a consumer's own folders could shadow.
+modules='base|geometry|io|render|partition|machining|planning|inspection|report|stage|job'
+if grep -rEn "#include \"($modules)/" "$work"/prefix/include/furrow; then
+  echo "installed headers include Furrow's folders without the furrow/ prefix" >&2
+  exit 1
+fi
+test ! -e "$work/prefix/include/furrow/cli"
 cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/build" >/dev/null
 step="$here/../bad_inputs/cad/points_only.step"
