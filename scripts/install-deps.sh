@@ -14,6 +14,9 @@ packages=(
   # tests only: report.json is checked against its schema by an independent
   # validator; report.pdf's pages are rendered and read with poppler-utils
   python3-jsonschema poppler-utils
+  # tests only: every QIF document Furrow writes is validated against the
+  # official QIF 3.0 XSD with xmllint (docs/qif.md "Validity")
+  libxml2-utils
   # CI only: the sanitizer and fuzz build (docs/testing.md) - clang, its
   # sanitizer runtimes, libFuzzer and clang's OpenMP runtime
   clang-14 libclang-rt-14-dev libfuzzer-14-dev libomp-14-dev

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_cli.hpp"
+#include "io/qif/qif_schema.hpp"
 #include "report_fixture.hpp"
 
 using namespace furrow;
@@ -62,6 +63,7 @@ TEST_CASE("furrow report --record puts the record in the header and report.json 
   const std::string html = slurp(dir + "/out/report.html");
   CHECK(html.find("<div data-field=\"serial\"><span class=\"label\">Serial number</span>SN-0042</div>") <
         html.find("</header>"));
+  check_qif_valid_file(dir + "/out/results.qif");  // the QIF 3.0 XSD (docs/qif.md "Validity")
   const std::string qif = slurp(dir + "/out/results.qif");
   CHECK(qif.find("<AttributeStr name=\"part_number\" value=\"MOULD-100-A\"/>") != std::string::npos);
   CHECK(qif.find("<Name>J. Doe</Name>") != std::string::npos);

@@ -7,6 +7,7 @@
 
 #include "base/error.hpp"
 #include "io/qif/qif_points_reader.hpp"
+#include "io/qif/qif_schema.hpp"
 #include "report/inspection_record.hpp"
 #include "report/qa_report.hpp"
 #include "report_fixture.hpp"
@@ -146,26 +147,26 @@ TEST_CASE("the record is in the report header escaped and in report.json and res
   CHECK(report["record"].size() == 13);  // 12 fields + sign_off
 
   const std::string& qif = file(files, "results.qif");
+  test::check_qif_valid(qif, test::scratch_dir("record-qif") + "/results.qif");  // docs/qif.md "Validity"
   CHECK(qif.find("<InspectionOperator>\n            <Name>J. O'Neil</Name>") != std::string::npos);
-  CHECK(qif.find("<CustomerOrganization>\n            <Name>Acme &lt;Moulds&gt; &amp; Sons</Name>") !=
-        std::string::npos);
+  // QIF's CustomerOrganization and InspectionProgram require a customer
+  // number, a program standard and author: customer and program are attributes.
+  CHECK(qif.find("<AttributeStr name=\"customer\" value=\"Acme &lt;Moulds&gt; &amp; Sons\"/>") != std::string::npos);
+  CHECK(qif.find("<CustomerOrganization>") == std::string::npos);
   CHECK(qif.find("<ReportPreparer>\n            <Name>A. Prep</Name>") != std::string::npos);
   CHECK(qif.find("<AttributeStr name=\"serial\" value=\"SN 0042\"/>") != std::string::npos);
   CHECK(qif.find("<AttributeStr name=\"notes\" value=\"First article.&#10;Fixture B.\"/>") != std::string::npos);
   CHECK(qif.find("<AttributeStr name=\"checked_by\" value=\"B. Check\"/>") != std::string::npos);
   // Elements in the schema's sequence order.
-  const std::size_t customer = qif.find("<CustomerOrganization>"), program = qif.find("<InspectionProgram>"),
-                    op = qif.find("<InspectionOperator>"), preparer = qif.find("<ReportPreparer>"),
+  const std::size_t op = qif.find("<InspectionOperator>"), preparer = qif.find("<ReportPreparer>"),
                     date = qif.find("<ReportPreparationDate>"), attributes = qif.find("<Attributes n=\"");
-  CHECK(customer < program);
-  CHECK(program < op);
   CHECK(op < preparer);
   CHECK(preparer < date);
   CHECK(date < attributes);
   CHECK(attributes < qif.find("</InspectionTraceability>"));
-  // 9 fields without a QIF element of their own, checked_by, and the two
-  // sign-off dates given (empty ones are left out).
-  CHECK(qif.find("<Attributes n=\"12\">") != std::string::npos);
+  // Customer and program, 9 fields without a QIF element of their own,
+  // checked_by, and the two sign-off dates given (empty ones are left out).
+  CHECK(qif.find("<Attributes n=\"14\">") != std::string::npos);
   // The project's own QIF reader still reads the document's points.
   const QifMeasuredPoints back = parse_qif_points(qif, "results.qif");
   CHECK(back.points.size() == f.doc.points.size());

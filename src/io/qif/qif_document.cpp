@@ -1,16 +1,19 @@
 #include "io/qif/qif_document.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <regex>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "io/qif/qif_uuid.hpp"
+#include "io/qif/xs_decimal.hpp"
 
 // Element order: the xs:sequence of each type in the QIF 3.0 schema
-// (docs/qif.md lists them); tests/io/qif/test_qif_structure.cpp checks the
-// written documents against the same sequences.
+// (docs/qif.md lists them); tests/io/qif/ validate every written document
+// against the official XSD set with xmllint.
 
 namespace furrow {
 
@@ -22,6 +25,8 @@ const std::string kResultsQpid = "00000000-0000-0000-0000-00000000000r";
 // Stands for the time until the QPIds are derived: they identify the
 // content, which is the same for the same inputs whenever it was made.
 const std::string kTime = "0000-00-00T00:00:00 (time)";
+// The most digits an xs:decimal is written with (xs_decimal.hpp).
+constexpr int kDecimalDigits = 24;
 
 class Writer {
  public:
@@ -45,6 +50,8 @@ class Writer {
     text += ">\n";
   }
 
+  // An xs:double (the lists of PointType, UnitVectorType, ArrayPointType):
+  // the shortest round-trip text, an exponent allowed.
   void number(double v) {
     if (!std::isfinite(v)) throw std::invalid_argument("QIF: a non-finite number");
     char buf[32];
@@ -142,23 +149,49 @@ class Writer {
     text += name;
     text += '>';
   }
-  void value(const char* name, double v) {
+  // An xs:decimal element (LinearValueType, MeasuredLinearValueType,
+  // ProbeRadius): no exponent, within the 24 digits libxml2 validates
+  // (docs/qif.md "Numbers").
+  void decimal(const char* name, double v) {
     text += '<';
     text += name;
     text += '>';
-    number(v);
+    if (!std::isfinite(v)) throw std::invalid_argument(std::string("QIF: a non-finite ") + name);
+    append_xs_decimal(text, v, kDecimalDigits);
     text += "</";
     text += name;
     text += '>';
   }
 };
 
+// A file path as an xs:anyURI: a relative URI reference (RFC 3986) whose
+// bytes other than the unreserved characters and '/' are percent-encoded,
+// so that a name with '%', '[', '#' or a space is still a URI (and reads
+// back as the path by percent-decoding).
+std::string uri_reference(const std::string& path) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (char c : path) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u) != 0 && u < 0x80) {
+      out += c;
+    } else if (c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += c;
+    } else {
+      out += '%';
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    }
+  }
+  return out;
+}
+
 // Ids in document order; every block is numbered before the text is
 // written, so a reference ahead (a feature measurement to its point set)
 // is known when written.
 struct Ids {
   std::size_t n = 0;
-  std::size_t part = 1, feature_definition = 2;
+  std::size_t standard = 0, part = 0, feature_definition = 0;
   std::size_t nominal0 = 0, item0 = 0;
   std::size_t surface_definition = 0, point_definition = 0, surface_nominal = 0, point_nominal = 0;
   std::size_t surface_item = 0, point_item0 = 0;
@@ -170,12 +203,15 @@ struct Ids {
 Ids number_ids(const QifDocumentData& d, bool results) {
   Ids ids;
   ids.n = d.points.size();
-  std::size_t next = 3;
+  std::size_t next = 1;
   auto block = [&](std::size_t count) {
     const std::size_t first = next;
     next += count;
     return first;
   };
+  if (d.profile) ids.standard = block(1);
+  ids.part = block(1);
+  ids.feature_definition = block(1);
   ids.nominal0 = block(ids.n);
   ids.item0 = block(ids.n);
   const bool per_point = results && d.profile;
@@ -205,8 +241,9 @@ Ids number_ids(const QifDocumentData& d, bool results) {
 
 void write_head(Writer& w, const QifDocumentData& d, const Ids& ids, const char* scope) {
   w.text += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  // QIFDocumentType: QPId, Version?, Header?, FileUnits?, Product?,
-  // Features?, Characteristics?, Results? (QIFDocument.xsd).
+  // QIFDocumentType: QPId, Version?, Header?, StandardsDefinitions?,
+  // FileUnits?, Product?, Features?, Characteristics?, Plan?, Results?
+  // (QIFDocument.xsd).
   w.text += "<QIFDocument xmlns=\"";
   w.text += kQifNamespace;
   w.text += "\" versionQIF=\"3.0.0\" idMax=\"";
@@ -225,6 +262,23 @@ void write_head(Writer& w, const QifDocumentData& d, const Ids& ids, const char*
   w.leaf(2, "Description", d.description);
   w.leaf(2, "Scope", scope);
   w.close(1, "Header");
+  if (ids.standard) {
+    // The standard the characteristics are evaluated by (Characteristics'
+    // required FormalStandardId names it): the surface profile of ISO 1101,
+    // its zone of a width around the nominal, unequally disposed when an
+    // OuterDisposition is given (IntermediatesPMI.xsd StandardType:
+    // Organization, Designator, Title).
+    w.open_n(1, "StandardsDefinitions", 1);
+    w.open_id(2, "Standard", ids.standard);
+    w.text += '\n';
+    w.open(3, "Organization");
+    w.leaf(4, "StandardsOrganizationEnum", "ISO");
+    w.close(3, "Organization");
+    w.leaf(3, "Designator", "1101");
+    w.leaf(3, "Title", "Geometrical product specifications (GPS) - Geometrical tolerancing");
+    w.close(2, "Standard");
+    w.close(1, "StandardsDefinitions");
+  }
   // FileUnits: PrimaryUnits with the angular and the linear unit (Units.xsd).
   w.open(1, "FileUnits");
   w.open(2, "PrimaryUnits");
@@ -290,16 +344,20 @@ void write_features(Writer& w, const QifDocumentData& d, const Ids& ids) {
 void write_profile_definition(Writer& w, const char* name, std::size_t id, const QifProfile& profile) {
   // ProfileCharacteristicDefinitionBaseType: ToleranceValue, OuterDisposition?
   w.open_id(3, name, id);
-  w.value("ToleranceValue", profile.tolerance);
-  if (profile.outer_disposition) w.value("OuterDisposition", *profile.outer_disposition);
+  w.decimal("ToleranceValue", profile.tolerance);
+  if (profile.outer_disposition) w.decimal("OuterDisposition", *profile.outer_disposition);
   w.close_inline(name);
 }
 
 void write_characteristics(Writer& w, const QifDocumentData& d, const Ids& ids, bool per_point) {
   const QifProfile& profile = *d.profile;
-  // CharacteristicsType: CharacteristicDefinitions, CharacteristicNominals,
-  // CharacteristicItems (Characteristics.xsd).
+  // CharacteristicAspectsListsType: FormalStandardId,
+  // CharacteristicDefinitions, CharacteristicNominals, CharacteristicItems?
+  // (Characteristics.xsd).
   w.open(1, "Characteristics");
+  w.indent(2);
+  w.ref("FormalStandardId", ids.standard);
+  w.text += '\n';
   w.open_n(2, "CharacteristicDefinitions", per_point ? 2 : 1);
   write_profile_definition(w, "SurfaceProfileCharacteristicDefinition", ids.surface_definition, profile);
   if (per_point) write_profile_definition(w, "PointProfileCharacteristicDefinition", ids.point_definition, profile);
@@ -358,10 +416,15 @@ void status(Writer& w, const std::string& value) {
 
 void write_traceability(Writer& w, const QifDocumentData& d) {
   // InspectionTraceabilityType (Traceability.xsd), in its sequence order:
-  // ..., CustomerOrganization?, ..., InspectionProgram?, InspectionOperator?,
-  // ReportPreparer?, ReportPreparationDate?, ..., Attributes?.
+  // ..., InspectionOperator?, ReportPreparer?, ReportPreparationDate?, ...,
+  // Attributes?. The customer and the CMM program are attributes: QIF's
+  // CustomerOrganization requires a CustomerNumber and its InspectionProgram
+  // a FormalStandardId and an Author, which a record does not know.
   static const QifTraceability kNone;
   const QifTraceability& t = d.traceability ? *d.traceability : kNone;
+  std::vector<std::pair<std::string, std::string>> attributes_in_order = {{"customer", t.customer},
+                                                                          {"program", t.program}};
+  attributes_in_order.insert(attributes_in_order.end(), t.attributes.begin(), t.attributes.end());
   auto named = [&](const char* element, const std::string& name) {
     if (name.empty()) return;
     w.open(5, element);
@@ -369,21 +432,15 @@ void write_traceability(Writer& w, const QifDocumentData& d) {
     w.close(5, element);
   };
   w.open(4, "InspectionTraceability");
-  named("CustomerOrganization", t.customer);  // OrganizationType: Name first
-  if (!t.program.empty()) {
-    w.open(5, "InspectionProgram");  // InspectionProgramType: File (FileType: Name)
-    named("File", t.program);
-    w.close(5, "InspectionProgram");
-  }
   named("InspectionOperator", t.operator_name);  // EmployeeType: Name first
   named("ReportPreparer", t.report_preparer);
   if (d.time) w.placeholder(5, "ReportPreparationDate", kTime);
   std::size_t attributes = 0;
-  for (const auto& a : t.attributes) attributes += !a.second.empty();
+  for (const auto& a : attributes_in_order) attributes += !a.second.empty();
   if (attributes > 0) {
     // AttributesType: n, then AttributeStr with the name and value attributes.
     w.open_n(5, "Attributes", attributes);
-    for (const auto& [name, value] : t.attributes) {
+    for (const auto& [name, value] : attributes_in_order) {
       if (value.empty()) continue;
       w.indent(6);
       w.text += "<AttributeStr name=\"";
@@ -420,7 +477,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
     for (const QifFile& f : d.inputs) {
       // ExternalFileReferenceType: URI, FileSpec, Description.
       w.open(5, "ExternalFileReference");
-      w.leaf(6, "URI", f.path);
+      w.leaf(6, "URI", uri_reference(f.path));
       w.open(6, "FileSpec");
       w.leaf(7, "OtherFileSpec", f.role);
       w.close(6, "FileSpec");
@@ -458,7 +515,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
       w.text += "\">";
       w.vec("Points", *p.probe_centre);
       w.text += "<Compensated>false</Compensated>";
-      w.value("ProbeRadius", d.probe_radius);
+      w.decimal("ProbeRadius", d.probe_radius);
       w.close_inline("MeasuredPointSet");
     }
     w.close(4, "MeasuredPointSets");
@@ -485,7 +542,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
     w.close(7, "FeatureMeasurementIds");
     if (!d.profile->value) throw std::invalid_argument("QIF results: the profile has no measured value");
     w.indent(7);
-    w.value("Value", *d.profile->value);
+    w.decimal("Value", *d.profile->value);
     w.text += '\n';
     w.close(6, "SurfaceProfileCharacteristicMeasurement");
     for (std::size_t i = 0; i < ids.n; ++i) {
@@ -497,7 +554,7 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
       w.text += "<FeatureMeasurementIds n=\"1\">";
       w.ref("Id", ids.measurement0 + i);
       w.text += "</FeatureMeasurementIds>";
-      w.value("Value", *p.deviation);
+      w.decimal("Value", *p.deviation);
       w.close_inline("PointProfileCharacteristicMeasurement");
     }
     w.close(5, "CharacteristicMeasurements");
@@ -538,6 +595,14 @@ void write_results(Writer& w, const QifDocumentData& d, const Ids& ids) {
   w.close(1, "Results");
 }
 
+// TimeCreated and ReportPreparationDate are xs:dateTime; a caller's time
+// that is not one would make the document invalid.
+void check_time(const std::optional<std::string>& time) {
+  static const std::regex date_time(R"(-?[0-9]{4,}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}(\.[0-9]+)?(Z|[+-][0-9]{2}:[0-9]{2})?)");
+  if (time && !std::regex_match(*time, date_time))
+    throw std::invalid_argument("QIF: the time \"" + *time + "\" is not an ISO 8601 date and time (xs:dateTime)");
+}
+
 // The placeholders replaced by UUIDs derived from the text around them,
 // then the time's by the time. The UUIDs have the placeholders' length and
 // go in place; the time, when its length differs, costs one copy of the text.
@@ -546,13 +611,11 @@ void set_qpids(Writer& w, const std::optional<std::string>& time) {
   const std::string digest = qif_sha256_hex(text);
   const std::string document = uuid_from_content(digest + " QPId");
   const std::string results = uuid_from_content(digest + " ThisResultsInstanceQPId");
-  std::string escaped;
-  if (time)
-    for (char c : *time) escaped += (c == '<' || c == '>' || c == '&' || static_cast<unsigned char>(c) < 0x20) ? '?' : c;
+  const std::string& time_text = time ? *time : kTime;  // an xs:dateTime (check_time): nothing to escape
   auto replacement = [&](const std::string* which) -> const std::string& {
     if (which == &kDocumentQpid) return document;
     if (which == &kResultsQpid) return results;
-    return escaped;
+    return time_text;
   };
   bool same_length = true;
   for (const auto& [at, which] : w.placeholders) same_length &= replacement(which).size() == which->size();
@@ -561,7 +624,7 @@ void set_qpids(Writer& w, const std::optional<std::string>& time) {
     return;
   }
   std::string out;
-  out.reserve(text.size() + w.placeholders.size() * escaped.size());
+  out.reserve(text.size() + w.placeholders.size() * time_text.size());
   std::size_t from = 0;
   for (const auto& [at, which] : w.placeholders) {
     out.append(text, from, at - from);
@@ -575,6 +638,7 @@ void set_qpids(Writer& w, const std::optional<std::string>& time) {
 }  // namespace
 
 std::string qif_results_text(const QifDocumentData& d) {
+  check_time(d.time);
   const Ids ids = number_ids(d, true);
   Writer w;
   w.text.reserve(1400 * (d.points.size() + 4));  // about 1270 bytes a point: no reallocation
@@ -620,6 +684,7 @@ void write_plan(Writer& w, const QifDocumentData& d, const Ids& ids) {
 }
 
 std::string qif_plan_text(const QifDocumentData& d) {
+  check_time(d.time);
   const Ids ids = number_ids(d, false);
   Writer w;
   w.text.reserve(400 * (d.points.size() + 4));

@@ -7,12 +7,14 @@
 // their own layers (report/report_qif, io/qif/plan_qif,
 // io/cmm/measurement_qif), so this module needs nothing above io/.
 //
-// The text follows the QIF 3.0 schema (QIFDocument.xsd, QIFResults.xsd,
-// Features.xsd, Characteristics.xsd, Traceability.xsd): elements in the
-// order of each xs:sequence, every list with its `n` count, ids numbered
-// from 1 in document order with idMax the largest, every *Id reference to
-// an element of the document. Lengths are millimetres (FileUnits says so),
-// numbers in their shortest round-trip text.
+// The text is valid by the official QIF 3.0 XSD set (QIFDocument.xsd and
+// the files it includes; tests/io/qif/ run xmllint on every written
+// document): elements in the order of each xs:sequence, every list with its
+// `n` count, ids numbered from 1 in document order with idMax the largest,
+// every *Id reference to an element of the document. Lengths are
+// millimetres (FileUnits says so); numbers are the shortest text that reads
+// back to the same double, without an exponent in xs:decimal elements
+// (xs_decimal.hpp).
 //
 // Deterministic: the same data gives the same bytes. The document's QPId and
 // the results' ThisResultsInstanceQPId are UUIDs derived from the SHA-256 of
@@ -64,11 +66,13 @@ struct QifProfile {
 
 // Results only: who and what the inspection was about (Traceability.xsd,
 // InspectionTraceabilityType), from the report's inspection record. Fields
-// with a place of their own in QIF go there - CustomerOrganization/Name,
-// InspectionProgram/File/Name, InspectionOperator/Name, ReportPreparer/Name -
-// and the rest (part number, revision, serial, lot, CMM, probe,
-// qualification date, temperature, notes) into its Attributes as
-// AttributeStr name/value pairs, in the given order. Empty texts are left out.
+// whose QIF element the record can fill go there - InspectionOperator/Name,
+// ReportPreparer/Name - and the rest into its Attributes as AttributeStr
+// name/value pairs: "customer" and "program" first (QIF's
+// CustomerOrganization needs a CustomerNumber, its InspectionProgram a
+// FormalStandardId and an Author, which a record does not have), then
+// `attributes` in the given order (part number, revision, serial, lot, CMM,
+// probe, qualification date, temperature, notes). Empty texts are left out.
 struct QifTraceability {
   std::string customer, program, operator_name, report_preparer;
   std::vector<std::pair<std::string, std::string>> attributes;
@@ -92,7 +96,9 @@ struct QifDocumentData {
   std::string part_name;       // Part/ModelNumber
   std::string description;     // Header/Description (what made the document)
   std::vector<QifFile> inputs;
-  std::optional<std::string> time;  // ISO 8601 UTC; none: no time in the document
+  // An xs:dateTime (ISO 8601, e.g. 2026-11-25T12:00:00Z); none: no time in
+  // the document.
+  std::optional<std::string> time;
   double probe_radius = 0;          // [mm] of every probe_centre
   std::vector<QifPoint> points;
   std::optional<QifProfile> profile;
@@ -108,7 +114,8 @@ struct QifDocumentData {
 // characteristic (surface profile over all points and a point profile per
 // point) when `profile` is set, Results with one MeasurementResults. Every
 // point must have `actual`. Throws std::invalid_argument for data that is
-// not a document (a point without actual, a non-finite number).
+// not a document (a point without actual, a non-finite number, a time that
+// is not an xs:dateTime, a decimal of 24 integer digits or more).
 std::string qif_results_text(const QifDocumentData& data);
 
 // The QIF Plan document: Features and the surface profile characteristic

@@ -17,6 +17,7 @@
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "qif_checks.hpp"
+#include "qif_schema.hpp"
 #include "report/report_qif.hpp"
 #include "support/run_cli.hpp"
 
@@ -74,9 +75,12 @@ TEST_CASE("QIF end to end: simulated QIF compares like CSV, results.qif matches 
   }
   CHECK(b.summary.verdict == a.summary.verdict);
 
-  // results.qif: schema structure, then every point against comparison.json.
+  // The simulated measurement and results.qif valid by the QIF 3.0 XSD,
+  // then every point of results.qif against comparison.json.
+  test::check_qif_valid_file(dir + "/m.qif");
+  test::check_qif_valid_file(dir + "/results.qif");
   const std::string text = test::slurp(dir + "/results.qif");
-  CHECK(test::check_qif_structure(text) > 400);
+  CHECK(test::check_qif_ids_and_counts(text) > 400);
   pugi::xml_document doc;
   REQUIRE(doc.load_string(text.c_str()));
   const pugi::xml_node root = doc.document_element();
@@ -168,7 +172,8 @@ TEST_CASE("QIF end to end: simulated QIF compares like CSV, results.qif matches 
   ComparisonDocument inconclusive = b;
   inconclusive.summary.verdict = Verdict::inconclusive;
   const std::string other = comparison_to_qif(inconclusive, {}, std::string("2026-01-02T03:04:05Z"));
-  CHECK(test::check_qif_structure(other) > 400);
+  test::check_qif_valid(other, dir + "/inconclusive.qif");
+  CHECK(test::check_qif_ids_and_counts(other) > 400);
   CHECK(other.find("<OtherInspectionStatus>INCONCLUSIVE</OtherInspectionStatus>") != std::string::npos);
   CHECK(other.find("<CharacteristicStatusEnum>INDETERMINATE</CharacteristicStatusEnum>") != std::string::npos);
   CHECK(other.find("<TimeCreated>2026-01-02T03:04:05Z</TimeCreated>") != std::string::npos);
@@ -191,8 +196,9 @@ TEST_CASE("furrow plan writes plan.qif: the alignment and plan points as nominal
   const auto r = test::run_furrow({"plan", kMould, "--regions", dir + "/regions.json", "--out", dir + "/p",
                                    "--points", "40", "--tolerance", "0.1", "--outside", "0.1"});
   REQUIRE(r.status == 0);
+  test::check_qif_valid_file(dir + "/p/plan.qif");
   const std::string text = test::slurp(dir + "/p/plan.qif");
-  CHECK(test::check_qif_structure(text) > 40);
+  CHECK(test::check_qif_ids_and_counts(text) > 40);
   const InspectionPlan plan = read_plan(dir + "/p/plan.json");
   pugi::xml_document doc;
   REQUIRE(doc.load_string(text.c_str()));
@@ -281,9 +287,11 @@ TEST_CASE("furrow run (the demo) writes results.qif timed like report.json and p
   const std::string dir = test::scratch_dir("cli-qif-demo");
   const auto r = test::run_furrow({"demo", "--out", dir + "/out"});
   REQUIRE((r.status == 0 || r.status == 1 || r.status == 4));
+  test::check_qif_valid_file(dir + "/out/results.qif");
+  test::check_qif_valid_file(dir + "/out/plan/plan.qif");
   const std::string text = test::slurp(dir + "/out/results.qif");
-  CHECK(test::check_qif_structure(text) > 100);
-  CHECK(test::check_qif_structure(test::slurp(dir + "/out/plan/plan.qif")) > 10);
+  CHECK(test::check_qif_ids_and_counts(text) > 100);
+  CHECK(test::check_qif_ids_and_counts(test::slurp(dir + "/out/plan/plan.qif")) > 10);
   const json_fields::json report = json_fields::load_file(dir + "/out/report.json");
   const ComparisonDocument c = read_comparison(dir + "/out/comparison.json");
   pugi::xml_document doc;

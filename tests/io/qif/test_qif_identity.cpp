@@ -10,6 +10,7 @@
 
 #include "io/qif/qif_document.hpp"
 #include "io/qif/qif_uuid.hpp"
+#include "qif_schema.hpp"
 
 using namespace furrow;
 
@@ -64,9 +65,11 @@ QifDocumentData tricky(const std::optional<std::string>& time) {
 
 TEST_CASE("qif identity: QPIds hash the placeholder text, and only QPId and time elements are filled in") {
   for (const std::optional<std::string>& time :
-       {std::optional<std::string>("2024-01-01T00:00:00Z"), std::optional<std::string>("a time longer than its "
-                                                                                          "placeholder <&>"),
-        std::optional<std::string>(kTime.substr(0, 26)), std::optional<std::string>()}) {
+       {std::optional<std::string>("2024-01-01T00:00:00Z"),
+        std::optional<std::string>("2024-01-01T00:00:00.123456789+01:00"),  // longer than its placeholder
+        std::optional<std::string>("2024-01-01T00:00:00.12345Z"),            // as long
+        std::optional<std::string>()}) {
+    REQUIRE(kTime.size() == 26);
     CAPTURE(time.value_or("none"));
     const QifDocumentData d = tricky(time);
     const std::string text = qif_results_text(d);
@@ -74,13 +77,11 @@ TEST_CASE("qif identity: QPIds hash the placeholder text, and only QPId and time
     CHECK(element(text, "ModelNumber") == kQpid);
     CHECK(element(text, "Description") == d.description);
     CHECK(text.find("<FeatureName>" + kResultsQpid + "</FeatureName>") != std::string::npos);
-    // The time where the document carries one, escaped.
-    std::string escaped;
-    if (time)
-      for (char c : *time) escaped += (c == '<' || c == '>' || c == '&') ? '?' : c;
+    // The time where the document carries one; valid by the schema either way.
+    test::check_qif_valid(text, test::scratch_dir("qif-identity") + "/results.qif");
     if (time) {
-      CHECK(element(text, "TimeCreated") == escaped);
-      CHECK(element(text, "ReportPreparationDate") == escaped);
+      CHECK(element(text, "TimeCreated") == *time);
+      CHECK(element(text, "ReportPreparationDate") == *time);
     } else {
       CHECK(text.find("<TimeCreated>") == std::string::npos);
     }
@@ -103,4 +104,12 @@ TEST_CASE("qif identity: the plan's QPId likewise") {
   CHECK(element(text, "ModelNumber") == kQpid);
   const std::string digest = qif_sha256_hex(put_back(text, "QPId", kQpid));
   CHECK(element(text, "QPId") == uuid_from_content(digest + " QPId"));
+}
+
+TEST_CASE("qif identity: a time that is not an xs:dateTime is refused, not written") {
+  for (const char* bad : {"2024-01-01 00:00:00", "yesterday", "2024-01-01T00:00:00Z <&>", ""}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(qif_results_text(tricky(std::string(bad))), std::invalid_argument);
+    CHECK_THROWS_AS(qif_plan_text(tricky(std::string(bad))), std::invalid_argument);
+  }
 }
