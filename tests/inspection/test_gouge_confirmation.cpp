@@ -144,7 +144,9 @@ TEST_CASE("gouge confirmation: confirmed, not confirmed, not measured, unexplain
     CHECK(u.id == "U1");
     const Eigen::Vector3d centre = sc.part.faces[0].surface().point(kSurprise.x(), kSurprise.y());
     CHECK((u.xyz - centre).norm() < 4);  // the grid is ~3.3 mm
-    CHECK(u.depth == doctest::Approx(0.03).epsilon(0.35));
+    CHECK(u.depth == doctest::Approx(0.03).epsilon(0.35).scale(0));  // the nearest grid point is off the dent's centre
+    // What was put there, less what the fit absorbs (the 20 um dents stay in it).
+    CHECK(std::abs(u.depth + sc.sim.true_deviation[u.deepest]) < 2.5e-3);
     CHECK(u.depth > u.threshold);
     // Every point of it overcut beyond its threshold and near the dent.
     for (std::size_t i : u.points) {

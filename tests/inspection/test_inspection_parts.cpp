@@ -137,7 +137,7 @@ TEST_CASE(
   std::vector<OutlierReason> why(d.size(), OutlierReason::none);
   const OutlierVerdict v =
       classify_deviations(pos, d, std::vector<bool>(d.size(), true), OutlierRule{}, why);
-  CHECK(v.robust_sigma == doctest::Approx(0.002).epsilon(0.25));
+  CHECK(v.robust_sigma == doctest::Approx(0.002).epsilon(0.25).scale(0));
   CHECK(v.limit == doctest::Approx(0.025));  // the floor, 5 sigma being less
   CHECK(why[5 * 30 + 5] == OutlierReason::blunder);
   CHECK(why[5 * 30 + 7] == OutlierReason::blunder);
@@ -159,7 +159,7 @@ TEST_CASE("surface sampling: about the requested count, even spacing, trims resp
   const std::vector<SurfaceSample> s = sample_part_surface(plate, 10000);
   CHECK(s.size() == doctest::Approx(10000).epsilon(0.05));
   // Spacing along x and y about equal although u and v are scaled 4:1.
-  CHECK(std::abs(s[1].point.y() - s[0].point.y()) == doctest::Approx(0.5).epsilon(0.05));
+  CHECK(std::abs(s[1].point.y() - s[0].point.y()) == doctest::Approx(0.5).epsilon(0.05).scale(0));
   Part holed;
   holed.faces.emplace_back("plate", make_plane({0, 0, 0}, {100, 0, 0}, {0, 100, 0}),
                            Trim({{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
