@@ -80,6 +80,9 @@ struct SpherePatch {
   // The boundary as model-space curves only (type 142 PPTR = 0, as the
   // report's CATIA file writes every boundary): no parameter-space curve.
   bool model_space_only = false;
+  // Meridians as type 100 circular arcs placed by a type 124 (as the
+  // report's file has its quarter circles) instead of type 126 B-splines.
+  bool arc_meridians = false;
 
   double area() const {
     return radius * radius * std::abs(theta1 - theta0) * (std::sin(phi1) - std::sin(phi0));
@@ -189,7 +192,20 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
     } else {
       // A meridian: angle phi in the plane of the axis and the direction theta.
       const Eigen::Vector3d d = std::cos(a.theta) * X - std::sin(a.theta) * Z;
-      c_pieces.push_back(b.bspline_arc(c, d, Y, R, a.phi, e.phi));
+      if (p.arc_meridians) {
+        // A type 100 runs counterclockwise in its definition space: going
+        // down, its y axis is -y (the angle there is -phi).
+        const double s = e.phi > a.phi ? 1 : -1;
+        Eigen::Matrix3d rot;
+        rot.col(0) = d;
+        rot.col(1) = s * Y;
+        rot.col(2) = d.cross(s * Y);
+        const int t = b.transformation(rot, c);
+        c_pieces.push_back(b.arc(0, {0, 0}, R * Eigen::Vector2d(std::cos(s * a.phi), std::sin(s * a.phi)),
+                                 R * Eigen::Vector2d(std::cos(s * e.phi), std::sin(s * e.phi)), t));
+      } else {
+        c_pieces.push_back(b.bspline_arc(c, d, Y, R, a.phi, e.phi));
+      }
     }
   };
   for (std::size_t k = 0; k < 4; ++k) {

@@ -399,6 +399,7 @@ TEST_CASE("CAD import: IGES sphere patches bounded by model-space curves only ke
         p.pref = pref;
         p.generatrix_transformed = variant % 2;
         p.split_at_equator = (variant / 2) % 2;
+        p.arc_meridians = (variant / 4) % 2;
         ++variant;
         if (!p.seam_lune()) cases.push_back(p);  // the test after the next
       }
