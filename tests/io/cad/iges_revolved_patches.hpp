@@ -77,9 +77,37 @@ struct SpherePatch {
   // Meridians that cross the equator written as two pieces meeting there
   // (the report's quarter: half a great circle and two quarter circles).
   bool split_at_equator = false;
+  // The boundary as model-space curves only (type 142 PPTR = 0, as the
+  // report's CATIA file writes every boundary): no parameter-space curve.
+  bool model_space_only = false;
+  // Meridians as type 100 circular arcs placed by a type 124 (as the
+  // report's file has its quarter circles) instead of type 126 B-splines.
+  bool arc_meridians = false;
 
   double area() const {
     return radius * radius * std::abs(theta1 - theta0) * (std::sin(phi1) - std::sin(phi0));
+  }
+  // The file's v (rotation angle of the type 120) of the angle theta.
+  double file_v(double theta) const {
+    const double sign = axis_reversed ? -1 : 1;
+    auto raw = [&](double t) { return sign * t + (north_to_south ? -sign * M_PI : 0.0); };
+    double shift = 0;
+    if (north_to_south || axis_reversed) {
+      const double low = std::min(raw(theta0), raw(theta1));
+      while (low + shift < -1e-12) shift += 2 * M_PI;
+      while (low + shift >= 2 * M_PI - 1e-12) shift -= 2 * M_PI;
+    }
+    return raw(theta) + shift;
+  }
+  // A lune from pole to pole whose meridians lie on or across the seam of
+  // a whole revolution in the file's v: given by model-space curves only,
+  // nothing in the face tells it from the rest of the sphere (the importer
+  // goes by the loop's direction; docs/formats.md "IGES boundaries").
+  bool seam_lune() const {
+    const double a = std::min(file_v(theta0), file_v(theta1)), b = std::max(file_v(theta0), file_v(theta1));
+    const bool whole = end_angle - start_angle >= 2 * M_PI - 1e-12;
+    return phi0 <= -M_PI / 2 + 1e-12 && phi1 >= M_PI / 2 - 1e-12 && whole &&
+           (a <= start_angle + 1e-12 || b >= end_angle - 1e-12);
   }
   std::string name() const {
     char buf[256];
@@ -147,24 +175,12 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
   };
   std::vector<Corner> corners{{p.phi0, p.theta0}, {p.phi0, p.theta1}, {p.phi1, p.theta1}, {p.phi1, p.theta0}};
   if (p.reversed_loop) corners = {corners[0], corners[3], corners[2], corners[1]};
-  // The file's v of theta.
-  double v_shift = 0;
-  auto v_raw = [&](double theta) {
-    const double sign = p.axis_reversed ? -1 : 1;
-    return sign * theta + (p.north_to_south ? -sign * M_PI : 0.0);
-  };
-  if (p.north_to_south || p.axis_reversed) {
-    const double low = std::min(v_raw(p.theta0), v_raw(p.theta1));
-    v_shift = 0;
-    while (low + v_shift < -1e-12) v_shift += 2 * M_PI;
-    while (low + v_shift >= 2 * M_PI - 1e-12) v_shift -= 2 * M_PI;
-  }
-  auto v_of = [&](double theta) { return v_raw(theta) + v_shift; };
+  auto v_of = [&](double theta) { return p.file_v(theta); };
   std::vector<int> b_pieces, c_pieces;
   auto piece = [&](const Corner& a, const Corner& e) {
     const bool pole = std::abs(a.phi - e.phi) < 1e-15 && std::abs(std::abs(a.phi) - M_PI / 2) < 1e-15;
     const Eigen::Vector3d ua(u_of(a.phi), v_of(a.theta), 0), ue(u_of(e.phi), v_of(e.theta), 0);
-    if (!pole || p.pcurve_along_pole)
+    if (!p.model_space_only && (!pole || p.pcurve_along_pole))
       b_pieces.push_back(p.polyline_pcurves ? b.polyline_2d({ua.head<2>(), ue.head<2>()}, IgesBuilder::kParametric)
                          : p.line_pcurves ? b.line(ua, ue, IgesBuilder::kParametric)
                                         : b.bspline_line(ua, ue, 0, 1, true, IgesBuilder::kParametric));
@@ -176,7 +192,20 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
     } else {
       // A meridian: angle phi in the plane of the axis and the direction theta.
       const Eigen::Vector3d d = std::cos(a.theta) * X - std::sin(a.theta) * Z;
-      c_pieces.push_back(b.bspline_arc(c, d, Y, R, a.phi, e.phi));
+      if (p.arc_meridians) {
+        // A type 100 runs counterclockwise in its definition space: going
+        // down, its y axis is -y (the angle there is -phi).
+        const double s = e.phi > a.phi ? 1 : -1;
+        Eigen::Matrix3d rot;
+        rot.col(0) = d;
+        rot.col(1) = s * Y;
+        rot.col(2) = d.cross(s * Y);
+        const int t = b.transformation(rot, c);
+        c_pieces.push_back(b.arc(0, {0, 0}, R * Eigen::Vector2d(std::cos(s * a.phi), std::sin(s * a.phi)),
+                                 R * Eigen::Vector2d(std::cos(s * e.phi), std::sin(s * e.phi)), t));
+      } else {
+        c_pieces.push_back(b.bspline_arc(c, d, Y, R, a.phi, e.phi));
+      }
     }
   };
   for (std::size_t k = 0; k < 4; ++k) {
@@ -189,7 +218,7 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
       piece(a, e);
     }
   }
-  const int bc = b.composite(b_pieces, IgesBuilder::kParametric);
+  const int bc = p.model_space_only ? 0 : b.composite(b_pieces, IgesBuilder::kParametric);
   const int cc = b.composite(c_pieces);
   const int boundary = b.curve_on_surface(surface, bc, cc, p.pref);
   return b.trimmed_surface(surface, boundary);
@@ -213,6 +242,7 @@ struct RevolvedPatch {
   double theta0 = 0, theta1 = M_PI, s0 = 0, s1 = 1;
   bool reversed_loop = false;
   int pref = 0;
+  bool model_space_only = false;  // type 142 PPTR = 0: no parameter-space curve
 
   // Generatrix point at u = s, relative to the centre, in the x-y plane.
   Eigen::Vector2d generatrix(double s) const {
@@ -231,9 +261,10 @@ struct RevolvedPatch {
   }
   std::string name() const {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d",
+    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d%s",
                   kind == Kind::cylinder ? "cylinder" : "torus", theta0, theta1, s0, s1,
-                  reversed_loop ? "loop reversed" : "loop as built", pref);
+                  reversed_loop ? "loop reversed" : "loop as built", pref,
+                  model_space_only ? ", model-space curves only" : "");
     return buf;
   }
 };
@@ -259,7 +290,9 @@ inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
   for (std::size_t k = 0; k < 4; ++k) {
     const Corner& a = corners[k];
     const Corner& e = corners[(k + 1) % 4];
-    b_pieces.push_back(b.bspline_line({a.s, a.theta, 0}, {e.s, e.theta, 0}, 0, 1, true, IgesBuilder::kParametric));
+    if (!p.model_space_only)
+      b_pieces.push_back(
+          b.bspline_line({a.s, a.theta, 0}, {e.s, e.theta, 0}, 0, 1, true, IgesBuilder::kParametric));
     if (a.s == e.s) {  // a circle about the axis
       const Eigen::Vector2d g = p.generatrix(a.s);
       c_pieces.push_back(b.bspline_arc(c + g.y() * Y, X, -Z, g.x(), a.theta, e.theta));
@@ -270,7 +303,7 @@ inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
       c_pieces.push_back(b.bspline_arc(c + p.major * d, d, Y, p.radius, a.s, e.s));
     }
   }
-  const int bc = b.composite(b_pieces, IgesBuilder::kParametric);
+  const int bc = p.model_space_only ? 0 : b.composite(b_pieces, IgesBuilder::kParametric);
   const int cc = b.composite(c_pieces);
   return b.trimmed_surface(surface, b.curve_on_surface(surface, bc, cc, p.pref));
 }

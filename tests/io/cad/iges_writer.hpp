@@ -242,7 +242,8 @@ class IgesBuilder {
   // model-space curve C, preferred representation PREF: 0 unspecified, 1 the
   // parameter-space curve (S o B), 2 the model-space curve C, 3 both alike.
   // (OpenCASCADE follows PREF 2 to C: with a B whose u is normalised, only
-  // PREF 2 files import right; see the tests.)
+  // PREF 2 files import right; see the tests.) `b` = 0 writes no
+  // parameter-space curve (PPTR 0), as CATIA does: C alone bounds the face.
   int curve_on_surface(int surface, int b, int c, int pref) {
     return file.add(142, 0,
                     {"0", std::to_string(surface), std::to_string(b), std::to_string(c), std::to_string(pref)},

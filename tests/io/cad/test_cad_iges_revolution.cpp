@@ -81,17 +81,67 @@ Eigen::Vector3d patch_centroid(const RevolvedPatch& p) {
   return sum / weight;
 }
 
+// The normal of the file's surface (Su x Sv of the type 120, which IGES
+// trimmed surfaces keep: a type 144 has no sense of its own) at `p` on the
+// patch, unit. The writer's surfaces turn the generatrix about +y from x
+// toward -z, so with the generatrix running south to north (up, for
+// cylinders; counterclockwise for the torus's tube) it points towards the
+// axis side: into the sphere, the cylinder, the tube. A generatrix running
+// north to south, or the axis -y, turns it round.
+Eigen::Vector3d file_normal(const SpherePatch& patch, const Eigen::Vector3d& p) {
+  const double sign = (patch.north_to_south ? -1 : 1) * (patch.axis_reversed ? -1 : 1);
+  return -sign * (p - patch.centre).normalized();
+}
+Eigen::Vector3d file_normal(const RevolvedPatch& patch, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d r = p - patch.centre;
+  const Eigen::Vector3d radial = Eigen::Vector3d(r.x(), 0, r.z()).normalized();
+  if (patch.kind == RevolvedPatch::Kind::cylinder) return -radial;
+  return -(r - patch.major * radial).normalized();
+}
+
+// Share of a grid of kept points of the face (where it has a normal) at
+// which `holds` does; 0 when the grid keeps none.
+template <class Predicate>
+double kept_share(const Face& f, Predicate holds, int n = 24) {
+  const ParameterDomain& d = f.domain();
+  int yes = 0, total = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector2d st(d.u0 + d.width_u() * (i + 0.5) / n, d.v0 + d.width_v() * (j + 0.5) / n);
+      if (!f.trim().empty() && !f.trim().contains(st)) continue;
+      const DifferentialGeometry g = f.geometry(st.x(), st.y());
+      if (g.degenerate) continue;
+      ++total;
+      yes += holds(g);
+    }
+  return total == 0 ? 0.0 : static_cast<double>(yes) / total;
+}
+
+// Share of the face's kept points whose normal (Face::reversed() applied)
+// is the file's surface normal there.
+template <class Patch>
+double normal_agreement(const Face& f, const Patch& patch) {
+  return kept_share(f, [&](const DifferentialGeometry& g) { return g.normal.dot(file_normal(patch, g.point)) > 0.99; });
+}
+
 void write_patch(IgesBuilder& b, const SpherePatch& p) { write_sphere_patch(b, p); }
 void write_patch(IgesBuilder& b, const RevolvedPatch& p) { write_revolved_patch(b, p); }
 
 // Writes all cases into one file (each at its own place along x), imports
 // it and checks every face's area against the analytic one, and its
 // centroid against the patch's.
+// With `normals`, every face's normal must also be the file's surface
+// normal (file_normal()): faces that sew to nothing keep the file's sense.
+// `expected`, when given, is the region each case must come in as (else the
+// case itself).
 template <class Patch>
-void check_cases(std::vector<Patch> cases, const std::string& file_name) {
+void check_cases(std::vector<Patch> cases, const std::string& file_name, bool normals = false,
+                 std::vector<Patch> expected = {}) {
+  if (expected.empty()) expected = cases;
   IgesBuilder builder;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     cases[k].centre = Eigen::Vector3d(kSpacing * static_cast<double>(k), 0, 0);
+    expected[k].centre = cases[k].centre;
     write_patch(builder, cases[k]);
   }
   const std::string dir = scratch_dir(file_name + "-" + std::to_string(getpid()));
@@ -110,9 +160,10 @@ void check_cases(std::vector<Patch> cases, const std::string& file_name) {
   for (std::size_t k = 0; k < cases.size(); ++k) {
     CAPTURE(cases[k].name());
     const Face& face = *by_case.at(static_cast<long>(k));
-    CHECK(trimmed_area(face) == doctest::Approx(cases[k].area()).epsilon(1e-6));
+    CHECK(trimmed_area(face) == doctest::Approx(expected[k].area()).epsilon(1e-6));
     // The same area on the other side (a half sphere's rest) is still wrong.
-    CHECK((kept_centroid(face) - patch_centroid(cases[k])).norm() < 5e-3 * cases[k].radius);
+    CHECK((kept_centroid(face) - patch_centroid(expected[k])).norm() < 5e-3 * cases[k].radius);
+    if (normals) CHECK(normal_agreement(face, expected[k]) == 1.0);
   }
   std::error_code ignored;
   std::filesystem::remove_all(dir, ignored);
@@ -216,8 +267,9 @@ TEST_CASE("CAD import: IGES sphere patches touching and crossing the seam and th
   check_cases(cases, "iges-sphere-patches");
 }
 
-TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned only over the face keep their area") {
-  // Start and terminate angles of the type 120 equal to the face's own range.
+// Sphere patches whose type 120's start and terminate angles are the face's
+// own range, loops both ways, generatrix with and without a type 124.
+std::vector<SpherePatch> partial_revolution_cases(bool model_space_only) {
   const Range ranges[] = {{0, pi, 0, pi / 2}, {0, pi / 2, -pi / 2, pi / 2}, {1.0, 2.5, -pi / 2, pi / 2},
                           {-pi / 2, pi / 2, -pi / 2, pi / 2}, {0.3, 1.8 * pi, -pi / 2, pi / 2}};
   std::vector<SpherePatch> cases;
@@ -229,31 +281,48 @@ TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned onl
         p.end_angle = r.theta1;
         p.reversed_loop = reversed;
         p.generatrix_transformed = transformed;
+        p.model_space_only = model_space_only;
+        p.pref = model_space_only ? 2 : 0;
         cases.push_back(p);
       }
-  check_cases(cases, "iges-sphere-partial-revolution");
+  return cases;
+}
+
+TEST_CASE("CAD import: IGES sphere patches of a surface of revolution turned only over the face keep their area") {
+  check_cases(partial_revolution_cases(false), "iges-sphere-partial-revolution");
+}
+
+// The sphere patches of kRanges with the generatrix running north to south,
+// or the axis -y, or both (all but the writer's default), loops both ways;
+// `model_space_only` with PREF 2.
+std::vector<SpherePatch> axis_generatrix_cases(bool model_space_only) {
+  std::vector<SpherePatch> cases;
+  for (const Range& r : kRanges)
+    for (const bool north_to_south : {false, true})
+      for (const bool axis_reversed : {false, true})
+        for (const bool reversed : {false, true}) {
+          if (!north_to_south && !axis_reversed) continue;  // the default: the tests above
+          SpherePatch p = patch_over(r);
+          p.north_to_south = north_to_south;
+          p.axis_reversed = axis_reversed;
+          p.reversed_loop = reversed;
+          p.model_space_only = model_space_only;
+          p.pref = model_space_only ? 2 : 0;
+          cases.push_back(p);
+        }
+  return cases;
 }
 
 TEST_CASE("CAD import: IGES sphere patches keep their region whichever way the generatrix and the axis run") {
   // The surface's normal and the sense of the file's loops change with the
   // generatrix's direction (south to north or north to south) and the
   // axis line's; the face must not.
-  std::vector<SpherePatch> cases;
-  for (const Range& r : kRanges)
-    for (const bool north_to_south : {false, true})
-      for (const bool axis_reversed : {false, true})
-        for (const bool reversed : {false, true}) {
-          if (!north_to_south && !axis_reversed) continue;  // the test above
-          SpherePatch p = patch_over(r);
-          p.north_to_south = north_to_south;
-          p.axis_reversed = axis_reversed;
-          p.reversed_loop = reversed;
-          cases.push_back(p);
-        }
-  check_cases(cases, "iges-sphere-axis-generatrix");
+  check_cases(axis_generatrix_cases(false), "iges-sphere-axis-generatrix");
 }
 
-TEST_CASE("CAD import: IGES cylinder and torus patches as surfaces of revolution keep the enclosed region") {
+// Cylinder and torus patches touching and crossing the seam, loops both
+// ways, PREF 0, 1 and 2.
+std::vector<RevolvedPatch> revolved_cases(bool model_space_only) {
   using Kind = RevolvedPatch::Kind;
   struct Case {
     Kind kind;
@@ -281,9 +350,14 @@ TEST_CASE("CAD import: IGES cylinder and torus patches as surfaces of revolution
         p.s1 = c.s1;
         p.reversed_loop = reversed;
         p.pref = pref;
+        p.model_space_only = model_space_only;
         cases.push_back(p);
       }
-  check_cases(cases, "iges-cylinder-torus-patches");
+  return cases;
+}
+
+TEST_CASE("CAD import: IGES cylinder and torus patches as surfaces of revolution keep the enclosed region") {
+  check_cases(revolved_cases(false), "iges-cylinder-torus-patches");
 }
 
 TEST_CASE("CAD import: a whole IGES sphere bounded by its seam and poles in parameter space is the whole sphere") {
@@ -306,4 +380,116 @@ TEST_CASE("CAD import: a whole IGES sphere bounded by its seam and poles in para
         cases.push_back(p);
       }
   check_cases(cases, "iges-whole-sphere");
+}
+
+// Boundaries given as model-space curves only (type 142 with PPTR = 0, any
+// PREF, CRTN 0), as CATIA writes every boundary: the importer builds the
+// loop in the surface's parameters from the 3-D curves (docs/formats.md
+// "CAD import", "IGES boundaries"). Every face keeps the region its loop
+// encloses and the file's surface normal.
+TEST_CASE("CAD import: IGES sphere patches bounded by model-space curves only keep the enclosed region") {
+  std::vector<SpherePatch> cases;
+  int variant = 0;
+  for (const Range& r : kRanges)
+    for (const bool reversed : {false, true})
+      for (const int pref : {0, 1, 2}) {
+        SpherePatch p = patch_over(r);
+        p.model_space_only = true;
+        p.reversed_loop = reversed;
+        p.pref = pref;
+        p.generatrix_transformed = variant % 2;
+        p.split_at_equator = (variant / 2) % 2;
+        p.arc_meridians = (variant / 4) % 2;
+        ++variant;
+        if (!p.seam_lune()) cases.push_back(p);  // the test after the next
+      }
+  check_cases(cases, "iges-sphere-model-space", true);
+}
+
+TEST_CASE("CAD import: IGES sphere patches bounded by model-space curves, any generatrix and axis direction") {
+  std::vector<SpherePatch> cases;
+  for (const SpherePatch& p : axis_generatrix_cases(true))
+    if (!p.seam_lune()) cases.push_back(p);  // the next test
+  check_cases(cases, "iges-sphere-model-space-axis", true);
+}
+
+TEST_CASE("CAD import: an IGES lune on or across the seam bounded by model-space curves goes by its rectangle, then its direction") {
+  // Two meridians from pole to pole bound the lune and the rest of the
+  // sphere alike. The file's rectangle (rotation angles from start to
+  // terminate) holds only the rest when the lune crosses the seam; it holds
+  // both when a meridian lies on the seam, and then the face is the one the
+  // file's loop runs counterclockwise around in the file's (u,v)
+  // (docs/formats.md "IGES boundaries"; the writer's loop as built runs
+  // clockwise, the generatrix north to south and the axis -y each turn it).
+  std::vector<SpherePatch> cases, expected;
+  for (const Range& r : kRanges)
+    for (const bool north_to_south : {false, true})
+      for (const bool axis_reversed : {false, true})
+        for (const bool reversed : {false, true}) {
+          SpherePatch p = patch_over(r);
+          p.model_space_only = true;
+          p.north_to_south = north_to_south;
+          p.axis_reversed = axis_reversed;
+          p.reversed_loop = reversed;
+          p.pref = 2;
+          if (!p.seam_lune()) continue;
+          const double a = std::min(p.file_v(p.theta0), p.file_v(p.theta1));
+          const double b = std::max(p.file_v(p.theta0), p.file_v(p.theta1));
+          const bool crosses = a < p.start_angle - 1e-12 || b > p.end_angle + 1e-12;
+          const bool counterclockwise = (reversed != north_to_south) != axis_reversed;
+          SpherePatch rest = p;  // the rest of the sphere
+          rest.theta0 = p.theta1;
+          rest.theta1 = p.theta0 + 2 * pi;
+          cases.push_back(p);
+          expected.push_back(!crosses && counterclockwise ? p : rest);
+        }
+  REQUIRE(cases.size() >= 20);
+  check_cases(cases, "iges-sphere-model-space-seam-lunes", true, expected);
+}
+
+TEST_CASE("CAD import: IGES cylinder and torus patches bounded by model-space curves only") {
+  check_cases(revolved_cases(true), "iges-cylinder-torus-model-space", true);
+}
+
+TEST_CASE("CAD import: IGES sphere patches bounded by model-space curves on a partial revolution") {
+  // A lune from pole to pole then lies in the file's rectangle on one side
+  // only, whichever way its loop runs.
+  check_cases(partial_revolution_cases(true), "iges-sphere-partial-model-space", true);
+}
+
+TEST_CASE("CAD import: a ball of IGES octants bounded by model-space curves sews closed, every face outward") {
+  // Eight one-pole octants of one sphere, each its own type 144 of its own
+  // type 120 (whose normal points into the ball), loops in both directions:
+  // they sew into a closed shell whose faces must all point out of the ball
+  // (docs/formats.md "Orientation") and keep their area, a quarter of the
+  // hemisphere each.
+  IgesBuilder builder;
+  std::vector<SpherePatch> octants;
+  for (int k = 0; k < 4; ++k)
+    for (const bool north : {true, false}) {
+      SpherePatch p = patch_over({k * pi / 2, (k + 1) * pi / 2, north ? 0.0 : -pi / 2, north ? pi / 2 : 0.0});
+      p.model_space_only = true;
+      p.reversed_loop = (k + (north ? 1 : 0)) % 2 == 1;
+      p.pref = 2;
+      write_sphere_patch(builder, p);
+      octants.push_back(p);
+    }
+  const std::string dir = scratch_dir("iges-octant-ball-" + std::to_string(getpid()));
+  builder.file.write(dir + "/ball.igs");
+  const CadImportResult result = import_cad(dir + "/ball.igs");
+  REQUIRE(result.part.faces.size() == octants.size());
+  CHECK(result.closed_shells == 1);
+  const double expected = octants.front().area();
+  REQUIRE(expected == doctest::Approx(4.75 * 4.75 * pi / 2).epsilon(1e-12));
+  for (std::size_t f = 0; f < result.part.faces.size(); ++f) {
+    const Face& face = result.part.faces[f];
+    CAPTURE(f);
+    CHECK(result.faces[f].orientation == CadFaceOrientation::closed_shell);
+    CHECK(trimmed_area(face) == doctest::Approx(expected).epsilon(1e-6));
+    // Every kept point's normal points away from the centre.
+    CHECK(kept_share(face, [](const DifferentialGeometry& g) { return g.normal.dot(g.point.normalized()) > 0.99; }) ==
+          1.0);
+  }
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
 }

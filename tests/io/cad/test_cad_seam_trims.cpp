@@ -44,12 +44,17 @@ struct SeamCase {
   double area = 0;  // OpenCASCADE's, of the face as built
 };
 
-void write_iges_mode(const TopoDS_Shape& shape, const std::string& path, int mode) {
+// `model_space_only`: boundaries as 3-D curves only (type 142 without a
+// parameter-space curve, as CATIA writes them).
+void write_iges_mode(const TopoDS_Shape& shape, const std::string& path, int mode, bool model_space_only = false) {
   silence_occt();
+  if (model_space_only) Interface_Static::SetIVal("write.surfacecurve.mode", 0);
   IGESControl_Writer writer("MM", mode);  // 0: trimmed surfaces (144), 1: BRep (186/510/508)
   writer.AddShape(shape);
   writer.ComputeModel();
-  if (!writer.Write(path.c_str())) throw std::runtime_error("cannot write " + path);
+  const bool written = writer.Write(path.c_str());
+  Interface_Static::SetIVal("write.surfacecurve.mode", 1);
+  if (!written) throw std::runtime_error("cannot write " + path);
 }
 
 // Patches [u0, u1] x [v0, v1] of a sphere (radius 4.75, the quarter of the
@@ -104,6 +109,24 @@ std::map<int, const Face*> by_case(const CadImportResult& result) {
   return faces;
 }
 
+// Integral of the unit normal (Face::reversed() applied) over the kept
+// region, by the midpoint rule on a grid of the domain: the same region
+// with the same orientation gives the same vector, the other orientation
+// its negative.
+Eigen::Vector3d normal_integral(const Face& f, int n = 160) {
+  const ParameterDomain& d = f.domain();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  const double cell = d.width_u() * d.width_v() / (n * n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector2d st(d.u0 + d.width_u() * (i + 0.5) / n, d.v0 + d.width_v() * (j + 0.5) / n);
+      if (!f.trim().empty() && !f.trim().contains(st)) continue;
+      const DifferentialGeometry g = f.geometry(st.x(), st.y());
+      if (!g.degenerate) sum += g.normal * g.area_element * cell;
+    }
+  return sum;
+}
+
 }  // namespace
 
 TEST_CASE("CAD import: trims touching or crossing the seam keep the enclosed region in IGES and STEP") {
@@ -117,11 +140,12 @@ TEST_CASE("CAD import: trims touching or crossing the seam keep the enclosed reg
   write_step(compound, dir + "/part.step");
   write_iges_mode(compound, dir + "/faces.igs", 0);
   write_iges_mode(compound, dir + "/brep.igs", 1);
+  write_iges_mode(compound, dir + "/faces-3d.igs", 0, true);
   const CadImportResult step = import_cad(dir + "/part.step");
   const std::map<int, const Face*> step_faces = by_case(step);
   REQUIRE(step_faces.size() == cases.size());
 
-  for (const char* file : {"faces.igs", "brep.igs"}) {
+  for (const char* file : {"faces.igs", "brep.igs", "faces-3d.igs"}) {
     CAPTURE(file);
     const CadImportResult iges = import_cad(dir + "/" + file);
     CHECK(iges.format == "IGES");
@@ -134,6 +158,8 @@ TEST_CASE("CAD import: trims touching or crossing the seam keep the enclosed reg
       const double area = trimmed_area(from_iges);
       CHECK(area == doctest::Approx(cases[k].area).epsilon(1e-6));
       CHECK(area == doctest::Approx(trimmed_area(from_step)).epsilon(1e-6));
+      // The same side out as STEP, whose faces carry their orientation.
+      CHECK((normal_integral(from_iges) - normal_integral(from_step)).norm() < 1e-2 * area);
     }
   }
   std::error_code ignored;

@@ -5,6 +5,8 @@
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom_Curve.hxx>
+#include <ShapeAnalysis_Surface.hxx>
 #include <BndLib_Add2dCurve.hxx>
 #include <Bnd_Box2d.hxx>
 #include <TopoDS.hxx>
@@ -18,9 +20,11 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "io/cad/occt/cad_model_space_loop.hpp"
 #include "io/cad/occt/cad_occt_internal.hpp"
 #include "io/cad/cad_trim_polygon.hpp"
 
@@ -28,16 +32,16 @@ namespace furrow::cad {
 
 namespace {
 
-// Which parameters of the surface are periodic, and their periods.
-struct Periods {
-  bool u = false, v = false;
-  double du = 0, dv = 0;
-};
-
 // Exact (u,v) box of a wire's pcurves, unwrapping shifts included.
 Bnd_Box2d wire_box(const WireUse& wire) {
   Bnd_Box2d box;
   for (const EdgeUse& e : wire.edges) {
+    if (e.projected && !e.bridged) {
+      const Eigen::Vector4d b = e.projected->box();
+      box.Update(b[0] + e.shift.x(), b[1] + e.shift.y(), b[2] + e.shift.x(), b[3] + e.shift.y());
+      continue;
+    }
+    if (e.bridged && wire.model_space) continue;
     if (e.bridged) {
       box.Update(std::min(e.bridge_from.x(), e.bridge_to.x()), std::min(e.bridge_from.y(), e.bridge_to.y()),
                  std::max(e.bridge_from.x(), e.bridge_to.x()), std::max(e.bridge_from.y(), e.bridge_to.y()));
@@ -171,8 +175,19 @@ double period_slack(const std::vector<WireUse>& wires, const Handle(Geom_Surface
 // The face's wires as chains of pcurves, unwrapped so that each chain is
 // continuous in (u,v) even where it crosses a periodic surface's seam.
 // `file` is what the file says about the outer boundary (cad_iges_boundary.hpp).
-std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Periods& periods, const FileBoundary& file) {
+std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surface)& surface, const Periods& periods,
+                                 const FileBoundary& file, bool& turned) {
   std::vector<WireUse> wires;
+  // A boundary the file gives in model space only is rebuilt from its 3-D
+  // curves on a periodic surface (cad_model_space_loop.hpp).
+  const bool from_model_space = file.model_space_only && (periods.u || periods.v);
+  Handle(ShapeAnalysis_Surface) projector;
+  if (from_model_space) projector = new ShapeAnalysis_Surface(surface);
+  int face_wire_count = 0;
+  for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+    const TopAbs_Orientation o = it.Value().Orientation();
+    face_wire_count += it.Value().ShapeType() == TopAbs_WIRE && o != TopAbs_INTERNAL && o != TopAbs_EXTERNAL;
+  }
   const TopoDS_Wire outer = BRepTools::OuterWire(face);
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
     // Internal and external wires (imprinted lines, construction curves) do
@@ -185,20 +200,54 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Periods& periods
     WireUse use;
     use.outer = !outer.IsNull() && wire.IsSame(outer);
     std::vector<EdgeUse>& chain = use.edges;
+    const bool rebuild = from_model_space && (use.outer || face_wire_count == 1);
+    const Eigen::Vector2d period(periods.u ? periods.du : 0.0, periods.v ? periods.dv : 0.0);
+    std::vector<std::pair<double, double>> pcurve_ranges;  // to go back to the pcurves
     for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) {
       const TopoDS_Edge& edge = we.Current();
+      const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+      const bool degenerate = BRep_Tool::Degenerated(edge) == Standard_True;
       double first = 0, last = 0;
       const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-      if (pcurve.IsNull())
+      EdgeUse use_of_edge;
+      use_of_edge.pcurve = pcurve;
+      use_of_edge.from = reversed ? last : first;
+      use_of_edge.to = reversed ? first : last;
+      use_of_edge.degenerate = degenerate;
+      use_of_edge.tolerance = BRep_Tool::Tolerance(edge);
+      pcurve_ranges.emplace_back(use_of_edge.from, use_of_edge.to);
+      if (rebuild && !degenerate) {
+        double c0 = 0, c1 = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, c0, c1);
+        if (!curve.IsNull()) {
+          use_of_edge.from = reversed ? c1 : c0;
+          use_of_edge.to = reversed ? c0 : c1;
+          use_of_edge.projected =
+              std::make_shared<const ProjectedCurve>(curve, projector, use_of_edge.from, use_of_edge.to, period);
+        }
+      }
+      if (pcurve.IsNull() && !use_of_edge.projected && !(rebuild && degenerate))
         throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
-      const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-      chain.push_back({pcurve, reversed ? last : first, reversed ? first : last,
-                       BRep_Tool::Degenerated(edge) == Standard_True, BRep_Tool::Tolerance(edge),
-                       Eigen::Vector2d::Zero()});
+      chain.push_back(std::move(use_of_edge));
     }
     if (chain.empty()) continue;
     if (static_cast<int>(chain.size()) < edges_in_wire)
       throw FaceFailure("a boundary wire is not a connected chain of edges");
+    if (rebuild) {
+      bool turn = false;
+      if (model_space_loop(use, surface, periods, file, face.Orientation() == TopAbs_REVERSED, turn)) {
+        turned = turn;
+        use.model_space = true;
+        wires.push_back(std::move(use));
+        continue;
+      }
+      for (std::size_t k = 0; k < chain.size(); ++k) {
+        if (chain[k].pcurve.IsNull())
+          throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
+        chain[k].projected.reset();
+        std::tie(chain[k].from, chain[k].to) = pcurve_ranges[k];
+      }
+    }
     Eigen::Vector2d end = chain.front().uv(chain.front().to);
     for (std::size_t k = 1; k < chain.size(); ++k) {
       const Eigen::Vector2d start = chain[k].uv(chain[k].from);
@@ -298,10 +347,11 @@ FaceWires face_wires(const TopoDS_Face& face, const Handle(Geom_Surface)& surfac
   periods.v = surface->IsVPeriodic();
   if (periods.u) periods.du = surface->UPeriod();
   if (periods.v) periods.dv = surface->VPeriod();
-  std::vector<WireUse> wires = wire_chains(face, periods, file);
+  bool turned = false;
+  std::vector<WireUse> wires = wire_chains(face, surface, periods, file, turned);
   const ParameterDomain bounds = face_bounds(face, wires, surface, periods);
   add_seam_copies(wires, bounds, periods);
-  return {std::move(wires), bounds};
+  return {std::move(wires), bounds, turned};
 }
 
 TrimLoops trim_loops(const FaceWires& face, const NurbsSurface& nurbs, ParameterMap& map,

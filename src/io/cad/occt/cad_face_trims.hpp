@@ -11,6 +11,10 @@
 // - a wire that runs from pole to pole is made to enclose the region the IGES
 //   file's own boundary does (cad_iges_boundary.hpp): OpenCASCADE may route
 //   its pole edges around the other side of the surface;
+// - the outer wire of an IGES boundary given in model space only is built
+//   from its edges' 3-D curves instead of OpenCASCADE's projected pcurves
+//   (cad_model_space_loop.hpp), and FaceWires::turned says when its region
+//   lies on the other side of the wire than OpenCASCADE's face has it;
 // - the face's rectangle is the exact box of its outer wire, at most one
 //   period wide, snapped onto whole periods within rounding or the edges' own
 //   tolerance.
@@ -34,15 +38,23 @@
 #include <gp_Pnt2d.hxx>
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/trim.hpp"
 #include "io/cad/occt/cad_iges_boundary.hpp"
+#include "io/cad/occt/cad_projected_curve.hpp"
 #include "io/cad/cad_import.hpp"
 #include "io/cad/cad_parameter_map.hpp"
 
 namespace furrow::cad {
+
+// Which parameters of the surface are periodic, and their periods.
+struct Periods {
+  bool u = false, v = false;
+  double du = 0, dv = 0;
+};
 
 // One use of an edge in a wire, in the order the wire runs.
 struct EdgeUse {
@@ -55,8 +67,12 @@ struct EdgeUse {
   // line between its neighbours' ends (see face_wires()) instead of its pcurve.
   bool bridged = false;
   Eigen::Vector2d bridge_from = Eigen::Vector2d::Zero(), bridge_to = Eigen::Vector2d::Zero();
+  // Instead of the pcurve: the (u,v) of the edge's 3-D curve, for a
+  // boundary the file gives in model space only (cad_model_space_loop.hpp).
+  std::shared_ptr<const ProjectedCurve> projected;
   Eigen::Vector2d uv(double t) const {
     if (bridged) return bridge_from + (to == from ? 0.0 : (t - from) / (to - from)) * (bridge_to - bridge_from);
+    if (projected) return projected->uv(t) + shift;
     const gp_Pnt2d p = pcurve->Value(t);
     return Eigen::Vector2d(p.X(), p.Y()) + shift;
   }
@@ -66,11 +82,19 @@ struct EdgeUse {
 struct WireUse {
   std::vector<EdgeUse> edges;
   bool outer = false;  // the face's outer boundary (BRepTools::OuterWire)
+  // Built from model-space curves (cad_model_space_loop.hpp): its pole
+  // bridges lie between its curves' ends and add nothing to its box.
+  bool model_space = false;
 };
 
 struct FaceWires {
   std::vector<WireUse> wires;  // unwrapped, seam copies of holes included
   ParameterDomain bounds;      // the face's (u,v) rectangle
+  // The outer loop, built from model-space curves, encloses its region on
+  // the other side than OpenCASCADE's face has it: the face's normal must
+  // be turned for its boundary to run as its neighbours' do
+  // (cad_model_space_loop.hpp).
+  bool turned = false;
 };
 
 // The face's boundary wires on `surface` (the face's surface without

@@ -100,6 +100,10 @@ FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
   if (trimmed.IsNull() || !trimmed->HasOuterContour()) return boundary;
   const Handle(IGESGeom_CurveOnSurface) contour = trimmed->OuterContour();
   if (contour.IsNull()) return boundary;
+  const Handle(IGESData_IGESEntity) surface = trimmed->Surface();
+  const auto revolution = Handle(IGESGeom_SurfaceOfRevolution)::DownCast(surface);
+  if (!revolution.IsNull()) boundary.surface_rotation = revolution->EndAngle() - revolution->StartAngle();
+  boundary.model_space_only = contour->CurveUV().IsNull();
   std::vector<gp_XY> points;
   if (!sample_parameter_curve(contour->CurveUV(), points, 0) || points.size() < 3) return boundary;
   double twice_area = 0, u0 = points[0].X(), u1 = u0, v0 = points[0].Y(), v1 = v0;
@@ -111,9 +115,7 @@ FileBoundary file_boundary(const Handle(IGESGeom_TrimmedSurface)& trimmed) {
   }
   if (!(std::abs(twice_area) > 1e-9 * (u1 - u0) * (v1 - v0))) return boundary;
   boundary.sense = twice_area > 0 ? 1 : -1;
-  const Handle(IGESData_IGESEntity) surface = trimmed->Surface();
-  if (!surface.IsNull() && surface->IsKind(STANDARD_TYPE(IGESGeom_SurfaceOfRevolution)))
-    boundary.rotation_extent = v1 - v0;
+  if (!revolution.IsNull()) boundary.rotation_extent = v1 - v0;
   return boundary;
 }
 

@@ -37,6 +37,10 @@ namespace furrow::cad {
 struct FileBoundary {
   int sense = 0;                // +1 counterclockwise, -1 clockwise, 0 not given
   double rotation_extent = -1;  // range of the rotation angle v [rad] on a type 120, -1 if not one
+  // The outer boundary is a type 142 without a parameter-space curve
+  // (PPTR 0): only its model-space curve says where it runs.
+  bool model_space_only = false;
+  double surface_rotation = -1;  // terminate minus start angle of a type 120 [rad], -1 if not one
 };
 
 // The outer boundary of a type 144 entity; "not given" for a null handle

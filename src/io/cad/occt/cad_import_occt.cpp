@@ -99,7 +99,12 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   // Normals out of the material: OpenCASCADE's face orientation, and the
   // NURBS's own sense against the original surface's.
   const bool flipped = !cad::same_sense(nurbs, map, basis, bounds);
-  const bool reversed = ((face.Orientation() == TopAbs_REVERSED) != flipped) != sense.flip;
+  // A loop rebuilt from model-space curves that encloses its region on the
+  // other side than OpenCASCADE's face turns the face in a shell, whose
+  // sense came from the way the face's edges run (cad_model_space_loop.hpp);
+  // a face on its own keeps the file's surface normal.
+  const bool turned = wires.turned && sense.from_neighbours;
+  const bool reversed = (((face.Orientation() == TopAbs_REVERSED) != flipped) != sense.flip) != turned;
   report.orientation = sense.basis;
   report.flipped = sense.flip;
 

@@ -176,7 +176,7 @@ OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const T
     for (int k = 1; k <= own.Extent(); ++k) {
       solid_faces.Add(own(k));
       if (const int index = faces.FindIndex(own(k)); index > 0)
-        out.faces[static_cast<std::size_t>(index - 1)] = {inside_out, CadFaceOrientation::solid};
+        out.faces[static_cast<std::size_t>(index - 1)] = {inside_out, CadFaceOrientation::solid, true};
     }
   }
   std::vector<int> loose;
@@ -253,7 +253,7 @@ OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const T
       turn = agreeing_area < 0;  // keep the file's sense of most of the area
     }
     for (std::size_t k = 0; k < g.members.size(); ++k)
-      out.faces[static_cast<std::size_t>(g.members[k])] = {agrees[k] == turn, basis};
+      out.faces[static_cast<std::size_t>(g.members[k])] = {agrees[k] == turn, basis, g.members.size() > 1};
   }
   return out;
 }

@@ -29,6 +29,9 @@ namespace furrow::cad {
 struct FaceSense {
   bool flip = false;  // turn the file's orientation round
   CadFaceOrientation basis = CadFaceOrientation::file;
+  // The sense came from the face's neighbours (a solid, a sewn shell of two
+  // or more faces), through the way its edges run, not from the face alone.
+  bool from_neighbours = false;
 };
 
 struct OrientationOutcome {
