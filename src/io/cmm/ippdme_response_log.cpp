@@ -1,5 +1,6 @@
 #include "io/cmm/ippdme_response_log.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -403,7 +404,8 @@ bool is_ippdme_response_log(std::string_view text) {
 
 void parse_ippdme_response_log(std::string_view text, const std::string& name, const IppdmeSession* program,
                                const std::string& program_name, MeasurementSet& set) {
-  set.points.reserve(mf::count_lines(text) / 4 + 1);
+  // Every point has its data line, and every data line its '#'.
+  set.points.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '#')) + 1);
   SessionReader reader(name, program, program_name, set);
   mf::for_each_line(text, [&](int number, std::string_view line) { reader.line(number, line); });
   reader.finish();
