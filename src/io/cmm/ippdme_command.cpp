@@ -272,6 +272,8 @@ std::string parse_ippdme_command(std::string_view line, IppdmeCommand& out) {
     number = 10 * number + (line[k] - '0');
   }
   if (line[5] != ' ') return "NO SPACE AT POS 6";
+  // Tag 0 is not a command's (a server's event answers use E0000).
+  if (number == 0) return event ? "TAG NUMBER OUT OF RANGE FOR EVENT TAG" : "TAG NUMBER OUT OF RANGE FOR COMMAND TAG";
   out.tag.assign(line.substr(0, 5));
   out.event = event;
   out.number = number;

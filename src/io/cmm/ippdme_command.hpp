@@ -6,8 +6,8 @@
 // (ippdme_response_log.hpp). A hand-written scanner: no std::regex, so a
 // line of any length costs linear time and constant stack.
 //
-// Command: `TTTTT Name(arguments)`, the tag five digits (00000..99999) or
-// `E` and four digits (an event tag, required by the event commands
+// Command: `TTTTT Name(arguments)`, the tag five digits (00001..99999) or
+// `E` and four digits (E0001..E9999, an event tag, required by the event commands
 // AbortE, GetErrStatusE, GetPropE and OnMoveReportE and refused for every
 // other), one space, a command name of the spec, its arguments in
 // parentheses and nothing after them. An argument is a number (the spec's
