@@ -17,7 +17,7 @@
 #include <cstdlib>
 
 #include "base/error.hpp"
-#include "inspection/comparison.hpp"
+#include "inspection/fixed_alignment.hpp"
 #include "io/cmm/ippdme_response_log.hpp"
 #include "io/cmm/ippdme_session.hpp"
 #include "io/cmm/ippdme_writer.hpp"
@@ -224,12 +224,12 @@ TEST_CASE("a program from another client: every command passed over, SetCsyTrans
   const std::string prg =
       "00001 StartSession()\r\n00002 GetMachineClass()\r\n00003 EnumTools()\r\n00004 Home()\r\n"
       "00005 ChangeTool(\"Probe1\")\r\n00006 OnPtMeasReport(X(), Y(), Z(), IJK(), ER())\r\n"
-      "00007 PtMeas(X(1), Y(0), Z(0), IJK(1, 0, 0))\r\n"
-      "00008 SetCsyTransformation(PartCsy, 0, 0, 10, 0, 90, 0)\r\n00009 SetCoordSystem(PartCsy)\r\n"
+      "00007 SetCsyTransformation(PartCsy, 0, 0, 10, 0, 90, 0)\r\n00008 PtMeas(X(1), Y(0), Z(0), IJK(1, 0, 0))\r\n"
+      "00009 SetCoordSystem(PartCsy)\r\n"
       "00010 PtMeas(X(0), Y(1), Z(0), IJK(0, 1, 0))\r\n00011 EndSession()\r\n";
   const IppdmeSession s = parse_ippdme_session(prg, "other.prg");
   REQUIRE(s.ptmeas.size() == 2);
-  const std::string log = "00007 # X(2), Y(0), Z(0), IJK(1, 0, 0), ER(1)\n00010 # X(0), Y(2), Z(0), IJK(0, 1, 0), ER(1)\n";
+  const std::string log = "00008 # X(2), Y(0), Z(0), IJK(1, 0, 0), ER(1)\n00010 # X(0), Y(2), Z(0), IJK(0, 1, 0), ER(1)\n";
   const MeasurementSet set = read(log, &s);
   REQUIRE(set.points.size() == 2);
   // The MachineCsy point in PartCsy: R(psi 90) (2, 0, 0) + (0, 0, 10), R from NIST's world model:
@@ -248,20 +248,19 @@ TEST_CASE("a program from another client: every command passed over, SetCsyTrans
                        doctest::Contains("MoveableMachineCsy"), InputError);
   // A line of another language in a command file names its line.
   CHECK_THROWS_WITH_AS(parse_ippdme_session("00001 StartSession()\nGOTO/1,2,3\n", "x.prg"),
-                       "x.prg:2: not an I++ DME command (NOT A COMMAND (TAG, SPACE, COMMAND)): \"GOTO/1,2,3\"",
+                       "x.prg:2: not an I++ DME command (BAD TAG CHARACTER): \"GOTO/1,2,3\"",
                        InputError);
 }
 
 namespace {
 
-// Comparison in the CMM's frame (no fit): each point's deviation is its
-// compensated distance to the part, as compare reports it.
+// In the CMM's frame (no fit), as `furrow compare --align cmm` evaluates:
+// each point's deviation is its compensated distance to the part.
 std::vector<double> deviations_cmm(const test::CadPart& part, const MeasurementSet& set) {
-  CompareOptions o;
-  o.align = AlignMethod::cmm;
-  const Comparison c = compare_measurements(*part.finder, set, nullptr, o);
+  const RegistrationResult r =
+      evaluate_at_transform(*part.finder, set, Eigen::Isometry3d::Identity(), RegistrationOptions{}, "cmm");
   std::vector<double> d;
-  for (const RegisteredPoint& p : c.registration.points) d.push_back(p.deviation);
+  for (const RegisteredPoint& p : r.points) d.push_back(p.deviation);
   return d;
 }
 
