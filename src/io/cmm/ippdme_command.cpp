@@ -14,6 +14,30 @@ namespace {
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
+// The spec's number grammar, without building a message (the fast path
+// meets millions of numbers).
+enum class NumberProblem { none, two_dots, no_digits, too_many_digits, exponent, other };
+NumberProblem number_problem(std::string_view t, int max_digits) {
+  std::size_t k = 0;
+  if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+  int digits = 0, dots = 0;
+  for (; k < t.size() && (is_digit(t[k]) || t[k] == '.'); ++k) {
+    if (t[k] == '.') ++dots;
+    else ++digits;
+  }
+  if (dots > 1) return NumberProblem::two_dots;
+  if (digits < 1) return NumberProblem::no_digits;
+  if (digits > max_digits) return NumberProblem::too_many_digits;
+  if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
+    ++k;
+    if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+    int exponent = 0;
+    for (; k < t.size() && is_digit(t[k]); ++k) ++exponent;
+    if (exponent < 1 || exponent > 3) return NumberProblem::exponent;
+  }
+  return k == t.size() ? NumberProblem::none : NumberProblem::other;
+}
+
 // The commands of I++ DME 1.4 and the shape of their arguments where it is
 // fixed (NIST's parserCmd checks the same counts; docs/formats.md).
 enum class Arity { any, none, one_string, one_integer, one_event_tag, one_positive, one, four, seven, four_or_eight,
@@ -243,24 +267,15 @@ std::string check_arity(const CommandShape& c, const std::vector<IppdmeItem>& ar
 }  // namespace
 
 std::string ippdme_number_error(std::string_view t, int max_digits) {
-  std::size_t k = 0;
-  if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
-  int digits = 0, dots = 0;
-  for (; k < t.size() && (is_digit(t[k]) || t[k] == '.'); ++k) {
-    if (t[k] == '.') ++dots;
-    else ++digits;
+  switch (number_problem(t, max_digits)) {
+    case NumberProblem::none: return "";
+    case NumberProblem::two_dots: return "BAD NUMBER TWO DECIMAL POINTS";
+    case NumberProblem::no_digits: return "BAD NUMBER NO DIGITS";
+    case NumberProblem::too_many_digits: return "BAD NUMBER MORE THAN " + std::to_string(max_digits) + " DIGITS";
+    case NumberProblem::exponent: return "BAD E NUMBER EXPONENT MUST HAVE ONE TWO OR THREE DIGITS";
+    case NumberProblem::other: break;
   }
-  if (dots > 1) return "BAD NUMBER TWO DECIMAL POINTS";
-  if (digits < 1) return "BAD NUMBER NO DIGITS";
-  if (digits > max_digits) return "BAD NUMBER MORE THAN " + std::to_string(max_digits) + " DIGITS";
-  if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
-    ++k;
-    if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
-    int exponent = 0;
-    for (; k < t.size() && is_digit(t[k]); ++k) ++exponent;
-    if (exponent < 1 || exponent > 3) return "BAD E NUMBER EXPONENT MUST HAVE ONE TWO OR THREE DIGITS";
-  }
-  return k == t.size() ? "" : "BAD NUMBER";
+  return "BAD NUMBER";
 }
 
 std::string parse_ippdme_command(std::string_view line, IppdmeCommand& out) {
@@ -363,7 +378,7 @@ bool ippdme_point_items_fast(std::string_view s, int max_digits, IppdmePointItem
       while (k < s.size() && (is_digit(s[k]) || s[k] == '+' || s[k] == '-' || s[k] == '.' || s[k] == 'e' || s[k] == 'E'))
         ++k;
       const std::string_view number = s.substr(start, k - start);
-      if (!ippdme_number_error(number, max_digits).empty()) return false;
+      if (number_problem(number, max_digits) != NumberProblem::none) return false;
       if (!measurement_fields::try_number(number, v[a]) || !std::isfinite(v[a])) return false;
       skip();
       if (k >= s.size() || s[k] != (a + 1 < want ? ',' : ')')) return false;

@@ -46,8 +46,10 @@ std::string command_id(int tag, int use) {
 
 bool starts_with_word(std::string_view s, std::string_view word) {
   if (s.size() < word.size()) return false;
-  for (std::size_t k = 0; k < word.size(); ++k)
-    if (std::tolower(static_cast<unsigned char>(s[k])) != word[k]) return false;
+  for (std::size_t k = 0; k < word.size(); ++k) {
+    const char c = s[k] >= 'A' && s[k] <= 'Z' ? static_cast<char>(s[k] - 'A' + 'a') : s[k];  // ASCII, no locale
+    if (c != word[k]) return false;
+  }
   return true;
 }
 
