@@ -20,14 +20,21 @@ enum class NumberProblem { none, two_dots, no_digits, too_many_digits, exponent,
 NumberProblem number_problem(std::string_view t, int max_digits) {
   std::size_t k = 0;
   if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
-  int digits = 0, dots = 0;
+  // Answers (max_digits kIppdmeAnswerDigits) count significant digits: a
+  // double's shortest exact text may be 0.000 and then 17 more.
+  const bool significant = max_digits == kIppdmeAnswerDigits;
+  int digits = 0, counted = 0, dots = 0;
   for (; k < t.size() && (is_digit(t[k]) || t[k] == '.'); ++k) {
-    if (t[k] == '.') ++dots;
-    else ++digits;
+    if (t[k] == '.') {
+      ++dots;
+      continue;
+    }
+    ++digits;
+    if (!significant || counted > 0 || t[k] != '0') ++counted;
   }
   if (dots > 1) return NumberProblem::two_dots;
   if (digits < 1) return NumberProblem::no_digits;
-  if (digits > max_digits) return NumberProblem::too_many_digits;
+  if (counted > max_digits) return NumberProblem::too_many_digits;
   if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
     ++k;
     if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;

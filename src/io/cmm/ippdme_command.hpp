@@ -51,8 +51,9 @@ struct IppdmeCommand {
 
 // Empty when `text` is a number by the spec's grammar, else why not
 // ("BAD NUMBER MORE THAN 16 DIGITS", ...). `max_digits` is the spec's 16
-// for commands; answers are read with 17, the most the shortest exact form
-// of a double needs (docs/formats.md "Reading any I++ DME session").
+// for commands; answers are read with 17 significant digits (leading zeros
+// not counted), the most the shortest exact form of a double needs
+// (docs/formats.md "Reading any I++ DME session").
 constexpr int kIppdmeDigits = 16;
 constexpr int kIppdmeAnswerDigits = 17;
 std::string ippdme_number_error(std::string_view text, int max_digits = kIppdmeDigits);
