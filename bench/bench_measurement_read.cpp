@@ -1,9 +1,13 @@
 // Reading a million measured points (docs/formats.md "Measurements"): writes
 // POINTS points (default 1,000,000) as CSV, DMIS output and an I++ DME
-// response log into a temporary folder with the library's writers, then
+// response log into a temporary folder with the library's writers, and an
+// I++ DME client session log as NIST's clients write them (time stamps,
+// Sent: PtMeas commands, Received: answers with ER, CR CR LF and blank lines
+// between: docs/formats.md "Reading any I++ DME session"), then
 // reads each in a fresh process (so that its peak memory is the reader's
 // alone) and prints the file size, the wall time of the read and the peak
-// RSS (VmHWM). Targets: CSV < 2 s, every format < 10 s, peak memory < 3x the file.
+// RSS (VmHWM). Targets: CSV < 2 s, the I++ DME session log < 2 s, every format
+// < 10 s, peak memory < 3x the file.
 // Prints figures; it does not pass or fail.
 //   usage: bench_measurement_read [POINTS]
 #include <fcntl.h>
@@ -30,7 +34,8 @@ namespace fs = std::filesystem;
 // Child mode: read one file, print the seconds and the point count.
 int read_one(const std::string& path) {
   furrow::MeasurementReadOptions o;
-  o.kind = furrow::ProbePointKind::contact;
+  // The session log's answers carry ER(): ball centres, compensated by it.
+  if (fs::path(path).extension() != ".log") o.kind = furrow::ProbePointKind::contact;
   const auto t0 = std::chrono::steady_clock::now();
   const furrow::MeasurementSet set = furrow::read_measurements(path, o);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -70,6 +75,47 @@ std::string run_child(const std::string& file, const std::string& out_file) {
   return line;
 }
 
+// A client's session log of `n` PtMeas, each sent and answered (&, data
+// with IJK and ER, %), tags counting from 00001 and wrapping after 99999.
+std::string session_log(long n) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> c(-400, 400), d(-1, 1);
+  std::string out;
+  out.reserve(static_cast<std::size_t>(n) * 420);
+  char line[512];
+  auto stamp = [&](long second) {
+    std::snprintf(line, sizeof line, "04:08:18_%02ld:%02ld:%02ld ", (second / 3600) % 24, (second / 60) % 60,
+                  second % 60);
+    out += line;
+  };
+  stamp(0);
+  out += "*********** Starting DME file: bench.prg **********\r\r\n\r\n";
+  for (long k = 0; k < n; ++k) {
+    const int tag = static_cast<int>(k % 99999) + 1;
+    const Eigen::Vector3d p(c(rng), c(rng), c(rng));
+    const Eigen::Vector3d v = Eigen::Vector3d(d(rng), d(rng), d(rng) + 2).normalized();
+    const Eigen::Vector3d centre = p + 1.4985 * v;
+    stamp(k);
+    std::snprintf(line, sizeof line, "Sent: %05d PtMeas(X(%.6f), Y(%.6f), Z(%.6f), IJK(%.9f, %.9f, %.9f))\r\r\n\r\n",
+                  tag, p.x(), p.y(), p.z(), v.x(), v.y(), v.z());
+    out += line;
+    stamp(k);
+    std::snprintf(line, sizeof line, "Received: %05d &\r\r\n\r\n", tag);
+    out += line;
+    stamp(k);
+    std::snprintf(line, sizeof line,
+                  "Received: %05d # X(%.5f), Y(%.5f), Z(%.5f), IJK(%.5f, %.5f, %.5f), ER(1.4985)\r\r\n\r\n", tag,
+                  centre.x(), centre.y(), centre.z(), v.x(), v.y(), v.z());
+    out += line;
+    stamp(k);
+    std::snprintf(line, sizeof line, "Received: %05d %%\r\r\n\r\n", tag);
+    out += line;
+  }
+  stamp(n);
+  out += "Final Tag: 00001\r\r\n\r\n";
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -83,9 +129,12 @@ int main(int argc, char** argv) {
   const std::pair<const char*, furrow::MeasurementFormat> formats[] = {
       {"m.csv", furrow::MeasurementFormat::csv},
       {"m.dmo", furrow::MeasurementFormat::dmis},
-      {"m.res", furrow::MeasurementFormat::ippdme_log}};
+      {"m.res", furrow::MeasurementFormat::ippdme_log},
+      {"session.log", furrow::MeasurementFormat::automatic}};
   for (const auto& [name, format] : formats) {
-    {
+    if (format == furrow::MeasurementFormat::automatic) {
+      std::ofstream(dir / name, std::ios::binary) << session_log(n);
+    } else {
       // A part's worth of points with full-precision coordinates, as a CMM
       // reports them; the set is freed before the read.
       std::mt19937 rng(7);

@@ -1,9 +1,16 @@
-// Fuzz target: the strict reader of Furrow's I++ DME programs (docs/testing.md "Fuzz targets").
+// Fuzz target: the I++ DME program readers, the strict one of Furrow's own
+// files and the one of any client's (docs/testing.md "Fuzz targets").
 #include "fuzz_reader.hpp"
 #include "io/cmm/ippdme_reader.hpp"
+#include "io/cmm/ippdme_session.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return furrow_fuzz::run_reader(data, size, [](const std::string& text) {
-    furrow::parse_ippdme_program(text, "program.prg");
+    try {
+      furrow::parse_ippdme_program(text, "program.prg");
+    } catch (const furrow::InputError&) {
+      // refused by the strict reader; the reader of any client's programs still runs
+    }
+    furrow::parse_ippdme_session(text, "program.prg");
   });
 }

@@ -81,6 +81,9 @@ std::vector<InconclusiveReason> open_questions(const Comparison& c) {
                        fixed(100 * p.redundancy, 1) + " % of a deviation there shows in its reading and " + hidden +
                        "; measure more points around it (furrow remeasure), or align on datums"});
   }
+  for (const UnmeasuredPoint& u : c.not_measured)
+    out.push_back({"point_not_measured", u.id,
+                   "point " + u.id + " was not measured (" + u.reason + "): measure it again"});
   if (c.gouges)
     for (const GougeSiteCheck& site : c.gouges->sites)
       if (site.status == GougeSiteStatus::not_measured)
@@ -203,6 +206,7 @@ void summarize(Comparison& c) {
   const std::vector<RegisteredPoint>& pts = c.registration.points;
   ComparisonSummary s;
   s.points = pts.size();
+  s.not_measured = c.not_measured.size();
   c.in_tolerance.assign(pts.size(), false);
   std::vector<double> evaluated;
   std::map<int, std::vector<double>> by_region;
@@ -288,6 +292,7 @@ Comparison compare_measurements(const ClosestPointFinder& finder, const Measurem
   Comparison c;
   c.tolerance = options.tolerance;
   for (const MeasuredPoint& p : set.points) c.point_ids.push_back(p.id);
+  c.not_measured = set.not_measured;
   c.align = options.align;
   if (options.align == AlignMethod::bestfit) {
     c.registration = register_measurements(finder, set, plan, options.registration);

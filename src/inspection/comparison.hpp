@@ -11,7 +11,9 @@
 //   to be good: a point outside the zone that the outlier rule suspects of
 //   being a blunder (re-measure it), a predicted gouge site with no point on
 //   it, a plan region with fewer evaluated points than its minimum, or an
-//   alignment that the points do not determine (rank-deficient), or a
+//   alignment that the points do not determine (rank-deficient), a point
+//   the measurement file says was to be measured but was not (an I++ DME
+//   PtMeas answered by an error, MeasurementSet::not_measured), or a
 //   point in the best fit that the fit follows instead of checking it (its
 //   redundancy, registration.hpp, below kCheckedRedundancy);
 // - PASS: neither. PASS is never given for what was not seen.
@@ -63,7 +65,7 @@ Verdict parse_verdict(const std::string& text, const std::string& where);
 // Why a comparison that found nothing bad still cannot pass.
 struct InconclusiveReason {
   // "suspected_blunder", "gouge_not_measured", "region_below_minimum",
-  // "point_not_checked", "alignment_undetermined" or "alignment_failed"
+  // "point_not_checked", "point_not_measured", "alignment_undetermined" or "alignment_failed"
   std::string kind;
   std::string subject;  // the point id, the gouge site id, "region N", or "" for the alignment
   std::string text;     // for people, saying what to do ("re-measure point P0006: ...")
@@ -77,6 +79,7 @@ struct RegionStatistics {
 
 struct ComparisonSummary {
   std::size_t points = 0, in_fit = 0, evaluated = 0, outliers = 0;
+  std::size_t not_measured = 0;  // Comparison::not_measured
   std::size_t in_tolerance = 0, out_of_tolerance = 0;
   DeviationStatistics deviations;         // over evaluated points
   double profile = 0;                     // 2 max |d| over evaluated points [mm]
@@ -111,6 +114,9 @@ struct Comparison {
   std::optional<RegistrationResult> bestfit;
   std::optional<double> bestfit_profile;
   std::vector<std::string> point_ids;  // per point, as in the measurement set
+  // What the measurement file says was not measured (MeasurementSet::
+  // not_measured): counted, and never a pass.
+  std::vector<UnmeasuredPoint> not_measured;
   RegistrationResult registration;
   ToleranceZone tolerance;
   std::vector<std::optional<int>> region;  // per point

@@ -270,6 +270,7 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
                     {"in_fit", s.in_fit},
                     {"evaluated", s.evaluated},
                     {"outliers", s.outliers},
+                    {"not_measured", s.not_measured},
                     {"outlier_reasons", outlier_counts_json(c.registration)},
                     {"in_tolerance", s.in_tolerance},
                     {"out_of_tolerance", s.out_of_tolerance},
@@ -289,6 +290,13 @@ std::string comparison_to_json_text(const Comparison& c, const MeasurementSet& s
     regions.push_back(std::move(jr));
   }
   doc["regions"] = std::move(regions);
+  json unmeasured = json::array();
+  for (const UnmeasuredPoint& u : c.not_measured)
+    unmeasured.push_back({{"id", u.id},
+                          {"nominal", u.nominal ? jf::vector_json(*u.nominal) : json(nullptr)},
+                          {"reason", u.reason},
+                          {"line", u.line}});
+  doc["not_measured"] = std::move(unmeasured);
   std::vector<std::string> ids;
   for (const MeasuredPoint& p : set.points) ids.push_back(p.id);
   doc["prediction_comparison"] =

@@ -204,6 +204,7 @@ ComparisonSummary read_summary(const JsonCursor& n) {
   s.in_fit = n.count("in_fit");
   s.evaluated = n.count("evaluated");
   s.outliers = n.count("outliers");
+  if (n.has("not_measured")) s.not_measured = n.count("not_measured");  // files before it had none
   s.in_tolerance = n.count("in_tolerance");
   s.out_of_tolerance = n.count("out_of_tolerance");
   s.deviations = read_statistics(n.at("deviation"));

@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/cmm/ippdme_command.hpp"
 #include "io/cmm/ippdme_writer.hpp"
 #include "base/json_fields.hpp"
 
@@ -88,24 +89,7 @@ const std::string kNum = R"(([-+.0-9][-+.0-9eE]*))";
 
 }  // namespace
 
-bool is_ippdme_number(const std::string& t) {
-  std::size_t k = 0;
-  if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
-  int digits = 0, dots = 0;
-  for (; k < t.size() && (std::isdigit(static_cast<unsigned char>(t[k])) || t[k] == '.'); ++k) {
-    if (t[k] == '.') ++dots;
-    else ++digits;
-  }
-  if (digits < 1 || digits > 16 || dots > 1) return false;
-  if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
-    ++k;
-    if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
-    int exponent = 0;
-    for (; k < t.size() && std::isdigit(static_cast<unsigned char>(t[k])); ++k) ++exponent;
-    if (exponent < 1 || exponent > 3) return false;
-  }
-  return k == t.size();
-}
+bool is_ippdme_number(const std::string& t) { return ippdme_number_error(t).empty(); }
 
 ProbeProgram parse_ippdme_program(const std::string& text, const std::string& name) {
   const std::vector<Line> lines = crlf_lines(text, name);

@@ -8,7 +8,7 @@
 #include "base/json_fields.hpp"
 #include "base/text_fields.hpp"
 #include "io/cmm/dmis_results.hpp"
-#include "io/cmm/ippdme_reader.hpp"
+#include "io/cmm/ippdme_session.hpp"
 #include "io/cmm/ippdme_response_log.hpp"
 #include "io/cmm/measurement_csv.hpp"
 #include "io/cmm/measurement_fields.hpp"
@@ -40,6 +40,37 @@ const char* to_string(MeasuredFeatureType type) {
 
 namespace {
 
+// The ball the I++ DME answers are centres of: the ER() they report, else
+// the given diameter. Registration compensates one radius per set, so the
+// answers must agree with each other and with the diameter given for those
+// without ER().
+double ippdme_ball_diameter(const MeasurementSet& set, const std::string& name, const MeasurementReadOptions& o) {
+  const MeasuredPoint* first_er = nullptr;
+  const MeasuredPoint* first_without = nullptr;
+  for (const MeasuredPoint& p : set.points) {
+    if (!p.effective_radius) {
+      if (!first_without) first_without = &p;
+      continue;
+    }
+    if (!first_er) first_er = &p;
+    if (*p.effective_radius != *first_er->effective_radius)
+      measurement_fields::fail(name, p.line, "ER(" + measurement_fields::shortest(*p.effective_radius) +
+                                                 ") differs from ER(" + measurement_fields::shortest(*first_er->effective_radius) +
+                                                 ") on line " + std::to_string(first_er->line) +
+                                                 ": one ball radius per measurement set");
+  }
+  if (!first_er) return o.probe_diameter;
+  const double er = *first_er->effective_radius;
+  if (o.kind == ProbePointKind::contact)
+    measurement_fields::fail(name, first_er->line, "the answers report ER(), so they are ball centres, not contact points");
+  if (first_without && o.probe_diameter > 0 && o.probe_diameter != 2 * er)
+    measurement_fields::fail(name, first_without->line, "no ER() here, and the probe diameter " +
+                                                            measurement_fields::shortest(o.probe_diameter) +
+                                                            " mm is not twice the ER(" + measurement_fields::shortest(er) +
+                                                            ") of line " + std::to_string(first_er->line));
+  return 2 * er;
+}
+
 bool is_dmis_extension(const std::string& ext) {
   return ext == ".dmo" || ext == ".dms" || ext == ".out" || ext == ".dmi" || ext == ".dmis" || ext == ".res";
 }
@@ -48,13 +79,15 @@ bool is_dmis_extension(const std::string& ext) {
 
 MeasurementFormat measurement_format_from_path(const std::string& path, const std::string& text) {
   const std::string ext = lower_extension(path);
+  // An I++ DME session is told by its content, whatever the file is called
+  // (.res, .log, .txt ...: docs/formats.md "Measurements"); without the
+  // content the extension decides.
+  if (!text.empty() && ext != ".csv" && ext != ".qif" &&
+      is_ippdme_response_log(std::string_view(text).substr(has_bom(text) ? 3 : 0)))
+    return MeasurementFormat::ippdme_log;
   if (ext == ".csv") return MeasurementFormat::csv;
   if (ext == ".xyz" || ext == ".txt") return MeasurementFormat::xyz;
   if (ext == ".log" || ext == ".ipp") return MeasurementFormat::ippdme_log;
-  // .res is what DMIS systems and I++ DME clients both call results: the
-  // first line with content decides (docs/formats.md "Measurements").
-  if (ext == ".res" && is_ippdme_response_log(std::string_view(text).substr(has_bom(text) ? 3 : 0)))
-    return MeasurementFormat::ippdme_log;
   if (is_dmis_extension(ext)) return MeasurementFormat::dmis;
   if (ext == ".qif") return MeasurementFormat::qif;  // QIF 3.0 Results (measurement_qif.hpp)
   throw InputError(path + ": unknown measurement file type " + quote_field(ext) +
@@ -109,8 +142,8 @@ MeasurementSet parse_measurements(const std::string& file_text, const std::strin
       parse_dmis_results(text, name, set);
       break;
     case MeasurementFormat::ippdme_log: {
-      std::optional<ProbeProgram> program;
-      if (!options.ippdme_program.empty()) program = read_ippdme_program(options.ippdme_program);
+      std::optional<IppdmeSession> program;
+      if (!options.ippdme_program.empty()) program = read_ippdme_session(options.ippdme_program);
       parse_ippdme_response_log(text, name, program ? &*program : nullptr, options.ippdme_program, set);
       break;
     }
@@ -118,17 +151,26 @@ MeasurementSet parse_measurements(const std::string& file_text, const std::strin
     case MeasurementFormat::automatic:
       throw std::logic_error("parse_measurements: resolve the format first");
   }
-  if (set.points.empty()) throw InputError(name + ": no measured points in the file");
+  if (set.points.empty())
+    throw InputError(name + ": no measured points in the file" +
+                     (set.not_measured.empty() ? std::string()
+                                               : " (" + std::to_string(set.not_measured.size()) +
+                                                     " PtMeas not measured, the first: " + set.not_measured[0].id +
+                                                     ": " + set.not_measured[0].reason + ")"));
   measurement_fields::check_unique_ids(set, name);
-  const bool compensated = format == MeasurementFormat::dmis || format == MeasurementFormat::ippdme_log;
-  set.kind = options.kind.value_or(compensated ? ProbePointKind::contact : ProbePointKind::probe_centre);
   if (!std::isfinite(options.probe_diameter) || options.probe_diameter < 0)
     throw InputError(name + ": the probe diameter must be a non-negative number");
-  if (set.kind == ProbePointKind::probe_centre && !(options.probe_diameter > 0))
+  // I++ DME servers answer PtMeas with the ball's centre (docs/formats.md
+  // "Probe compensation of I++ DME answers"); DMIS results are compensated.
+  const bool compensated = format == MeasurementFormat::dmis;
+  set.kind = options.kind.value_or(compensated ? ProbePointKind::contact : ProbePointKind::probe_centre);
+  double diameter = options.probe_diameter;
+  if (format == MeasurementFormat::ippdme_log) diameter = ippdme_ball_diameter(set, name, options);
+  if (set.kind == ProbePointKind::probe_centre && !(diameter > 0))
     throw InputError(name +
                      ": the points are probe centres, so the probe diameter is needed "
                      "(--probe-diameter, or a plan with a probe)");
-  set.probe_radius = set.kind == ProbePointKind::probe_centre ? options.probe_diameter / 2 : 0.0;
+  set.probe_radius = set.kind == ProbePointKind::probe_centre ? diameter / 2 : 0.0;
   return set;
 }
 
@@ -138,8 +180,7 @@ MeasurementSet read_measurements(const std::string& path, const MeasurementReadO
   if (format == MeasurementFormat::automatic) format = measurement_format_from_path(path);
   if (format == MeasurementFormat::qif) return read_qif_measurements(path, options);  // parsed in place
   const std::string text = json_fields::read_text(path);
-  if (options.format == MeasurementFormat::automatic && lower_extension(path) == ".res")
-    format = measurement_format_from_path(path, text);
+  if (options.format == MeasurementFormat::automatic) format = measurement_format_from_path(path, text);
   return parse_measurements(text, path, format, options);
 }
 

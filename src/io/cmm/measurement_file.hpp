@@ -9,9 +9,9 @@
 //   XYZ   measurement_xyz.hpp: (.xyz, .txt) "x y z [i j k]" per line.
 //   DMIS  dmis_results.hpp: (.dmo, .dms, .out, .dmi, .dmis, .res) FA()
 //         actuals of points, planes, circles and cylinders.
-//   I++   ippdme_response_log.hpp: (.log, .ipp, and .res whose first line
-//         with content is a server response) the server's answers to a
-//         Furrow I++ DME program.
+//   I++   ippdme_response_log.hpp: (.log, .ipp, and any file whose content
+//         is an I++ DME session) a server's answers to any client's
+//         program: .res, plain and time-stamped session logs.
 //
 // Coordinates are converted to millimetres at this boundary (CSV and XYZ by
 // MeasurementReadOptions::units or the dialect's units, DMIS by its own UNITS
@@ -19,8 +19,9 @@
 // frame; nothing here knows the part.
 //
 // Probe: a CMM reports either the probe ball's centre (raw, the usual case
-// for scanning and for our simulated data) or the contact point it
-// compensated itself (the usual case for DMIS results and I++ DME PtMeas).
+// for scanning, for our simulated data and for I++ DME PtMeas answers, whose
+// ER() gives the radius) or the contact point it compensated itself (the
+// usual case for DMIS results).
 // The kind and the ball diameter travel with the set; registration
 // compensates centres along the nominal normal inside its loop
 // (docs/architecture.md "Inspection").
@@ -57,6 +58,19 @@ struct MeasuredPoint {
   // the actual), as written; empty when none. Recorded, not applied.
   std::string datum;
   int line = 0;  // source line, for messages
+  // I++ DME: the effective ball radius ER() the server reported with the
+  // point (it answers with the ball's centre); see MeasurementSet::kind.
+  std::optional<double> effective_radius;
+};
+
+// A point the file says was to be measured but was not (an I++ DME PtMeas
+// the server answered with an error, or did not answer): reported, counted,
+// never a pass (docs/formats.md "Reading any I++ DME session").
+struct UnmeasuredPoint {
+  std::string id;
+  std::optional<Eigen::Vector3d> nominal;  // the target, when the file has it
+  std::string reason;                      // e.g. the server's error text
+  int line = 0;
 };
 
 // A measured datum feature (DMIS FA() of a plane, circle or cylinder), as
@@ -80,6 +94,7 @@ struct MeasurementSet {
   std::string source;  // file name, for messages and reports
   std::vector<MeasuredPoint> points;
   std::vector<MeasuredFeature> features;  // DMIS datum features; points stay in `points`
+  std::vector<UnmeasuredPoint> not_measured;  // I++ DME PtMeas without a point
   ProbePointKind kind = ProbePointKind::probe_centre;
   double probe_radius = 0;     // [mm]; 0 for contact points
   bool ids_from_file = false;  // false when ids were generated (XYZ, CSV without id)
@@ -91,13 +106,16 @@ struct MeasurementReadOptions {
   MeasurementFormat format = MeasurementFormat::automatic;  // by extension
   std::string units = "mm";  // of CSV and XYZ coordinates ("mm" or "inch")
   CsvDialect dialect;        // CSV only; its units, when set, replace `units`
-  // I++ DME response logs: the program (.prg) the server ran, to match the
-  // responses to its PtMeas commands (ippdme_response_log.hpp); empty: none.
+  // I++ DME sessions: the program (.prg, any client's) the server ran, to
+  // match the responses to its PtMeas commands (ippdme_response_log.hpp);
+  // empty: none.
   std::string ippdme_program;
-  // Centres or contact points; unset = centres for CSV/XYZ, contact points
-  // for DMIS (what CMMs write there).
+  // Centres or contact points; unset = centres for CSV/XYZ/I++ DME, contact
+  // points for DMIS (what CMMs write there).
   std::optional<ProbePointKind> kind;
-  // Probe ball diameter [mm, regardless of `units`]; required (> 0) for centres.
+  // Probe ball diameter [mm, regardless of `units`]; required (> 0) for
+  // centres, except I++ DME answers that carry ER() (docs/formats.md "Probe
+  // compensation of I++ DME answers").
   double probe_diameter = 0;
 };
 
@@ -105,10 +123,10 @@ MeasurementSet read_measurements(const std::string& path, const MeasurementReadO
 // `name` stands for the source in messages; `format` must not be automatic.
 MeasurementSet parse_measurements(const std::string& text, const std::string& name,
                                   MeasurementFormat format, const MeasurementReadOptions& options);
-// By extension, in any case: .csv, .xyz/.txt, DMIS .dmo/.dms/.out/.dmi/.dmis,
-// I++ DME .log/.ipp; .res is DMIS unless `text` (the file's content, when
-// known) is an I++ DME response log (is_ippdme_response_log). InputError for
-// another extension.
+// By content first: any file but .csv and .qif whose `text` (the content,
+// when known) is an I++ DME session (is_ippdme_response_log); then by
+// extension, in any case: .csv, .xyz/.txt, DMIS .dmo/.dms/.out/.dmi/.dmis/
+// .res, I++ DME .log/.ipp. InputError for another extension.
 MeasurementFormat measurement_format_from_path(const std::string& path, const std::string& text = "");
 
 // The format a measurement file is written in by `furrow simulate-measurement

@@ -42,6 +42,20 @@ inline ProbeProgram tiny_program() {
   return p;
 }
 
+// tiny_program() with an indexable head: the middle point with the tip
+// turned (A 52.5, B -172.5), the others with the vertical tip A0B0.
+inline ProbeProgram tipped_program() {
+  ProbeProgram p = tiny_program();
+  p.head_length = 60;
+  p.steps[0].point.tip = TipAngles{0, 0};
+  p.steps[1].point.tip = TipAngles{52.5, -172.5};
+  p.steps[2].point.tip = TipAngles{0, 0};
+  p.steps[1].moves_before = {{5, 5, 12}, {15, 5, 12}, {15, 5, 9}};
+  p.tips = {{0, 0}, {52.5, -172.5}};
+  p.start_tip = TipAngles{0, 0};
+  return p;
+}
+
 // tiny_program() with `alignment`'s datum moves first, from (5, 5) over a
 // clearance plane at `clearance_z`.
 inline ProbeProgram tiny_program_with_alignment(const PartAlignment& alignment, double clearance_z) {

@@ -24,6 +24,7 @@
 #include "planning/alignment_moves.hpp"
 #include "planning/datum_selection.hpp"
 #include "cad_part_fixture.hpp"
+#include "nist_checker.hpp"
 #include "program_fixtures.hpp"
 #include "support/run_cli.hpp"
 
@@ -220,6 +221,8 @@ TEST_CASE("programs measure the datums first, and the strict readers give back t
   const std::string prg = ippdme_program_text(p);
   const std::size_t last_datum = prg.rfind("PtMeas", prg.find("SetCoordSystem(PartCsy)", prg.find("OnPtMeasReport")));
   CHECK(last_datum < prg.find("PtMeas(X(5.000000), Y(5.000000), Z(5.000000)"));
+  // A multi-face STEP part with plane datums: NIST's context checker finds nothing.
+  CHECK(nist_checker_findings(prg, "box.prg") == "");
   const ProbeProgram ipp = parse_ippdme_program(prg, "box.prg");
   REQUIRE(ipp.alignment_steps.size() == want.size());
   for (std::size_t k = 0; k < want.size(); ++k)
@@ -300,6 +303,7 @@ TEST_CASE("a part of one free-form face gets a manual best-fit alignment, docume
     CHECK((back.alignment_steps[k].point.xyz - a.manual[k].xyz).cwiseAbs().maxCoeff() <= 5e-7);
   REQUIRE(back.steps.size() == p.steps.size());
   CHECK(back.steps[0].moves_before == p.steps[0].moves_before);
+  CHECK(nist_checker_findings(ippdme_program_text(p), "mould.prg") == "");
   const ProbeProgram ipp = parse_ippdme_program(ippdme_program_text(p), "mould.prg");
   CHECK(ipp.alignment_steps.size() == 3);
 }

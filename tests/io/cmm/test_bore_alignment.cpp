@@ -25,6 +25,7 @@
 #include "planning/alignment_moves.hpp"
 #include "planning/datum_selection.hpp"
 #include "cad_part_fixture.hpp"
+#include "nist_checker.hpp"
 #include "program_fixtures.hpp"
 #include "support/run_cli.hpp"
 
@@ -182,6 +183,7 @@ TEST_CASE("bore alignment: DMIS measures the bore as a circle, sets both origins
   tilted.replace(circle + circle_line.size() - ending.size(), ending.size(), tilted_axis);
   CHECK_THROWS_WITH_AS(parse_dmis_program(tilted, "plate.dmi"), doctest::Contains("axis must be vertical"), InputError);
   // I++ DME measures the same points before setting the part frame.
+  CHECK(nist_checker_findings(ippdme_program_text(p), "plate.prg") == "");  // the bore datum too
   const ProbeProgram ipp = parse_ippdme_program(ippdme_program_text(p), "plate.prg");
   REQUIRE(ipp.alignment_steps.size() == want.size());
   for (std::size_t k = 0; k < want.size(); ++k)

@@ -49,18 +49,6 @@ int count(const std::string& text, const std::string& what) {
 
 // The tiny program's three points with tips: A0B0, then A90B0 twice (the
 // second change comes over the clearance plane: three moves).
-ProbeProgram tipped_program() {
-  ProbeProgram p = test::tiny_program();
-  p.head_length = 60;
-  p.steps[0].point.tip = TipAngles{0, 0};
-  p.steps[1].point.tip = TipAngles{52.5, -172.5};
-  p.steps[2].point.tip = TipAngles{0, 0};
-  p.steps[1].moves_before = {{5, 5, 12}, {15, 5, 12}, {15, 5, 9}};
-  p.tips = {{0, 0}, {52.5, -172.5}};
-  p.start_tip = TipAngles{0, 0};
-  return p;
-}
-
 // What a reader does not recover (comments, or nothing in I++), from the original.
 ProbeProgram with_header_of(ProbeProgram got, const ProbeProgram& original) {
   got.stylus_length = original.stylus_length;
@@ -127,7 +115,7 @@ TEST_CASE("tip names are DMIS labels and read back to their angles") {
 }
 
 TEST_CASE("DMIS: one sensor per tip, SNSLCT at each change, read back and rewritten byte for byte") {
-  const ProbeProgram p = tipped_program();
+  const ProbeProgram p = test::tipped_program();
   const std::string text = dmis_program_text(p);
   CHECK(count(text, "=SNSDEF/") == 2);
   CHECK(text.find("S(PROBE1_A0B0)=SNSDEF/PROBE,INDEX,POL,0,0,0,0,-1,60.000000,2.000000\r\n") != std::string::npos);
@@ -152,7 +140,7 @@ TEST_CASE("DMIS: one sensor per tip, SNSLCT at each change, read back and rewrit
 }
 
 TEST_CASE("I++ DME: ChangeTool per tip, read back and rewritten byte for byte") {
-  const ProbeProgram p = tipped_program();
+  const ProbeProgram p = test::tipped_program();
   const std::string text = ippdme_program_text(p);
   CHECK(count(text, "ChangeTool(") == 3);
   CHECK(text.find("ChangeTool(\"Probe1_A0B0\")") != std::string::npos);
