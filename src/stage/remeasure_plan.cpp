@@ -230,6 +230,17 @@ RemeasurePlan plan_remeasure(const Part& part, const ComparisonDocument& c, cons
         const Eigen::Vector2d uv = mid + 0.5 * Eigen::Vector2d(half.x() * std::cos(a), half.y() * std::sin(a));
         builder.at_uv(site->id + "_R" + std::to_string(k + 1), face, uv, target);
       }
+    } else if (reason.kind == "point_not_measured") {
+      // The CMM answered the point with an error (or not at all): take the
+      // same point again, as planned.
+      const auto j = plan_index.find(reason.subject);
+      if (j == plan_index.end()) {
+        out.not_covered.push_back(reason.text + (plan ? " (the plan holds no point " + reason.subject + ")"
+                                                      : std::string(" (needs the original plan: --plan)")));
+        continue;
+      }
+      const PlannedPoint& p = plan->points[j->second];
+      builder.add({p.id, p.face_index, p.uv, p.xyz, p.ijk, p.region}, target);
     } else if (reason.kind == "region_below_minimum") {
       if (!plan) {
         out.not_covered.push_back(reason.text + " (needs the original plan: --plan)");

@@ -27,6 +27,9 @@
 //                         the best fit followed it for want of neighbours,
 //                         comparison.hpp kCheckedRedundancy): their
 //                         deviations show where P's could not.
+//   point_not_measured P  P itself, as the original plan has it (the CMM
+//                         answered it with an error or not at all); needs
+//                         the plan.
 //   gouge_not_measured S  the site's uv-box centre (id S_C) and
 //                         `ring_points` points on the ellipse at half the
 //                         box's half-extents (S_R1..): all inside the
