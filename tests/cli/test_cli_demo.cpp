@@ -210,7 +210,7 @@ TEST_CASE("furrow demo: the planted gouge is confirmed, the report renders, a se
   }
 }
 
-TEST_CASE("furrow demo: only the planned FAIL exits 0; a failed computation or an inconclusive result is not hidden") {
+TEST_CASE("furrow demo: only the planned FAIL exits 0, a failed computation or an inconclusive result is not hidden") {
   // The mapping, against the exit statuses of docs (README "Exit status").
   CHECK(demo_exit_status(0) == 0);
   CHECK(demo_exit_status(1) == 0);  // the planned FAIL: the gouge
