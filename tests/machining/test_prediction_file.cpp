@@ -204,16 +204,26 @@ TEST_CASE("fuzz: z-map node counts and scallop passes are whole numbers, never c
   }
 }
 
+namespace {
+
+// Passes along u over the semi-cylinder, planned to 0.01 mm per step and
+// `scallop` between passes, for the 8 mm ball.
+Toolpath planned_semi_cylinder_path(const Part& part, const Cutter& ball, double scallop) {
+  ContactPlanOptions plan_options;
+  plan_options.forward.tolerance = 0.01;
+  plan_options.scallop = scallop;
+  plan_options.min_normal_z = 0.8;
+  Toolpath path = plan_tips(plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options));
+  path.source = "planned";
+  return path;
+}
+
+}  // namespace
+
 TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, errors queryable where they are") {
   const Part part = read_part(example("semi_cylinder.json"));
   const Cutter ball("BALL8", 4, 4);
-  ContactPlanOptions plan_options;
-  plan_options.forward.tolerance = 0.01;
-  plan_options.scallop = 0.01;
-  plan_options.min_normal_z = 0.8;
-  const ContactPlan plan = plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options);
-  Toolpath path = plan_tips(plan);
-  path.source = "planned";
+  const Toolpath path = planned_semi_cylinder_path(part, ball, 0.01);
   PathPredictionOptions options;
   options.tolerance = 0.01;
   options.resolution = 0.1;
@@ -266,13 +276,7 @@ TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, err
 TEST_CASE("prediction.json: a step whose search stops at its iteration cap is written not converged, never as exact") {
   const Part part = read_part(example("semi_cylinder.json"));
   const Cutter ball("BALL8", 4, 4);
-  ContactPlanOptions plan_options;
-  plan_options.forward.tolerance = 0.01;
-  plan_options.scallop = 0.05;
-  plan_options.min_normal_z = 0.8;
-  const ContactPlan plan = plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options);
-  Toolpath path = plan_tips(plan);
-  path.source = "planned";
+  const Toolpath path = planned_semi_cylinder_path(part, ball, 0.05);
   PathPredictionOptions options;
   options.tolerance = 0.01;
   options.resolution = 0.2;
