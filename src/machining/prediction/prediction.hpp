@@ -22,7 +22,7 @@
 
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/part.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/prediction/error_map.hpp"
 
 namespace furrow {

@@ -1,4 +1,4 @@
-// Work offsets in G-code (io/gcode_work_offsets.hpp): G10 L2 / G10 L20 and
+// Work offsets in G-code (io/machining/gcode_work_offsets.hpp): G10 L2 / G10 L20 and
 // G54-G59.3, checked against the same moves written in the part frame with
 // the offsets added by this test, read by the same reader.
 #include <doctest/doctest.h>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "base/error.hpp"
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 using namespace furrow;
 

@@ -48,7 +48,7 @@ std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std
 std::vector<ToolSpec> read_tool_library(const std::string& path);
 
 // A tool table: which cutter each tool number of a program is (G-code
-// `T n M6`, io/gcode_reader.hpp). A JSON object from "T<n>", "t<n>" or
+// `T n M6`, io/machining/gcode_reader.hpp). A JSON object from "T<n>", "t<n>" or
 // "<n>" (n a whole number from 1 to 1000000, leading zeros allowed; T0 is
 // the empty spindle) to a tool, either an
 // object as above or the name of a tool file, relative to the table's

@@ -1,4 +1,4 @@
-#include "io/gcode_work_offsets.hpp"
+#include "io/machining/gcode_work_offsets.hpp"
 
 namespace furrow {
 

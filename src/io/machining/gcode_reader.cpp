@@ -1,4 +1,4 @@
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
-#include "io/gcode_arc.hpp"
-#include "io/gcode_work_offsets.hpp"
+#include "io/machining/gcode_arc.hpp"
+#include "io/machining/gcode_work_offsets.hpp"
 #include "io/part_file.hpp"
 
 namespace furrow {

@@ -1,4 +1,4 @@
-// Tool tables (io/tool_file.hpp): which cutter each T number of a program
+// Tool tables (io/machining/tool_file.hpp): which cutter each T number of a program
 // is, written inline or as tool files beside the table, and every way a
 // table can be wrong, each named by file and key.
 #include <doctest/doctest.h>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;

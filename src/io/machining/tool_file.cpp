@@ -1,4 +1,4 @@
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 
 #include <algorithm>
 #include <cmath>

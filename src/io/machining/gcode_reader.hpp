@@ -56,7 +56,7 @@
 // line, in any word order.
 #include <string>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 namespace furrow {
 
