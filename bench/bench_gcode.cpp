@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 using namespace furrow;
 

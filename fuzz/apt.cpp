@@ -1,6 +1,6 @@
 // Fuzz target: the APT CL data tool-path reader (docs/testing.md "Fuzz targets").
 #include "fuzz_reader.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return furrow_fuzz::run_reader(data, size, [](const std::string& text) {

@@ -1,6 +1,6 @@
 // Fuzz target: the tool-library JSON reader (docs/testing.md "Fuzz targets").
 #include "fuzz_reader.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return furrow_fuzz::run_reader(data, size, [](const std::string& text) {

@@ -7,7 +7,7 @@ import os, re, sys
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 # Lowest first. A sub-folder is a layer of its own inside its module.
 LAYERS = [
-    "base", "geometry", "io/cad", "io", "io/qif", "io/cmm", "render", "partition",
+    "base", "geometry", "io/cad", "io", "io/machining", "io/qif", "io/cmm", "render", "partition",
     "machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
     "planning", "inspection", "report", "stage", "job", "cli",
 ]

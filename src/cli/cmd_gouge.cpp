@@ -7,7 +7,7 @@
 #include "cli/commands.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/gouge/gouge_map.hpp"
 #include "machining/gouge/gouge_report.hpp"
 

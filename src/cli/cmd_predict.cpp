@@ -13,9 +13,9 @@
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/cutter/path_tools.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "partition/classification.hpp"
 #include "partition/regions_file.hpp"
 #include "stage/predict_stage.hpp"
@@ -79,8 +79,7 @@ void print_summary(std::ostream& out, const Prediction& p) {
   if (s.points_below_surface)
     out << "  " << s.points_below_surface << " tips below the cutter-location surface (lowest " << um(s.lowest_gap)
         << ")\n";
-  out << "along the passes (per step): largest error " << um(s.max_step_error) << ", " << s.steps_over_tolerance
-      << " steps over the tolerance\n";
+  out << "along the passes (per step): " << describe_step_errors(s) << "\n";
   out << "z-map: " << p.zmap.nx << " x " << p.zmap.ny << " nodes at " << p.zmap.resolution << " mm, "
       << p.zmap.moves << " moves\n";
   auto extreme = [&](const char* what, const ErrorAt& e) {
@@ -219,7 +218,8 @@ const Command kPredictCommand = {
     "Predicts the error a 3-axis finishing path leaves on PART (sign: + material\n"
     "left, - overcut), from the swept cutter geometry itself:\n"
     "  - per move, exactly, along the design curve between its two contact points\n"
-    "    (largest undercut and overcut and where they are);\n"
+    "    (largest undercut and overcut and where they are); a move whose search\n"
+    "    stops at its iteration cap is counted and marked as not converged;\n"
     "  - over the whole part, by a z-map of every move: an error map per face,\n"
     "    the ridge between adjacent passes, and gouge sites (connected areas of\n"
     "    overcut beyond the threshold) with depth, area and extent;\n"

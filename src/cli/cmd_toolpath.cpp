@@ -11,7 +11,7 @@
 #include "cli/terminal_progress.hpp"
 #include "base/output_set.hpp"
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "stage/toolpath_options.hpp"
 #include "stage/toolpath_stage.hpp"
 

@@ -33,4 +33,6 @@ Job demo_job(const std::string& output) {
   return job;
 }
 
+int demo_exit_status(int job_status) { return job_status == kDemoPlannedFail ? 0 : job_status; }
+
 }  // namespace furrow

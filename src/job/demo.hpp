@@ -22,4 +22,12 @@ std::string find_demo_job();
 // current directory, not to the job file).
 Job demo_job(const std::string& output);
 
+// The exit status of `furrow demo` given the job's (0 ok, 1 fail, 2 bad
+// input, 3 the computation did not succeed, 4 inconclusive). The demo part
+// fails by design - its gouge - so a FAIL (1) is the planned outcome and
+// the demo exits 0; every other status comes out as it is, since a 3 or a
+// 4 means the demo did not show what it is there to show.
+constexpr int kDemoPlannedFail = 1;
+int demo_exit_status(int job_status);
+
 }  // namespace furrow

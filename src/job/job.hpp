@@ -22,7 +22,7 @@
 #include "inspection/comparison.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "io/cmm/measurement_file.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/prediction/path_prediction.hpp"
 #include "partition/partition.hpp"
 #include "planning/probe_planner.hpp"
@@ -51,7 +51,7 @@ struct Job {
   // Tool path: a file, or generated (exactly one of the two).
   std::optional<std::string> toolpath_file;
   ToolpathReadOptions toolpath_read;
-  // Tool table of a program that changes tools (toolpath.tools; io/tool_file.hpp);
+  // Tool table of a program that changes tools (toolpath.tools; io/machining/tool_file.hpp);
   // empty: none, every pass is cut with `tool`.
   std::string tool_table;
   std::optional<ToolpathGeneration> generate;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "io/part_file.hpp"
+#include "job/demo.hpp"
 #include "report_checks.hpp"
 #include "support/run_cli.hpp"
 
@@ -208,6 +209,31 @@ TEST_CASE("furrow demo: the planted gouge is confirmed, the report renders, a se
     CHECK(roles == std::set<std::string>{"comparison", "part", "measurements", "plan", "regions", "prediction"});
     CHECK(csv_rows(dir + "/again/points.csv") == csv_rows(out + "/points.csv"));
   }
+}
+
+TEST_CASE("furrow demo: only the planned FAIL exits 0, a failed computation or an inconclusive result is not hidden") {
+  // The mapping, against the exit statuses of docs (README "Exit status").
+  CHECK(demo_exit_status(0) == 0);
+  CHECK(demo_exit_status(1) == 0);  // the planned FAIL: the gouge
+  CHECK(demo_exit_status(2) == 2);
+  CHECK(demo_exit_status(3) == 3);
+  CHECK(demo_exit_status(4) == 4);
+  // End to end: `furrow demo` takes examples/jobs/demo.json from the current
+  // folder first, so a demo whose measurement cannot pass (the blunders of
+  // the simulation left outside the zone: INCONCLUSIVE, as `furrow run`
+  // below shows) must exit 4.
+  const std::string dir = scratch_dir("cli-demo-inconclusive");
+  demo_variant(dir, [](json& j) { j["measurements"]["simulate"]["prediction"] = false; });
+  fs::create_directories(dir + "/examples/jobs");
+  fs::rename(dir + "/job.json", dir + "/examples/jobs/demo.json");
+  const fs::path before = fs::current_path();
+  fs::current_path(dir);
+  const CliResult r = run_furrow({"demo", "--out", "out"});
+  fs::current_path(before);
+  INFO(r.out << r.err);
+  CHECK(r.status == 4);
+  CHECK(read_json(dir + "/out/report.json")["verdict"]["result"] == "INCONCLUSIVE");
+  CHECK(r.out.find("fails by design") == std::string::npos);
 }
 
 TEST_CASE("furrow run: an error-free part passes with exit status 0, with blunders outside the zone it is INCONCLUSIVE") {

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/cutter/cutter_location.hpp"
 #include "machining/prediction/prediction_file.hpp"
 #include "support/run_cli.hpp"

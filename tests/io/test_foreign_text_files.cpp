@@ -9,10 +9,10 @@
 
 #include "base/error.hpp"
 #include "io/cmm/measurement_file.hpp"
-#include "io/contact_point_file.hpp"
+#include "io/machining/contact_point_file.hpp"
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/tool_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 using namespace furrow;
 

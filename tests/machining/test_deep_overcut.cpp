@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "geometry/primitives.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/prediction/normal_error.hpp"
 #include "machining/prediction/path_prediction.hpp"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 #include "machining/cutter/cutter.hpp"
 #include "machining/prediction/zmap.hpp"
 

@@ -15,7 +15,7 @@
 
 #include "base/error.hpp"
 #include "geometry/primitives.hpp"
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "machining/prediction/path_prediction.hpp"
 #include "machining/prediction/prediction_file.hpp"

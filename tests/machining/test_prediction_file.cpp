@@ -204,16 +204,26 @@ TEST_CASE("fuzz: z-map node counts and scallop passes are whole numbers, never c
   }
 }
 
+namespace {
+
+// Passes along u over the semi-cylinder, planned to 0.01 mm per step and
+// `scallop` between passes, for the 8 mm ball.
+Toolpath planned_semi_cylinder_path(const Part& part, const Cutter& ball, double scallop) {
+  ContactPlanOptions plan_options;
+  plan_options.forward.tolerance = 0.01;
+  plan_options.scallop = scallop;
+  plan_options.min_normal_z = 0.8;
+  Toolpath path = plan_tips(plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options));
+  path.source = "planned";
+  return path;
+}
+
+}  // namespace
+
 TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, errors queryable where they are") {
   const Part part = read_part(example("semi_cylinder.json"));
   const Cutter ball("BALL8", 4, 4);
-  ContactPlanOptions plan_options;
-  plan_options.forward.tolerance = 0.01;
-  plan_options.scallop = 0.01;
-  plan_options.min_normal_z = 0.8;
-  const ContactPlan plan = plan_contact_points(part, ball, {PassDirection::along_u, 0}, plan_options);
-  Toolpath path = plan_tips(plan);
-  path.source = "planned";
+  const Toolpath path = planned_semi_cylinder_path(part, ball, 0.01);
   PathPredictionOptions options;
   options.tolerance = 0.01;
   options.resolution = 0.1;
@@ -261,6 +271,61 @@ TEST_CASE("a planned path on the semi-cylinder: prediction within tolerance, err
     CHECK((back.scallops[k].cusp_at.xyz - p.scallops[k].cusp_at.xyz).norm() < 1e-6);
     CHECK(back.scallops[k].cusp_at.face == p.scallops[k].cusp_at.face);
   }
+}
+
+TEST_CASE("prediction.json: a step whose search stops at its iteration cap is written not converged, never as exact") {
+  const Part part = read_part(example("semi_cylinder.json"));
+  const Cutter ball("BALL8", 4, 4);
+  const Toolpath path = planned_semi_cylinder_path(part, ball, 0.05);
+  PathPredictionOptions options;
+  options.tolerance = 0.01;
+  options.resolution = 0.2;
+  const Prediction exact = make_prediction(part, predict_path(part, ball, path, options), options, "p.json", "planned");
+  // One Brent iteration cannot place an extremum to 1e-7 mm.
+  options.step.refine_iterations = 1;
+  const Prediction capped = make_prediction(part, predict_path(part, ball, path, options), options, "p.json", "planned");
+  REQUIRE(exact.summary.steps_evaluated > 0);
+  REQUIRE(exact.summary.steps_not_converged);
+  CHECK(*exact.summary.steps_not_converged == 0);
+  REQUIRE(capped.summary.steps_not_converged);
+  CHECK(*capped.summary.steps_not_converged == capped.summary.steps_evaluated);
+  std::size_t not_converged = 0;
+  for (const StepRecord& s : capped.steps)
+    if (s.status == "evaluated") {
+      REQUIRE(s.converged);
+      if (!*s.converged) ++not_converged;
+    }
+  CHECK(not_converged == capped.summary.steps_evaluated);
+  // Written, and read back the same.
+  const std::string text = prediction_to_json_text(capped);
+  const nlohmann::json doc = nlohmann::json::parse(text);
+  CHECK(doc["summary"]["steps_not_converged"] == capped.summary.steps_evaluated);
+  for (const nlohmann::json& s : doc["steps"])
+    if (s["status"] == "evaluated") CHECK(s["converged"] == false);
+  const Prediction back = parse_prediction_json(text, "p.json");
+  REQUIRE(back.summary.steps_not_converged);
+  CHECK(*back.summary.steps_not_converged == capped.summary.steps_evaluated);
+  REQUIRE(back.steps.size() == capped.steps.size());
+  for (std::size_t k = 0; k < back.steps.size(); ++k) CHECK(back.steps[k].converged == capped.steps[k].converged);
+  // The summary line does not call them exact; the converged one does.
+  const std::string said = describe_step_errors(back.summary);
+  CHECK(said.find(std::to_string(capped.summary.steps_evaluated) + " steps did not converge: not exact") !=
+        std::string::npos);
+  CHECK(describe_step_errors(exact.summary).find("every step exact") != std::string::npos);
+  // A file from before `converged` was written: not known, not converged.
+  nlohmann::json old = nlohmann::json::parse(prediction_to_json_text(exact));
+  old["summary"].erase("steps_not_converged");
+  for (nlohmann::json& s : old["steps"]) s.erase("converged");
+  const Prediction older = parse_prediction_json(old.dump(), "old.json");
+  CHECK_FALSE(older.summary.steps_not_converged);
+  for (const StepRecord& s : older.steps) CHECK_FALSE(s.converged);
+  CHECK(describe_step_errors(older.summary).find("not recorded") != std::string::npos);
+  CHECK(describe_step_errors(older.summary).find("exact") == std::string::npos);
+  // A count that the steps do not bear out is refused.
+  nlohmann::json wrong = doc;
+  wrong["summary"]["steps_not_converged"] = 0;
+  CHECK_THROWS_WITH_AS(parse_prediction_json(wrong.dump(), "w.json"),
+                       doctest::Contains("summary.steps_not_converged: 0, but steps[] has"), InputError);
 }
 
 TEST_CASE("a 20 mm ball through the mould's dimple: local gouges at the bottom, gouge sites around it") {

@@ -7,7 +7,7 @@
 
 #include "base/error.hpp"
 #include "geometry/primitives.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/prediction/rapid_check.hpp"
 #include "support/weak_shapes.hpp"
 

@@ -14,7 +14,7 @@
 #include "base/error.hpp"
 #include "geometry/part.hpp"
 #include "geometry/primitives.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/cutter/contact_from_tip.hpp"
 #include "machining/cutter/cutter_curvature.hpp"
 #include "machining/cutter/cutter_location.hpp"

@@ -8,7 +8,7 @@
 #include "base/error.hpp"
 #include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/gouge/tool_selection.hpp"
 #include "cutter_reference.hpp"
 #include "support/run_cli.hpp"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "io/part_file.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/gouge/tool_selection.hpp"
 #include "support/run_cli.hpp"
 

@@ -14,7 +14,7 @@
 
 #include "base/error.hpp"
 #include "geometry/primitives.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/prediction/error_map.hpp"
 #include "machining/prediction/normal_error.hpp"
 #include "machining/prediction/path_prediction.hpp"

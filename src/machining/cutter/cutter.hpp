@@ -28,7 +28,7 @@
 #include <limits>
 #include <string>
 
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 
 namespace furrow {
 

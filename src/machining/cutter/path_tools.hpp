@@ -1,7 +1,7 @@
 #pragma once
 // Which cutter cuts each pass of a tool path, and which one travels each
 // rapid: the tool changes of a G-code program (`T n M6`, Toolpath::
-// tool_changes) resolved against a tool table (io/tool_file.hpp), or the
+// tool_changes) resolved against a tool table (io/machining/tool_file.hpp), or the
 // one tool of a program that does not change tools.
 //
 // Why a program that changes tools needs a table: the prediction of a pass
@@ -17,10 +17,10 @@
 //   (`--tool`) when one is given, and are refused otherwise (naming the
 //   first such line): the file does not say what is in the spindle.
 // - Without a table, every pass uses the single tool (required), or the
-//   cutter an APT file defines (io/apt_reader.hpp tool_for_path); the
+//   cutter an APT file defines (io/machining/apt_reader.hpp tool_for_path); the
 //   program may load one tool number, any number of times.
 // - An APT file that defines several cutters (CUTTER/ with another
-//   geometry changes the tool, io/apt_reader.hpp) is its own table: each
+//   geometry changes the tool, io/machining/apt_reader.hpp) is its own table: each
 //   pass is cut with the cutter defined last before it. A tool table is
 //   then refused, and a single tool, when given, must be the file's first
 //   cutter (as for a file with one).
@@ -32,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "io/tool_file.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/tool_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/cutter/cutter.hpp"
 
 namespace furrow {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
-#include "io/contact_point_file.hpp"
+#include "io/machining/contact_point_file.hpp"
 #include "geometry/closest_point.hpp"
 
 namespace furrow {

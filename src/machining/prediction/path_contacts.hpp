@@ -21,7 +21,7 @@
 #include <functional>
 #include <vector>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "geometry/closest_point.hpp"
 #include "machining/cutter/contact_from_tip.hpp"
 #include "machining/prediction/pass_scallops.hpp"

@@ -256,6 +256,7 @@ Prediction make_prediction(const Part& part, const PathPrediction& r, const Path
   s.max_overcut = error_at(part, r.map.max_overcut.error, r.map.max_overcut.at);
   s.max_overcut.found = s.max_overcut.found && r.map.max_overcut.found;
   s.steps = r.steps.size();
+  s.steps_not_converged = 0;
   for (const StepPrediction& st : r.steps) {
     StepRecord rec;
     rec.pass = st.pass;
@@ -267,6 +268,8 @@ Prediction make_prediction(const Part& part, const PathPrediction& r, const Path
       rec.undercut = error_at(part, st.error.undercut.error, st.error.undercut.at);
       rec.overcut = error_at(part, st.error.overcut.error, st.error.overcut.at);
       rec.chord_deviation = st.chord.deviation;
+      rec.converged = st.error.converged;
+      if (!st.error.converged) ++*s.steps_not_converged;
       const double magnitude = st.error.magnitude();
       s.max_step_error = std::max(s.max_step_error, magnitude);
       if (magnitude > options.tolerance + options.comparison_margin) ++s.steps_over_tolerance;

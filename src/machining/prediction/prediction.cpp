@@ -4,8 +4,22 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "base/number_text.hpp"
 
 namespace furrow {
+
+std::string describe_step_errors(const PredictionSummary& s) {
+  std::string text = "largest error " + fixed(s.max_step_error * 1000, 1) + " um, " +
+                     std::to_string(s.steps_over_tolerance) + " steps over the tolerance";
+  if (!s.steps_not_converged)
+    return text + " (whether each step's search converged is not recorded in this file)";
+  if (*s.steps_not_converged == 0) return text + ", every step exact";
+  // A search stopped by its cap found a value, not the extreme: the step's
+  // error may be larger than what it says (docs/formats.md "prediction.json").
+  return text + "; " + std::to_string(*s.steps_not_converged) +
+         (*s.steps_not_converged == 1 ? " step" : " steps") +
+         " did not converge: not exact, the errors found before the iteration cap (steps[].converged false)";
+}
 
 const FaceGridRecord* Prediction::find_face(const std::string& face) const {
   for (const FaceGridRecord& f : faces)

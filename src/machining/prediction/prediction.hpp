@@ -16,12 +16,13 @@
 // Sign convention (docs/architecture.md): positive = material left, negative = overcut.
 // Lengths in millimetres.
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/nurbs_surface.hpp"
 #include "geometry/part.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "machining/prediction/error_map.hpp"
 
 namespace furrow {
@@ -45,6 +46,12 @@ struct StepRecord {
   ErrorAt undercut;    // largest error of the step (>= 0)
   ErrorAt overcut;     // smallest error of the step (<= 0)
   double chord_deviation = 0;  // [mm] chord estimate, for comparison
+  // Whether every search of an evaluated step (roots, refinements, the
+  // strip beside the curve) settled within its tolerance before its
+  // iteration cap: only then are its errors the exact ones (false: the best
+  // found, an extreme can be larger). Empty: not recorded (a file from
+  // before it was written), which says nothing either way.
+  std::optional<bool> converged;
 };
 
 // Between two adjacent passes (pass_scallops.hpp): the ridge the z-map
@@ -139,7 +146,10 @@ struct ZMapRecord {
 struct PredictionSummary {
   ErrorAt max_undercut, max_overcut;  // over the error map (refined)
   std::size_t steps = 0, steps_evaluated = 0, steps_over_tolerance = 0;
-  double max_step_error = 0;  // [mm] largest |error| of an evaluated step
+  double max_step_error = 0;  // [mm] largest |error| of an evaluated step, converged or not
+  // Evaluated steps whose search did not converge (StepRecord::converged);
+  // empty when the file does not record it.
+  std::optional<std::size_t> steps_not_converged;
   // Between passes [mm], over the pass pairs: the ridge the z-map keeps
   // there (cusp plus the furrows along the passes where they meet it), and
   // the cusp alone (0 in files from before cusps were written).
@@ -150,6 +160,11 @@ struct PredictionSummary {
   std::size_t samples_reached = 0, samples_not_reached = 0, samples_not_machinable = 0;
   std::size_t samples_boundary = 0;  // error-map samples flagged boundary
 };
+
+// The per-step line of a prediction's summary ("largest error 10.0 um, 0
+// steps over the tolerance"), saying how many steps did not converge and
+// that their errors are not exact, or that the file does not record it.
+std::string describe_step_errors(const PredictionSummary& summary);
 
 struct PredictedError {
   ErrorCellStatus status = ErrorCellStatus::outside;  // of the cell containing (u, v)

@@ -58,6 +58,7 @@ json summary_json(const PredictionSummary& s) {
   j["steps"] = s.steps;
   j["steps_evaluated"] = s.steps_evaluated;
   j["steps_over_tolerance"] = s.steps_over_tolerance;
+  if (s.steps_not_converged) j["steps_not_converged"] = *s.steps_not_converged;
   j["max_step_error"] = length(s.max_step_error, "max_step_error");
   j["max_scallop"] = length(s.max_scallop, "max_scallop");
   j["max_cusp"] = length(s.max_cusp, "max_cusp");
@@ -152,6 +153,7 @@ std::string prediction_to_json_text(const Prediction& p) {
       o["max_undercut"] = error_at(s.undercut);
       o["max_overcut"] = error_at(s.overcut);
       o["chord_deviation"] = length(s.chord_deviation, "chord_deviation");
+      if (s.converged) o["converged"] = *s.converged;
     }
     steps.push_back(o);
   }

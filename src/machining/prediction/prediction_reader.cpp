@@ -1,4 +1,5 @@
 // The prediction.json reader (the writer is prediction_file.cpp).
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -196,6 +197,8 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
   sum.steps = s.count("steps");
   sum.steps_evaluated = s.count("steps_evaluated");
   sum.steps_over_tolerance = s.count("steps_over_tolerance");
+  // Optional: older files do not say whether the steps converged.
+  if (s.has("steps_not_converged")) sum.steps_not_converged = s.count("steps_not_converged");
   sum.max_step_error = s.number("max_step_error");
   sum.max_scallop = s.number("max_scallop");
   if (s.has("max_cusp")) sum.max_cusp = s.number("max_cusp");  // optional: older files have none
@@ -224,8 +227,16 @@ Prediction parse_prediction_json(const std::string& text, const std::string& nam
       r.undercut = read_error_at(o, "max_undercut");
       r.overcut = read_error_at(o, "max_overcut");
       r.chord_deviation = o.non_negative("chord_deviation");
+      if (o.has("converged")) r.converged = o.boolean("converged");  // optional: older files have none
     }
     p.steps.push_back(r);
+  }
+  if (sum.steps_not_converged) {
+    const auto listed = std::count_if(p.steps.begin(), p.steps.end(),
+                                      [](const StepRecord& r) { return r.converged && !*r.converged; });
+    if (static_cast<std::size_t>(listed) != *sum.steps_not_converged)
+      throw InputError(s.path("steps_not_converged") + ": " + std::to_string(*sum.steps_not_converged) +
+                       ", but steps[] has " + std::to_string(listed) + " steps with \"converged\": false");
   }
   const json& scallops = root.array("scallops");
   for (std::size_t k = 0; k < scallops.size(); ++k) {

@@ -41,7 +41,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/cutter/cutter.hpp"
 #include "machining/prediction/normal_error.hpp"
 

@@ -7,7 +7,7 @@
 // commas, '#', line breaks or surrounding blanks cannot be written (InputError).
 #include <string>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "machining/toolpath/contact_planning.hpp"
 
 namespace furrow {

@@ -1,11 +1,11 @@
-// Rapid moves kept by the G-code reader (io/toolpath_file.hpp RapidMove):
+// Rapid moves kept by the G-code reader (io/machining/toolpath_file.hpp RapidMove):
 // positions as programmed, lines, and the moves not in the part frame
 // marked unknown rather than placed.
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 using namespace furrow;
 

@@ -1,4 +1,4 @@
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "io/gcode_arc.hpp"
+#include "io/machining/gcode_arc.hpp"
 
 #include <algorithm>
 #include <cmath>

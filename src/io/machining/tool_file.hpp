@@ -48,16 +48,17 @@ std::vector<ToolSpec> parse_tool_library_json(const std::string& text, const std
 std::vector<ToolSpec> read_tool_library(const std::string& path);
 
 // A tool table: which cutter each tool number of a program is (G-code
-// `T n M6`, io/gcode_reader.hpp). A JSON object from "T<n>" (n a whole
-// number from 1 to 1000000; T0 is the empty spindle) to a tool, either an
+// `T n M6`, io/machining/gcode_reader.hpp). A JSON object from "T<n>", "t<n>" or
+// "<n>" (n a whole number from 1 to 1000000, leading zeros allowed; T0 is
+// the empty spindle) to a tool, either an
 // object as above or the name of a tool file, relative to the table's
 // folder:
 //
 //   {"T1": {"name": "FL12", "type": "flat", "diameter": 12}, "T7": "ball6.json"}
 //
 // Entries come back by tool number. Errors name the table and the key
-// ("table.json: T7.diameter: ..."), or the tool file a key names; "T7" and
-// "T07" are one number, given twice.
+// ("table.json: T7.diameter: ..."), or the tool file a key names; two keys
+// of one number ("T7" and "7", "T7" and "T07") are refused naming both.
 struct ToolTableEntry {
   int number = 0;
   ToolSpec tool;

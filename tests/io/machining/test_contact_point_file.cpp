@@ -1,7 +1,7 @@
 #include <doctest/doctest.h>
 
 #include "base/error.hpp"
-#include "io/contact_point_file.hpp"
+#include "io/machining/contact_point_file.hpp"
 
 using namespace furrow;
 

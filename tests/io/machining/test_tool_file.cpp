@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "base/error.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;

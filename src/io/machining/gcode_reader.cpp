@@ -1,4 +1,4 @@
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -8,7 +8,8 @@
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
-#include "io/gcode_arc.hpp"
+#include "io/machining/gcode_arc.hpp"
+#include "io/machining/gcode_work_offsets.hpp"
 #include "io/part_file.hpp"
 
 namespace furrow {
@@ -120,7 +121,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
   bool absolute = true;
   int motion = -1;  // 0 rapid, 1 linear, 2 clockwise arc, 3 counter-clockwise arc, -1 none yet
   ArcPlane plane = ArcPlane::xy;
-  int work_offset = 0;  // 54..59 once selected
+  GcodeWorkOffsets offsets;
   double feed = 0;
   double position[3] = {0, 0, 0};
   bool known[3] = {false, false, false};
@@ -160,6 +161,10 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     bool home = false;     // G28
     bool machine = false;  // G53
     bool change = false;   // M6
+    bool g10 = false;      // G10: sets a work offset, moves nothing
+    double l_word = 0, p_word = 0;
+    std::string l_text;  // as written, for messages
+    bool l_given = false, p_given = false;
     int motion_here = -1;  // motion word on this line
     for (const Word& w : words) {
       // Only errors and ignored words need the word as written.
@@ -191,13 +196,13 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
             home = true;
           } else if (g == 53) {
             machine = true;
-          } else if (g >= 54 && g <= 59 && g == std::floor(g)) {
-            const int offset = static_cast<int>(g);
-            if (work_offset != 0 && offset != work_offset)
-              fail_line(name, number, written() + " switches the work offset from G" + std::to_string(work_offset) +
-                                          ": the offsets between them are not in the file, so the path "
-                                          "must stay in one part frame");
-            work_offset = offset;
+          } else if (const int system = GcodeWorkOffsets::system_of(g)) {
+            offsets.select(system);
+          } else if (g == 10) {
+            g10 = true;
+          } else if (g == 92 || g == 92.1 || g == 92.2 || g == 92.3 || g == 52) {
+            fail_line(name, number, written() + " (coordinate system offset) is not supported: set work offsets "
+                                    "with G10 L2 or G10 L20 and select them with G54-G59.3");
           } else if (g == 41 || g == 42) {
             fail_line(name, number, written() + " (cutter compensation) is not supported: the control would "
                                     "offset the path by a radius that is not in the file");
@@ -207,8 +212,8 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           } else if (is_ignored_g(g)) {
             path.ignored.push_back({number, written()});
           } else {
-            fail_line(name, number, written() + " is not supported (G0 G1 G2 G3, G17-G21, G90 G91, G28, G53 and "
-                                    "G54-G59 move or place the tool here)");
+            fail_line(name, number, written() + " is not supported (G0 G1 G2 G3, G17-G21, G90 G91, G28, G53, "
+                                    "G10 L2/L20 and G54-G59.3 move or place the tool here)");
           }
           break;
         }
@@ -228,6 +233,15 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
           if (centre_given[a]) fail_line(name, number, std::string(1, w.letter) + " is given twice");
           centre_given[a] = true;
           centre[a] = w.value;
+          break;
+        }
+        case 'L':
+        case 'P': {
+          bool& given = w.letter == 'L' ? l_given : p_given;
+          if (given) fail_line(name, number, std::string(1, w.letter) + " is given twice");
+          given = true;
+          (w.letter == 'L' ? l_word : p_word) = w.value;
+          if (w.letter == 'L') l_text = unquoted(quote_field(w.text));
           break;
         }
         case 'R':
@@ -259,6 +273,37 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
         default:
           fail_line(name, number, "word " + written() + " is not supported (no rotary axes in 3-axis paths)");
       }
+    }
+    if ((l_given || p_given) && !g10)
+      fail_line(name, number, std::string("word ") + (l_given ? "L" : "P") + " is not supported outside G10 L2/L20");
+    if (g10) {
+      if (motion_here >= 0 || home || machine || change)
+        fail_line(name, number, "G10 with a move or tool change on its line: give it a line of its own");
+      if (!l_given || (l_word != 2 && l_word != 20)) {
+        if (!l_given) fail_line(name, number, "G10 without L: only G10 L2 and G10 L20 (work offsets) are read");
+        const std::string l = "G10 L" + l_text;
+        if (l_word == 1 || l_word == 10 || l_word == 11)
+          fail_line(name, number, l + " (tool table) is not supported: give the tools in a tool table (--tools)");
+        fail_line(name, number, l + " is not supported: only G10 L2 and G10 L20 (work offsets) are read");
+      }
+      if (!p_given || !(p_word >= 0 && p_word <= GcodeWorkOffsets::kSystems && p_word == std::floor(p_word)))
+        fail_line(name, number, "G10 L" + l_text + " needs P0 (the active system) or P1-P9 (G54-G59.3)");
+      if (radius_given)
+        fail_line(name, number, "G10 with R (a rotated work system) is not supported: the path would turn about Z");
+      if (centre_given[0] || centre_given[1] || centre_given[2]) fail_line(name, number, "I J K belong to an arc (G2 or G3)");
+      const int system = p_word == 0 ? offsets.active() : static_cast<int>(p_word);
+      // As on LinuxCNC: the values are absolute whatever G90/G91, in the
+      // program's units; axes not given keep their offset.
+      for (int a = 0; a < 3; ++a) {
+        if (!axis_given[a]) continue;
+        const double value = target[a] * scale;
+        limits::check_coordinate(value, name + ":" + std::to_string(number) + ": G10 " + char('X' + a));
+        if (l_word == 2)
+          offsets.set_absolute(system, a, value);
+        else
+          offsets.set_to_read(system, a, value, known[a], position[a]);
+      }
+      continue;
     }
     if (change) {
       // The spindle goes to the change position (machine coordinates) and
@@ -305,6 +350,7 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     if (motion < 0) fail_line(name, number, "coordinates before any motion mode (G0, G1, G2 or G3)");
     // Unit and mode changes on this line apply to its own coordinates
     // (they were read above, in any word order).
+    offsets.fix_frame();
     double next[3];
     for (int a = 0; a < 3; ++a) {
       if (!axis_given[a]) {
@@ -313,7 +359,15 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
       }
       const double value = target[a] * scale;
       if (absolute) {
-        next[a] = value;
+        double shift = 0;
+        if (!offsets.shift(a, shift))
+          fail_line(name, number, std::string(1, char('X' + a)) + " in " + GcodeWorkOffsets::name(offsets.active()) +
+                                      ": its offset from the part frame (" +
+                                      GcodeWorkOffsets::name(offsets.frame_system()) +
+                                      ", in effect at the first move) is not in the file (set both with G10 L2, "
+                                      "or this one with G10 L20 where the position is known)");
+        // Unshifted coordinates stay bit for bit as written.
+        next[a] = shift != 0 ? value + shift : value;
       } else {
         if (!known[a])
           fail_line(name, number, std::string("relative move in ") + char('X' + a) +

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "base/error.hpp"
-#include "io/apt_reader.hpp"
-#include "io/gcode_reader.hpp"
+#include "io/machining/apt_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 using namespace furrow;
 

@@ -13,7 +13,7 @@
 // FROM/, RAPID, UNITS/MM|INCHES (applies to what follows; before it
 // ToolpathReadOptions::units), FEDRAT/ (per minute in mm or inch: the
 // points' feed; per revolution: 0, the spindle speed is the machine's),
-// circular arcs flattened by io/gcode_arc.hpp exactly as the G-code reader's:
+// circular arcs flattened by io/machining/gcode_arc.hpp exactly as the G-code reader's:
 // CIRCLE/xc,yc,zc,i,j,k,r[,...] followed by the GOTO that ends the arc (NX,
 // CATIA; counter-clockwise about i,j,k, which must lie along x, y or z), and
 // INDIRV/ + TLON,GOFWD/(CIRCLE/xc,yc,zc,r),ON,(LINE/...) (the arc starts
@@ -44,7 +44,7 @@
 // followed by its GOTO.
 #include <string>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 namespace furrow {
 

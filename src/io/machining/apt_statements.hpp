@@ -1,6 +1,6 @@
 #pragma once
 // APT CL text cut into statements (docs/formats.md "Tool paths", APT CL
-// data): the lexical layer of io/apt_reader.hpp, kept apart so the reader
+// data): the lexical layer of io/machining/apt_reader.hpp, kept apart so the reader
 // deals with meaning only.
 //
 // A statement is one line, or several when a line ends in `$` (the statement

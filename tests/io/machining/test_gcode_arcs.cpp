@@ -7,7 +7,7 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "io/gcode_reader.hpp"
+#include "io/machining/gcode_reader.hpp"
 
 using namespace furrow;
 

@@ -1,4 +1,4 @@
-// Tool tables (io/tool_file.hpp): which cutter each T number of a program
+// Tool tables (io/machining/tool_file.hpp): which cutter each T number of a program
 // is, written inline or as tool files beside the table, and every way a
 // table can be wrong, each named by file and key.
 #include <doctest/doctest.h>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -45,6 +45,15 @@ TEST_CASE("tool table: inline tools and tool files beside the table, by tool num
   CHECK(table[2].tool.name == "B6");
   CHECK(table[2].tool.corner_radius == 3);
   CHECK(table[2].file == dir + "/ball6.json");
+  // Bare numbers are keys too, and mix with T keys: "5" is tool 5.
+  const std::vector<ToolTableEntry> bare =
+      parse_tool_table_json("{\"5\": \"ball6.json\", \"T2\": {\"name\": \"F4\", \"type\": \"flat\", \"diameter\": 4}}",
+                            "bare.json", dir);
+  REQUIRE(bare.size() == 2);
+  CHECK(bare[0].number == 2);
+  CHECK(bare[0].tool.name == "F4");
+  CHECK(bare[1].number == 5);
+  CHECK(bare[1].tool.name == "B6");
   // A tool file the table names is read with its own name in errors.
   test::write_text(dir + "/bad.json", "{\"T1\": \"missing.json\"}\n");
   CHECK_THROWS_WITH_AS(read_tool_table(dir + "/bad.json"), doctest::Contains((dir + "/missing.json").c_str()), InputError);
@@ -61,6 +70,17 @@ TEST_CASE("tool table: bad tables are refused, naming the file and the key") {
   CHECK(error_of("{\"T99999999\": " + tool + "}").find("table.json: \"T99999999\": expected a tool number") == 0);
   CHECK(error_of("{\"T7\": " + tool + ", \"T07\": " + tool + "}").find("table.json: T7: tool 7 is given twice (also T07)") ==
         0);
+  // One number under two spellings (the keys are read in sorted order).
+  CHECK(error_of("{\"1\": " + tool + ", \"T1\": " + tool + "}").find("table.json: T1: tool 1 is given twice (also 1)") == 0);
+  CHECK(error_of("{\"T02\": " + tool + ", \"2\": " + tool + "}").find("table.json: T02: tool 2 is given twice (also 2)") ==
+        0);
+  CHECK(error_of("{\"t1\": " + tool + ", \"001\": " + tool + "}").find("table.json: t1: tool 1 is given twice (also 001)") ==
+        0);
+  CHECK(error_of("{\"0\": " + tool + "}").find("table.json: \"0\": expected a tool number") == 0);
+  CHECK(error_of("{\"-1\": " + tool + "}").find("table.json: \"-1\": expected a tool number") == 0);
+  CHECK(error_of("{\"1000001\": " + tool + "}").find("table.json: \"1000001\": expected a tool number") == 0);
+  CHECK(error_of("{\"\": " + tool + "}").find("table.json: \"\": expected a tool number") == 0);
+  CHECK(error_of("{\"1 \": " + tool + "}").find("table.json: \"1 \": expected a tool number") == 0);
   // The same key twice: a JSON parser keeps one of them without a word.
   CHECK(error_of("{\"T7\": " + tool + ", \"T7\": " + tool + "}")
             .find("table.json: member \"T7\" is given twice in one object") == 0);

@@ -1,4 +1,4 @@
-#include "io/contact_point_file.hpp"
+#include "io/machining/contact_point_file.hpp"
 
 #include <cctype>
 #include <cerrno>

@@ -1,4 +1,4 @@
-#include "io/apt_statements.hpp"
+#include "io/machining/apt_statements.hpp"
 
 #include <cctype>
 

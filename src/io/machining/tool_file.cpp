@@ -1,4 +1,4 @@
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -172,10 +172,14 @@ std::vector<ToolTableEntry> parse_tool_table_json(const std::string& text, const
   std::map<long, std::string> keys;  // tool number -> its key as written
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     const std::string& key = it.key();
-    const bool digits = key.size() >= 2 && key.size() <= 9 && key.find_first_not_of("0123456789", 1) == std::string::npos;
-    const long number = digits && (key[0] == 'T' || key[0] == 't') ? std::stol(key.substr(1)) : -1;
+    // "T7", "t7", "7" and "T07" all name tool 7 (docs/formats.md "Tool table").
+    const std::size_t first = !key.empty() && (key[0] == 'T' || key[0] == 't') ? 1 : 0;
+    const bool digits = key.size() > first && key.size() - first <= 8 &&
+                        key.find_first_not_of("0123456789", first) == std::string::npos;
+    const long number = digits ? std::stol(key.substr(first)) : -1;
     if (number < 1 || number > 1000000)
-      throw InputError(name + ": " + quote_field(key) + ": expected a tool number \"T1\" to \"T1000000\" as the key");
+      throw InputError(name + ": " + quote_field(key) +
+                       ": expected a tool number \"T1\" to \"T1000000\" (or \"1\" to \"1000000\") as the key");
     const std::string where = name + ": " + key;
     if (const auto twice = keys.find(number); twice != keys.end())
       throw InputError(where + ": tool " + std::to_string(number) + " is given twice (also " + twice->second + ")");

@@ -9,7 +9,7 @@
 // part frame; the tool axis is +z.
 //
 // G-code: the dialect of Fanuc-style CAM posts, arcs flattened to polylines;
-// what is read, ignored and refused is listed in io/gcode_reader.hpp.
+// what is read, ignored and refused is listed in io/machining/gcode_reader.hpp.
 //
 // CSV: `x,y,z` tool tips or `x,y,z,nx,ny,nz` contact points with their
 // surface normals, one point per line, an optional header line naming the
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "io/tool_file.hpp"
+#include "io/machining/tool_file.hpp"
 
 namespace furrow {
 
@@ -87,7 +87,7 @@ struct Toolpath {
   std::vector<ToolChange> tool_changes;  // in file order (G-code only)
   std::string source;                // file name, for reports
   // The cutter the file itself defines first (APT `CUTTER/`,
-  // io/apt_reader.hpp), and the line that defines it; empty for G-code and CSV.
+  // io/machining/apt_reader.hpp), and the line that defines it; empty for G-code and CSV.
   std::optional<ToolSpec> tool;
   int tool_line = 0;
   // Every cutter the file defines (APT), in order of definition: a pass or
@@ -108,13 +108,13 @@ struct ToolpathReadOptions {
   // Units of CSV coordinates, and of G-code before any G20/G21 ("mm"|"inch").
   std::string units = "mm";
   // G-code arcs (G2/G3) become polylines whose chords stay within this
-  // distance of the arc [mm] (io/gcode_arc.hpp): 0.1 µm, the resolution the
+  // distance of the arc [mm] (io/machining/gcode_arc.hpp): 0.1 µm, the resolution the
   // reports print.
   double arc_tolerance = 1e-4;
 };
 
 // Dispatches on the extension: .csv / .txt as CSV, .cl / .apt / .cls as APT
-// CL data (io/apt_reader.hpp), anything else as G-code.
+// CL data (io/machining/apt_reader.hpp), anything else as G-code.
 Toolpath read_toolpath(const std::string& path, const ToolpathReadOptions& options = {});
 Toolpath parse_toolpath_csv(const std::string& text, const std::string& name,
                             const ToolpathReadOptions& options = {});
@@ -128,5 +128,5 @@ std::string toolpath_to_gcode(const Toolpath& path, double safe_z, double feed,
 }  // namespace furrow
 
 // parse_gcode and parse_apt, declared with their dialects; need the types above.
-#include "io/apt_reader.hpp"    // IWYU pragma: export
-#include "io/gcode_reader.hpp"  // IWYU pragma: export
+#include "io/machining/apt_reader.hpp"    // IWYU pragma: export
+#include "io/machining/gcode_reader.hpp"  // IWYU pragma: export

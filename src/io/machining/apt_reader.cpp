@@ -1,4 +1,4 @@
-#include "io/apt_reader.hpp"
+#include "io/machining/apt_reader.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
 #include "base/text_fields.hpp"
-#include "io/apt_statements.hpp"
-#include "io/gcode_arc.hpp"
+#include "io/machining/apt_statements.hpp"
+#include "io/machining/gcode_arc.hpp"
 #include "io/part_file.hpp"
 
 namespace furrow {
@@ -218,7 +218,7 @@ class AptReader {
     if (rapid_next_) {
       if (circle_) fail_line(name_, circle_->line, "CIRCLE/ is followed by a RAPID move instead of its GOTO/");
       rapid_next_ = false;
-      RapidMove rapid;  // checked against the part like a G0 (io/toolpath_file.hpp)
+      RapidMove rapid;  // checked against the part like a G0 (io/machining/toolpath_file.hpp)
       rapid.line = line;
       rapid.tool = tool_;
       rapid.known = known_;

@@ -20,8 +20,11 @@
 // mode, as on Fanuc controls) end the pass
 // and make the named axes (all, for a bare G28) unknown until an absolute
 // position is given again: the machine's home is not in the part frame.
-// G54-G59: the first one selected is the part frame; a switch to another one
-// is an error (the offsets between them are not in the file). G43 H: the
+// Work systems G54-G59.3 and their offsets G10 L2 / G10 L20 Pn (P0 the
+// active one), as LinuxCNC reads them (gcode_work_offsets.hpp): positions
+// come back in the part frame, the system in effect at the first move; a
+// coordinate in a system whose offset from it the file does not give is an
+// error. G43 H: the
 // positions are taken as tool tips, i.e. the length offset is assumed to be
 // the one the tool was measured with; G43 is listed in `ignored`.
 //
@@ -41,7 +44,9 @@
 //
 // Refused, naming the line (dropping them would predict the wrong part):
 // G90.1 (absolute arc centres), cutter compensation G41/G42, canned cycles
-// G73 G74 G76 G81-G89, G53 with G1/G2/G3 on its line, rotary axes A B C,
+// G73 G74 G76 G81-G89, G53 with G1/G2/G3 on its line, G10 other than L2 and
+// L20 (L1 L10 L11 tool tables), G10 with R (rotation) or a move on its
+// line, G92 G92.1-G92.3 G52, rotary axes A B C,
 // any other G code or letter, arc errors (gcode_arc.hpp), I J K R outside an
 // arc or in the wrong plane, an arc with both R and I J K.
 //
@@ -51,7 +56,7 @@
 // line, in any word order.
 #include <string>
 
-#include "io/toolpath_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 
 namespace furrow {
 
