@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
+#include "base/numbers.hpp"
 #include "base/text_fields.hpp"
 #include "io/cmm/measurement_fields.hpp"
 
@@ -24,10 +25,9 @@ const char* to_string(IppdmeCsy csy) {
 }
 
 Eigen::Isometry3d ippdme_csy_transformation(double x0, double y0, double z0, double theta, double psi, double phi) {
-  const double d = M_PI / 180.0;
-  const double c1 = std::cos(theta * d), s1 = std::sin(theta * d);
-  const double c2 = std::cos(psi * d), s2 = std::sin(psi * d);
-  const double c3 = std::cos(phi * d), s3 = std::sin(phi * d);
+  const double c1 = std::cos(radians(theta)), s1 = std::sin(radians(theta));
+  const double c2 = std::cos(radians(psi)), s2 = std::sin(radians(psi));
+  const double c3 = std::cos(radians(phi)), s3 = std::sin(radians(phi));
   Eigen::Matrix3d m;
   m << c2 * c3 - c1 * s2 * s3, s2 * c3 + c1 * c2 * s3, s1 * s3,  //
       -(c2 * s3) - c1 * s2 * c3, -(s2 * s3) + c1 * c2 * c3, s1 * c3,  //

@@ -131,8 +131,7 @@ TEST_CASE("NIST I++ DME command files: all parse, the planted errors are refused
   }
 }
 
-TEST_CASE("NIST I++ DME command parser errors: every command of parserCmdErrors.prg that NIST refuses for its "
-          "syntax or argument count is refused") {
+TEST_CASE("NIST I++ DME parser errors: each command of parserCmdErrors.prg NIST refuses for syntax or arguments is refused") {
   // One command at a time, as NIST's parser reads them: the lines that
   // parserCmdErrors.txt answers with MUST HAVE..., ARGUMENT MUST BE ...,
   // BAD NUMBER..., ILLEGAL SPACE, EVENT COMMAND ... or TAG NUMBER OUT OF

@@ -194,7 +194,7 @@ TEST_CASE("a PtMeas answered by an error is a point not measured, with the serve
   CHECK(set.not_measured[0].id == session.ptmeas[2].tag);
 }
 
-TEST_CASE("answers to other commands and events are not points; a line that is not I++ DME names its line") {
+TEST_CASE("answers to other commands and events are not points, and a line that is not I++ DME names its line") {
   const std::string log =
       "00001 &\r\n00001 # GetMachineClass(\"CartCMM\")\r\n00001 %\r\n"
       "00002 &\r\n00002 # \"Probe1\"\r\n00002 # \"Probe2\"\r\n00002 %\r\n"
