@@ -9,7 +9,7 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 LAYERS = [
     "base", "geometry", "io/cad", "io", "io/machining", "io/qif", "io/cmm", "render", "partition",
     "machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
-    "planning", "inspection", "report", "stage", "job", "cli",
+    "planning", "inspection", "results", "report", "stage", "job", "cli",
 ]
 # Layers that sit side by side: neither may include the other.
 MACHINING = {"machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath"}
@@ -21,6 +21,8 @@ OWNERS = {
     r"<ceres/": ("src/inspection/",),
     r"<png\.h>|<opencv2/imgcodecs": ("src/render/png.",),
     r"<pugixml": ("src/io/qif/",),
+    r"<sqlite3\.h>": ("src/results/sqlite_",),
+    r"<libpq-fe\.h>|<pqxx/": ("src/results/postgres_",),
 }
 
 def layer_of(rel):  # rel: path below src/
