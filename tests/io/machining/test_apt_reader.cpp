@@ -11,18 +11,14 @@
 #include "base/error.hpp"
 #include "io/machining/apt_reader.hpp"
 #include "io/machining/gcode_reader.hpp"
+#include "support/input_error.hpp"
 
 using namespace furrow;
 
 namespace {
 
 std::string error_of(const std::string& text, const ToolpathReadOptions& options = {}) {
-  try {
-    parse_apt(text, "cam.cl", options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_of([&] { parse_apt(text, "cam.cl", options); });
 }
 
 // Same passes, point by point, to 1e-9 mm.

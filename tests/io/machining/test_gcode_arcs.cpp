@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "io/machining/gcode_reader.hpp"
+#include "support/input_error.hpp"
 
 using namespace furrow;
 
@@ -16,12 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_gcode(text, "arc.nc");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_of([&] { parse_gcode(text, "arc.nc"); });
 }
 
 // All points of the only pass, which must start at `start`.

@@ -10,18 +10,14 @@
 
 #include "base/error.hpp"
 #include "io/machining/gcode_reader.hpp"
+#include "support/input_error.hpp"
 
 using namespace furrow;
 
 namespace {
 
 std::string error_of(const std::string& text) {
-  try {
-    parse_gcode(text, "cam.nc");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_of([&] { parse_gcode(text, "cam.nc"); });
 }
 
 constexpr double kNone = NAN;
