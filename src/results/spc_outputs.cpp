@@ -1,11 +1,13 @@
 #include "results/spc_outputs.hpp"
 
 #include "base/atomic_file.hpp"
+#include "results/spc_html.hpp"
 
 namespace furrow {
 
 std::vector<SpcOutputFile> render_spc(const SpcResult& result, const SpcSelection& selection) {
   std::vector<SpcOutputFile> files;
+  files.push_back({"spc.html", spc_html(result, selection)});
   files.push_back({"spc.json", spc_json(result, selection)});
   return files;
 }

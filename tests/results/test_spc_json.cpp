@@ -9,6 +9,7 @@
 #include "results/spc_json.hpp"
 #include "results/spc_outputs.hpp"
 #include "results/spc_statistics.hpp"
+#include "spc_batch.hpp"
 #include "spc_oracle.hpp"
 #include "support/run_cli.hpp"
 
@@ -18,31 +19,6 @@ using furrow::test::scratch_dir;
 using furrow::test::slurp;
 
 namespace {
-
-// Three characteristics over 30 parts: a drifting point (violations), a
-// region in control, and a point measured in the first part only.
-SpcInput batch() {
-  SpcInput in;
-  for (int i = 0; i < 30; ++i)
-    in.parts.push_back({"SN" + std::to_string(100 + i), "2026-11-" + std::to_string(10 + i % 18) + "T08:00:00Z",
-                        i == 29 ? "FAIL" : "PASS"});
-  CharacteristicSeries drift{"P0002", "point", -0.05, 0.05, {}, {}};
-  const std::vector<double> noise = spc_oracle::normal_sample(42, 30, 0, 0.002);
-  for (std::size_t i = 0; i < 30; ++i) {
-    drift.part_index.push_back(i);
-    drift.values.push_back(0.0025 * static_cast<double>(i) + noise[i]);
-  }
-  CharacteristicSeries region{"R1", "region", -0.03, 0.04, {}, {}};
-  const std::vector<double> calm = spc_oracle::normal_sample(2029, 30, 0.005, 0.004);
-  for (std::size_t i = 0; i < 30; ++i) {
-    if (i == 12) continue;  // not measured in that part
-    region.part_index.push_back(i);
-    region.values.push_back(calm[i]);
-  }
-  CharacteristicSeries once{"P0001", "point", -0.05, 0.05, {0}, {0.01}};
-  in.characteristics = {once, drift, region};
-  return in;
-}
 
 void check_number(const json& j, const std::optional<double>& v) {
   if (v) {
@@ -56,7 +32,7 @@ void check_number(const json& j, const std::optional<double>& v) {
 }  // namespace
 
 TEST_CASE("spc.json holds every figure of the computation and reads back exactly") {
-  const SpcResult r = compute_spc(batch());
+  const SpcResult r = compute_spc(spc_batch());
   const SpcSelection selection{"results.sqlite", {{"part-number", "M-100-A"}, {"last", "30"}}};
   const std::string text = spc_json(r, selection);
   const json doc = json::parse(text);
@@ -138,7 +114,7 @@ TEST_CASE("spc.json holds every figure of the computation and reads back exactly
 }
 
 TEST_CASE("spc.json is the same bytes whatever order the characteristics came in") {
-  SpcInput in = batch();
+  SpcInput in = spc_batch();
   const SpcSelection selection{"results.sqlite", {}};
   const std::string first = spc_json(compute_spc(in), selection);
   std::swap(in.characteristics[0], in.characteristics[2]);
@@ -151,7 +127,7 @@ TEST_CASE("spc.json is the same bytes whatever order the characteristics came in
 TEST_CASE("write_spc_outputs publishes the folder whole") {
   const std::string dir = scratch_dir("spc-outputs");
   const std::string out = dir + "/spc";
-  const SpcResult r = compute_spc(batch());
+  const SpcResult r = compute_spc(spc_batch());
   const SpcSelection selection{"results.sqlite", {}};
   write_spc_outputs(r, selection, out);
   const std::vector<SpcOutputFile> files = render_spc(r, selection);
