@@ -6,6 +6,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "base/limits.hpp"
 #include "results/spc_nelson_rules.hpp"
 #include "results/spc_student_t.hpp"
 
@@ -17,10 +18,14 @@ void check_series(const CharacteristicSeries& c, std::size_t part_count) {
   if (c.part_index.size() != c.values.size())
     throw InputError(where + std::to_string(c.values.size()) + " values for " + std::to_string(c.part_index.size()) +
                      " part indices");
-  if (!std::isfinite(c.lower) || !std::isfinite(c.upper) || !(c.lower < c.upper))
-    throw InputError(where + "the zone's lower limit must be below its upper limit, both finite");
+  // Deviations and limits within the coordinate range (docs/formats.md
+  // "Limits"), so no sum of squares can overflow.
+  auto in_range = [](double v) { return std::isfinite(v) && std::abs(v) <= limits::kMaxCoordinateMm; };
+  if (!in_range(c.lower) || !in_range(c.upper) || !(c.lower < c.upper))
+    throw InputError(where + "the zone's lower limit must be below its upper limit, both finite within 1e6 mm");
   for (std::size_t i = 0; i < c.values.size(); ++i) {
-    if (!std::isfinite(c.values[i])) throw InputError(where + "value " + std::to_string(i) + " is not finite");
+    if (!in_range(c.values[i]))
+      throw InputError(where + "value " + std::to_string(i) + " is not a finite deviation within 1e6 mm");
     if (c.part_index[i] >= part_count)
       throw InputError(where + "part index " + std::to_string(c.part_index[i]) + " beyond the " +
                        std::to_string(part_count) + " parts");
@@ -31,10 +36,16 @@ void check_series(const CharacteristicSeries& c, std::size_t part_count) {
 
 // Capability of the zone [lower, upper] for a process centred at `mean`
 // with `sigma`: the potential index and the one that sees the centring.
-void capability(double lower, double upper, double mean, double sigma, std::optional<double>& potential,
+// False when a sigma too small for a double (a spread of a few 1e-310 mm)
+// makes an index infinite: then neither is given.
+bool capability(double lower, double upper, double mean, double sigma, std::optional<double>& potential,
                 std::optional<double>& actual) {
-  potential = (upper - lower) / (6 * sigma);
-  actual = std::min(upper - mean, mean - lower) / (3 * sigma);
+  const double p = (upper - lower) / (6 * sigma);
+  const double a = std::min(upper - mean, mean - lower) / (3 * sigma);
+  if (!std::isfinite(p) || !std::isfinite(a)) return false;
+  potential = p;
+  actual = a;
+  return true;
 }
 
 // Least squares of value on part index, and its interval from the residual
@@ -118,11 +129,13 @@ CharacteristicSpc characteristic_spc(const CharacteristicSeries& s, const std::v
   c.sigma_overall = overall;
   c.lcl = mean - 3 * within;
   c.ucl = mean + 3 * within;
-  // Every moving range zero means every value equal (and then ss is 0
-  // too): no spread to compare the zone or the rules with.
-  if (within > 0 && overall > 0) {
-    capability(s.lower, s.upper, mean, within, c.cp, c.cpk);
-    capability(s.lower, s.upper, mean, overall, c.pp, c.ppk);
+  // Every moving range zero means every value equal: no spread to compare
+  // the zone or the rules with.
+  if (within > 0) {
+    const bool short_term = capability(s.lower, s.upper, mean, within, c.cp, c.cpk);
+    const bool long_term = capability(s.lower, s.upper, mean, overall, c.pp, c.ppk);
+    if (!short_term || !long_term)
+      c.notes.push_back("no capability for a spread this small: an index would be infinite");
     for (const NelsonViolation& v : nelson_violations(s.values, mean, within))
       c.violations.push_back({v.rule, v.index, v.last, parts[s.part_index[v.index]].serial});
   } else {

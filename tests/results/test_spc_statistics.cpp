@@ -127,6 +127,14 @@ TEST_CASE("a series too short or without variation has no capability and says wh
   CHECK(cf.notes.size() == 1);
   CHECK(cf.notes[0].find("zero sigma") != std::string::npos);
 
+  // A spread of one subnormal step: the sigmas exist, an index would be infinite.
+  const SpcResult tiny = compute_spc(one_series({0.0, 5e-324, 0.0}));
+  CHECK(*tiny.characteristics[0].sigma_within > 0);
+  CHECK_FALSE(tiny.characteristics[0].cpk.has_value());
+  CHECK_FALSE(tiny.characteristics[0].ppk.has_value());
+  REQUIRE(tiny.characteristics[0].notes.size() == 1);
+  CHECK(tiny.characteristics[0].notes[0].find("infinite") != std::string::npos);
+
   const SpcResult two = compute_spc(one_series({0.01, 0.03}));
   REQUIRE(two.characteristics[0].slope.has_value());
   CHECK(std::abs(two.characteristics[0].slope->value - 0.02) < 1e-15);
@@ -293,6 +301,8 @@ TEST_CASE("a series that breaks the contract is refused naming the characteristi
   CHECK_THROWS_AS(compute_spc(in), InputError);
   in = one_series({0.01, NAN, 0.03});
   CHECK_THROWS_AS(compute_spc(in), InputError);
+  in = one_series({0.01, 2e6});
+  CHECK_THROWS_WITH_AS(compute_spc(in), doctest::Contains("1e6 mm"), InputError);
   in = one_series({0.01, 0.02});
   in.characteristics[0].part_index[1] = 5;
   CHECK_THROWS_AS(compute_spc(in), InputError);
