@@ -162,16 +162,20 @@ SpcResult compute_spc(const SpcInput& input) {
   return result;
 }
 
-bool violation_in_latest_part(const SpcResult& result) {
-  if (result.parts.empty()) return false;
+std::vector<std::pair<std::size_t, std::size_t>> latest_part_violations(const SpcResult& result) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  if (result.parts.empty()) return out;
   const std::size_t latest = result.parts.size() - 1;
-  for (const CharacteristicSpc& c : result.characteristics) {
+  for (std::size_t k = 0; k < result.characteristics.size(); ++k) {
+    const CharacteristicSpc& c = result.characteristics[k];
     if (c.part_index.empty() || c.part_index.back() != latest) continue;
-    for (const SpcViolation& v : c.violations)
-      if (v.last == c.values.size() - 1) return true;
+    for (std::size_t v = 0; v < c.violations.size(); ++v)
+      if (c.violations[v].last == c.values.size() - 1) out.emplace_back(k, v);
   }
-  return false;
+  return out;
 }
+
+bool violation_in_latest_part(const SpcResult& result) { return !latest_part_violations(result).empty(); }
 
 std::vector<std::size_t> worst_first(const SpcResult& result) {
   std::vector<std::size_t> order(result.characteristics.size());

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "results/characteristic_series.hpp"
@@ -77,6 +78,10 @@ SpcResult compute_spc(const SpcInput& input);
 // ends there (a violation that ends at the last value is still going on).
 // The `furrow spc` command exits 1 when it does (docs/spc.md "Exit status").
 bool violation_in_latest_part(const SpcResult& result);
+
+// The violations that reach the latest part, as (characteristic position,
+// violation position) pairs, characteristics by id, violations by index.
+std::vector<std::pair<std::size_t, std::size_t>> latest_part_violations(const SpcResult& result);
 
 // Characteristic positions, worst first: lowest cpk first (those without a
 // cpk after all that have one), then most violations, then by id.

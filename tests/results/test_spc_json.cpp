@@ -8,6 +8,7 @@
 
 #include "results/spc_json.hpp"
 #include "results/spc_outputs.hpp"
+#include "results/spc_summary.hpp"
 #include "results/spc_statistics.hpp"
 #include "spc_batch.hpp"
 #include "spc_oracle.hpp"
@@ -139,4 +140,29 @@ TEST_CASE("write_spc_outputs publishes the folder whole") {
   for (const auto& e : std::filesystem::directory_iterator(out)) entries += e.is_regular_file();
   CHECK(entries == files.size());
   CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("the summary names the worst characteristics and what the latest part violates") {
+  const SpcResult r = compute_spc(spc_batch());
+  const std::string text = spc_summary(r, 2);
+  CHECK(text.rfind("spc: 30 parts (SN100 .. SN129), 3 characteristics, ", 0) == 0);
+  // Two characteristics listed, worst first.
+  CHECK(text.find("\n  P0002  n 30  cpk ") != std::string::npos);
+  CHECK(text.find("\n  R1  n 29  cpk ") != std::string::npos);
+  CHECK(text.find("P0001  n") == std::string::npos);
+  CHECK(text.find("P0002") < text.find("R1"));
+  // The latest part: every violation that reaches it, by rule.
+  std::string expected = "latest part SN129: ";
+  const auto latest = latest_part_violations(r);
+  REQUIRE_FALSE(latest.empty());
+  for (std::size_t k = 0; k < latest.size(); ++k) {
+    const CharacteristicSpc& c = r.characteristics[latest[k].first];
+    const SpcViolation& v = c.violations[latest[k].second];
+    CHECK(v.last + 1 == c.n);
+    expected += (k ? ", " : "") + c.id + " rule " + std::to_string(v.rule);
+  }
+  CHECK(text.find(expected + "\n") != std::string::npos);
+  SpcInput calm = spc_batch();
+  calm.characteristics.erase(calm.characteristics.begin() + 1);  // without the drifting point
+  CHECK(spc_summary(compute_spc(calm)).find("latest part SN129: no Nelson rule violated\n") != std::string::npos);
 }

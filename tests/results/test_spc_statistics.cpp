@@ -75,6 +75,15 @@ TEST_CASE("Student t quantiles match the exact forms and the printed table") {
   CHECK(student_t_quantile(0.5, 7).value == 0.0);
 }
 
+TEST_CASE("the t quantile and the incomplete beta report a cap reached instead of a guess") {
+  const IncompleteBetaResult beta = regularized_incomplete_beta(30, 0.5, 0.9, {1e-15, 2});
+  CHECK_FALSE(beta.converged);
+  CHECK(beta.iterations == 2);
+  const StudentQuantileResult t = student_t_quantile(0.975, 3, {1e-12, 3});
+  CHECK_FALSE(t.converged);
+  CHECK(t.iterations == 3);
+}
+
 TEST_CASE("capability and chart limits match a hand computation") {
   // mean 0.02; moving ranges 0.02 0.01 0.02 0.04 -> mean 0.0225;
   // squares about the mean 1e-4 1e-4 0 4e-4 4e-4 -> s^2 = 1e-3 / 4.
