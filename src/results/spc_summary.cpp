@@ -1,5 +1,6 @@
 #include "results/spc_summary.hpp"
 
+#include <set>
 #include <vector>
 
 #include "base/number_text.hpp"
@@ -25,9 +26,18 @@ std::string spc_summary(const SpcResult& r, std::size_t worst) {
   const auto latest = latest_part_violations(r);
   s += "latest part " + r.parts.back().serial + ": ";
   if (latest.empty()) return s + "no Nelson rule violated\n";
-  for (std::size_t k = 0; k < latest.size(); ++k) {
-    const CharacteristicSpc& c = r.characteristics[latest[k].first];
-    s += (k ? ", " : "") + c.id + " rule " + std::to_string(c.violations[latest[k].second].rule);
+  // One entry per characteristic: its id and the rules, in rule order.
+  for (std::size_t k = 0; k < latest.size();) {
+    if (k > 0) s += "; ";
+    const std::size_t at = latest[k].first;
+    std::set<int> rules;
+    for (; k < latest.size() && latest[k].first == at; ++k) rules.insert(r.characteristics[at].violations[latest[k].second].rule);
+    s += r.characteristics[at].id + (rules.size() > 1 ? " rules " : " rule ");
+    bool first = true;
+    for (int rule : rules) {
+      s += (first ? "" : ", ") + std::to_string(rule);
+      first = false;
+    }
   }
   return s + "\n";
 }
