@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <set>
 
 #include "base/error.hpp"
 #include "base/limits.hpp"
+#include "base/text_fields.hpp"
 #include "results/spc_nelson_rules.hpp"
 #include "results/spc_student_t.hpp"
 
@@ -14,7 +14,9 @@ namespace furrow {
 namespace {
 
 void check_series(const CharacteristicSeries& c, std::size_t part_count) {
-  const std::string where = "SPC input: characteristic '" + c.id + "': ";
+  const std::string where = "SPC input: characteristic " + quote_field(c.id) + ": ";
+  if (c.kind != "point" && c.kind != "region")
+    throw InputError(where + "kind " + quote_field(c.kind) + " is neither \"point\" nor \"region\"");
   if (c.part_index.size() != c.values.size())
     throw InputError(where + std::to_string(c.values.size()) + " values for " + std::to_string(c.part_index.size()) +
                      " part indices");
@@ -152,7 +154,7 @@ SpcResult compute_spc(const SpcInput& input) {
   result.parts = input.parts;
   std::set<std::string> ids;
   for (const CharacteristicSeries& s : input.characteristics) {
-    if (!ids.insert(s.id).second) throw InputError("SPC input: characteristic '" + s.id + "' appears twice");
+    if (!ids.insert(s.id).second) throw InputError("SPC input: characteristic " + quote_field(s.id) + " appears twice");
     check_series(s, input.parts.size());
   }
   for (const CharacteristicSeries& s : input.characteristics)

@@ -13,7 +13,8 @@
 //
 // compute_spc throws InputError naming the characteristic when the input
 // breaks its contract (arrays of different lengths, a part index out of
-// range or not increasing, a non-finite value, lower >= upper, an id twice).
+// range or not increasing, a value or limit not finite or beyond 1e6 mm,
+// lower >= upper, a kind other than "point" or "region", an id twice).
 #include <cstddef>
 #include <optional>
 #include <string>

@@ -305,7 +305,7 @@ TEST_CASE("a violation counts for the latest part only when it reaches it") {
 TEST_CASE("a series that breaks the contract is refused naming the characteristic") {
   SpcInput in = one_series({0.01, 0.02, 0.03});
   in.characteristics[0].part_index = {0, 2, 1};
-  CHECK_THROWS_WITH_AS(compute_spc(in), doctest::Contains("'P1'"), InputError);
+  CHECK_THROWS_WITH_AS(compute_spc(in), doctest::Contains("characteristic \"P1\""), InputError);
   in = one_series({0.01, 0.02, 0.03}, 0.1, -0.1);
   CHECK_THROWS_AS(compute_spc(in), InputError);
   in = one_series({0.01, NAN, 0.03});
@@ -318,6 +318,9 @@ TEST_CASE("a series that breaks the contract is refused naming the characteristi
   in = one_series({0.01, 0.02});
   in.characteristics.push_back(in.characteristics[0]);
   CHECK_THROWS_WITH_AS(compute_spc(in), doctest::Contains("twice"), InputError);
+  in = one_series({0.01, 0.02});
+  in.characteristics[0].kind = "surface";
+  CHECK_THROWS_WITH_AS(compute_spc(in), doctest::Contains("\"surface\""), InputError);
 }
 
 TEST_CASE("characteristics are sorted by id and ranked worst first by cpk then violations") {
