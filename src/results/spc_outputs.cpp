@@ -2,12 +2,14 @@
 
 #include "base/atomic_file.hpp"
 #include "results/spc_html.hpp"
+#include "results/spc_qif.hpp"
 
 namespace furrow {
 
 std::vector<SpcOutputFile> render_spc(const SpcResult& result, const SpcSelection& selection) {
   std::vector<SpcOutputFile> files;
   files.push_back({"spc.html", spc_html(result, selection)});
+  files.push_back({"spc.qif", spc_qif(result, selection)});
   files.push_back({"spc.json", spc_json(result, selection)});
   return files;
 }

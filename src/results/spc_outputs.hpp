@@ -1,7 +1,7 @@
 #pragma once
-// The SPC output folder (`furrow spc --out FOLDER`): spc.json and spc.html
-// (docs/spc.md "Output folder"), rendered in memory and published as one
-// folder through OutputSet, so a reader never sees half of it.
+// The SPC output folder (`furrow spc --out FOLDER`): spc.json, spc.html and
+// spc.qif (docs/spc.md "Output folder"), rendered in memory and published
+// as one folder through OutputSet, so a reader never sees half of it.
 #include <string>
 #include <vector>
 
