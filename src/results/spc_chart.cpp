@@ -20,7 +20,7 @@ constexpr Rgb kLimit{200, 120, 30};
 double um(double mm) { return mm * 1000; }
 
 // A y range covering the values and lines, with a margin so nothing sits
-// on the frame; a single value gets a window of its own (ChartFrame widens).
+// on the frame.
 std::pair<double, double> y_range(const std::vector<double>& values, const std::vector<double>& lines) {
   double lo = 0, hi = 0;
   bool first = true;
@@ -30,6 +30,9 @@ std::pair<double, double> y_range(const std::vector<double>& values, const std::
       hi = first ? v : std::max(hi, v);
       first = false;
     }
+  // Nothing to show, or one level only (a single value, a constant
+  // series): a window of 1 µm either side, so the ticks still read.
+  if (hi - lo < 1e-6) return {lo - 1, hi + 1};
   const double margin = 0.08 * (hi - lo);
   return {lo - margin, hi + margin};
 }
