@@ -69,11 +69,23 @@ IncompleteBetaResult regularized_incomplete_beta(double a, double b, double x, c
   return r;
 }
 
+namespace {
+
+// P(T <= t), and whether the incomplete beta behind it converged.
+double t_cdf(double t, double dof, bool& converged) {
+  if (std::isinf(t)) return t > 0 ? 1.0 : 0.0;
+  const IncompleteBetaResult beta = regularized_incomplete_beta(dof / 2, 0.5, dof / (dof + t * t));
+  converged = converged && beta.converged;
+  const double tail = 0.5 * beta.value;
+  return t >= 0 ? 1 - tail : tail;
+}
+
+}  // namespace
+
 double student_t_cdf(double t, double dof) {
   if (!(dof > 0)) throw std::logic_error("student_t_cdf: needs dof > 0");
-  if (std::isinf(t)) return t > 0 ? 1.0 : 0.0;
-  const double tail = 0.5 * regularized_incomplete_beta(dof / 2, 0.5, dof / (dof + t * t)).value;
-  return t >= 0 ? 1 - tail : tail;
+  bool converged = true;
+  return t_cdf(t, dof, converged);
 }
 
 StudentQuantileResult student_t_quantile(double p, double dof, const ScalarSearchOptions& options) {
@@ -85,7 +97,8 @@ StudentQuantileResult student_t_quantile(double p, double dof, const ScalarSearc
   }
   // Solve on the upper half and mirror: the distribution is symmetric.
   const double q = p > 0.5 ? p : 1 - p;
-  auto f = [&](double t) { return student_t_cdf(t, dof) - q; };
+  bool cdf_converged = true;  // every distribution value the search used
+  auto f = [&](double t) { return t_cdf(t, dof, cdf_converged) - q; };
   double hi = 1;
   double fhi = f(hi);
   // Doubling reaches the 1 - 1e-16 quantile of one degree of freedom (about
@@ -97,7 +110,7 @@ StudentQuantileResult student_t_quantile(double p, double dof, const ScalarSearc
   if (fhi < 0) return result;  // not bracketed: reported, not guessed
   const ScalarSearchResult root = find_bracketed_root(f, 0.0, f(0.0), hi, fhi, options);
   result.value = p > 0.5 ? root.x : -root.x;
-  result.converged = root.converged;
+  result.converged = root.converged && cdf_converged;
   result.iterations = root.iterations;
   return result;
 }

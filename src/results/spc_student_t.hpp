@@ -45,7 +45,9 @@ struct StudentQuantileResult {
 // The p-quantile of Student's t with `dof` > 0 degrees of freedom, for
 // 0 < p < 1: the root of student_t_cdf(t) - p, bracketed by doubling from
 // [0, 1] (the quantile is odd around p = 1/2) and found with
-// find_bracketed_root. `options.tolerance` is absolute on t.
+// find_bracketed_root. `options.tolerance` is absolute on t. Not
+// converged when the root search or any incomplete beta it evaluated
+// stopped at its cap.
 StudentQuantileResult student_t_quantile(double p, double dof, const ScalarSearchOptions& options = {1e-12, 200});
 
 }  // namespace furrow

@@ -65,7 +65,8 @@ TEST_CASE("Student t quantiles match the exact forms and the printed table") {
     CHECK(std::abs(q.value - (2 * p - 1) / std::sqrt(2 * p * (1 - p))) < 1e-10);
   }
   // Two-sided 95 % values of the usual table, printed to 3 decimals.
-  const double table[][2] = {{3, 3.182}, {5, 2.571}, {10, 2.228}, {20, 2.086}, {30, 2.042}, {120, 1.980}};
+  const double table[][2] = {{3, 3.182},  {5, 2.571},   {10, 2.228},  {20, 2.086},
+                             {30, 2.042}, {120, 1.980}, {1000, 1.962}, {1e6, 1.960}};
   for (const auto& row : table) {
     const StudentQuantileResult q = student_t_quantile(0.975, row[0]);
     REQUIRE(q.converged);
