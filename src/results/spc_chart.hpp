@@ -1,0 +1,26 @@
+#pragma once
+// The I-MR control chart of one characteristic as a Drawing
+// (render/drawing.hpp), for spc.html (docs/spc.md "spc.html").
+//
+// Two panels over the parts of the selection (x: part index, so a part
+// that did not measure the characteristic leaves a gap): above, the
+// individual values in µm with the centre line and the control limits;
+// below, the moving ranges in µm with their mean and upper limit. Values
+// that belong to a Nelson violation are drawn red.
+//
+// For readers and tests, each panel's plotting rectangle is an invisible
+// rect of class "plot-area" whose data-x0/x1/y0/y1 give the data range it
+// spans (x in part index, y in µm), each value is a circle of class
+// "value" (or "mr") with data-part and data-value (shortest text, µm),
+// and each horizontal line of class "centre" or "limit" has data-value.
+#include <cstddef>
+
+#include "render/drawing.hpp"
+#include "results/spc_statistics.hpp"
+
+namespace furrow {
+
+// `part_count`: the number of parts in the selection (the x range).
+Drawing imr_chart(const CharacteristicSpc& c, std::size_t part_count);
+
+}  // namespace furrow
