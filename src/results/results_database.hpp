@@ -23,6 +23,7 @@
 // Units: deviations, statistics and zone limits in mm, signed as everywhere
 // (docs/architecture.md "Conventions").
 #include <cstdint>
+#include <ctime>
 #include <memory>
 #include <optional>
 #include <string>
@@ -82,8 +83,8 @@ struct RecordContext {
 ComparisonRecord make_comparison_record(const std::string& bytes, const std::string& name,
                                         const RecordContext& context);
 
-// The current time as ISO 8601 UTC ("2026-11-28T04:08:23Z").
-std::string utc_now_iso8601();
+// A time as ISO 8601 UTC ("2026-11-28T04:08:23Z"); std::time(nullptr) for now.
+std::string utc_iso8601(std::time_t time);
 
 // A stored part, as listed in storing order.
 struct StoredPart {

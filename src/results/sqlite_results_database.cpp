@@ -197,7 +197,7 @@ class SqliteResultsDatabase : public ResultsDatabase {
                    "INSERT INTO parts (serial, part, plan_fingerprint, made_at, stored_at, operator, cmm, verdict, "
                    "comparison_sha256, zone_lower, zone_upper) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
                    path_);
-    part.text(1, r.serial).text(2, r.part).text(3, r.plan_fingerprint).text(4, r.date).text(5, utc_now_iso8601());
+    part.text(1, r.serial).text(2, r.part).text(3, r.plan_fingerprint).text(4, r.date).text(5, utc_iso8601(std::time(nullptr)));
     part.text(6, r.operator_name).text(7, r.cmm).text(8, r.verdict).text(9, r.comparison_sha256);
     part.real(10, r.zone_lower).real(11, r.zone_upper);
     part.step();
