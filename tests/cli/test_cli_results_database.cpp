@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 #include <sqlite3.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -27,6 +28,17 @@ std::string query(const std::string& path, const std::string& sql) {
   sqlite3_finalize(s);
   sqlite3_close(db);
   return out;
+}
+
+// The SHA-256 by coreutils, an implementation other than Furrow's.
+std::string sha256sum(const std::string& path) {
+  FILE* pipe = ::popen(("sha256sum " + shell_quote(path)).c_str(), "r");
+  REQUIRE(pipe);
+  char hex[65] = {0};
+  const std::size_t n = std::fread(hex, 1, 64, pipe);
+  ::pclose(pipe);
+  REQUIRE(n == 64);
+  return std::string(hex, 64);
 }
 
 struct Batch {
@@ -125,8 +137,11 @@ TEST_CASE("cli results database: import-results stores folders under their names
   REQUIRE(first.status == 0);
   CHECK(first.out.find("2 of 2 comparisons stored") != std::string::npos);
   CHECK(query(db, "SELECT group_concat(serial, ',') FROM parts") == "SN-10,SN-11");
-  CHECK(query(db, "SELECT comparison_sha256 = (SELECT sha256 FROM inputs WHERE role = 'comparison' AND "
-                  "part_key = 1) FROM parts WHERE part_key = 1") == "1");
+  CHECK(query(db, "SELECT comparison_sha256 FROM parts WHERE part_key = 1") ==
+        sha256sum(dir + "/SN-10/comparison.json"));
+  CHECK(query(db, "SELECT sha256 FROM inputs WHERE role = 'comparison' AND part_key = 2") ==
+        sha256sum(dir + "/SN-11/comparison.json"));
+  CHECK(query(db, "SELECT sha256 FROM inputs WHERE role = 'part' AND part_key = 1") == sha256sum(b.part));
   const CliResult again = run_furrow({"import-results", "--db", db, dir + "/SN-10", dir + "/SN-11"});
   CHECK(again.status == 0);
   CHECK(again.out.find("0 of 2 comparisons stored") != std::string::npos);
@@ -138,4 +153,25 @@ TEST_CASE("cli results database: import-results stores folders under their names
   CHECK(missing.status == 2);
   CHECK(missing.err.find(dir + "/SN-12") != std::string::npos);
   CHECK(!fs::exists(db2));
+}
+
+TEST_CASE("cli results database: run --db stores the job's part under the inspection record's serial") {
+  const std::string dir = scratch_dir("cli-results-db-run");
+  const std::string db = dir + "/results.db";
+  const std::string job = source_path("examples/jobs/demo.json");
+  // No serial anywhere: refused before the job runs.
+  const CliResult no_serial = run_furrow({"run", job, "--out", dir + "/none", "--db", db});
+  CHECK(no_serial.status == 2);
+  CHECK(no_serial.err.find("--serial") != std::string::npos);
+  CHECK(!fs::exists(dir + "/none"));
+  CHECK(!fs::exists(db));
+  const CliResult r = run_furrow({"run", job, "--out", dir + "/out", "--db", db, "--record",
+                                  source_path("examples/records/mould_first_article.json")});
+  CHECK(r.status == 1);  // the demo's confirmed gouge
+  CHECK(r.out.find("stored in " + db) != std::string::npos);
+  CHECK(query(db, "SELECT serial || '|' || operator || '|' || cmm || '|' || verdict FROM parts") ==
+        "SN-0042|J. Doe|bridge CMM, 700 x 1000 x 600|FAIL");
+  // The digest stored is that of the comparison.json the job wrote.
+  CHECK(query(db, "SELECT comparison_sha256 FROM parts") == sha256sum(dir + "/out/comparison.json"));
+  CHECK(query(db, "SELECT count(*) FROM points") != "0");
 }
