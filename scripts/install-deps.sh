@@ -8,6 +8,8 @@ packages=(
   libeigen3-dev libceres-dev libnanoflann-dev libopencv-dev libpng-dev nlohmann-json3-dev doctest-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libssl-dev
   libpugixml-dev
+  # the results database (src/results/sqlite_*)
+  libsqlite3-dev
   # the QA report's 3D view inlines three.js; `furrow report --pdf` prints
   # with headless Chromium
   libjs-three chromium

@@ -9,6 +9,7 @@
 #include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_flags.hpp"
+#include "cli/results_storage.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
 #include "base/output_set.hpp"
@@ -47,8 +48,11 @@ int run_compare(Args& args) {
   const auto ipp_program = args.option("ipp-program");
   CompareOptions options;
   read_option_flags(args, compare_option_table(), options);
+  const ResultsStorageOptions storage = read_results_storage(args);
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  // Before any work: a database that is not Furrow's stops the command here.
+  const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !storage.serial.empty());
 
   options.tolerance =
       ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
@@ -145,6 +149,12 @@ int run_compare(Args& args) {
   }
   outputs.file(out, json);
   outputs.publish(out);
+  if (db) {
+    RecordContext context;
+    context.serial = storage.serial;
+    context.date = utc_iso8601(std::time(nullptr));
+    store_comparison_file(*db, out, context, std::cout);
+  }
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
@@ -202,7 +212,12 @@ int run_compare(Args& args) {
   return exit_status(s.verdict, s.alignment);
 }
 
-std::string compare_options_help() { return option_help_lines(describe(compare_option_table())); }
+std::string compare_options_help() {
+  return option_help_lines(describe(compare_option_table())) +
+         "\nResults database (docs/results_database.md, docs/options.md), after comparison.json is\n"
+         "written; the same comparison again is not stored twice:\n" +
+         option_help_lines(describe(results_storage_option_table()));
+}
 
 }  // namespace
 

@@ -1,10 +1,12 @@
 // furrow run job.json: partition -> predict -> plan -> compare -> report in
 // one go, from a job file (docs/formats.md "Job file").
+#include <filesystem>
 #include <iostream>
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
 #include "cli/job_output.hpp"
+#include "cli/results_storage.hpp"
 #include "job/pipeline.hpp"
 
 namespace furrow::cli {
@@ -14,6 +16,7 @@ namespace {
 int run_run(Args& args) {
   const auto out = args.option("out");
   const auto record = args.option("record");
+  ResultsStorageOptions storage = read_results_storage(args);
   const std::string job_path = args.positional("JOB (a job.json file)");
   args.finish();
   Job job = read_job(job_path);
@@ -22,8 +25,31 @@ int run_run(Args& args) {
     job.record_file = *record;
     job.record = read_inspection_record(*record);
   }
+  if (storage.serial.empty() && job.record) storage.serial = job.record->serial;
+  // Before any work: a database that is not Furrow's stops the job here.
+  const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !storage.serial.empty());
   // A stage's option or input came from the job: the message names it.
-  return naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
+  const int status = naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
+  const std::string comparison = (std::filesystem::path(job.output) / "comparison.json").string();
+  if (db && std::filesystem::exists(comparison)) {
+    RecordContext context;
+    context.serial = storage.serial;
+    context.date = utc_iso8601(std::time(nullptr));
+    if (job.record) {
+      context.operator_name = job.record->operator_name;
+      context.cmm = job.record->cmm;
+    }
+    store_comparison_file(*db, comparison, context, std::cout);
+  } else if (db) {
+    std::cout << "nothing stored in " << db->location() << ": the job measured nothing\n";
+  }
+  return status;
+}
+
+std::string run_options_help() {
+  return "\nResults database (docs/results_database.md, docs/options.md), after the output\n"
+         "folder is written:\n" +
+         option_help_lines(describe(results_storage_option_table()));
 }
 
 }  // namespace
@@ -44,11 +70,11 @@ const Command kRunCommand = {
     "                 current directory)\n"
     "  --record FILE  inspection record (part number, serial, operator, CMM,\n"
     "                 sign-off; docs/formats.md \"Inspection record\") instead\n"
-    "                 of the job's \"record\"\n"
+    "                 of the job's \"record\"\n",
+    run_run, run_options_help,
     "\n"
     "Exit status: 0 pass (or plan only), 1 fail (out of tolerance or a\n"
     "confirmed gouge), 2 bad input, 3 the computation did not succeed,\n"
-    "4 inconclusive (see furrow compare).\n",
-    run_run};
+    "4 inconclusive (see furrow compare).\n"};
 
 }  // namespace furrow::cli

@@ -48,6 +48,7 @@ extern const Command kSimulateMeasurementCommand;
 extern const Command kCompareCommand;
 extern const Command kRemeasureCommand;
 extern const Command kReportCommand;
+extern const Command kImportResultsCommand;
 extern const Command kRunCommand;
 extern const Command kDemoCommand;
 

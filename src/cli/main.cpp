@@ -29,6 +29,7 @@ const std::vector<const Command*> kCommands = {
     &furrow::cli::kCompareCommand,
     &furrow::cli::kRemeasureCommand,
     &furrow::cli::kReportCommand,
+    &furrow::cli::kImportResultsCommand,
     &furrow::cli::kRunCommand,
     &furrow::cli::kDemoCommand,
 };

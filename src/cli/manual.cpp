@@ -10,6 +10,7 @@
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
+#include "stage/results_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -107,6 +108,10 @@ void write_options_reference(std::ostream& out) {
           "job file.",
           describe(simulation_option_table()));
   section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
+  section("Results database",
+          "`furrow compare` and `furrow run`, on the command line only (a job file names a part, not the batch "
+          "it joins); see results_database.md.",
+          describe(results_storage_option_table()));
 }
 
 void write_bash_completion(std::ostream& out, const std::vector<const Command*>& commands) {

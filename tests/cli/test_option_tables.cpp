@@ -19,6 +19,7 @@
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
+#include "stage/results_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 #include "support/run_cli.hpp"
@@ -234,4 +235,6 @@ TEST_CASE("every table option is in its command's help, in the man page and in d
   check("plan", describe(plan_option_table()));
   check("compare", describe(compare_option_table()));
   check("remeasure", describe(only_options(plan_option_table(), kProbeMotionKeys)));
+  check("compare", describe(results_storage_option_table()));
+  check("run", describe(results_storage_option_table()));
 }

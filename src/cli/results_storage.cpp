@@ -1,0 +1,49 @@
+#include "cli/results_storage.hpp"
+
+#include <cstdlib>
+
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
+#include "cli/option_flags.hpp"
+#include "report/report_sources.hpp"
+
+namespace furrow::cli {
+
+ResultsStorageOptions read_results_storage(Args& args) {
+  ResultsStorageOptions options;
+  read_option_flags(args, results_storage_option_table(), options);
+  if (options.db.empty())
+    if (const char* env = std::getenv("FURROW_DB")) options.db = env;
+  return options;
+}
+
+std::unique_ptr<ResultsDatabase> open_results_storage(Args& args, const ResultsStorageOptions& options,
+                                                      bool serial_known) {
+  if (options.db.empty()) {
+    if (!options.serial.empty()) args.fail("--serial names the part in a results database: give --db (or FURROW_DB)");
+    return nullptr;
+  }
+  if (!serial_known)
+    args.fail("storing in the results database " + options.db +
+              " needs the part's serial number (--serial S); docs/results_database.md");
+  return open_results_database(options.db, DatabaseAccess::write);
+}
+
+StoreResult store_comparison_file(ResultsDatabase& db, const std::string& path, RecordContext context,
+                                  std::ostream& out) {
+  const ReportSources sources = read_report_sources(path);
+  // inputs[0] is the comparison itself; the record puts its own digest first.
+  for (std::size_t k = 1; k < sources.inputs.size(); ++k)
+    context.inputs.push_back({sources.inputs[k].role, sources.inputs[k].path, sources.inputs[k].sha256});
+  const ComparisonRecord record = make_comparison_record(json_fields::read_text(path), path, context);
+  const StoreResult result = db.store(record);
+  if (result == StoreResult::stored)
+    out << "stored in " << db.location() << ": part \"" << record.serial << "\", " << record.points.size()
+        << " points, " << record.verdict << "\n";
+  else
+    out << "already in " << db.location() << ": part \"" << record.serial
+        << "\" with this comparison (same SHA-256), not stored again\n";
+  return result;
+}
+
+}  // namespace furrow::cli

@@ -1,0 +1,177 @@
+// `furrow compare --db --serial` and `furrow import-results` as a user runs
+// them: parts land in the database (counted with SQLite's own API, the
+// test's oracle), the same comparison is not stored twice, and a database
+// that is not Furrow's or a missing serial stops the command before it
+// writes anything.
+#include <doctest/doctest.h>
+#include <sqlite3.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "support/run_cli.hpp"
+
+using namespace furrow::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string query(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  REQUIRE(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+  sqlite3_stmt* s = nullptr;
+  std::string out;
+  REQUIRE(sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr) == SQLITE_OK);
+  if (sqlite3_step(s) == SQLITE_ROW && sqlite3_column_text(s, 0))
+    out = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+  sqlite3_finalize(s);
+  sqlite3_close(db);
+  return out;
+}
+
+// The SHA-256 by coreutils, an implementation other than Furrow's.
+std::string sha256sum(const std::string& path) {
+  FILE* pipe = ::popen(("sha256sum " + shell_quote(path)).c_str(), "r");
+  REQUIRE(pipe);
+  char hex[65] = {0};
+  const std::size_t n = std::fread(hex, 1, 64, pipe);
+  ::pclose(pipe);
+  REQUIRE(n == 64);
+  return std::string(hex, 64);
+}
+
+struct Batch {
+  std::string dir, part, plan, m1, m2;
+};
+
+// A plan of the mould and two measurements of it (different noise).
+const Batch& batch() {
+  static const Batch b = [] {
+    Batch b;
+    b.dir = scratch_dir("cli-results-db");
+    b.part = source_path("examples/parts/mould.json");
+    REQUIRE(run_furrow({"partition", b.part, "--out", b.dir + "/regions.json", "--grid", "40x40"}).status == 0);
+    REQUIRE(run_furrow({"plan", b.part, "--regions", b.dir + "/regions.json", "--points", "30", "--out",
+                        b.dir + "/plan"}).status == 0);
+    b.plan = b.dir + "/plan/plan.json";
+    b.m1 = b.dir + "/m1.csv";
+    b.m2 = b.dir + "/m2.csv";
+    REQUIRE(run_furrow({"simulate-measurement", b.part, "--plan", b.plan, "--out", b.m1, "--seed", "1"}).status == 0);
+    REQUIRE(run_furrow({"simulate-measurement", b.part, "--plan", b.plan, "--out", b.m2, "--seed", "2"}).status == 0);
+    return b;
+  }();
+  return b;
+}
+
+CliResult compare(const std::string& m, const std::string& out, std::vector<std::string> more) {
+  std::vector<std::string> words = {"compare", batch().part, "--measurements", m, "--plan", batch().plan, "--out", out};
+  words.insert(words.end(), more.begin(), more.end());
+  return run_furrow(words);
+}
+
+}  // namespace
+
+TEST_CASE("cli results database: compare --db stores a part once, and refuses what it cannot store") {
+  const Batch& b = batch();
+  const std::string dir = scratch_dir("cli-results-db-compare");
+  const std::string db = dir + "/results.db";
+  const CliResult first = compare(b.m1, dir + "/c1.json", {"--db", db, "--serial", "SN-1"});
+  REQUIRE(first.status == 0);
+  CHECK(first.out.find("stored in " + db) != std::string::npos);
+  CHECK(query(db, "SELECT count(*) FROM parts") == "1");
+  CHECK(query(db, "SELECT serial FROM parts") == "SN-1");
+  CHECK(query(db, "SELECT count(*) FROM points") == query(db, "SELECT count(*) FROM points WHERE part_key = 1"));
+  CHECK(query(db, "SELECT count(*) FROM points") != "0");
+  // Every input's digest: the comparison, part, measurements and plan.
+  CHECK(query(db, "SELECT group_concat(role, ',') FROM inputs") == "comparison,part,measurements,plan");
+  CHECK(query(db, "SELECT plan_fingerprint = (SELECT sha256 FROM inputs WHERE role = 'plan') FROM parts") == "1");
+
+  SUBCASE("the same comparison again is not stored twice, under another serial refused") {
+    const CliResult again = compare(b.m1, dir + "/c1b.json", {"--db", db, "--serial", "SN-1"});
+    CHECK(again.status == 0);
+    CHECK(again.out.find("not stored again") != std::string::npos);
+    const CliResult other = compare(b.m1, dir + "/c1c.json", {"--db", db, "--serial", "SN-9"});
+    CHECK(other.status == 2);
+    CHECK(other.err.find(db) != std::string::npos);
+    CHECK(query(db, "SELECT count(*) FROM parts") == "1");
+  }
+  SUBCASE("FURROW_DB in the environment, and a serial that looks like SQL") {
+    ::setenv("FURROW_DB", db.c_str(), 1);
+    const CliResult env = compare(b.m2, dir + "/c2.json", {"--serial", "'; DROP TABLE parts; --"});
+    ::unsetenv("FURROW_DB");
+    CHECK(env.status == 0);
+    CHECK(query(db, "SELECT count(*) FROM parts") == "2");
+    CHECK(query(db, "SELECT serial FROM parts WHERE part_key = 2") == "'; DROP TABLE parts; --");
+  }
+  SUBCASE("without --serial, or --serial without a database: exit 2 before anything is written") {
+    const CliResult no_serial = compare(b.m2, dir + "/c3.json", {"--db", db});
+    CHECK(no_serial.status == 2);
+    CHECK(no_serial.err.find("--serial") != std::string::npos);
+    CHECK(!fs::exists(dir + "/c3.json"));
+    const CliResult no_db = compare(b.m2, dir + "/c4.json", {"--serial", "SN-4"});
+    CHECK(no_db.status == 2);
+    CHECK(!fs::exists(dir + "/c4.json"));
+  }
+  SUBCASE("a database file that is not Furrow's: exit 2 naming it, nothing written") {
+    write_text(dir + "/other.db", "a spreadsheet, not a database\n");
+    const std::string before = slurp(dir + "/other.db");
+    const CliResult foreign = compare(b.m2, dir + "/c5.json", {"--db", dir + "/other.db", "--serial", "SN-5"});
+    CHECK(foreign.status == 2);
+    CHECK(foreign.err.find(dir + "/other.db") != std::string::npos);
+    CHECK(line_count(foreign.err) == 1);
+    CHECK(!fs::exists(dir + "/c5.json"));
+    CHECK(slurp(dir + "/other.db") == before);
+  }
+}
+
+TEST_CASE("cli results database: import-results stores folders under their names, once") {
+  const Batch& b = batch();
+  const std::string dir = scratch_dir("cli-results-db-import");
+  fs::create_directories(dir + "/SN-10");
+  fs::create_directories(dir + "/SN-11");
+  REQUIRE(compare(b.m1, dir + "/SN-10/comparison.json", {}).status == 0);
+  REQUIRE(compare(b.m2, dir + "/SN-11/comparison.json", {}).status == 0);
+  const std::string db = dir + "/results.db";
+  const CliResult first = run_furrow({"import-results", "--db", db, dir + "/SN-10", dir + "/SN-11"});
+  REQUIRE(first.status == 0);
+  CHECK(first.out.find("2 of 2 comparisons stored") != std::string::npos);
+  CHECK(query(db, "SELECT group_concat(serial, ',') FROM parts") == "SN-10,SN-11");
+  CHECK(query(db, "SELECT comparison_sha256 FROM parts WHERE part_key = 1") ==
+        sha256sum(dir + "/SN-10/comparison.json"));
+  CHECK(query(db, "SELECT sha256 FROM inputs WHERE role = 'comparison' AND part_key = 2") ==
+        sha256sum(dir + "/SN-11/comparison.json"));
+  CHECK(query(db, "SELECT sha256 FROM inputs WHERE role = 'part' AND part_key = 1") == sha256sum(b.part));
+  const CliResult again = run_furrow({"import-results", "--db", db, dir + "/SN-10", dir + "/SN-11"});
+  CHECK(again.status == 0);
+  CHECK(again.out.find("0 of 2 comparisons stored") != std::string::npos);
+  CHECK(query(db, "SELECT count(*) FROM parts") == "2");
+  // A folder without a comparison: exit 2 before the first part is stored.
+  fs::create_directories(dir + "/SN-12");
+  const std::string db2 = dir + "/second.db";
+  const CliResult missing = run_furrow({"import-results", "--db", db2, dir + "/SN-10", dir + "/SN-12"});
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find(dir + "/SN-12") != std::string::npos);
+  CHECK(!fs::exists(db2));
+}
+
+TEST_CASE("cli results database: run --db stores the job's part under the inspection record's serial") {
+  const std::string dir = scratch_dir("cli-results-db-run");
+  const std::string db = dir + "/results.db";
+  const std::string job = source_path("examples/jobs/demo.json");
+  // No serial anywhere: refused before the job runs.
+  const CliResult no_serial = run_furrow({"run", job, "--out", dir + "/none", "--db", db});
+  CHECK(no_serial.status == 2);
+  CHECK(no_serial.err.find("--serial") != std::string::npos);
+  CHECK(!fs::exists(dir + "/none"));
+  CHECK(!fs::exists(db));
+  const CliResult r = run_furrow({"run", job, "--out", dir + "/out", "--db", db, "--record",
+                                  source_path("examples/records/mould_first_article.json")});
+  CHECK(r.status == 1);  // the demo's confirmed gouge
+  CHECK(r.out.find("stored in " + db) != std::string::npos);
+  CHECK(query(db, "SELECT serial || '|' || operator || '|' || cmm || '|' || verdict FROM parts") ==
+        "SN-0042|J. Doe|bridge CMM, 700 x 1000 x 600|FAIL");
+  // The digest stored is that of the comparison.json the job wrote.
+  CHECK(query(db, "SELECT comparison_sha256 FROM parts") == sha256sum(dir + "/out/comparison.json"));
+  CHECK(query(db, "SELECT count(*) FROM points") != "0");
+}
