@@ -93,15 +93,31 @@ double FaceErrorField::fade_weight(double distance) const {
   return 1 - q * q * (3 - 2 * q);
 }
 
+double FaceErrorField::fade_slope(double distance) const {
+  const double D = fade_distance_;
+  if (distance <= 0.5 * D || distance >= D) return 0;
+  const double q = (2 * distance - D) / D;
+  return 6 * q * (q - 1) * 2 / D;
+}
+
 FieldValue FaceErrorField::at(double u, double v) const {
   FieldValue out;
   out.distance = std::numeric_limits<double>::infinity();
   if (!fitted()) return out;
   const Eigen::Vector2d x = scaled(u, v);
-  out.distance = search_->nearest(Eigen::Vector3d(x.x(), x.y(), 0.0)).distance;
+  const PointNeighbour nearest = search_->nearest(Eigen::Vector3d(x.x(), x.y(), 0.0));
+  out.distance = nearest.distance;
   out.weight = fade_weight(out.distance);
   out.fitted = spline_->value(x);
   out.value = out.weight * out.fitted;
+  // In (s, t), then by the chain rule ds/du = scale_u, dt/dv = scale_v.
+  Eigen::Vector2d g = out.weight * spline_->gradient(x);
+  const double slope = fade_slope(out.distance);
+  if (slope != 0) {
+    const Eigen::Vector3d& p = search_->point(nearest.index);
+    g += out.fitted * slope * (x - Eigen::Vector2d(p.x(), p.y())) / out.distance;
+  }
+  out.gradient = {g.x() * scale_u_, g.y() * scale_v_};
   return out;
 }
 

@@ -65,6 +65,10 @@ struct FieldValue {
   double fitted = 0;    // the spline, unfaded [mm]
   double weight = 0;    // fade weight in [0, 1]
   double distance = 0;  // to the nearest sample in (s, t) [mm]; +inf without samples
+  // d value / d(u, v) [mm per unit parameter]: the spline's slope times the
+  // weight plus the fade's slope times the spline (the fade is C1, so this
+  // is continuous except where the nearest sample changes inside the taper).
+  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();
 };
 
 class FaceErrorField {
@@ -93,8 +97,10 @@ class FaceErrorField {
   // One standard error of the fitted (unfaded) spline at (u, v) [mm]; 0
   // when not fitted. O(samples^2).
   double standard_error(double u, double v) const;
-  // The fade weight at distance d (exposed for tests and reports).
+  // The fade weight at distance d and its slope d weight / d distance
+  // [1/mm] (exposed for tests and reports).
   double fade_weight(double distance) const;
+  double fade_slope(double distance) const;
 
  private:
   std::vector<FieldSample> samples_;

@@ -154,6 +154,17 @@ double ThinPlateSpline::value(const Eigen::Vector2d& x) const {
   return f;
 }
 
+Eigen::Vector2d ThinPlateSpline::gradient(const Eigen::Vector2d& x) const {
+  if (!fitted_) return Eigen::Vector2d::Zero();
+  Eigen::Vector2d g(a_(1), a_(2));
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const Eigen::Vector2d d = x - points_[i];
+    const double r2 = d.squaredNorm();
+    if (r2 > 0) g += w_(Eigen::Index(i)) * (std::log(r2) + 1) * d;
+  }
+  return g;
+}
+
 double ThinPlateSpline::standard_error(const Eigen::Vector2d& x) const {
   if (!fitted_) return 0.0;
   const Eigen::Vector3d p(1, x.x() - centre_.x(), x.y() - centre_.y());

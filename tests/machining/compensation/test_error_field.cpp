@@ -141,3 +141,26 @@ TEST_CASE("error field: faces with too few samples have no field and too many ar
   capped.max_samples = 10;
   CHECK_THROWS_AS(FaceErrorField(face, plate_samples(11, 1, 0.001, 6), capped, "comparison.json"), InputError);
 }
+
+TEST_CASE("error field: the gradient agrees with central differences, inside and in the fade") {
+  const Face face = long_plate();
+  const auto samples = plate_samples(150, 0.5, 0.001, 7);
+  ErrorFieldOptions options;
+  options.fade_distance = 12;
+  const FaceErrorField field(face, samples, options, "test");
+  REQUIRE(field.fitted());
+  const double h = 1e-7;  // in u and v: 20 nm and 2 nm on the plate
+  int in_taper = 0;
+  for (double u = 0.05; u < 0.6; u += 0.013)
+    for (double v = 0.1; v < 1; v += 0.17) {
+      const FieldValue at = field.at(u, v);
+      const Eigen::Vector2d fd((field.value(u + h, v) - field.value(u - h, v)) / (2 * h),
+                               (field.value(u, v + h) - field.value(u, v - h)) / (2 * h));
+      CAPTURE(u);
+      CAPTURE(v);
+      // Differences of values ~0.06 mm at 1e-7 steps: rounding ~1e-9 relative.
+      CHECK((at.gradient - fd).norm() < 1e-5 * (1 + fd.norm()));
+      in_taper += at.weight > 0 && at.weight < 1;
+    }
+  CHECK(in_taper > 3);  // the fade's own slope was checked too
+}
