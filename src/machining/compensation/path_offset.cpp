@@ -1,0 +1,79 @@
+#include "machining/compensation/path_offset.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "base/error.hpp"
+
+namespace furrow {
+
+namespace {
+
+// The surface gradient of a scalar with parameter derivatives g = (g_u, g_v):
+// the tangent vector (S_u, S_v) G^-1 g. Zero at a degenerate point.
+Eigen::Vector3d surface_gradient(const Face& face, const Eigen::Vector2d& uv, const Eigen::Vector2d& g) {
+  const SurfaceDerivatives d = face.surface().evaluate(uv.x(), uv.y(), 1);
+  Eigen::Matrix2d G;
+  G << d.Su.dot(d.Su), d.Su.dot(d.Sv), d.Su.dot(d.Sv), d.Sv.dot(d.Sv);
+  const double det = G.determinant();
+  if (!(std::abs(det) > 1e-12 * G(0, 0) * G(1, 1))) return Eigen::Vector3d::Zero();
+  const Eigen::Vector2d c = G.inverse() * g;
+  return c.x() * d.Su + c.y() * d.Sv;
+}
+
+}  // namespace
+
+PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeometry& geometry,
+                       const ErrorField& field, const PathOffsetOptions& o) {
+  if (!(std::isfinite(o.gain) && o.gain > 0 && o.gain <= 2))
+    throw InputError("--gain: must be in (0, 2], got " + std::to_string(o.gain));
+  if (!(std::isfinite(o.max_offset) && o.max_offset > 0))
+    throw InputError("--max-offset: must be positive, got " + std::to_string(o.max_offset));
+  PathOffset out;
+  out.tips.resize(geometry.passes.size());
+  out.offsets.resize(geometry.passes.size());
+  for (std::size_t p = 0; p < geometry.passes.size(); ++p) {
+    const Cutter& cutter = tools.cutters[std::size_t(tools.of_pass[p])];
+    for (std::size_t k = 0; k < geometry.passes[p].size(); ++k) {
+      const PathPoint& pt = geometry.passes[p][k];
+      out.tips[p].push_back(pt.tip);
+      out.offsets[p].push_back(0.0);
+      if (!pt.contact.valid) {
+        ++out.no_contact;
+        continue;
+      }
+      if (pt.in_air) {
+        ++out.in_air;
+        continue;
+      }
+      const SurfacePoint& at = pt.contact.at;
+      const std::size_t f = std::size_t(at.face);
+      if (f >= field.faces.size() || !field.faces[f]) continue;
+      const FieldValue e = field.faces[f]->at(at.uv.x(), at.uv.y());
+      OffsetPoint record{p, k, pt.line, -o.gain * e.value, 0.0};
+      record.applied = std::clamp(record.requested, -o.max_offset, o.max_offset);
+      const bool clipped = record.applied != record.requested;
+      if (clipped) out.clipped.push_back(record);
+      if (record.applied == 0) continue;  // nothing to move (outside the field)
+      // The compensated surface's normal (header): tilted against the
+      // offset's slope, unless clipped (the offset is flat there).
+      Eigen::Vector3d normal = at.normal;
+      if (!clipped) normal -= surface_gradient(part.faces[f], at.uv, -o.gain * e.gradient);
+      const CutterLocation before = cutter_location(cutter, at.point, at.normal, o.location);
+      const CutterLocation after =
+          cutter_location(cutter, at.point + record.applied * at.normal, normal, o.location);
+      if (!before.reachable || !after.reachable) {
+        out.unreachable.push_back(record);
+        continue;
+      }
+      out.tips[p][k] = pt.tip + (after.tip - before.tip);
+      out.offsets[p][k] = record.applied;
+      out.largest_offset = std::max(out.largest_offset, std::abs(record.applied));
+      ++out.moved;
+    }
+  }
+  return out;
+}
+
+}  // namespace furrow
