@@ -55,21 +55,28 @@ ThinPlateSpline::ThinPlateSpline(std::vector<Eigen::Vector2d> points,
   }
   z_ = Eigen::Map<const Eigen::VectorXd>(values.data(), N);
 
+  // Q has only 3 Householder reflectors: applying it costs O(n^2), so
+  // Q^T K Q and Q2 U are formed by reflections, never by n x n products;
+  // the eigen-decomposition is the one O(n^3) step.
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(P);
-  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(N, N);
-  Q1_ = Q.leftCols(3);
-  const Eigen::MatrixXd Q2 = Q.rightCols(N - 3);
+  const auto Q = qr.householderQ();
+  Eigen::MatrixXd QtKQ = K_;
+  QtKQ.applyOnTheLeft(Q.transpose());
+  QtKQ.applyOnTheRight(Q);
+  Q1_ = Q * Eigen::MatrixXd::Identity(N, 3);
   Rinv_ = qr.matrixQR().topLeftCorner(3, 3).triangularView<Eigen::Upper>().solve(
       Eigen::Matrix3d::Identity());
-  const Eigen::MatrixXd B = Q2.transpose() * K_ * Q2;
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(QtKQ.bottomRightCorner(N - 3, N - 3));
   if (eig.info() != Eigen::Success) {
     status_ = "eigen-decomposition of the spline system failed";
     return;
   }
   // Rounding leaves eigenvalues of a semi-definite matrix a hair below 0.
   mu_ = eig.eigenvalues().cwiseMax(0.0);
-  Q2U_ = Q2 * eig.eigenvectors();
+  Q2U_ = Eigen::MatrixXd::Zero(N, N - 3);
+  Q2U_.bottomRows(N - 3) = eig.eigenvectors();
+  Q2U_.applyOnTheLeft(Q);
+  Q1tK_ = Q1_.transpose() * K_;
   c_ = Q2U_.transpose() * z_;
 
   if (options.lambda) {
@@ -121,13 +128,14 @@ double ThinPlateSpline::gcv_score(double lambda) const {
 
 void ThinPlateSpline::solve(double rho) {
   const Eigen::Index N = z_.size();
-  const Eigen::VectorXd inv = (mu_.array() + rho).inverse().matrix();
-  M_ = Q2U_ * inv.asDiagonal() * Q2U_.transpose();
-  w_ = M_ * z_;
-  G_ = Rinv_ * Q1_.transpose() * (Eigen::MatrixXd::Identity(N, N) - K_ * M_);
+  inverse_ = (mu_.array() + rho).inverse().matrix();
+  // w = M z with M = Q2 U diag(inverse) (Q2 U)^T; a = G z with
+  // G = R^-1 Q1^T (I - K M) = R^-1 (Q1^T - ((Q1^T K) Q2 U) diag(inverse) (Q2 U)^T).
+  w_ = Q2U_ * inverse_.cwiseProduct(c_);
+  G_ = Rinv_ * (Q1_.transpose() - (Q1tK_ * Q2U_) * inverse_.asDiagonal() * Q2U_.transpose());
   a_ = G_ * z_;
   // (I - A) z and tr(I - A) from the eigen-expansion (see the header).
-  const Eigen::VectorXd shrink = (rho * inv.array()).matrix();
+  const Eigen::VectorXd shrink = (rho * inverse_.array()).matrix();
   const Eigen::VectorXd residual = Q2U_ * shrink.cwiseProduct(c_);
   fitted_values_ = z_ - residual;
   gcv_.trace = shrink.sum();
@@ -168,7 +176,9 @@ Eigen::Vector2d ThinPlateSpline::gradient(const Eigen::Vector2d& x) const {
 double ThinPlateSpline::standard_error(const Eigen::Vector2d& x) const {
   if (!fitted_) return 0.0;
   const Eigen::Vector3d p(1, x.x() - centre_.x(), x.y() - centre_.y());
-  const Eigen::VectorXd l = M_.transpose() * kernel_row(x) + G_.transpose() * p;
+  // l = M k(x) + G^T p(x), M applied through its factors: O(n^2).
+  const Eigen::VectorXd l =
+      Q2U_ * inverse_.cwiseProduct(Q2U_.transpose() * kernel_row(x)) + G_.transpose() * p;
   return gcv_.sigma * l.norm();
 }
 
