@@ -27,9 +27,9 @@ Eigen::Vector3d surface_gradient(const Face& face, const Eigen::Vector2d& uv, co
 PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeometry& geometry,
                        const ErrorField& field, const PathOffsetOptions& o) {
   if (!(std::isfinite(o.gain) && o.gain > 0 && o.gain <= 2))
-    throw InputError("--gain: must be in (0, 2], got " + std::to_string(o.gain));
+    throw InputError("compensation gain: must be in (0, 2], got " + std::to_string(o.gain));
   if (!(std::isfinite(o.max_offset) && o.max_offset > 0))
-    throw InputError("--max-offset: must be positive, got " + std::to_string(o.max_offset));
+    throw InputError("compensation max_offset: must be positive, got " + std::to_string(o.max_offset));
   PathOffset out;
   out.tips.resize(geometry.passes.size());
   out.offsets.resize(geometry.passes.size());

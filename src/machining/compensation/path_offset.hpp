@@ -67,7 +67,7 @@ struct PathOffset {
 
 // `geometry` is locate_path's result for `tools`' passes (one cutter per
 // pass by tools.of_pass). Throws InputError for a gain outside (0, 2] or a
-// non-positive max_offset (names the options: --gain, --max-offset).
+// non-positive max_offset, naming the option.
 PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeometry& geometry,
                        const ErrorField& field, const PathOffsetOptions& options = {});
 
