@@ -108,10 +108,11 @@ FieldValue FaceErrorField::at(double u, double v) const {
   const PointNeighbour nearest = search_->nearest(Eigen::Vector3d(x.x(), x.y(), 0.0));
   out.distance = nearest.distance;
   out.weight = fade_weight(out.distance);
-  out.fitted = spline_->value(x);
+  Eigen::Vector2d g;
+  out.fitted = spline_->value(x, g);
   out.value = out.weight * out.fitted;
   // In (s, t), then by the chain rule ds/du = scale_u, dt/dv = scale_v.
-  Eigen::Vector2d g = out.weight * spline_->gradient(x);
+  g *= out.weight;
   const double slope = fade_slope(out.distance);
   if (slope != 0) {
     const Eigen::Vector3d& p = search_->point(nearest.index);

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "base/error.hpp"
 
@@ -30,15 +31,21 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
     throw InputError("compensation gain: must be in (0, 2], got " + std::to_string(o.gain));
   if (!(std::isfinite(o.max_offset) && o.max_offset > 0))
     throw InputError("compensation max_offset: must be positive, got " + std::to_string(o.max_offset));
-  PathOffset out;
-  out.tips.resize(geometry.passes.size());
-  out.offsets.resize(geometry.passes.size());
-  for (std::size_t p = 0; p < geometry.passes.size(); ++p) {
+  // Passes in parallel, each into its own record; merged in pass order
+  // afterwards, so the lists and counts do not depend on the threads.
+  const std::size_t passes = geometry.passes.size();
+  std::vector<PathOffset> per_pass(passes);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::ptrdiff_t signed_p = 0; signed_p < std::ptrdiff_t(passes); ++signed_p) {
+    const std::size_t p = std::size_t(signed_p);
+    PathOffset& out = per_pass[p];
+    out.tips.resize(1);
+    out.offsets.resize(1);
     const Cutter& cutter = tools.cutters[std::size_t(tools.of_pass[p])];
     for (std::size_t k = 0; k < geometry.passes[p].size(); ++k) {
       const PathPoint& pt = geometry.passes[p][k];
-      out.tips[p].push_back(pt.tip);
-      out.offsets[p].push_back(0.0);
+      out.tips[0].push_back(pt.tip);
+      out.offsets[0].push_back(0.0);
       if (!pt.contact.valid) {
         ++out.no_contact;
         continue;
@@ -67,11 +74,20 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
         out.unreachable.push_back(record);
         continue;
       }
-      out.tips[p][k] = pt.tip + (after.tip - before.tip);
-      out.offsets[p][k] = record.applied;
+      out.tips[0][k] = pt.tip + (after.tip - before.tip);
+      out.offsets[0][k] = record.applied;
       out.largest_offset = std::max(out.largest_offset, std::abs(record.applied));
       ++out.moved;
     }
+  }
+  PathOffset out;
+  for (PathOffset& one : per_pass) {
+    out.tips.push_back(std::move(one.tips[0]));
+    out.offsets.push_back(std::move(one.offsets[0]));
+    out.clipped.insert(out.clipped.end(), one.clipped.begin(), one.clipped.end());
+    out.unreachable.insert(out.unreachable.end(), one.unreachable.begin(), one.unreachable.end());
+    out.moved += one.moved, out.no_contact += one.no_contact, out.in_air += one.in_air;
+    out.largest_offset = std::max(out.largest_offset, one.largest_offset);
   }
   return out;
 }

@@ -28,6 +28,7 @@
 // A point whose tilted normal points down (n'_z < 0, unreachable from
 // above) keeps its tip too and is listed.
 //
+// Parallel over passes (OpenMP); the result does not depend on the threads.
 // Frames and units: the part frame, mm. The path's structure (passes,
 // points, lines) is the input's; only tips change.
 #include <Eigen/Core>

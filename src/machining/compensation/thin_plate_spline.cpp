@@ -163,14 +163,25 @@ double ThinPlateSpline::value(const Eigen::Vector2d& x) const {
 }
 
 Eigen::Vector2d ThinPlateSpline::gradient(const Eigen::Vector2d& x) const {
-  if (!fitted_) return Eigen::Vector2d::Zero();
-  Eigen::Vector2d g(a_(1), a_(2));
+  Eigen::Vector2d g;
+  value(x, g);
+  return g;
+}
+
+double ThinPlateSpline::value(const Eigen::Vector2d& x, Eigen::Vector2d& gradient) const {
+  gradient.setZero();
+  if (!fitted_) return 0.0;
+  double f = a_(0) + a_(1) * (x.x() - centre_.x()) + a_(2) * (x.y() - centre_.y());
+  gradient << a_(1), a_(2);
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const Eigen::Vector2d d = x - points_[i];
     const double r2 = d.squaredNorm();
-    if (r2 > 0) g += w_(Eigen::Index(i)) * (std::log(r2) + 1) * d;
+    if (!(r2 > 0)) continue;  // phi and its gradient vanish at the sample
+    const double lg = std::log(r2), w = w_(Eigen::Index(i));
+    f += w * 0.5 * r2 * lg;
+    gradient += w * (lg + 1) * d;
   }
-  return g;
+  return f;
 }
 
 double ThinPlateSpline::standard_error(const Eigen::Vector2d& x) const {

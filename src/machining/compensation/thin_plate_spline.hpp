@@ -85,6 +85,8 @@ class ThinPlateSpline {
   // Its gradient (df/dx, df/dy) [value unit per mm]; zero when not fitted.
   // grad phi = (x - x_i)(log r^2 + 1), 0 at a sample (its limit).
   Eigen::Vector2d gradient(const Eigen::Vector2d& x) const;
+  // Both at once, one logarithm per sample instead of two.
+  double value(const Eigen::Vector2d& x, Eigen::Vector2d& gradient) const;
   // Fitted values at the samples (A z) and the influence diagonal A_ii.
   const Eigen::VectorXd& fitted_values() const { return fitted_values_; }
   const Eigen::VectorXd& leverage() const { return leverage_; }
