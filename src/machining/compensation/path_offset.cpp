@@ -23,6 +23,26 @@ Eigen::Vector3d surface_gradient(const Face& face, const Eigen::Vector2d& uv, co
   return c.x() * d.Su + c.y() * d.Sv;
 }
 
+// The compensated surface's curvature at a point moved by d along the
+// normal: each principal curvature k becomes k / (1 - d k) (header). False
+// when 1 - d k <= 0: the offset surface folds over there (d beyond the
+// concave radius), which no cutter can follow.
+bool offset_geometry(const DifferentialGeometry& nominal, double d, DifferentialGeometry& moved) {
+  moved = nominal;
+  for (double* k : {&moved.k1, &moved.k2}) {
+    const double scale = 1 - d * *k;
+    if (!(scale > 0)) return false;
+    *k /= scale;
+  }
+  moved.H = (moved.k1 + moved.k2) / 2, moved.K = moved.k1 * moved.k2;
+  return true;
+}
+
+bool gouges_at(const Cutter& cutter, const DifferentialGeometry& nominal, double d, const GougeOptions& options) {
+  DifferentialGeometry moved;
+  return !offset_geometry(nominal, d, moved) || check_local_gouge(cutter, moved, options).gouges();
+}
+
 }  // namespace
 
 PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeometry& geometry,
@@ -31,6 +51,8 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
     throw InputError("compensation gain: must be in (0, 2], got " + std::to_string(o.gain));
   if (!(std::isfinite(o.max_offset) && o.max_offset > 0))
     throw InputError("compensation max_offset: must be positive, got " + std::to_string(o.max_offset));
+  if (o.gouge_iterations < 0 || o.gouge_iterations > 200)
+    throw InputError("compensation gouge_iterations: must be in [0, 200], got " + std::to_string(o.gouge_iterations));
   // Passes in parallel, each into its own record; merged in pass order
   // afterwards, so the lists and counts do not depend on the threads.
   const std::size_t passes = geometry.passes.size();
@@ -60,9 +82,27 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
       const FieldValue e = field.faces[f]->at(at.uv.x(), at.uv.y());
       OffsetPoint record{p, k, pt.line, -o.gain * e.value, 0.0};
       record.applied = std::clamp(record.requested, -o.max_offset, o.max_offset);
-      const bool clipped = record.applied != record.requested;
+      bool clipped = record.applied != record.requested;
       if (clipped) out.clipped.push_back(record);
       if (record.applied == 0) continue;  // nothing to move (outside the field)
+      if (o.check_gouge) {
+        GougeOptions gouge = o.gouge;
+        gouge.location = o.location;
+        const DifferentialGeometry nominal = part.faces[f].geometry(at.uv.x(), at.uv.y());
+        if (!nominal.degenerate && !check_local_gouge(cutter, nominal, gouge).gouges() &&
+            gouges_at(cutter, nominal, record.applied, gouge)) {
+          double safe = 0, unsafe = record.applied;  // bisection keeps safe clear, unsafe gouging
+          for (int i = 0; i < o.gouge_iterations; ++i) {
+            const double mid = 0.5 * (safe + unsafe);
+            (gouges_at(cutter, nominal, mid, gouge) ? unsafe : safe) = mid;
+          }
+          OffsetPoint cut_back = record;
+          cut_back.applied = safe;
+          out.gouge_clipped.push_back(cut_back);
+          record.applied = safe;
+          clipped = true;
+        }
+      }
       // The compensated surface's normal (header): tilted against the
       // offset's slope, unless clipped (the offset is flat there).
       Eigen::Vector3d normal = at.normal;
@@ -85,6 +125,7 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
     out.tips.push_back(std::move(one.tips[0]));
     out.offsets.push_back(std::move(one.offsets[0]));
     out.clipped.insert(out.clipped.end(), one.clipped.begin(), one.clipped.end());
+    out.gouge_clipped.insert(out.gouge_clipped.end(), one.gouge_clipped.begin(), one.gouge_clipped.end());
     out.unreachable.insert(out.unreachable.end(), one.unreachable.begin(), one.unreachable.end());
     out.moved += one.moved, out.no_contact += one.no_contact, out.in_air += one.in_air;
     out.largest_offset = std::max(out.largest_offset, one.largest_offset);

@@ -23,6 +23,18 @@
 //           change of its exact location rather than being replaced by
 //           L(P', n'): what the program had beside the exact location (a
 //           stock allowance, the posted 4 decimals) is kept.
+// Local gouging: the compensated surface curves more than the nominal one
+// where the offset moves it towards a concave centre (an offset d along the
+// normal turns a principal curvature k into k / (1 - d k), docs/architecture.md
+// "Conventions" for the sign), so a cutter that fits the nominal concave
+// radius may not fit the compensated one. Each moved point whose nominal
+// contact is clear is checked with check_local_gouge (machining/gouge/) on
+// the compensated curvatures (principal directions and the normal kept:
+// the tilt is the offset's slope, ~1e-3 rad); a point that would gouge has
+// its offset cut back by bisection to the largest clear one
+// (`gouge_iterations` halvings of [0, d]), is listed in `gouge_clipped`,
+// and moves without tilt. A nominal contact that already gouges is the
+// path's own fault (the prediction reports it) and is not checked.
 // Points without a contact (not over the part) and points in the air keep
 // their tip: the field is of the part's surface, not of the approach moves.
 // A point whose tilted normal points down (n'_z < 0, unreachable from
@@ -38,6 +50,7 @@
 #include "machining/compensation/error_field.hpp"
 #include "machining/cutter/cutter_location.hpp"
 #include "machining/cutter/path_tools.hpp"
+#include "machining/gouge/local_gouge.hpp"
 #include "machining/prediction/path_contacts.hpp"
 
 namespace furrow {
@@ -45,6 +58,9 @@ namespace furrow {
 struct PathOffsetOptions {
   double gain = 1;          // share of the measured error taken off, in (0, 2]
   double max_offset = 0.2;  // [mm] largest |d| applied, > 0
+  bool check_gouge = true;  // cut back offsets that would gouge locally
+  int gouge_iterations = 40;  // bisection halvings of [0, d] (2^-40 d: sub-picometre)
+  GougeOptions gouge;       // its location options are `location` below
   CutterLocationOptions location;
 };
 
@@ -59,6 +75,7 @@ struct PathOffset {
   std::vector<std::vector<Eigen::Vector3d>> tips;  // per pass and point, the new tips [mm]
   std::vector<std::vector<double>> offsets;        // applied d per point [mm] (0 where not moved)
   std::vector<OffsetPoint> clipped;                // |requested| > max_offset
+  std::vector<OffsetPoint> gouge_clipped;          // cut back to the largest clear offset
   std::vector<OffsetPoint> unreachable;            // tilted normal faces down: tip kept
   std::size_t moved = 0;        // points whose tip was recomputed
   std::size_t no_contact = 0;   // kept: no contact under the tip

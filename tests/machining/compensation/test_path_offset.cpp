@@ -165,3 +165,50 @@ TEST_CASE("path offset: points off the part or in the air keep their tips") {
   bad.gain = 1, bad.max_offset = -1;
   CHECK_THROWS_AS(offset_path(part, single_tool(ball, path), geometry, field, bad), InputError);
 }
+
+TEST_CASE("path offset: an offset that would make a concave radius tighter than the ball is cut back to the last clear one") {
+  // The inside of a tube of radius 10 (the unreversed cylinder faces its
+  // axis: concave), its bottom 140 degrees, and a ball of radius 9.95 that
+  // just fits it.
+  Part part;
+  part.faces.emplace_back("trough", make_cylinder(10, 40, radians(200), radians(340)));
+  const Cutter ball("ball", 9.95, 9.95);
+  const Toolpath path = exact_path(part, ball);
+  const PathGeometry geometry = locate_path(part, ball, path);
+  PathOffsetOptions options;
+  // Oracle: the offset surface at d has radius 10 - d; the ball gouges when
+  // 1 / (10 - d) exceeds 1 / 9.95 by more than the curvature tolerance.
+  const double tolerance = options.gouge.curvature_tolerance;
+  const double last_clear = 10 - 1 / (1 / 9.95 + tolerance);
+  {
+    // An overcut of 80 um asks for d = +0.08: radius 9.92 < 9.95.
+    const ErrorField field = sampled_field(part, [](const Eigen::Vector3d&) { return -0.08; });
+    const PathOffset moved = offset_path(part, single_tool(ball, path), geometry, field, options);
+    CHECK(moved.gouge_clipped.size() == geometry.points);
+    CHECK(moved.clipped.empty());
+    for (const OffsetPoint& c : moved.gouge_clipped) {
+      CHECK(std::abs(c.requested - 0.08) < 1e-9);
+      CHECK(std::abs(c.applied - last_clear) < 1e-9);
+      // The tip moves by the applied offset along the normal (towards the axis).
+      const Eigen::Vector3d contact = geometry.passes[c.pass][c.point].contact.at.point;
+      const Eigen::Vector3d n = -Eigen::Vector3d(contact.x(), 0, contact.z()).normalized();
+      CHECK((moved.tips[c.pass][c.point] - (path.passes[c.pass].points[c.point].position + c.applied * n)).norm() <
+            1e-7);
+    }
+  }
+  {
+    // Material left asks for d < 0: the radius grows, nothing to cut back.
+    const ErrorField field = sampled_field(part, [](const Eigen::Vector3d&) { return 0.08; });
+    const PathOffset moved = offset_path(part, single_tool(ball, path), geometry, field, options);
+    CHECK(moved.gouge_clipped.empty());
+    CHECK(moved.moved == geometry.points);
+  }
+  {
+    // Without the check the full offset is applied: the test above could fail.
+    options.check_gouge = false;
+    const ErrorField field = sampled_field(part, [](const Eigen::Vector3d&) { return -0.08; });
+    const PathOffset moved = offset_path(part, single_tool(ball, path), geometry, field, options);
+    CHECK(moved.gouge_clipped.empty());
+    CHECK(std::abs(moved.largest_offset - 0.08) < 1e-9);
+  }
+}
