@@ -9,10 +9,11 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 LAYERS = [
     "base", "geometry", "io/cad", "io", "io/machining", "io/qif", "io/cmm", "render", "partition",
     "machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
-    "planning", "inspection", "results", "report", "stage", "job", "cli",
+    "machining/compensation", "planning", "inspection", "results", "report", "stage", "job", "cli",
 ]
 # Layers that sit side by side: neither may include the other.
-MACHINING = {"machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath"}
+MACHINING = {"machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
+             "machining/compensation"}
 SIBLINGS = [({"partition"}, MACHINING), ({"planning"}, {"inspection"})]
 # Third-party headers and the only places allowed to include them.
 OWNERS = {
