@@ -25,15 +25,17 @@ int run_run(Args& args) {
     job.record_file = *record;
     job.record = read_inspection_record(*record);
   }
-  if (storage.serial.empty() && job.record) storage.serial = job.record->serial;
+  // The record's serial names the part only when there is a database to store
+  // it in; --serial without --db is still refused.
+  const std::string serial = storage.serial.empty() && job.record ? job.record->serial : storage.serial;
   // Before any work: a database that is not Furrow's stops the job here.
-  const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !storage.serial.empty());
+  const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !serial.empty());
   // A stage's option or input came from the job: the message names it.
   const int status = naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
   const std::string comparison = (std::filesystem::path(job.output) / "comparison.json").string();
   if (db && std::filesystem::exists(comparison)) {
     RecordContext context;
-    context.serial = storage.serial;
+    context.serial = serial;
     context.date = utc_iso8601(std::time(nullptr));
     if (job.record) {
       context.operator_name = job.record->operator_name;
