@@ -71,18 +71,26 @@ void panel(Drawing& d, PixelRect rect, double x0, double x1, const std::vector<d
 
 }  // namespace
 
-Drawing imr_chart(const CharacteristicSpc& c, std::size_t part_count) {
+Drawing imr_chart(const CharacteristicSpc& c, std::size_t part_count, std::size_t window) {
   Drawing d(kWidth, 560);
   d.text(c.id + " (" + c.kind + ")", {12, 22}, 16, TextAnchor::start).bold = true;
-  const double x0 = -0.5, x1 = static_cast<double>(std::max<std::size_t>(part_count, 1)) - 0.5;
+  const std::size_t parts = std::max<std::size_t>(part_count, 1);
+  const std::size_t first_part = parts > window && window > 0 ? parts - window : 0;
+  const double x0 = static_cast<double>(first_part) - 0.5, x1 = static_cast<double>(parts) - 0.5;
+  // The series' positions shown: from the first value of a part in the window.
+  const std::size_t first =
+      static_cast<std::size_t>(std::lower_bound(c.part_index.begin(), c.part_index.end(), first_part) -
+                               c.part_index.begin());
+  std::vector<bool> in_violation(c.values.size(), false);
+  for (const SpcViolation& v : c.violations)
+    for (std::size_t i = v.index; i <= v.last; ++i) in_violation[i] = true;
   std::vector<double> xs, ys;
-  std::vector<bool> alarm(c.values.size(), false);
-  for (std::size_t i = 0; i < c.values.size(); ++i) {
+  std::vector<bool> alarm;
+  for (std::size_t i = first; i < c.values.size(); ++i) {
     xs.push_back(static_cast<double>(c.part_index[i]));
     ys.push_back(um(c.values[i]));
+    alarm.push_back(in_violation[i]);
   }
-  for (const SpcViolation& v : c.violations)
-    for (std::size_t i = v.index; i <= v.last; ++i) alarm[i] = true;
   std::vector<std::pair<double, std::pair<const char*, std::string>>> lines;
   if (c.mean) lines.push_back({um(*c.mean), {"centre", "mean"}});
   if (c.ucl && c.sigma_within && *c.sigma_within > 0) {
@@ -91,11 +99,12 @@ Drawing imr_chart(const CharacteristicSpc& c, std::size_t part_count) {
   }
   panel(d, {80, 40, 600, 280}, x0, x1, xs, ys, alarm, "value", lines, "value [µm]");
 
-  // Moving ranges, each drawn at the later of its two parts.
+  // Moving ranges, each drawn at the later of its two parts (its earlier
+  // part may lie before the window).
   std::vector<double> mx, my;
-  for (std::size_t i = 1; i < c.values.size(); ++i) {
-    mx.push_back(xs[i]);
-    my.push_back(std::abs(ys[i] - ys[i - 1]));
+  for (std::size_t i = std::max<std::size_t>(first, 1); i < c.values.size(); ++i) {
+    mx.push_back(static_cast<double>(c.part_index[i]));
+    my.push_back(std::abs(um(c.values[i]) - um(c.values[i - 1])));
   }
   std::vector<std::pair<double, std::pair<const char*, std::string>>> mr_lines;
   if (c.mr_mean) {

@@ -62,6 +62,9 @@ std::string chart_section(const SpcResult& r, std::size_t i) {
   const CharacteristicSpc& c = r.characteristics[i];
   std::string s = "<section class=\"characteristic\" data-id=\"" + esc(c.id) + "\">\n";
   s += to_svg(imr_chart(c, r.parts.size()), "I-MR chart of " + c.id, "chart-" + std::to_string(i));
+  if (r.parts.size() > kSpcChartParts)
+    s += "<p class=\"window\">the chart shows the last " + std::to_string(kSpcChartParts) + " of " +
+         std::to_string(r.parts.size()) + " parts; the figures are over all of them</p>\n";
   s += "<p>zone " + fixed(c.lower * 1000, 1) + " … " + fixed(c.upper * 1000, 1) + " µm</p>\n";
   if (!c.violations.empty()) {
     // One line per rule: its meaning, then where each violation starts.

@@ -139,3 +139,52 @@ TEST_CASE("spc.html lists each rule's violations once with their count") {
     CHECK(listed == rules);
   }
 }
+
+TEST_CASE("spc.html charts the last parts of a long batch, with the limits of all of them") {
+  // 150 parts; the characteristic skips every tenth part, so the window's
+  // first value and the moving range reaching into it are tested too.
+  SpcInput in;
+  for (std::size_t i = 0; i < 150; ++i) in.parts.push_back({"S" + std::to_string(i), "2026-11-28T00:00:00Z", "PASS"});
+  CharacteristicSeries series{"P1", "point", -0.05, 0.05, {}, {}};
+  const std::vector<double> noise = spc_oracle::normal_sample(7, 150, 0.001, 0.003);
+  for (std::size_t i = 0; i < 150; ++i)
+    if (i % 10 != 3) {
+      series.part_index.push_back(i);
+      series.values.push_back(noise[i]);
+    }
+  in.characteristics = {series};
+  const SpcResult r = compute_spc(in);
+  const CharacteristicSpc& c = r.characteristics[0];
+  pugi::xml_document doc;
+  const std::string page = spc_html(r, {"results.sqlite", {}});
+  REQUIRE(doc.load_string(page.c_str()));
+  const pugi::xml_node svg = doc.select_node("//section[@class='characteristic']/svg").node();
+  const Area values = area_of(svg.select_node("rect[@class='plot-area']").node());
+  // The window: parts 50 .. 149 (kSpcChartParts = 100), as the x range.
+  CHECK(values.x0 == -0.5 + 50);
+  CHECK(values.x1 == 149.5);
+  // Oracle: the positions of the series whose part is in the window.
+  std::vector<std::size_t> shown;
+  for (std::size_t k = 0; k < c.n; ++k)
+    if (c.part_index[k] >= 50) shown.push_back(k);
+  const pugi::xpath_node_set dots = svg.select_nodes("circle[starts-with(@class, 'value')]");
+  REQUIRE(dots.size() == shown.size());
+  for (std::size_t j = 0; j < shown.size(); ++j) {
+    const pugi::xml_node dot = dots[j].node();
+    CHECK(std::abs(values.data_x(dot.attribute("cx").as_double()) - static_cast<double>(c.part_index[shown[j]])) <=
+          values.tol_x());
+    CHECK(std::abs(values.data_y(dot.attribute("cy").as_double()) - c.values[shown[j]] * 1000) <= values.tol_y());
+  }
+  // One moving range per value shown: the first one's partner is before the window.
+  CHECK(svg.select_nodes("circle[@class='mr']").size() == shown.size());
+  // The centre line is the mean over all 135 values, not over the window.
+  double y_centre = 0;
+  for (const pugi::xpath_node& l : svg.select_nodes("line[@class='centre']")) {
+    y_centre = values.data_y(l.node().attribute("y1").as_double());
+    break;
+  }
+  double sum = 0;
+  for (double v : series.values) sum += v;
+  CHECK(std::abs(y_centre - sum / static_cast<double>(series.values.size()) * 1000) <= values.tol_y());
+  CHECK(page.find("the chart shows the last 100 of 150 parts") != std::string::npos);
+}
