@@ -149,7 +149,7 @@ TEST_CASE("the summary names the worst characteristics and what the latest part 
   CHECK(text.rfind("spc: 30 parts (SN100 .. SN129), 3 characteristics, ", 0) == 0);
   // Two characteristics listed, worst first.
   CHECK(text.find("\n  P0002  n 30  cpk ") != std::string::npos);
-  CHECK(text.find("\n  R1  n 29  cpk ") != std::string::npos);
+  CHECK(text.find("\n  region R1  n 29  cpk ") != std::string::npos);
   CHECK(text.find("P0001  n") == std::string::npos);
   CHECK(text.find("P0002") < text.find("R1"));
   // The latest part: every violation that reaches it, by rule.
