@@ -49,6 +49,7 @@ extern const Command kCompareCommand;
 extern const Command kRemeasureCommand;
 extern const Command kReportCommand;
 extern const Command kImportResultsCommand;
+extern const Command kSpcCommand;
 extern const Command kRunCommand;
 extern const Command kDemoCommand;
 

@@ -30,6 +30,7 @@ const std::vector<const Command*> kCommands = {
     &furrow::cli::kRemeasureCommand,
     &furrow::cli::kReportCommand,
     &furrow::cli::kImportResultsCommand,
+    &furrow::cli::kSpcCommand,
     &furrow::cli::kRunCommand,
     &furrow::cli::kDemoCommand,
 };
