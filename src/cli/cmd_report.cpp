@@ -3,10 +3,17 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <ctime>
+#include <iostream>
+
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
 #include "cli/commands.hpp"
+#include "cli/results_storage.hpp"
 #include "base/atomic_file.hpp"
 #include "report/pdf_print.hpp"
 #include "report/print_style.hpp"
+#include "report/process_context.hpp"
 #include "report/report_sources.hpp"
 #include "report/verdict.hpp"
 
@@ -14,12 +21,41 @@ namespace furrow::cli {
 
 namespace {
 
+// The part's place in its batch: found in the database by its digest, or
+// stored there first under --serial (else the record's serial), as
+// furrow compare --db would have (docs/results_database.md).
+ProcessContext report_process(Args& args, const ResultsStorageOptions& storage, const std::string& comparison_path,
+                              const ReportSources& sources, const ReportContext& report) {
+  std::string serial = storage.serial.empty() && report.record ? report.record->serial : storage.serial;
+  const std::string& digest = sources.inputs.front().sha256;  // the comparison's own
+  const std::unique_ptr<ResultsDatabase> db =
+      open_results_database(storage.db, serial.empty() ? DatabaseAccess::read : DatabaseAccess::write);
+  bool stored = false;
+  for (const StoredPart& p : db->parts())
+    if (p.comparison_sha256 == digest) stored = true, serial = p.serial;
+  RecordContext context;
+  context.serial = serial;
+  context.date = utc_iso8601(std::time(nullptr));
+  if (report.record) {
+    context.operator_name = report.record->operator_name;
+    context.cmm = report.record->cmm;
+  }
+  if (!stored) {
+    if (serial.empty())
+      args.fail(comparison_path + " is not stored in " + storage.db +
+                ": give --serial S to store it there (docs/results_database.md)");
+    store_comparison_file(*db, comparison_path, context, std::cout);
+  }
+  return process_context(*db, make_comparison_record(json_fields::read_text(comparison_path), comparison_path, context));
+}
+
 int run_report(Args& args) {
   const std::string out = args.required_option("out");
   const auto title = args.option("title");
   const auto record = args.option("record");
   const bool pdf = args.flag("pdf");
   const std::string paper = args.option("paper").value_or("a4");
+  const ResultsStorageOptions storage = read_results_storage(args);
   const std::string comparison_path = args.positional("COMPARISON (a comparison.json of furrow compare)");
   args.finish();
   paper_size_css(paper, "--paper");  // a4 or letter, before any work
@@ -31,6 +67,8 @@ int run_report(Args& args) {
     sources.inputs.push_back(digest_file("record", *record));
   }
   check_inputs_outside(out, sources.inputs);
+  if (!storage.db.empty()) context.process = report_process(args, storage, comparison_path, sources, context);
+  else if (!storage.serial.empty()) args.fail("--serial names the part in a results database: give --db (or FURROW_DB)");
   context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
   if (context.title.empty() || context.title == ".") context.title = "comparison";
   context.generated = utc_timestamp();
@@ -52,12 +90,21 @@ int run_report(Args& args) {
   return exit_status(v.verdict, v.alignment);
 }
 
+std::string report_options_help() {
+  return "\nResults database (docs/results_database.md, docs/options.md): with --db the\n"
+         "report gets a Process section, each region's mean deviation over the last\n"
+         "parts of the batch with this one last and its Cpk (docs/report.md\n"
+         "\"Process\"). A comparison not stored yet is stored first, under --serial\n"
+         "or the record's serial; without either it is refused:\n" +
+         option_help_lines(describe(results_storage_option_table()));
+}
+
 }  // namespace
 
 const Command kReportCommand = {
     "report", "QA report of a comparison: self-contained HTML, JSON, CSV, figures",
     "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT] [--record RECORD.json]\n"
-    "                     [--pdf [--paper a4|letter]]\n"
+    "                     [--pdf [--paper a4|letter]] [--db PATH [--serial S]]\n"
     "\n"
     "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
     "as a whole: report.html (self-contained, opens offline), report.json (every\n"
@@ -83,6 +130,6 @@ const Command kReportCommand = {
     "                 report.json and results.qif\n"
     "  --pdf          also print report.pdf (needs Chromium)\n"
     "  --paper SIZE   a4 (default) or letter\n",
-    run_report};
+    run_report, report_options_help};
 
 }  // namespace furrow::cli

@@ -30,17 +30,26 @@ int run_run(Args& args) {
   const std::string serial = storage.serial.empty() && job.record ? job.record->serial : storage.serial;
   // Before any work: a database that is not Furrow's stops the job here.
   const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !serial.empty());
+  RecordContext context;
+  context.serial = serial;
+  context.date = utc_iso8601(std::time(nullptr));
+  if (job.record) {
+    context.operator_name = job.record->operator_name;
+    context.cmm = job.record->cmm;
+  }
+  // The report shows the part after the stored ones; it is stored once the
+  // folder is written.
+  ProcessLookup process;
+  if (db)
+    process = [&](const std::string& comparison_text) {
+      return std::optional<ProcessContext>(
+          process_context(*db, make_comparison_record(comparison_text, "comparison.json", context)));
+    };
   // A stage's option or input came from the job: the message names it.
-  const int status = naming_inputs(job_path, [&] { return run_and_report(job, std::cout); });
+  const int status = naming_inputs(job_path, [&] { return run_and_report(job, std::cout, process); });
   const std::string comparison = (std::filesystem::path(job.output) / "comparison.json").string();
   if (db && std::filesystem::exists(comparison)) {
-    RecordContext context;
-    context.serial = serial;
-    context.date = utc_iso8601(std::time(nullptr));
-    if (job.record) {
-      context.operator_name = job.record->operator_name;
-      context.cmm = job.record->cmm;
-    }
+    context.date = utc_iso8601(std::time(nullptr));  // stored now
     store_comparison_file(*db, comparison, context, std::cout);
   } else if (db) {
     std::cout << "nothing stored in " << db->location() << ": the job measured nothing\n";

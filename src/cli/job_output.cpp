@@ -8,11 +8,11 @@
 
 namespace furrow::cli {
 
-int run_and_report(const Job& job, std::ostream& out) {
+int run_and_report(const Job& job, std::ostream& out, const ProcessLookup& process) {
   TerminalProgress progress;
   const PipelineResult result = run_job(job, [&](const std::string& stage, std::size_t done, std::size_t total) {
     progress.update(stage, done, total);
-  });
+  }, process);
   progress.finish();
   write_job_output(job, result);
   for (const std::string& line : result.summary) out << line << "\n";

@@ -4,10 +4,10 @@
 // (0 pass or plan only, 1 fail).
 #include <ostream>
 
-#include "job/job.hpp"
+#include "job/pipeline.hpp"
 
 namespace furrow::cli {
 
-int run_and_report(const Job& job, std::ostream& out);
+int run_and_report(const Job& job, std::ostream& out, const ProcessLookup& process = {});
 
 }  // namespace furrow::cli

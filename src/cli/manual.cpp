@@ -109,7 +109,7 @@ void write_options_reference(std::ostream& out) {
           describe(simulation_option_table()));
   section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
   section("Results database",
-          "`furrow compare` and `furrow run`, on the command line only (a job file names a part, not the batch "
+          "`furrow compare`, `furrow run` and `furrow report`, on the command line only (a job file names a part, not the batch "
           "it joins); see results_database.md.",
           describe(results_storage_option_table()));
 }

@@ -239,7 +239,7 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
 
 }  // namespace
 
-PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
+PipelineResult run_job(const Job& job, const PipelineProgress& progress, const ProcessLookup& process) {
   PipelineResult result;
   StageClock clock(result.stages);
   Staged s{job, progress, result, {}, relative_to_folder(job.output, job.part), {}};
@@ -306,6 +306,9 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress) {
     context.inputs = s.inputs;
     context.job_options_json = job_options_json(job);
     context.record = job.record;
+    if (process)
+      for (const FolderFile& f : result.files)
+        if (f.path == "comparison.json") context.process = process(f.bytes);
     // The report's stage time is that of its figures (the costly part): it
     // is printed in the report rendered right after.
     const Clock::time_point report_start = Clock::now();

@@ -29,6 +29,7 @@
 // Deterministic: the same job gives the same files, except the report's
 // timestamp and stage times (qa_report.hpp).
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,8 +56,14 @@ struct PipelineResult {
   std::vector<std::string> summary;  // a few lines for people
 };
 
+// The part's place in its batch for the report's Process section, from the
+// comparison.json text the job made (`furrow run --db`: the results
+// database with this part appended, report/process_context.hpp); none
+// without a database.
+using ProcessLookup = std::function<std::optional<ProcessContext>(const std::string& comparison_text)>;
+
 // Throws InputError for bad inputs (file, field or option named).
-PipelineResult run_job(const Job& job, const PipelineProgress& progress = {});
+PipelineResult run_job(const Job& job, const PipelineProgress& progress = {}, const ProcessLookup& process = {});
 
 // Replaces job.output atomically with result.files. Throws InputError when
 // an input file lies inside job.output (replacing it would delete it).

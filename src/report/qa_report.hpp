@@ -24,6 +24,7 @@
 #include "inspection/comparison_document.hpp"
 #include "partition/region_map.hpp"
 #include "report/inspection_record.hpp"
+#include "report/process_context.hpp"
 #include "report/report_figures.hpp"
 
 namespace furrow {
@@ -57,6 +58,9 @@ struct ReportContext {
   // none: the report says that no record was given. Its file, when it came
   // from one, belongs in `inputs` (role "record").
   std::optional<InspectionRecord> record;
+  // Where the part sits in its batch (process_context.hpp), when a results
+  // database was given; none: the report has no Process section.
+  std::optional<ProcessContext> process;
   // What each face of the part exactly is, indexed like Part::faces (from
   // face_surfaces below); unset for a free-form face. Empty: not known.
   std::vector<std::optional<AnalyticSurface>> face_surfaces;

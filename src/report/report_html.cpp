@@ -8,6 +8,7 @@
 #include "report/html.hpp"
 #include "report/inspection_record_html.hpp"
 #include "report/point_table_html.hpp"
+#include "report/process_html.hpp"
 #include "report/print_style.hpp"
 #include "base/number_text.hpp"
 #include "base/numbers.hpp"
@@ -417,12 +418,14 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
          (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
          "</header>\n";
   out += verdict_section(verdict);
-  out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a><a href=\"#deviations\">"
+  out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a>" +
+         std::string(context.process ? "<a href=\"#process\">Process</a>" : "") + "<a href=\"#deviations\">"
          "Deviations</a><a href=\"#view3d\">3D view</a><a href=\"#prediction\">Predicted vs measured</a><a "
          "href=\"#gouges\">Gouges</a><a href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a "
          "href=\"#traceability\">Traceability</a></nav>\n";
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
+  out += process_section_html(context.process);
   out += deviations_section(doc, figures);
   out += figures_of(figures, "view3d");  // part_view_3d.hpp: a whole section, when present
   out += prediction_section(doc, figures);

@@ -241,6 +241,29 @@ void write_points(json_text::Writer& w, const ComparisonDocument& doc) {
   w.end_array();
 }
 
+// Where the part sits in its batch; null without a results database.
+json process_json(const std::optional<ProcessContext>& process) {
+  if (!process) return nullptr;
+  json regions = json::array();
+  for (const RegionProcess& r : process->regions) {
+    json recent = json::array();
+    for (std::size_t k = 0; k < r.recent.size(); ++k)
+      recent.push_back({{"serial", r.serials[k]}, {"value", num(r.recent[k], "process value")}});
+    regions.push_back({{"region", std::stoi(r.region)},
+                       {"lower", num(r.lower, "process zone")},
+                       {"upper", num(r.upper, "process zone")},
+                       {"n", r.n},
+                       {"mean", r.mean ? num(*r.mean, "process mean") : json(nullptr)},
+                       {"cpk", r.cpk ? num(*r.cpk, "process cpk") : json(nullptr)},
+                       {"recent", std::move(recent)},
+                       {"this_part", r.has_part},
+                       {"rules_at_part", r.rules_at_part}});
+  }
+  return {{"source", process->source},   {"serial", process->serial},   {"stored", process->stored},
+          {"parts", process->parts},     {"position", process->position}, {"recent_parts", kProcessRecentParts},
+          {"regions", std::move(regions)}};
+}
+
 }  // namespace
 
 std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict& verdict, const RegionMap* regions,
@@ -252,6 +275,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   d["title"] = context.title;
   d["generated"] = context.generated;
   d["record"] = record_json(context.record);
+  d["process"] = process_json(context.process);
   d["units"] = "mm";
   d["verdict"] = verdict_json(verdict);
   json inputs = json::array();

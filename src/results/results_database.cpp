@@ -111,7 +111,7 @@ SpcInput load_spc_input(ResultsDatabase& db, SpcBy by, const SerialRange& range)
   };
   const std::size_t first = range.from ? position(*range.from, "FROM") : 0;
   const std::size_t end = range.to ? position(*range.to, "TO") + 1 : serials.size();
-  if (end <= first)
+  if (range.from && range.to && end <= first)  // one side alone cannot be empty: its serial is in it
     throw InputError(db.location() + ": serial \"" + *range.to + "\" was stored before \"" + *range.from +
                      "\" (FROM..TO follows the order the parts were stored)");
 

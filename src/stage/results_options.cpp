@@ -20,7 +20,7 @@ OptionTable<ResultsStorageOptions> make_table() {
       "and SPC reads its latest",
       [](auto& o) -> auto& { return o.serial; });
   serial.example = "SN-0042";
-  t.push_back(default_is(serial, "none; furrow run: the inspection record's"));
+  t.push_back(default_is(serial, "none; furrow run and report: the inspection record's"));
   return t;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "support/run_cli.hpp"
 
@@ -174,4 +175,18 @@ TEST_CASE("cli results database: run --db stores the job's part under the inspec
   // The digest stored is that of the comparison.json the job wrote.
   CHECK(query(db, "SELECT comparison_sha256 FROM parts") == sha256sum(dir + "/out/comparison.json"));
   CHECK(query(db, "SELECT count(*) FROM points") != "0");
+  // The report was rendered before the part was stored: it shows the part
+  // after the stored ones (none), region means as comparison.json has them.
+  const nlohmann::json report = nlohmann::json::parse(slurp(dir + "/out/report.json"));
+  const nlohmann::json& process = report["process"];
+  REQUIRE(process.is_object());
+  CHECK(process["stored"] == false);
+  CHECK(process["serial"] == "SN-0042");
+  CHECK(process["parts"] == 1);
+  const nlohmann::json comparison = nlohmann::json::parse(slurp(dir + "/out/comparison.json"));
+  REQUIRE(process["regions"].size() == comparison["regions"].size());
+  for (std::size_t k = 0; k < process["regions"].size(); ++k) {
+    CHECK(process["regions"][k]["region"] == comparison["regions"][k]["region"]);
+    CHECK(process["regions"][k]["recent"][0]["value"] == comparison["regions"][k]["mean"]);
+  }
 }

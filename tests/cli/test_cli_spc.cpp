@@ -190,3 +190,57 @@ TEST_CASE("cli spc: bad input exits 2 with one line naming it, and writes nothin
   refused({"spc", "--db", b.db, "--out", b.dir}, b.db);
   CHECK(slurp(b.db) == before);
 }
+
+TEST_CASE("cli spc: report --db puts the part in its process, region means as the comparisons give them") {
+  const WearBatch& b = wear_batch();
+  const std::string dir = scratch_dir("cli-spc-report");
+  // Oracle: each region's mean over the evaluated points of each comparison.
+  std::vector<std::map<int, double>> means;
+  for (const std::string& c : b.comparisons) {
+    const json doc = json::parse(slurp(c));
+    std::map<int, std::pair<double, int>> sums;
+    for (const json& p : doc["points"])
+      if (p["evaluated"].get<bool>() && p["region"].is_number_integer()) {
+        auto& s = sums[p["region"].get<int>()];
+        s.first += p["deviation"].get<double>();
+        ++s.second;
+      }
+    means.emplace_back();
+    for (const auto& [region, s] : sums) means.back()[region] = s.first / s.second;
+  }
+  for (const int part : {kParts - 1, 3}) {
+    CAPTURE(part);
+    const std::string out = dir + "/r" + std::to_string(part);
+    const CliResult r = run_furrow({"report", b.comparisons[part], "--db", b.db, "--out", out});
+    REQUIRE_MESSAGE(r.status <= 1, r.err);
+    const json process = json::parse(slurp(out + "/report.json"))["process"];
+    CHECK(process["stored"] == true);
+    CHECK(process["serial"] == serial(part));
+    CHECK(process["parts"] == part + 1);
+    REQUIRE(process["regions"].size() == means[part].size());
+    for (const json& region : process["regions"]) {
+      const int id = region["region"];
+      CAPTURE(id);
+      const json& recent = region["recent"];
+      REQUIRE(recent.size() == static_cast<std::size_t>(part + 1));  // 25 parts at most: all of them here
+      for (int k = 0; k <= part; ++k) {
+        CHECK(recent[k]["serial"] == serial(k));
+        // Summed in another order than the comparison's statistics: 1e-13
+        // of deviations of at most 0.1 mm.
+        CHECK(std::abs(recent[k]["value"].get<double>() - means[k].at(id)) < 1e-13);
+      }
+    }
+    const std::string html = slurp(out + "/report.html");
+    CHECK(html.find("<section id=\"process\">") != std::string::npos);
+  }
+  // Not stored and no serial to store it under: exit 2, nothing written.
+  const std::string copy = dir + "/copy.json";
+  write_text(copy, slurp(b.comparisons[0]) + " ");  // other bytes: another digest
+  const std::string before = slurp(b.db);
+  const CliResult refused = run_furrow({"report", copy, "--db", b.db, "--out", dir + "/none"});
+  CHECK(refused.status == 2);
+  CHECK(refused.err.find("--serial") != std::string::npos);
+  CHECK(line_count(refused.err) == 1);
+  CHECK_FALSE(fs::exists(dir + "/none"));
+  CHECK(slurp(b.db) == before);
+}

@@ -281,6 +281,21 @@ TEST_CASE("results database: SPC reads one part per serial in production order, 
         std::string::npos);
 }
 
+TEST_CASE("results database: an empty database gives an empty selection, and a one-sided range its part on") {
+  auto db = open_results_database(scratch_dir("results-db-empty") + "/results.db", DatabaseAccess::write);
+  for (SpcBy by : {SpcBy::point, SpcBy::region}) {
+    const SpcInput none = load_spc_input(*db, by, {});
+    CHECK(none.parts.empty());
+    CHECK(none.characteristics.empty());
+  }
+  REQUIRE(db->store(made_up_record("S1", 1, 7, 1)) == StoreResult::stored);
+  REQUIRE(db->store(made_up_record("S2", 2, 7, 2)) == StoreResult::stored);
+  CHECK(load_spc_input(*db, SpcBy::point, {std::string("S2"), std::nullopt}).parts.size() == 1);
+  CHECK(load_spc_input(*db, SpcBy::point, {std::nullopt, std::string("S1")}).parts.size() == 1);
+  CHECK(load_spc_input(*db, SpcBy::point, {std::string("S2"), std::string("S2")}).parts.size() == 1);
+  CHECK_THROWS_AS(load_spc_input(*db, SpcBy::point, {std::string("S2"), std::string("S1")}), InputError);
+}
+
 TEST_CASE("results database: a point measured in some parts only has entries for those parts") {
   const std::string db_path = scratch_dir("results-db-gaps") + "/results.db";
   auto db = open_results_database(db_path, DatabaseAccess::write);
