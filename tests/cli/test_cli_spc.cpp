@@ -11,6 +11,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "report_checks.hpp"
 #include "results/spc_oracle.hpp"
 #include "support/run_cli.hpp"
 
@@ -243,4 +244,45 @@ TEST_CASE("cli spc: report --db puts the part in its process, region means as th
   CHECK(line_count(refused.err) == 1);
   CHECK_FALSE(fs::exists(dir + "/none"));
   CHECK(slurp(b.db) == before);
+}
+
+TEST_CASE("cli spc: spc.html renders in headless Chromium, one chart per characteristic, its violations as alarms") {
+  const WearBatch& b = wear_batch();
+  const std::string out = b.dir + "/spc-browser";
+  const CliResult r = run_furrow({"spc", "--db", b.db, "--out", out});
+  REQUIRE(r.status <= 1);
+  const json spc = json::parse(slurp(out + "/spc.json"));
+  // Without the browser the check fails rather than passing unrun (scripts/install-deps.sh installs it).
+  const BrowserRender page = render_in_chromium(out + "/spc.html", scratch_dir("cli-spc-browser"));
+  REQUIRE_MESSAGE(page.available, "the browser check needs /usr/bin/chromium: run scripts/install-deps.sh");
+  CHECK(page.dom_status == 0);
+  // The DOM as Chromium built it: one chart section per characteristic, each with its SVG.
+  std::size_t sections = 0, charts = 0;
+  for (std::size_t at = page.dom.find("<section class=\"characteristic\""); at != std::string::npos;
+       at = page.dom.find("<section class=\"characteristic\"", at + 1)) {
+    ++sections;
+    const std::size_t end = page.dom.find("</section>", at);
+    charts += page.dom.find("<svg", at) < end;
+  }
+  CHECK(sections == spc["characteristics"].size());
+  CHECK(charts == sections);
+  // Values in a violation are drawn as alarms: as many as the violations
+  // of spc.json cover (every part is charted: 25 < kSpcChartParts).
+  std::size_t alarms_expected = 0, alarms = 0;
+  for (const json& c : spc["characteristics"]) {
+    std::vector<bool> in(c["values"].size(), false);
+    for (const json& v : c["violations"])
+      for (std::size_t i = v["index"]; i <= v["last"].get<std::size_t>(); ++i) in[i] = true;
+    for (bool x : in) alarms_expected += x;
+  }
+  for (std::size_t at = page.dom.find("class=\"value alarm\""); at != std::string::npos;
+       at = page.dom.find("class=\"value alarm\"", at + 1))
+    ++alarms;
+  CHECK(alarms_expected > 0);
+  CHECK(alarms == alarms_expected);
+  // The screenshot shows the page: the capability table, not a blank window.
+  REQUIRE(page.screenshot_status == 0);
+  REQUIRE_FALSE(page.screenshot.empty());
+  const cv::Rect all(0, 0, page.screenshot.cols, page.screenshot.rows);
+  CHECK(all.area() - pixels_near(page.screenshot, all, 255, 255, 255, 3) > all.area() / 20);
 }
