@@ -150,10 +150,7 @@ int run_compare(Args& args) {
   outputs.file(out, json);
   outputs.publish(out);
   if (db) {
-    RecordContext context;
-    context.serial = storage.serial;
-    context.date = utc_iso8601(std::time(nullptr));
-    store_comparison_file(*db, out, context, std::cout);
+    store_comparison_file(*db, out, record_context(storage.serial, std::nullopt), std::cout);
   }
 
   const ComparisonSummary& s = c.summary;

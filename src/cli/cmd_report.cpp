@@ -33,13 +33,7 @@ ProcessContext report_process(Args& args, const ResultsStorageOptions& storage, 
   bool stored = false;
   for (const StoredPart& p : db->parts())
     if (p.comparison_sha256 == digest) stored = true, serial = p.serial;
-  RecordContext context;
-  context.serial = serial;
-  context.date = utc_iso8601(std::time(nullptr));
-  if (report.record) {
-    context.operator_name = report.record->operator_name;
-    context.cmm = report.record->cmm;
-  }
+  const RecordContext context = record_context(serial, report.record);
   if (!stored) {
     if (serial.empty())
       args.fail(comparison_path + " is not stored in " + storage.db +

@@ -30,13 +30,7 @@ int run_run(Args& args) {
   const std::string serial = storage.serial.empty() && job.record ? job.record->serial : storage.serial;
   // Before any work: a database that is not Furrow's stops the job here.
   const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !serial.empty());
-  RecordContext context;
-  context.serial = serial;
-  context.date = utc_iso8601(std::time(nullptr));
-  if (job.record) {
-    context.operator_name = job.record->operator_name;
-    context.cmm = job.record->cmm;
-  }
+  RecordContext context = record_context(serial, job.record);
   // The report shows the part after the stored ones; it is stored once the
   // folder is written.
   ProcessLookup process;

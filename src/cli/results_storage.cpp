@@ -1,6 +1,7 @@
 #include "cli/results_storage.hpp"
 
 #include <cstdlib>
+#include <ctime>
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
@@ -27,6 +28,17 @@ std::unique_ptr<ResultsDatabase> open_results_storage(Args& args, const ResultsS
     args.fail("storing in the results database " + options.db +
               " needs the part's serial number (--serial S); docs/results_database.md");
   return open_results_database(options.db, DatabaseAccess::write);
+}
+
+RecordContext record_context(const std::string& serial, const std::optional<InspectionRecord>& record) {
+  RecordContext context;
+  context.serial = serial;
+  context.date = utc_iso8601(std::time(nullptr));
+  if (record) {
+    context.operator_name = record->operator_name;
+    context.cmm = record->cmm;
+  }
+  return context;
 }
 
 StoreResult store_comparison_file(ResultsDatabase& db, const std::string& path, RecordContext context,

@@ -6,10 +6,12 @@
 // it writes anything; the comparison is stored after comparison.json is
 // written, from the file's own bytes.
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
 #include "cli/args.hpp"
+#include "report/inspection_record.hpp"
 #include "results/results_database.hpp"
 #include "stage/results_options.hpp"
 
@@ -26,6 +28,9 @@ ResultsStorageOptions read_results_storage(Args& args);
 std::unique_ptr<ResultsDatabase> open_results_storage(Args& args, const ResultsStorageOptions& options,
                                                       bool serial_known);
 
+// What a stored record says beyond the comparison: the serial, the time
+// now, and the operator and CMM of the inspection record when there is one.
+RecordContext record_context(const std::string& serial, const std::optional<InspectionRecord>& record);
 // Stores the comparison.json at `path` (its sources' digests found as the
 // QA report finds them, report/report_sources.hpp) and says so on `out`.
 // Returns what the database did. InputError for a bad file or serial, or
