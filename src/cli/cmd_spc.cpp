@@ -25,6 +25,7 @@ int run_spc(Args& args) {
   if (db_path.empty())
     if (const char* env = std::getenv("FURROW_DB")) db_path = env;
   if (db_path.empty()) args.fail("--db PATH (or FURROW_DB) names the results database to read");
+  check_results_location(db_path);  // before spc.json or a message names it
   const SpcBy by = parse_spc_by(by_text, "--by");
   SpcSelection selection;
   selection.source = db_path;
