@@ -34,7 +34,9 @@ class PostgresCluster {
  public:
   static constexpr const char* kSuperuser = "furrow_admin";
 
-  PostgresCluster() {
+  // `durable`: fsync as a production server does (benchmarks); the tests'
+  // cluster skips it, a crash of the machine is not what they test.
+  explicit PostgresCluster(bool durable = false) {
     bin_ = find_bin();
     char pattern[] = "/tmp/furrow-pg-XXXXXX";
     if (!::mkdtemp(pattern)) throw std::runtime_error("PostgreSQL test cluster: cannot make a temporary folder");
@@ -55,7 +57,8 @@ class PostgresCluster {
     for (int attempt = 0;; ++attempt) {
       port_ = free_port();
       const std::string options = "-p " + std::to_string(port_) + " -k " + dir_ +
-                                  " -c listen_addresses=127.0.0.1 -c fsync=off -c max_connections=40";
+                                  " -c listen_addresses=127.0.0.1 -c max_connections=40" +
+                                  (durable ? "" : " -c fsync=off");
       const std::string command = shell_quote(bin_ + "/pg_ctl") + " -D " + shell_quote(dir_ + "/data") + " -l " +
                                   shell_quote(dir_ + "/server.log") + " -w -t 60 -o " + shell_quote(options) +
                                   " start > " + shell_quote(dir_ + "/pg_ctl.log") + " 2>&1";

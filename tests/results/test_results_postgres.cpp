@@ -7,13 +7,18 @@
 // test_results_database.cpp. Oracles: the records themselves, counts by
 // libpq on the tests' own connection, and the SQLite back end.
 #include <doctest/doctest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "base/error.hpp"
@@ -327,4 +332,63 @@ TEST_CASE("results database on PostgreSQL: SQLite and PostgreSQL give the same S
   CHECK(spc.parts[3].serial == "SN-3");
   CHECK(spc.characteristics[0].id == "P0");
   CHECK(spc.characteristics[0].values[3] == records[30].points[0].deviation);
+}
+
+TEST_CASE("results database on PostgreSQL: a writer killed with SIGKILL mid-part leaves only complete parts") {
+  PostgresCluster& cluster = postgres_cluster();
+  constexpr std::size_t kPoints = 20000;  // a large part: its transaction takes a while
+  std::mt19937 rng(20261128);            // the moments of the kills
+  int killed_mid_store = 0;
+  for (int round = 0; round < 4; ++round) {
+    CAPTURE(round);
+    const std::string uri = cluster.new_database("pg_kill");
+    const std::string name = PostgresCluster::database_of(uri);
+    int pipe_fds[2];
+    REQUIRE(::pipe(pipe_fds) == 0);
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      ::close(pipe_fds[0]);
+      try {
+        auto db = open_results_database(uri, DatabaseAccess::write);
+        for (std::uint32_t k = 0;; ++k) {
+          const ComparisonRecord r = made_up_record("K-" + std::to_string(k), k + 1, kPoints, k);
+          if (::write(pipe_fds[1], "B", 1) != 1) ::_exit(3);  // a store begins
+          if (db->store(r) != StoreResult::stored) ::_exit(4);
+          if (::write(pipe_fds[1], "C", 1) != 1) ::_exit(3);  // and is committed
+        }
+      } catch (...) {
+        ::_exit(1);
+      }
+    }
+    ::close(pipe_fds[1]);
+    std::string progress;
+    char c = 0;
+    while (progress.find('C') == std::string::npos && ::read(pipe_fds[0], &c, 1) == 1) progress += c;
+    REQUIRE(progress.find('C') != std::string::npos);
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(5, 400)(rng)));
+    REQUIRE(::kill(child, SIGKILL) == 0);
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    REQUIRE(WIFSIGNALED(status));
+    while (::read(pipe_fds[0], &c, 1) == 1) progress += c;
+    ::close(pipe_fds[0]);
+    const long long confirmed = static_cast<long long>(std::count(progress.begin(), progress.end(), 'C'));
+    const bool last_unconfirmed = progress.back() == 'B';  // killed inside a store, or after its commit
+
+    // The next writer waits for the dead one's lock to go with its
+    // connection, then stores; what is there is exactly the complete parts.
+    auto db = open_results_database(uri, DatabaseAccess::write);
+    CHECK(db->store(made_up_record("after", 999999, 10, 1)) == StoreResult::stored);
+    const long long present = std::stoll(cluster.query(name, "SELECT count(*) FROM parts WHERE serial <> 'after'"));
+    CHECK((present == confirmed || (last_unconfirmed && present == confirmed + 1)));
+    killed_mid_store += last_unconfirmed && present == confirmed;
+    CHECK(cluster.query(name, "SELECT count(*) FROM points") == std::to_string(present * kPoints + 10));
+    CHECK(cluster.query(name, "SELECT count(*) FROM parts p WHERE (SELECT count(*) FROM points q WHERE "
+                              "q.part_key = p.part_key) <> " + std::to_string(kPoints) + " AND serial <> 'after'") == "0");
+    CHECK(cluster.query(name, "SELECT count(*) FROM regions") == std::to_string(present * 3 + 3));
+    CHECK(cluster.query(name, "SELECT count(*) FROM inputs") == std::to_string(present * 2 + 2));
+  }
+  // The kills must have hit a part's transaction, or this did not test what it says.
+  CHECK(killed_mid_store >= 2);
 }
