@@ -7,6 +7,7 @@
 // test_results_database.cpp. Oracles: the records themselves, counts by
 // libpq on the tests' own connection, and the SQLite back end.
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -326,6 +327,19 @@ TEST_CASE("results database on PostgreSQL: SQLite and PostgreSQL give the same S
       CHECK(spc_json(compute_spc(a), selection) == spc_json(compute_spc(b), selection));
     }
   }
+  // furrow spc as a user runs it, on each: the same exit status, summary and
+  // documents, but for the source each names.
+  const std::string out = scratch_dir("results-pg-same-cli");
+  const CliResult from_sqlite = run_furrow({"spc", "--db", sqlite_path, "--out", out + "/sqlite"});
+  const CliResult from_postgres = run_furrow({"spc", "--db", uri, "--out", out + "/postgres"});
+  CHECK((from_sqlite.status == 0 || from_sqlite.status == 1));
+  CHECK(from_postgres.status == from_sqlite.status);
+  CHECK(from_postgres.err == "");
+  std::string json = slurp(out + "/postgres/spc.json");
+  REQUIRE(json.find(uri) != std::string::npos);
+  json.replace(json.find(uri), uri.size(), sqlite_path);
+  CHECK(json == slurp(out + "/sqlite/spc.json"));
+  CHECK(slurp(out + "/postgres/spc.html").size() > 1000);
   // The oracle for the latest record of a re-measured serial: the record itself.
   const SpcInput spc = load_spc_input(*postgres, SpcBy::point, {});
   CHECK(spc.parts.size() == 30);
@@ -391,4 +405,39 @@ TEST_CASE("results database on PostgreSQL: a writer killed with SIGKILL mid-part
   }
   // The kills must have hit a part's transaction, or this did not test what it says.
   CHECK(killed_mid_store >= 2);
+}
+
+TEST_CASE("results database on PostgreSQL: furrow compare --db stores a real part once, under its serial") {
+  PostgresCluster& cluster = postgres_cluster();
+  const std::string dir = scratch_dir("results-pg-compare");
+  const std::string part = source_path("examples/parts/mould.json");
+  REQUIRE(run_furrow({"partition", part, "--out", dir + "/regions.json", "--grid", "40x40"}).status == 0);
+  REQUIRE(run_furrow({"plan", part, "--regions", dir + "/regions.json", "--points", "30", "--out", dir + "/plan"})
+              .status == 0);
+  REQUIRE(run_furrow({"simulate-measurement", part, "--plan", dir + "/plan/plan.json", "--out", dir + "/m.csv"})
+              .status == 0);
+  const std::string uri = cluster.new_database("pg_compare");
+  const std::string name = PostgresCluster::database_of(uri);
+  const auto compare = [&](const std::string& out, const std::string& serial) {
+    return run_furrow({"compare", part, "--measurements", dir + "/m.csv", "--plan", dir + "/plan/plan.json", "--out",
+                       dir + "/" + out, "--db", uri, "--serial", serial});
+  };
+  const CliResult first = compare("c1.json", "SN-1");
+  REQUIRE(first.status != 2);
+  CHECK(first.out.find("stored in " + uri) != std::string::npos);
+  // The oracle: the comparison.json the command wrote, counted point by point.
+  const std::string written = slurp(dir + "/c1.json");
+  const std::size_t points = nlohmann::json::parse(written).at("points").size();
+  CHECK(points > 0);
+  CHECK(cluster.query(name, "SELECT count(*) FROM points") == std::to_string(points));
+  CHECK(cluster.query(name, "SELECT string_agg(role, ',' ORDER BY seq) FROM inputs") ==
+        "comparison,part,measurements,plan");
+  const CliResult again = compare("c2.json", "SN-1");
+  CHECK(again.status == first.status);
+  CHECK(again.out.find("not stored again") != std::string::npos);
+  const CliResult other = compare("c3.json", "SN-2");
+  CHECK(other.status == 2);
+  CHECK(other.err.find(uri) != std::string::npos);
+  CHECK(line_count(other.err) == 1);
+  CHECK(cluster.query(name, "SELECT count(*) FROM parts") == "1");
 }
