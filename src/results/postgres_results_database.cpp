@@ -543,10 +543,14 @@ void check_postgres_location(const std::string& location) {
   }
   for (const PQconninfoOption* o = options.get(); o->keyword; ++o) {
     const std::string keyword = o->keyword;
-    if ((keyword == "password" || keyword == "sslpassword") && o->val && *o->val)
-      throw InputError(masked(location) + ": the connection string holds a " +
+    if ((keyword == "password" || keyword == "sslpassword") && o->val && *o->val) {
+      std::string shown = masked(location);
+      // A form the masking does not know (percent-encoded, say): not named at all.
+      if (shown.find(o->val) != std::string::npos) shown = "--db";
+      throw InputError(shown + ": the connection string holds a " +
                        (keyword == "password" ? "password" : "key password") +
                        ", which would show wherever the location is printed; " + kPasswordHelp);
+    }
   }
 }
 

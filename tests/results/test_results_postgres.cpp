@@ -174,11 +174,13 @@ TEST_CASE("results database on PostgreSQL: a connection string holding a passwor
        {"postgresql://furrow:" + secret + "@db.example/results", "postgres://furrow:" + secret + "@localhost:5432/r",
         "postgresql://db.example/results?user=furrow&password=" + secret,
         "host=db.example dbname=results user=furrow password=" + secret,
-        "host=db.example password='" + secret + " x' dbname=results"}) {
+        "host=db.example password='" + secret + " x' dbname=results",
+        std::string("postgresql://furrow:s3cr3t%2DPw@db.example/results")}) {
     CAPTURE(location);
     for (const DatabaseAccess access : {DatabaseAccess::write, DatabaseAccess::read}) {
       const std::string message = input_error_of([&] { open_results_database(location, access); });
       CHECK(message.find(secret) == std::string::npos);
+      CHECK(message.find("s3cr3t%2DPw") == std::string::npos);
       CHECK(message.find("****") != std::string::npos);
       CHECK(message.find(".pgpass") != std::string::npos);
       CHECK(message.find("PGPASSWORD") != std::string::npos);
