@@ -170,10 +170,6 @@ class Params {
   Params& real(double v) { return text(format_real(v)); }
   Params& integer(std::int64_t v) { return text(std::to_string(v)); }
   const std::vector<std::optional<std::string>>& values() const { return values_; }
-  Params& null() {
-    values_.push_back(std::nullopt);
-    return *this;
-  }
 
  private:
   std::vector<std::optional<std::string>> values_;

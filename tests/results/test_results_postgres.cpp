@@ -166,6 +166,20 @@ TEST_CASE("results database on PostgreSQL: a serial like SQL is stored and read 
   CHECK(back[0].id == r.points[0].id);
   CHECK(back[1].id == "NULL");
   CHECK(load_spc_input(*db, SpcBy::point, parse_serial_range(evil + "..", "--serials")).parts.size() == 1);
+  // What PostgreSQL text cannot keep - a NUL byte, bytes that are not UTF-8 -
+  // is bad input naming the database, and nothing of the part is stored.
+  ComparisonRecord nul = made_up_record("N", 8, 6, 4);
+  nul.points[3].id = std::string("P\0x", 3);
+  ComparisonRecord latin1 = made_up_record("L", 9, 6, 5);
+  latin1.points[2].id = "R\xe9gion";
+  auto writer = open_results_database(uri, DatabaseAccess::write);
+  for (const ComparisonRecord* bad : {&nul, &latin1}) {
+    CAPTURE(bad->serial);
+    CHECK(input_error_of([&] { writer->store(*bad); }).find(uri) != std::string::npos);
+  }
+  CHECK(cluster.query(name, "SELECT count(*) FROM parts") == "1");
+  CHECK(cluster.query(name, "SELECT count(*) FROM points") == "6");
+  CHECK(writer->store(made_up_record("after", 10, 6, 6)) == StoreResult::stored);  // and the next part goes in
 }
 
 TEST_CASE("results database on PostgreSQL: a connection string holding a password is refused, the password never shown") {
