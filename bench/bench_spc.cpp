@@ -7,8 +7,12 @@
 // point and by region, timed whole after its steps are timed one by one
 // in this process (reading, statistics, each document rendered in memory) (median of 3 wall-clock seconds, and the
 // CPU seconds of the child processes over the three). Prints figures; it
-// does not pass or fail.
-//   usage: bench_spc [PARTS [POINTS]]
+// does not pass or fail. With a third argument the same runs on PostgreSQL
+// (docs/results_database.md "PostgreSQL"): `postgres` starts a throwaway
+// cluster as the tests do (tests/results/postgres_cluster.hpp; with fsync
+// on, as a production server commits), a
+// postgresql:// location names an empty database of a running server.
+//   usage: bench_spc [PARTS [POINTS [postgres|LOCATION]]]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -20,6 +24,7 @@
 #include <vector>
 
 #include "bench_clock.hpp"
+#include "results/postgres_cluster.hpp"
 #include "results/results_database.hpp"
 #include "results/results_records.hpp"
 #include "results/spc_html.hpp"
@@ -62,14 +67,23 @@ void time_command(const std::string& what, const std::string& command) {
 int main(int argc, char** argv) {
   const std::size_t parts = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 1000;
   const std::size_t points = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 300;
+  const std::string backend = argc > 3 ? argv[3] : "";
   if (parts < 2 || points < 1) {
-    std::fprintf(stderr, "usage: bench_spc [PARTS >= 2 [POINTS >= 1]]\n");
+    std::fprintf(stderr, "usage: bench_spc [PARTS >= 2 [POINTS >= 1 [postgres|LOCATION]]]\n");
     return 2;
   }
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "furrow-bench-spc";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  const std::string db_path = (dir / "results.db").string();
+  std::string db_path = (dir / "results.db").string();
+  std::unique_ptr<test::PostgresCluster> cluster;
+  if (backend == "postgres") {
+    cluster = std::make_unique<test::PostgresCluster>(/*durable=*/true);
+    db_path = cluster->new_database("bench_spc");
+  } else if (!backend.empty()) {
+    db_path = backend;
+  }
+  const bool is_file = backend.empty();
 
   std::vector<double> store_ms;
   {
@@ -87,8 +101,11 @@ int main(int argc, char** argv) {
   for (double t : store_ms) sum += t;
   std::vector<double> sorted = store_ms;
   std::sort(sorted.begin(), sorted.end());
-  std::printf("stored %zu parts x %zu points in %s (%.1f MB)\n", parts, points, db_path.c_str(),
-              static_cast<double>(std::filesystem::file_size(db_path)) / 1e6);
+  if (is_file)
+    std::printf("stored %zu parts x %zu points in %s (%.1f MB)\n", parts, points, db_path.c_str(),
+                static_cast<double>(std::filesystem::file_size(db_path)) / 1e6);
+  else
+    std::printf("stored %zu parts x %zu points in PostgreSQL %s\n", parts, points, db_path.c_str());
   std::printf("store per part: mean %.2f ms  median %.2f ms  p99 %.2f ms  worst %.2f ms  (target < 20 ms)\n",
               sum / static_cast<double>(parts), sorted[parts / 2], sorted[(parts * 99) / 100], sorted.back());
 
@@ -114,7 +131,7 @@ int main(int argc, char** argv) {
   }
 
   const std::string cli = FURROW_CLI;
-  const std::string base = cli + " spc --db " + db_path + " --out " + (dir / "spc").string();
+  const std::string base = cli + " spc --db " + test::shell_quote(db_path) + " --out " + (dir / "spc").string();
   time_command("furrow spc (by point)", base + " > /dev/null");
   time_command("furrow spc --by region", base + "-regions --by region > /dev/null");
   for (const char* name : {"spc.json", "spc.html", "spc.qif"})

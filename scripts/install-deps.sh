@@ -8,8 +8,12 @@ packages=(
   libeigen3-dev libceres-dev libnanoflann-dev libopencv-dev libpng-dev nlohmann-json3-dev doctest-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libssl-dev
   libpugixml-dev
-  # the results database (src/results/sqlite_*)
-  libsqlite3-dev
+  # the results database: SQLite (src/results/sqlite_*) and PostgreSQL's
+  # client library (src/results/postgres_*)
+  libsqlite3-dev libpq-dev
+  # tests only: the PostgreSQL tests start a throwaway cluster with its
+  # initdb and pg_ctl (tests/results/postgres_cluster.hpp)
+  postgresql
   # the QA report's 3D view inlines three.js; `furrow report --pdf` prints
   # with headless Chromium
   libjs-three chromium

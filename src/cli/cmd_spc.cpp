@@ -25,6 +25,7 @@ int run_spc(Args& args) {
   if (db_path.empty())
     if (const char* env = std::getenv("FURROW_DB")) db_path = env;
   if (db_path.empty()) args.fail("--db PATH (or FURROW_DB) names the results database to read");
+  check_results_location(db_path);  // before spc.json or a message names it
   const SpcBy by = parse_spc_by(by_text, "--by");
   SpcSelection selection;
   selection.source = db_path;
@@ -69,7 +70,8 @@ const Command kSpcCommand = {
     "Statistics), published whole, and prints the worst characteristics and\n"
     "what the latest part violates.\n"
     "\n"
-    "  --db PATH           the results database to read (default: the\n"
+    "  --db PATH           the results database to read, an SQLite file or a\n"
+    "                      PostgreSQL connection string (default: the\n"
     "                      environment's FURROW_DB); it must exist\n"
     "  --out FOLDER        the output folder, replaced as a whole\n"
     "  --by point|region   characteristics: each plan point's deviation\n"

@@ -24,6 +24,7 @@ std::unique_ptr<ResultsDatabase> open_results_storage(Args& args, const ResultsS
     if (!options.serial.empty()) args.fail("--serial names the part in a results database: give --db (or FURROW_DB)");
     return nullptr;
   }
+  check_results_location(options.db);  // before a message names it
   if (!serial_known)
     args.fail("storing in the results database " + options.db +
               " needs the part's serial number (--serial S); docs/results_database.md");

@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
 #include "io/qif/qif_uuid.hpp"
+#include "results/postgres_results_database.hpp"
 #include "results/sqlite_results_database.hpp"
 
 namespace furrow {
@@ -22,10 +23,6 @@ void check_serial(const std::string& serial) {
   for (const char c : serial)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
       throw InputError("--serial \"" + serial + "\": holds a control character");
-}
-
-bool starts_with(const std::string& text, const std::string& prefix) {
-  return text.compare(0, prefix.size(), prefix) == 0;
 }
 
 }  // namespace
@@ -78,10 +75,12 @@ SpcBy parse_spc_by(const std::string& text, const std::string& where) {
 
 std::unique_ptr<ResultsDatabase> open_results_database(const std::string& location, DatabaseAccess access) {
   if (location.empty()) throw InputError("--db: the results database's location is empty");
-  if (starts_with(location, "postgresql://") || starts_with(location, "postgres://"))
-    throw InputError(location.substr(0, location.find(':')) +
-                     "://...: this build stores results in SQLite files only (docs/results_database.md)");
+  if (is_postgres_location(location)) return open_postgres_results_database(location, access);
   return open_sqlite_results_database(location, access);
+}
+
+void check_results_location(const std::string& location) {
+  if (is_postgres_location(location)) check_postgres_location(location);
 }
 
 SerialRange parse_serial_range(const std::string& text, const std::string& where) {

@@ -3,7 +3,8 @@
 // so that statistical process control can follow each characteristic over
 // the parts (docs/results_database.md). The interface is the same for
 // every back end; open_results_database() picks one from the location
-// (a file path: SQLite).
+// (a PostgreSQL connection string: PostgreSQL; anything else is a file
+// path: SQLite).
 //
 // Contract of every back end:
 // - Append-only: a part is stored whole in one transaction or not at all
@@ -134,6 +135,11 @@ enum class DatabaseAccess { write, read };
 // database at `location`. InputError naming it when it cannot be opened, is
 // not Furrow's, is corrupt or is newer; for read, also when it does not exist.
 std::unique_ptr<ResultsDatabase> open_results_database(const std::string& location, DatabaseAccess access);
+
+// InputError for a location no message may print: a PostgreSQL connection
+// string holding a password (docs/results_database.md "Passwords"). Callers
+// that name the location before opening it check it first.
+void check_results_location(const std::string& location);
 
 // Serials FROM..TO, inclusive, in production order (below); an empty side
 // is open ("..S-10", "S-05..").

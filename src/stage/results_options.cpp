@@ -9,8 +9,8 @@ OptionTable<ResultsStorageOptions> make_table() {
   OptionTable<O> t;
   OptionSpec<O> db = text_option<O>(
       "db", "PATH",
-      "store the comparison in this results database, an SQLite file created when missing "
-      "(docs/results_database.md)",
+      "store the comparison in this results database, an SQLite file created when missing, or a "
+      "PostgreSQL connection string without a password (docs/results_database.md)",
       [](auto& o) -> auto& { return o.db; });
   db.example = "results.db";
   t.push_back(default_is(db, "$FURROW_DB, else not stored"));
