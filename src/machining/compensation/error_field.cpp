@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -84,7 +85,9 @@ FaceErrorField::FaceErrorField(const Face& face, std::vector<FieldSample> sample
       Eigen::AlignedBox2d box;
       for (const Eigen::Vector2d& p : points) box.extend(p);
       const double area = std::max(box.sizes().prod(), median_spacing_ * median_spacing_);
-      gcv.lambda = std::pow(*options.smoothing_length, 4) / area;
+      // The spline's kernel is r^2 log r, 8 pi times the bending energy's
+      // Green function, so its lambda is 8 pi times the lambda of J.
+      gcv.lambda = 8 * kPi * std::pow(*options.smoothing_length, 4) / area;
     }
     spline_ = std::make_unique<ThinPlateSpline>(std::move(points), values, gcv);
     status_ = spline_->status();
