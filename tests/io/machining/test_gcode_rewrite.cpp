@@ -295,3 +295,22 @@ TEST_CASE("G-code rewrite: tips of another program are refused naming the file")
   tips.push_back({});
   CHECK(test::input_error_of([&] { rewrite_gcode(program, "a.nc", {}, tips); }).find("2 passes") != std::string::npos);
 }
+
+TEST_CASE("G-code rewrite: a word to add in a work system whose offset the file does not give is refused naming the line") {
+  // G55 set relative to where the tool is (G10 L20): its X shift from the
+  // part frame is known, so X words read; the program moves in G55 with X
+  // only, and a moved Y would need G55's Y offset, which only X was given.
+  const std::string program =
+      "G21 G90 G0 X0. Y0. Z5.\n"
+      "G1 Z-1. F100.\n"
+      "G10 L20 P2 X0.\n"
+      "G55 G1 X10.\n"
+      "G54 G0 Z5.\n";
+  const Toolpath path = parse_gcode(program, "w.nc");
+  Tips tips = tips_of(path);
+  REQUIRE(tips[0].size() == 3);
+  tips[0][2].y() += 0.1;
+  const std::string e = test::input_error_of([&] { rewrite_gcode(program, "w.nc", {}, tips); });
+  CHECK(e.find("w.nc:4: Y must be written to move the line, but its work offset is not in the file") !=
+        std::string::npos);
+}
