@@ -46,6 +46,7 @@ extern const Command kPredictCommand;
 extern const Command kPlanCommand;
 extern const Command kSimulateMeasurementCommand;
 extern const Command kCompareCommand;
+extern const Command kCompensateCommand;
 extern const Command kRemeasureCommand;
 extern const Command kReportCommand;
 extern const Command kImportResultsCommand;

@@ -27,6 +27,7 @@ const std::vector<const Command*> kCommands = {
     &furrow::cli::kPlanCommand,
     &furrow::cli::kSimulateMeasurementCommand,
     &furrow::cli::kCompareCommand,
+    &furrow::cli::kCompensateCommand,
     &furrow::cli::kRemeasureCommand,
     &furrow::cli::kReportCommand,
     &furrow::cli::kImportResultsCommand,

@@ -7,6 +7,7 @@
 #include "base/option_table.hpp"
 #include "io/cad/cad_module.hpp"
 #include "stage/compare_options.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
@@ -108,6 +109,8 @@ void write_options_reference(std::ostream& out) {
           "job file.",
           describe(simulation_option_table()));
   section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
+  section("Compensation", "`furrow compensate`, on the command line (no job-file stage yet).",
+          describe(compensate_option_table()));
   section("Results database",
           "`furrow compare`, `furrow run` and `furrow report`, on the command line only (a job file names a part, not the batch "
           "it joins); see results_database.md.",

@@ -16,6 +16,7 @@
 #include "base/number_text.hpp"
 #include "cli/option_flags.hpp"
 #include "stage/compare_options.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
@@ -160,6 +161,16 @@ TEST_CASE("every partition, tool-path, prediction and simulation option reads th
   check_both_readers_agree(simulation_option_table());
 }
 
+TEST_CASE("every compensation option reads the same both ways, and a gain above 2 is refused by both") {
+  check_both_readers_agree(compensate_option_table());
+  const auto& table = compensate_option_table();
+  CHECK(error_of(table, {"--gain", "2.5"}).find("--gain: must be in (0, 2]") != std::string::npos);
+  CHECK(job_error_of(table, json{{"gain", 2.5}}).find("section.gain: must be in (0, 2]") != std::string::npos);
+  CHECK(error_of(table, {"--gain", "0"}).find("--gain") != std::string::npos);
+  CHECK(error_of(table, {"--smoothing", "-3"}).find("positive length") != std::string::npos);
+  CHECK(from_command_line(table, {"--smoothing", "auto"}) == from_job(table, json::object()));
+}
+
 TEST_CASE("a renamed flag is still taken, once") {
   const auto& sim = simulation_option_table();
   CHECK(from_command_line(sim, {"--outliers", "4"}) == from_command_line(sim, {"--blunders", "4"}));
@@ -235,6 +246,7 @@ TEST_CASE("every table option is in its command's help, in the man page and in d
   check("plan", describe(plan_option_table()));
   check("compare", describe(compare_option_table()));
   check("remeasure", describe(only_options(plan_option_table(), kProbeMotionKeys)));
+  check("compensate", describe(compensate_option_table()));
   check("compare", describe(results_storage_option_table()));
   check("run", describe(results_storage_option_table()));
 }

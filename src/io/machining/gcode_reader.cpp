@@ -109,7 +109,8 @@ bool in_plane(ArcPlane plane, int axis) {
 
 }  // namespace
 
-Toolpath parse_gcode(const std::string& text, const std::string& name, const ToolpathReadOptions& options) {
+Toolpath parse_gcode(const std::string& text, const std::string& name, const ToolpathReadOptions& options,
+                     std::vector<GcodeMotionBlock>* blocks) {
   Toolpath path;
   path.kind = ToolpathKind::tool_tips;
   path.source = name;
@@ -351,6 +352,18 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
     // Unit and mode changes on this line apply to its own coordinates
     // (they were read above, in any word order).
     offsets.fix_frame();
+    GcodeMotionBlock block;
+    block.line = number;
+    block.motion = motion;
+    block.motion_word = motion_here >= 0;
+    block.absolute = absolute;
+    block.scale = scale;
+    for (int a = 0; a < 3; ++a) {
+      block.start_known[a] = known[a];
+      block.start[a] = known[a] ? position[a] : 0.0;
+      block.axis_given[a] = axis_given[a];
+      block.shift_known[a] = offsets.shift(a, block.shift[a]);
+    }
     double next[3];
     for (int a = 0; a < 3; ++a) {
       if (!axis_given[a]) {
@@ -376,6 +389,10 @@ Toolpath parse_gcode(const std::string& text, const std::string& name, const Too
       }
       // After unit conversion and relative moves (docs/formats.md "Limits").
       limits::check_coordinate(next[a], name + ":" + std::to_string(number) + ": " + char('X' + a));
+    }
+    if (blocks) {
+      for (int a = 0; a < 3; ++a) block.end[a] = known[a] || axis_given[a] ? next[a] : 0.0;
+      blocks->push_back(block);
     }
     if (motion == 0) {
       RapidMove rapid;

@@ -55,13 +55,36 @@
 // read as written. Mode and unit words apply to the coordinates of their own
 // line, in any word order.
 #include <string>
+#include <vector>
 
 #include "io/machining/toolpath_file.hpp"
 
 namespace furrow {
 
+// One line that moves the tool in the part frame (G0 G1 G2 G3 with a
+// coordinate or an arc word; not G28, G53 or G10), as read: what a writer
+// that puts a moved position back into the program's own words needs
+// (io/machining/gcode_rewrite.hpp). A word value v on an axis given here
+// lands at v * scale + shift[axis] (absolute) or at start + v * scale
+// (incremental).
+struct GcodeMotionBlock {
+  int line = 0;       // source line (1-based)
+  int motion = 0;     // 0 rapid, 1 linear, 2 clockwise arc, 3 counter-clockwise arc
+  bool motion_word = false;  // the line has its own G0-G3 (else the mode is modal)
+  bool axis_given[3] = {false, false, false};
+  bool start_known[3] = {false, false, false};  // per axis, before the line
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();  // tip before the line [mm]; unknown axes 0
+  Eigen::Vector3d end = Eigen::Vector3d::Zero();    // tip after it [mm]; unknown axes 0
+  bool absolute = true;                             // G90
+  double scale = 1;                                 // mm per program unit (G20: 25.4)
+  double shift[3] = {0, 0, 0};                      // work offset into the part frame [mm]
+  bool shift_known[3] = {false, false, false};      // the file gives the shift on that axis
+};
+
 // Throws InputError "name:line: what" for anything refused above, and
-// "name: no cutting moves" for a file without G1/G2/G3.
-Toolpath parse_gcode(const std::string& text, const std::string& name, const ToolpathReadOptions& options = ToolpathReadOptions{});
+// "name: no cutting moves" for a file without G1/G2/G3. `blocks`, when
+// given, receives every motion line in file order.
+Toolpath parse_gcode(const std::string& text, const std::string& name, const ToolpathReadOptions& options = ToolpathReadOptions{},
+                     std::vector<GcodeMotionBlock>* blocks = nullptr);
 
 }  // namespace furrow

@@ -1,10 +1,12 @@
 #include "machining/compensation/error_field.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 
 namespace furrow {
 
@@ -17,6 +19,8 @@ void check_options(const ErrorFieldOptions& o, const std::string& where) {
     throw InputError(where + ": fade factor must be positive");
   if (o.min_samples < 4) throw InputError(where + ": at least 4 samples per face are needed for a field");
   if (o.scale_grid < 2) throw InputError(where + ": the scale grid needs at least 2 points a side");
+  if (o.smoothing_length && !(std::isfinite(*o.smoothing_length) && *o.smoothing_length > 0))
+    throw InputError(where + ": the smoothing length must be a positive number of mm");
   if (o.gcv.lambda && !(std::isfinite(*o.gcv.lambda) && *o.gcv.lambda > 0))
     throw InputError(where + ": smoothing lambda must be positive");
   if (o.gcv.grid_points < 3 || o.gcv.max_iterations < 0 || !(o.gcv.tolerance > 0))
@@ -76,7 +80,16 @@ FaceErrorField::FaceErrorField(const Face& face, std::vector<FieldSample> sample
   } else if (!(fade_distance_ > 0)) {
     status_ = "samples all at one point";
   } else {
-    spline_ = std::make_unique<ThinPlateSpline>(std::move(points), values, options.gcv);
+    GcvSearchOptions gcv = options.gcv;
+    if (options.smoothing_length) {
+      Eigen::AlignedBox2d box;
+      for (const Eigen::Vector2d& p : points) box.extend(p);
+      const double area = std::max(box.sizes().prod(), median_spacing_ * median_spacing_);
+      // The spline's kernel is r^2 log r, 8 pi times the bending energy's
+      // Green function, so its lambda is 8 pi times the lambda of J.
+      gcv.lambda = 8 * kPi * std::pow(*options.smoothing_length, 4) / area;
+    }
+    spline_ = std::make_unique<ThinPlateSpline>(std::move(points), values, gcv);
     status_ = spline_->status();
   }
 }

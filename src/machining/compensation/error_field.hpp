@@ -45,6 +45,14 @@ namespace furrow {
 struct ErrorFieldOptions {
   GcvSearchOptions gcv;
   std::optional<double> fade_distance;  // D [mm] (> 0); unset: fade_factor x median spacing
+  // h [mm] (> 0): a fixed smoothing instead of GCV's, as a length on the
+  // face. With the samples spread over an area A [mm^2] (their box in
+  // (s, t)), (1/n) sum of squares ~ (1/A) integral, so the fit damps a
+  // wave of angular frequency w by 1 / (1 + lambda_J A w^4), lambda_J the
+  // weight of the bending energy J: lambda_J = h^4 / A halves a wave of
+  // wavelength 2 pi h. The spline's kernel r^2 log r is 8 pi times J's
+  // Green function, so its lambda is 8 pi h^4 / A. Overrides gcv.lambda.
+  std::optional<double> smoothing_length;
   // > 0. Full weight reaches D/2 = 3 spacings: scattered samples leave
   // holes wider than their median spacing (250 uniform points: the largest
   // empty circle has a radius ~2.8 median spacings), which must not fade.

@@ -1,0 +1,134 @@
+// furrow compensate PART --comparison C.json --toolpath PATH.nc --tool TOOL.json --out COMP.nc
+#include <cstdio>
+#include <iostream>
+
+#include "base/error.hpp"
+#include "base/json_fields.hpp"
+#include "base/output_set.hpp"
+#include "base/text_fields.hpp"
+#include "cli/commands.hpp"
+#include "cli/option_flags.hpp"
+#include "inspection/comparison_file.hpp"
+#include "io/machining/tool_file.hpp"
+#include "io/machining/toolpath_file.hpp"
+#include "io/part_file.hpp"
+#include "machining/cutter/path_tools.hpp"
+#include "stage/compensate_options.hpp"
+#include "stage/compensate_stage.hpp"
+
+namespace furrow::cli {
+
+namespace {
+
+std::string um(double mm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f um", mm * 1000);
+  return buf;
+}
+
+// COMP.json beside COMP.nc: the same name with .json.
+std::string record_path(const std::string& program) {
+  const auto dot = program.find_last_of('.');
+  const auto slash = program.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_ext ? program.substr(0, dot) : program) + ".json";
+}
+
+int run_compensate(Args& args) {
+  const std::string comparison_path = args.required_option("comparison");
+  const std::string toolpath_path = args.required_option("toolpath");
+  const std::string tool_path = args.required_option("tool");
+  const std::string out_path = args.required_option("out");
+  CompensateOptions options;
+  read_option_flags(args, compensate_option_table(), options);
+  ToolpathReadOptions read;
+  read.units = args.option_or("units", "mm");
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+  const std::string ext = lower_extension(toolpath_path);
+  if (ext == ".csv" || ext == ".txt" || ext == ".cl" || ext == ".apt" || ext == ".cls")
+    args.fail("--toolpath " + toolpath_path + ": compensate writes G-code back; give the G-code program");
+  if (lower_extension(out_path) == ".json")
+    args.fail("--out " + out_path + ": expected a G-code file name (its record is written beside it as .json)");
+  if (lower_extension(comparison_path) != ".json")
+    args.fail("--comparison " + comparison_path + ": expected a comparison (.json)");
+  const std::string record = record_path(out_path);
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(comparison_path, "comparison");
+  outputs.add_input(toolpath_path, "tool path");
+  outputs.add_input(tool_path, "tool");
+  outputs.will_write(out_path);
+  outputs.will_write(record);
+
+  const Part part = read_part(part_path);
+  const ComparisonDocument comparison = read_comparison(comparison_path);
+  const std::string program = json_fields::read_text(toolpath_path);
+  const Toolpath path = read_toolpath(toolpath_path, read);
+  const PathTools tools = tools_for_path(path, read_tool_file(tool_path), tool_path, std::nullopt, "");
+  const CompensatedProgram done = naming_inputs(part_path + " with " + toolpath_path, [&] {
+    return compensate_stage(part, tools, program, read, comparison, options,
+                            {part_path, comparison_path, toolpath_path, out_path});
+  });
+  std::size_t fitted = 0;
+  for (const auto& face : done.field.field.faces) fitted += face && face->fitted();
+  std::cout << "error field: " << done.field.samples << " points"
+            << (done.field.prediction_removed ? " (prediction removed)" : " (no prediction: deviations fitted as they are)")
+            << ", " << fitted << " of " << part.faces.size() << " faces fitted\n";
+  std::cout << "moved " << done.offset.moved << " tips, largest offset " << um(done.offset.largest_offset) << "; "
+            << done.offset.clipped.size() << " clipped at " << um(options.max_offset) << ", "
+            << done.offset.gouge_clipped.size() << " cut back to avoid a local gouge\n";
+  std::cout << "program: " << done.program.lines_moved << " lines moved (" << done.program.words_rewritten
+            << " words rewritten, " << done.program.words_added << " added, " << done.program.arcs_split
+            << " arcs split into lines)\n";
+  const CompensationGougeCheck& check = done.check;
+  if (!check.safe()) {
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "furrow compensate: nothing written: the compensated program would cut %.4f mm deeper than its "
+                  "offset allows at (%.3f, %.3f, %.3f), line %d (%zu z-map nodes at %.3f mm)\n",
+                  check.worst_excess, check.worst.x(), check.worst.y(), check.worst.z(), check.worst_line,
+                  check.deeper, check.resolution);
+    std::cerr << buf;
+    return kExitInternal;
+  }
+  outputs.file(record, done.json);
+  outputs.file(out_path, done.program.text);
+  outputs.publish(out_path);
+  std::cout << "wrote " << out_path << " and " << record << "\n";
+  return kExitOk;
+}
+
+std::string compensate_options_help() { return option_help_lines(describe(compensate_option_table())); }
+
+}  // namespace
+
+const Command kCompensateCommand = {
+    "compensate", "a G-code program moved by the measured error field of the part it cut",
+    "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc\n"
+    "                         --tool TOOL.json --out COMP.nc [--gain G] [--max-offset MM]\n"
+    "                         [--smoothing MM|auto] [--units mm|inch]\n"
+    "\n"
+    "Fits the systematic error of a measured part (the comparison's residuals\n"
+    "against its prediction, or its deviations without one) as a smooth field per\n"
+    "face, moves every tool tip of the G-code program that cut it by -gain x the\n"
+    "field along the surface normal, and writes the program again: only the X Y Z\n"
+    "words of moved lines change; comments, feeds, spindle, tool changes, rapids,\n"
+    "work offsets and line numbers are kept, and a moved arc becomes G1 segments\n"
+    "(docs/compensation.md \"Writing the program\"). COMP.json, written beside\n"
+    "COMP.nc, holds the field per face, the clipped moves and the z-map check.\n"
+    "The written program is checked with a z-map against the original: if it\n"
+    "would cut deeper than its offsets allow, nothing is written and the exit\n"
+    "status is 3.\n"
+    "\n"
+    "  --comparison FILE     comparison.json of furrow compare for PART (required)\n"
+    "  --toolpath FILE       the G-code program the part was cut with (required)\n"
+    "  --tool FILE           its tool JSON (required)\n"
+    "  --out FILE            compensated program to write (required); its record\n"
+    "                        goes beside it with the extension .json\n"
+    "  --units U             units of G-code before G20/G21 (default mm)\n"
+    "\n"
+    "Compensation options (docs/options.md):\n",
+    run_compensate, compensate_options_help};
+
+}  // namespace furrow::cli

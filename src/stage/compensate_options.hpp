@@ -1,0 +1,18 @@
+#pragma once
+// The options of compensation (`furrow compensate`), described once
+// (base/option_table.hpp). docs/compensation.md says what each one does.
+#include <optional>
+
+#include "base/option_table.hpp"
+
+namespace furrow {
+
+struct CompensateOptions {
+  double gain = 1;          // share of the measured error taken off, in (0, 2]
+  double max_offset = 0.2;  // [mm] largest offset applied, > 0
+  std::optional<double> smoothing;  // [mm] fixed smoothing length; unset: GCV
+};
+
+const OptionTable<CompensateOptions>& compensate_option_table();
+
+}  // namespace furrow

@@ -1,0 +1,172 @@
+// `furrow compensate` in the closed loop, in simulation, through the commands
+// a user runs: the mould's example program (a 6 mm ball, `furrow toolpath`),
+// a plan kept to the points near a planted bump, the measurement simulated
+// with that bump, compared, and compensated. Oracles: the planted bump's
+// height (the tips near its centre must move down by gain x height), the
+// original program's bytes (far from every measured point nothing may
+// change), and the structure of the program re-read.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/machining/gcode_reader.hpp"
+#include "io/part_file.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+using furrow::test::run_furrow;
+using furrow::test::slurp;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kBumpRadius = 15;   // [mm]
+constexpr double kBumpHeight = 0.05;  // [mm], material left
+constexpr double kKept = 30;          // [mm] plan points kept within this of the bump centre
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+struct Loop {
+  std::string dir, part, program, tool, comparison;
+  Eigen::Vector3d centre;
+};
+
+// The measured comparison of a mould cut with a bump left on it.
+const Loop& loop() {
+  static const Loop made = [] {
+    Loop l;
+    l.dir = test::scratch_dir("cli-compensate");
+    l.part = test::source_path("examples/parts/mould.json");
+    l.program = l.dir + "/path.nc";  // a copy: one test writes over it, or must not
+    fs::copy_file(test::source_path("examples/toolpaths/mould_ball6.nc"), l.program);
+    l.tool = test::source_path("examples/tools/ball_d6.json");
+    const Part part = read_part(l.part);
+    l.centre = part.faces[0].surface().point(0.5, 0.5);
+    REQUIRE(run_furrow({"partition", l.part, "--out", l.dir + "/regions.json", "--grid", "40x40"}).status == 0);
+    REQUIRE(run_furrow({"plan", l.part, "--regions", l.dir + "/regions.json", "--points", "600", "--out",
+                        l.dir + "/plan"})
+                .status == 0);
+    // Only the points near the bump: the rest of the mould is not measured.
+    json plan = json::parse(slurp(l.dir + "/plan/plan.json"));
+    json kept = json::array();
+    for (const json& p : plan["points"]) {
+      const Eigen::Vector3d at(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
+      if ((at - l.centre).norm() <= kKept) kept.push_back(p);
+    }
+    REQUIRE(kept.size() >= 40);
+    plan["points"] = kept;
+    test::write_text(l.dir + "/plan.json", plan.dump(1));
+    char bump[160];
+    std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,%g", l.centre.x(), l.centre.y(), l.centre.z(), kBumpRadius,
+                  kBumpHeight);
+    const auto sim = run_furrow({"simulate-measurement", l.part, "--plan", l.dir + "/plan.json", "--bump", bump,
+                                 "--noise", "0.001", "--blunders", "0", "--seed", "3", "--misalign", "0,0,0,0,0,0",
+                                 "--out", l.dir + "/m.csv"});
+    INFO(sim.err);
+    REQUIRE(sim.status == 0);
+    // The part sits where the CMM says and no point is dropped: the bump is
+    // the subject here, not the registration (a best fit to points around
+    // one bump would take part of it off as a translation).
+    l.comparison = l.dir + "/comparison.json";
+    const auto compare = run_furrow({"compare", l.part, "--measurements", l.dir + "/m.csv", "--plan",
+                                     l.dir + "/plan.json", "--align", "cmm", "--no-outlier-rejection", "--out",
+                                     l.comparison});
+    INFO(compare.err);
+    REQUIRE(fs::exists(l.comparison));
+    return l;
+  }();
+  return made;
+}
+
+}  // namespace
+
+TEST_CASE("compensate: tips near a planted bump move down by gain x its height, far lines keep their bytes") {
+  const Loop& l = loop();
+  const std::string out = l.dir + "/comp.nc";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program, "--tool",
+                             l.tool, "--out", out, "--gain", "0.8"});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const json record = json::parse(slurp(l.dir + "/comp.json"));
+  CHECK(record["faces"][0]["fitted"] == true);
+  CHECK(record["zmap_check"]["safe"] == true);
+  const std::string before_text = slurp(l.program), after_text = slurp(out);
+  const Toolpath before = parse_gcode(before_text, "before.nc"), after = parse_gcode(after_text, "after.nc");
+  // The same program: passes, points, lines, feeds; no arc in it, so the
+  // same lines.
+  REQUIRE(after.passes.size() == before.passes.size());
+  CHECK(after.rapids.size() == before.rapids.size());
+  const std::vector<std::string> a = lines_of(before_text), b = lines_of(after_text);
+  REQUIRE(a.size() == b.size());
+  const double fade = record["faces"][0]["fade_distance"].get<double>();
+  // A tip farther than this (in xy) from the bump centre has its contact
+  // (within a ball radius, 3 mm, of it) beyond the fade of every sample
+  // (all within kKept of the centre): the field there is exactly zero.
+  const double far = kKept + fade + 3 + 1;
+  std::size_t near = 0, far_lines = 0;
+  double worst_near = 0;
+  for (std::size_t p = 0; p < before.passes.size(); ++p) {
+    REQUIRE(after.passes[p].points.size() == before.passes[p].points.size());
+    for (std::size_t i = 1; i < before.passes[p].points.size(); ++i) {
+      const ToolpathPoint& t0 = before.passes[p].points[i];
+      const ToolpathPoint& t1 = after.passes[p].points[i];
+      CHECK(t1.feed == t0.feed);
+      const double d = (t0.position - l.centre).head<2>().norm();
+      if (d > far) {
+        ++far_lines;
+        CHECK(a[static_cast<std::size_t>(t0.line - 1)] == b[static_cast<std::size_t>(t1.line - 1)]);
+      }
+      if (d < 2) {
+        ++near;
+        // Material left: the tip goes down, by 0.8 x 50 um = 40 um times the
+        // bump's cosine profile at its contact (>= 0.97 within 2 + 3 mm of
+        // the centre at radius 15 mm). Allowed: 15 % of the height, for
+        // the smoothing GCV chooses over ~5 mm spaced samples with 1 um noise.
+        const Eigen::Vector3d moved = t1.position - t0.position;
+        CHECK(moved.z() < 0);
+        worst_near = std::max(worst_near, std::abs(moved.norm() - 0.8 * kBumpHeight));
+      }
+    }
+  }
+  CHECK(near >= 3);
+  CHECK(far_lines > 100);
+  MESSAGE("near the centre: " << near << " tips, worst |move - 40 um| " << worst_near * 1000 << " um; " << far_lines
+                              << " far lines");
+  CHECK(worst_near < 0.15 * kBumpHeight);
+}
+
+TEST_CASE("compensate: a bad option fails with status 2 naming it, and writes nothing") {
+  const Loop& l = loop();
+  const std::string out = l.dir + "/bad.nc";
+  const auto gain = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program, "--tool",
+                                l.tool, "--out", out, "--gain", "2.5"});
+  CHECK(gain.status == 2);
+  CHECK(gain.err.find("--gain") != std::string::npos);
+  const auto offset = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program,
+                                  "--tool", l.tool, "--out", out, "--max-offset", "0"});
+  CHECK(offset.status == 2);
+  CHECK(offset.err.find("--max-offset") != std::string::npos);
+  const auto missing = run_furrow({"compensate", l.part, "--comparison", l.dir + "/none.json", "--toolpath",
+                                   l.program, "--tool", l.tool, "--out", out});
+  CHECK(missing.status == 2);
+  CHECK(missing.err.find("none.json") != std::string::npos);
+  const auto over_input = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program,
+                                      "--tool", l.tool, "--out", l.program});
+  CHECK(over_input.status == 2);
+  CHECK(slurp(l.program) == slurp(test::source_path("examples/toolpaths/mould_ball6.nc")));
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(l.dir + "/bad.json"));
+}
