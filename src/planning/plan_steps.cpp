@@ -396,16 +396,16 @@ void order(PlanState& s) {
     kept_tips.push_back(c.tip);
   }
   // Most points dropped: name the faces that face down, the usual cause
-  // being normals into the material rather than the probe.
+  // being normals into the material rather than the probe; faces whose
+  // orientation the import established from topology are undersides
+  // (docs/cmm.md "Faces that face down").
   std::string orientation_hint;
   if (2 * kept.size() < candidates.size()) {
     std::vector<OrientationSample> samples;
     samples.reserve(candidates.size());
     for (const PlanCandidate& c : candidates)
       samples.push_back({static_cast<std::size_t>(domains[static_cast<std::size_t>(c.region)].face_index()), c.normal, c.kept});
-    std::vector<std::string> names;
-    for (const Face& f : part.faces) names.push_back(f.name());
-    for (const FaceFacingDown& f : faces_facing_down(samples, names)) {
+    for (const FaceFacingDown& f : faces_facing_down(samples, part.faces)) {
       PlanIssue issue;
       issue.kind = PlanIssue::Kind::face_facing_down;
       issue.face = static_cast<int>(f.face);
