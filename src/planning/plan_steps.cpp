@@ -229,7 +229,6 @@ void allocate(PlanState& s) {
   double samplable_area = 0;
   for (std::size_t r = 0; r < region_count; ++r)
     if (demands[r].samplable) samplable_area += demands[r].area;
-  // Counted in double first: a huge density must not overflow (docs/formats.md "Limits").
   // A density describes the regions wide enough for the border clearance:
   // the floors of regions planned by the contact rule (fillets, strips,
   // small faces) come on top of it instead of being taken from their
@@ -237,6 +236,7 @@ void allocate(PlanState& s) {
   double narrow_floors = 0;
   for (const RegionPlanSummary& r : result.regions)
     if (r.contact_rule) narrow_floors += options.min_per_region;
+  // Counted in double first: a huge density must not overflow (docs/formats.md "Limits").
   const double wanted = options.points ? static_cast<double>(*options.points)
                                        : options.density.value_or(kDefaultDensity) * samplable_area / 100.0 +
                                              narrow_floors;
