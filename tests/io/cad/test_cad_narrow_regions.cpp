@@ -19,6 +19,8 @@
 #include <cmath>
 #include <limits>
 
+#include <nlohmann/json.hpp>
+
 #include "cad_reference.hpp"
 #include "io/cad/cad_import.hpp"
 #include "partition/partition.hpp"
@@ -118,6 +120,12 @@ double distance_to_others(const Eigen::Vector2d& q, int skip) {
   return d;
 }
 
+TopoDS_Shape slot_block(double w) {
+  TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(40, 30, 10)).Shape();
+  return BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(-1, 15 - w / 2, 5), gp_Pnt(41, 15 + w / 2, 11)).Shape())
+      .Shape();
+}
+
 RegionMap partition(const Part& part) {
   PartitionOptions po;
   po.grid = GridSize{60, 60};
@@ -191,9 +199,7 @@ TEST_CASE("a slot floor too narrow for the ball is reported with the largest bal
   // largest ball that measures the floor is w - 2s across.
   constexpr double w = 1.6;
   const std::string path = scratch_dir("narrow-slot") + "/slot.step";
-  TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(40, 30, 10)).Shape();
-  block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(-1, 15 - w / 2, 5), gp_Pnt(41, 15 + w / 2, 11)).Shape()).Shape();
-  write_step(block, path);
+  write_step(slot_block(w), path);
   const Part part = import_cad(path).part;
   const RegionMap map = partition(part);
   PlannerOptions o;
@@ -224,4 +230,29 @@ TEST_CASE("a slot floor too narrow for the ball is reported with the largest bal
   int on_floor = 0;
   for (const PlannedPoint& p : s.plan.points) on_floor += std::abs(p.xyz.z() - 5) < 1e-9 && std::abs(p.xyz.y() - 15) < w / 2;
   CHECK(on_floor >= small.min_per_region);
+}
+
+TEST_CASE("furrow plan --contact-shift sets the margin: the slot floor's largest ball in report.json is w - 2 shift") {
+  silence_occt();
+  constexpr double w = 1.6, shift = 0.1;
+  const std::string dir = scratch_dir("narrow-slot-cli");
+  write_step(slot_block(w), dir + "/slot.step");
+  REQUIRE(run_furrow({"partition", dir + "/slot.step", "--out", dir + "/regions.json"}).status == 0);
+  const CliResult r = run_furrow({"plan", dir + "/slot.step", "--regions", dir + "/regions.json", "--out", dir + "/plan",
+                                  "--contact-shift", "0.1", "--allow-uncovered"});
+  REQUIRE(r.status == 0);
+  const auto report = nlohmann::json::parse(slurp(dir + "/plan/report.json"));
+  int reported = 0;
+  for (const auto& issue : report["issues"])
+    if (issue["kind"] == "region_skipped" && issue.contains("largest_ball_diameter_mm")) {
+      ++reported;
+      const double d = issue["largest_ball_diameter_mm"].get<double>();
+      CHECK(d <= w - 2 * shift + 1e-6);
+      CHECK(d >= w - 2 * shift - 0.02);
+    }
+  CHECK(reported == 1);
+  const CliResult bad = run_furrow({"plan", dir + "/slot.step", "--regions", dir + "/regions.json", "--out",
+                                    dir + "/bad", "--contact-shift", "-1"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--contact-shift") != std::string::npos);
 }
