@@ -23,6 +23,8 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   opt["strategy"] = to_string(o.strategy);
   opt["seed"] = o.seed;
   opt["border_mm"] = jf::finite(r.border, "border");
+  // The ball-contact rule of narrow regions applies without an explicit border.
+  if (!o.border) opt["contact_shift_mm"] = jf::finite(o.contact.shift, "contact shift");
   opt["probe"] = {{"name", o.probe_name},
                   {"ball_diameter", jf::finite(o.probe_diameter, "probe diameter")},
                   {"stylus_diameter", jf::finite(o.stylus_diameter, "stylus diameter")},

@@ -242,6 +242,7 @@ TEST_CASE("furrow plan --contact-shift sets the margin: the slot floor's largest
                                   "--contact-shift", "0.1", "--allow-uncovered"});
   REQUIRE(r.status == 0);
   const auto report = nlohmann::json::parse(slurp(dir + "/plan/report.json"));
+  CHECK(report["options"]["contact_shift_mm"].get<double>() == shift);
   int reported = 0;
   for (const auto& issue : report["issues"])
     if (issue["kind"] == "region_skipped" && issue.contains("largest_ball_diameter_mm")) {
