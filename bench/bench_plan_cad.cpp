@@ -45,6 +45,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -126,7 +127,9 @@ const char* kHead = R"({
                 {"a": 90, "b": 0}, {"a": 90, "b": 90}, {"a": 90, "b": 180}, {"a": 90, "b": -90}]
 })";
 
-void run(const std::string& step, bool head) {
+// `fixed`: the border clearance for every region (--border given), as
+// before the contact rule of narrow regions (docs/cmm.md "Narrow regions").
+void run(const std::string& step, bool head, bool fixed) {
   const auto t0 = std::chrono::steady_clock::now();
   Part part = import_cad(step).part;
   const std::size_t imported = part.faces.size();
@@ -145,14 +148,15 @@ void run(const std::string& step, bool head) {
   PlannerOptions options;
   options.part_name = "fixture";
   if (head) use_head(options, parse_probe_head(kHead, "head.json"));
+  if (fixed) options.border = border_clearance(options);
   const auto t2 = std::chrono::steady_clock::now();
   const PlanStage stage = plan_stage(part, map, options, nullptr, "fixture", "regions.json", "");
   const double t_plan = seconds_since(t2);
   std::size_t bytes = 0;
   for (const FolderFile& f : stage.files) bytes += f.bytes.size();
   const PlanCoverage& c = stage.coverage;
-  std::printf("\n%s, %d OpenMP threads\n", head ? "indexable head (21 tips)" : "vertical stylus",
-              omp_get_max_threads());
+  std::printf("\n%s, %s, %d OpenMP threads\n", head ? "indexable head (21 tips)" : "vertical stylus",
+              fixed ? "fixed border clearance" : "contact rule in narrow regions", omp_get_max_threads());
   std::printf("  faces %zu imported, %zu planned (the table side left out), %zu regions\n", imported,
               part.faces.size(), map.regions.size());
   std::printf("  import %.2f s, partition %.2f s, plan and files %.2f s: total %.2f s (target < 10 s)\n", t_import,
@@ -162,7 +166,23 @@ void run(const std::string& step, bool head) {
               t.regions_seconds, t.sampling_seconds, t.access_seconds, t.tour_seconds, t.moves_seconds);
   std::printf("  points: %ld allocated, %ld placed, %ld dropped; regions covered %d of %zu; tip changes %d\n",
               c.allocated, c.planned, c.dropped, c.regions_covered, c.regions.size(), stage.result.tip_changes);
-  if (!c.complete()) std::printf("  uncovered: %s\n", c.describe_uncovered(6).c_str());
+  double area = 0, covered_area = 0;
+  int narrow = 0, narrow_covered = 0, skipped = 0, warnings = 0;
+  for (std::size_t r = 0; r < c.regions.size(); ++r) {
+    const RegionPlanSummary& s = stage.result.regions[r];
+    area += s.area;
+    if (c.regions[r].covered) covered_area += s.area;
+    narrow += s.contact_rule;
+    narrow_covered += s.contact_rule && c.regions[r].covered;
+  }
+  for (const PlanIssue& i : stage.result.issues) {
+    skipped += i.kind == PlanIssue::Kind::region_skipped;
+    warnings += i.kind == PlanIssue::Kind::face_facing_down;
+  }
+  std::printf("  area covered %.0f of %.0f mm^2 (%.1f %%); regions skipped (no point admissible) %d; "
+              "by the contact rule %d, of which covered %d; orientation warnings %d\n",
+              covered_area, area, area > 0 ? 100 * covered_area / area : 0.0, skipped, narrow, narrow_covered, warnings);
+  if (!c.complete()) std::printf("  uncovered: %s\n", c.describe_uncovered(getenv("BENCH_ALL") ? 1000 : 6).c_str());
   std::printf("  files %zu (%.1f kB); peak resident memory so far %.0f MB (target < 500 MB)\n", stage.files.size(),
               bytes / 1024.0, peak_rss_mb());
 }
@@ -185,7 +205,9 @@ int main(int argc, char** argv) {
   std::printf("part: %d faces in %d solids (plate with 20 filleted bosses, 20 bores, 20 dimples; B-spline block, "
               "ball, ring, cone), STEP %.1f MB\n",
               faces.Extent(), solids.Extent(), std::filesystem::file_size(step) / 1e6);
-  if (only != "head") run(step, false);
-  if (only != "stylus") run(step, true);
+  // bench_plan_cad [stylus|head] [fixed]
+  const bool fixed = argc > 2 && std::string(argv[2]) == "fixed";
+  if (only != "head") run(step, false, fixed);
+  if (only != "stylus") run(step, true, fixed);
   return 0;
 }

@@ -62,7 +62,8 @@ void print_summary(std::ostream& out, const PlanResult& r, const std::string& fo
     char line[200];
     std::snprintf(line, sizeof line, "  region %3d  %-8s %10.1f mm^2  allocated %5d  planned %5d  moved %4d  dropped %4d%s\n",
                   s.region, to_string(s.curvature_class), s.area, s.allocated, s.planned, s.moved, s.dropped,
-                  s.samplable ? "" : "  (too small for the border clearance)");
+                  s.samplable ? (s.contact_rule ? "  (narrow: ball contact rule)" : "")
+                              : "  (no point admissible: see the issues)");
     out << line;
   }
   std::size_t issues = 0;

@@ -35,6 +35,14 @@ class Face {
   // geometry always comes from the NURBS (analytic_surface.hpp).
   const std::optional<AnalyticSurface>& analytic() const { return analytic_; }
   void set_analytic(std::optional<AnalyticSurface> analytic) { analytic_ = std::move(analytic); }
+  // Whether the side of the material was established by topology at CAD
+  // import: the face bounds a solid of the file or a shell that sewed closed
+  // (docs/formats.md "Orientation"). Then a face whose normals point down is
+  // an underside, not a face turned into the material. False where nothing
+  // established it: an open shell (oriented by a rule or left as the file
+  // had it), a face no sewing joined, a native face whose file does not say.
+  bool orientation_established() const { return orientation_established_; }
+  void set_orientation_established(bool established) { orientation_established_ = established; }
 
   // Inside the parameter rectangle and kept by the trim.
   bool contains(double u, double v) const;
@@ -49,6 +57,7 @@ class Face {
   bool reversed_ = false;
   std::string source_type_;
   std::optional<AnalyticSurface> analytic_;
+  bool orientation_established_ = false;
   double derivative_scale_ = 1;
 };
 

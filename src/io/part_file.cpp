@@ -92,6 +92,7 @@ Face parse_face(const JsonCursor& o, double scale) {
   NurbsSurface surface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), net, weights, o.where());
   Face face(std::move(name), std::move(surface), std::move(trim), reversed, std::move(source_type));
   if (o.has("analytic")) face.set_analytic(parse_analytic(o.at("analytic"), scale));
+  if (o.has("orientation_established")) face.set_orientation_established(o.boolean("orientation_established"));
   return face;
 }
 
@@ -174,6 +175,7 @@ std::string part_to_json_text(const Part& part) {
       jf_face["trim"] = std::move(loops);
     }
     if (face.reversed()) jf_face["reversed"] = true;
+    if (face.orientation_established()) jf_face["orientation_established"] = true;
     jfaces.push_back(std::move(jf_face));
   }
   json doc;

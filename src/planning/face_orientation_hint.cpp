@@ -6,7 +6,7 @@
 namespace furrow {
 
 std::vector<FaceFacingDown> faces_facing_down(const std::vector<OrientationSample>& samples,
-                                              const std::vector<std::string>& names) {
+                                              const std::vector<Face>& faces) {
   struct Count {
     int candidates = 0, down = 0, kept = 0;
   };
@@ -19,9 +19,10 @@ std::vector<FaceFacingDown> faces_facing_down(const std::vector<OrientationSampl
   }
   std::vector<FaceFacingDown> out;
   for (const auto& [face, c] : per_face) {
+    if (face < faces.size() && faces[face].orientation_established()) continue;
     const double share = static_cast<double>(c.down) / c.candidates;
     if (c.candidates < kOrientationMinCandidates || share < kOrientationDownShare || c.kept > 0) continue;
-    out.push_back({face, face < names.size() ? names[face] : std::string(), c.candidates, share});
+    out.push_back({face, face < faces.size() ? faces[face].name() : std::string(), c.candidates, share});
   }
   return out;
 }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/part.hpp"
+
 namespace furrow {
 
 // One candidate probe point as the planner saw it.
@@ -26,13 +28,16 @@ struct FaceFacingDown {
   double down_share = 0;  // share of its candidates with n_z < 0
 };
 
-// A face is named when it has at least kMinCandidates candidates, at least
-// kDownShare of their normals have n_z < 0 and none of them was kept.
-// Sorted by face index; `names` are the part's face names.
+// A face is named when its orientation was not established by the CAD
+// import's topology (Face::orientation_established: a face of a closed,
+// consistently oriented solid is an underside when it faces down, never
+// suspect), it has at least kMinCandidates candidates, at least kDownShare
+// of their normals have n_z < 0 and none of them was kept. Sorted by face
+// index; `faces` are the part's faces.
 constexpr int kOrientationMinCandidates = 3;
 constexpr double kOrientationDownShare = 0.9;
 std::vector<FaceFacingDown> faces_facing_down(const std::vector<OrientationSample>& samples,
-                                              const std::vector<std::string>& names);
+                                              const std::vector<Face>& faces);
 
 // "face 12 \"top\" (98 % of its 40 candidate normals point down)"
 std::string describe(const FaceFacingDown& face);

@@ -19,7 +19,8 @@ std::string shortfall_reason(const RegionPlanSummary& s, const std::vector<PlanI
   }
   if (s.samplable && s.sampled < s.allocated)
     parts.push_back("only " + std::to_string(s.sampled) + " of " + std::to_string(s.allocated) +
-                    " allocated points fit inside the region at the border clearance");
+                    (s.contact_rule ? " allocated points fit where the ball measures the region alone (ball contact rule)"
+                                    : " allocated points fit inside the region at the border clearance"));
   if (!drops.empty()) {
     std::string d = plural(s.dropped, "point") + " dropped, the probe cannot reach them (";
     bool first = true;

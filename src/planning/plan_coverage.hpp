@@ -11,7 +11,8 @@
 // over a region that was never measured.
 //
 // The reason names the cause in the planner's order: the region cannot hold
-// a point at the border clearance; fewer admissible points fit than were
+// a point at the border clearance nor, narrow, under the ball-contact rule
+// (the largest ball that would fit named); fewer admissible points fit than were
 // allocated; points were dropped because the probe cannot reach them (each
 // access problem counted). Pure function of the plan result: no geometry.
 #include <string>

@@ -23,6 +23,8 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   opt["strategy"] = to_string(o.strategy);
   opt["seed"] = o.seed;
   opt["border_mm"] = jf::finite(r.border, "border");
+  // The ball-contact rule of narrow regions applies without an explicit border.
+  if (!o.border) opt["contact_shift_mm"] = jf::finite(o.contact.shift, "contact shift");
   opt["probe"] = {{"name", o.probe_name},
                   {"ball_diameter", jf::finite(o.probe_diameter, "probe diameter")},
                   {"stylus_diameter", jf::finite(o.stylus_diameter, "stylus diameter")},
@@ -62,6 +64,7 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
                        {"mean_risk_mm", jf::finite(s.mean_risk, "risk")},
                        {"weight", jf::finite(s.weight, "weight")},
                        {"samplable", s.samplable},
+                       {"contact_rule", s.contact_rule},
                        {"allocated", s.allocated},
                        {"gouge_points", s.gouge_points},
                        {"sampled", s.sampled},
@@ -110,6 +113,8 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
       ji["where"] = jf::vector_json(i.where);
     }
     if (i.kind == PlanIssue::Kind::moved) ji["moved_mm"] = jf::finite(i.distance, "moved");
+    if (i.kind == PlanIssue::Kind::region_skipped && i.largest_ball_diameter > 0)
+      ji["largest_ball_diameter_mm"] = jf::finite(i.largest_ball_diameter, "largest ball");
     ji["reason"] = i.reason;
     issues.push_back(std::move(ji));
   }

@@ -10,6 +10,7 @@
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
 #include "planning/face_orientation_hint.hpp"
+#include "planning/narrow_region.hpp"
 #include "planning/relocation.hpp"
 #include "planning/tip_groups.hpp"
 
@@ -151,6 +152,7 @@ void measure_regions(PlanState& s) {
   std::vector<RegionDomain>& domains = s.domains;
   std::vector<RegionDemand>& demands = s.demands;
   std::vector<PlanSiteRequest>& sites = s.sites;
+  const ClosestPointFinder& s_finder = s.finder;
   RegionDomainOptions domain_options = options.domain;
   domain_options.border = result.border;
   const std::size_t region_count = map.regions.size();
@@ -171,17 +173,33 @@ void measure_regions(PlanState& s) {
     summary.curvature_spread = s.curvature_spread;
     summary.mean_risk = s.mean_risk;
     summary.samplable = region.area > 0 && samplable(domains[r]);
+    PlanIssue issue;
+    issue.kind = PlanIssue::Kind::region_skipped;
+    issue.region = region.id;
+    issue.reason = "no point of the region is " + mm(result.border) + " mm from its edges (border clearance)";
+    if (!summary.samplable && region.area > 0 && !options.border) {
+      // Too narrow for the default border: the ball-contact rule
+      // (docs/cmm.md "Narrow regions").
+      const double radius = result.probe.ball_radius;
+      RegionDomain narrow =
+          contact_rule_domain(part, map, static_cast<int>(r), domain_options, risk, s_finder, radius, options.contact);
+      if (samplable(narrow)) {
+        domains[r] = std::move(narrow);
+        summary.samplable = summary.contact_rule = true;
+      } else {
+        const double fits = largest_ball_in_region(narrow, map, s_finder, radius, options.contact);
+        issue.largest_ball_diameter = 2 * fits;
+        issue.reason = "no position of the " + mm(2 * radius) + " mm ball measures the region alone with its contact " +
+                       "staying in it when the ball is " + mm(options.contact.shift) + " mm off (ball contact rule); " +
+                       (fits > 0 ? "the largest ball that would: " + mm(2 * fits) + " mm"
+                                 : "no ball down to " + mm(0.01) + " mm would");
+      }
+    }
     result.regions.push_back(summary);
     demands[r] = {region.area, s.curvature_spread, s.mean_risk, 0, summary.samplable};
     kappa_area += s.mean_kappa * s.area;
     area_all += s.area;
-    if (!summary.samplable) {
-      PlanIssue issue;
-      issue.kind = PlanIssue::Kind::region_skipped;
-      issue.region = region.id;
-      issue.reason = "no point of the region is " + mm(result.border) + " mm from its edges (border clearance)";
-      result.issues.push_back(issue);
-    }
+    if (!summary.samplable) result.issues.push_back(issue);
   }
   s.kappa_ref = area_all > 0 ? kappa_area / area_all : 0;
 
@@ -211,9 +229,17 @@ void allocate(PlanState& s) {
   double samplable_area = 0;
   for (std::size_t r = 0; r < region_count; ++r)
     if (demands[r].samplable) samplable_area += demands[r].area;
+  // A density describes the regions wide enough for the border clearance:
+  // the floors of regions planned by the contact rule (fillets, strips,
+  // small faces) come on top of it instead of being taken from their
+  // neighbours (docs/cmm.md "Narrow regions").
+  double narrow_floors = 0;
+  for (const RegionPlanSummary& r : result.regions)
+    if (r.contact_rule) narrow_floors += options.min_per_region;
   // Counted in double first: a huge density must not overflow (docs/formats.md "Limits").
   const double wanted = options.points ? static_cast<double>(*options.points)
-                                       : options.density.value_or(kDefaultDensity) * samplable_area / 100.0;
+                                       : options.density.value_or(kDefaultDensity) * samplable_area / 100.0 +
+                                             narrow_floors;
   if (!(wanted <= static_cast<double>(limits::kMaxPlanPoints))) {
     std::ostringstream text;
     text << "--density " << options.density.value_or(kDefaultDensity) << " points per cm^2 over " << samplable_area
@@ -294,7 +320,8 @@ void sample(PlanState& s) {
       issue.kind = PlanIssue::Kind::region_short;
       issue.region = summary.region;
       issue.reason = "only " + std::to_string(summary.sampled) + " of " + std::to_string(summary.allocated) +
-                     " points fit " + mm(result.border) + " mm from the region's edges";
+                     (summary.contact_rule ? " points fit where the ball measures the region alone (ball contact rule)"
+                                           : " points fit " + mm(result.border) + " mm from the region's edges");
       result.issues.push_back(issue);
     }
     s.report("sampling", r + 1, region_count);
@@ -396,16 +423,16 @@ void order(PlanState& s) {
     kept_tips.push_back(c.tip);
   }
   // Most points dropped: name the faces that face down, the usual cause
-  // being normals into the material rather than the probe.
+  // being normals into the material rather than the probe; faces whose
+  // orientation the import established from topology are undersides
+  // (docs/cmm.md "Faces that face down").
   std::string orientation_hint;
   if (2 * kept.size() < candidates.size()) {
     std::vector<OrientationSample> samples;
     samples.reserve(candidates.size());
     for (const PlanCandidate& c : candidates)
       samples.push_back({static_cast<std::size_t>(domains[static_cast<std::size_t>(c.region)].face_index()), c.normal, c.kept});
-    std::vector<std::string> names;
-    for (const Face& f : part.faces) names.push_back(f.name());
-    for (const FaceFacingDown& f : faces_facing_down(samples, names)) {
+    for (const FaceFacingDown& f : faces_facing_down(samples, part.faces)) {
       PlanIssue issue;
       issue.kind = PlanIssue::Kind::face_facing_down;
       issue.face = static_cast<int>(f.face);

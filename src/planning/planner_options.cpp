@@ -73,6 +73,8 @@ void validate(const PlannerOptions& o) {
                      " mm (docs/formats.md \"Limits\")");
   if (o.min_per_region < 0) throw InputError("--min-per-region must not be negative");
   if (o.border) non_negative(*o.border, "--border (mm)");
+  non_negative(o.contact.shift, "--contact-shift (mm)");
+  positive(o.contact.tolerance, "contact tolerance (mm)");
   positive(o.probe_diameter, "--probe-diameter (mm)");
   positive(o.stylus_diameter, "--stylus-diameter (mm)");
   positive(o.stylus_length, "--stylus-length (mm)");

@@ -6,7 +6,9 @@
 //
 //   1. regions: the admissible set of every region (region_domain.hpp:
 //      inside the region and its face's trim, `border` mm from its edges);
-//      a region that cannot hold a single point is skipped and reported;
+//      a region too narrow for the default border takes the ball-contact
+//      rule instead (narrow_region.hpp); a region that cannot hold a single
+//      point is skipped and reported (with the largest ball that would fit);
 //   2. allocation (allocation.hpp): budget from `points` or `density`,
 //      weights from area, curvature spread and predicted risk, a floor of
 //      `min_per_region` plus `gouge_points` per predicted gouge site;
@@ -47,6 +49,7 @@
 #include "partition/region_map.hpp"
 #include "planning/accessibility.hpp"
 #include "planning/allocation.hpp"
+#include "planning/ball_contact.hpp"
 #include "planning/datum_selection.hpp"
 #include "planning/moves.hpp"
 #include "planning/region_domain.hpp"
@@ -65,6 +68,10 @@ struct PlannerOptions {
   SamplingStrategy strategy = kDefaultSamplingStrategy;
   std::uint64_t seed = 1;
   std::optional<double> border;    // clearance from region edges on the surface [mm]; default r + 1
+  // Regions too narrow for the default border take the contact rule
+  // (narrow_region.hpp, docs/cmm.md "Narrow regions"); a `border` given
+  // explicitly holds for every region.
+  BallContactOptions contact;
   std::string probe_name = "Probe1";
   double probe_diameter = 2;       // [mm]
   double stylus_diameter = 1;      // [mm], <= probe_diameter
@@ -115,6 +122,7 @@ struct RegionPlanSummary {
   double mean_risk = 0;          // [mm]
   double weight = 0;
   bool samplable = true;
+  bool contact_rule = false;     // too narrow for the border: points by the ball-contact rule
   int allocated = 0;             // by the allocation rule
   int gouge_points = 0;          // of which reserved for gouge sites
   int sampled = 0;               // admissible points found
@@ -132,6 +140,9 @@ struct PlanIssue {
   AccessProblem problem = AccessProblem::none;
   Eigen::Vector3d where = Eigen::Vector3d::Zero();  // the (original) point [mm]
   double distance = 0;          // moved by [mm]
+  // region_skipped under the contact rule: the diameter of the largest ball
+  // that would measure the region [mm] (0: none, or the rule was not tried).
+  double largest_ball_diameter = 0;
   std::string reason;           // one sentence for people
 };
 const char* to_string(PlanIssue::Kind kind);

@@ -177,6 +177,7 @@ std::optional<double> RegionDomain::admissible_against(const EdgeDistance& edges
   const double cap = need + 1;
   const double d = edges.distance(p, cap);
   if (d < need) return std::nullopt;
+  if (contact_check_ && !contact_check_(uv, p)) return std::nullopt;
   if (xyz) *xyz = p;
   return std::min(d, cap);
 }

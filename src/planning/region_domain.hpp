@@ -10,7 +10,9 @@
 //     region (its border loops in xyz and the face's trim loops, sampled on
 //     the surface) plus a margin covering how far those polylines may be from
 //     the true edge curves (edge_distance.hpp: straight-line distance, a
-//     lower bound of the distance on the surface).
+//     lower bound of the distance on the surface),
+//   - when a contact check is set (set_contact_check: the narrow-region rule
+//     of docs/cmm.md, ball_contact.hpp), it passes.
 // Points on a predicted gouge site are admissible on the site's terms
 // (admissible_on_site): in the region and the trim, `border` mm from the
 // face's own edges (parameter-rectangle boundary and trim loops) but not
@@ -26,6 +28,7 @@
 //
 // Units: mm, mm^2, 1/mm. Thread safety: const members may run concurrently.
 #include <Eigen/Geometry>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -107,6 +110,12 @@ class RegionDomain {
   // Required straight-line distance to the edges: border + edge_margin.
   double required_edge_distance() const { return options_.border + options_.edge_margin; }
 
+  // A further test of every admissible point (uv, surface point), run after
+  // the edge clearance; it must be safe to call from several threads.
+  using ContactCheck = std::function<bool(const Eigen::Vector2d& uv, const Eigen::Vector3d& xyz)>;
+  void set_contact_check(ContactCheck check) { contact_check_ = std::move(check); }
+  bool contact_checked() const { return static_cast<bool>(contact_check_); }
+
   const std::vector<DomainCell>& cells() const { return cells_; }
   int grid_cells() const { return grid_; }
   const DomainStatistics& statistics() const { return stats_; }
@@ -133,6 +142,7 @@ class RegionDomain {
   RegionDomainOptions options_;
   std::unique_ptr<EdgeDistance> edges_;       // region borders and trim loops
   std::unique_ptr<EdgeDistance> face_edges_;  // parameter-rectangle boundary and trim loops
+  ContactCheck contact_check_;                // empty: none
   int grid_ = 8;
   std::vector<DomainCell> cells_;  // u-major: cells_[i * grid_ + j]
   DomainStatistics stats_;

@@ -19,7 +19,7 @@
 // Cranley-Patterson rotated), maps them onto the region's uv box through an
 // area warp (area_warp.hpp: even in the square = even on the surface), and
 // keeps the admissible ones (region_domain.hpp: inside the region and the
-// trim, border clearance). Sequences (halton, random, curvature, risk)
+// trim, border clearance or, in a narrow region, the ball-contact rule). Sequences (halton, random, curvature, risk)
 // simply run until `count` points are kept. Sets (grid, stratified,
 // hammersley) depend on their size N: N is searched (bracketing, then
 // bisection) for exactly `count` admissible points; when no N gives exactly
@@ -28,7 +28,7 @@
 //
 // Failure is reported, not thrown: when the region cannot hold `count`
 // admissible points within the candidate budget (a sliver narrower than
-// twice the border clearance), the result has fewer points and `short_by`
+// twice the border clearance, a strip where few ball positions pass), the result has fewer points and `short_by`
 // says how many are missing.
 #include <Eigen/Core>
 #include <cstdint>

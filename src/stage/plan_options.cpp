@@ -30,9 +30,15 @@ OptionTable<PlannerOptions> make_table() {
   t.push_back(integer_option<O>("seed", "N", "random seed of the sampling", [](auto& o) -> auto& { return o.seed; },
                                 0));
   t.push_back(written_as(
-      number_option<O>("border", "MM", "clearance from region edges on the surface",
+      number_option<O>("border", "MM", "clearance from region edges on the surface; a region too narrow for the default "
+                       "takes the ball-contact rule (docs/cmm.md \"Narrow regions\")",
                        [](auto& o) -> auto& { return o.border; }, Bound::non_negative),
       [](const O& o) { return json_fields::finite(border_clearance(o), "border"); }, "probe radius + 1"));
+  t.push_back(number_option<O>(
+      "contact_shift", "MM",
+      "in a region too narrow for the border: how far off its place the ball may be while its contact stays "
+      "in the region (docs/cmm.md \"Narrow regions\")",
+      [](auto& o) -> auto& { return o.contact.shift; }, Bound::non_negative));
   t.push_back(text_option<O>("probe_name", "NAME", "tool / sensor name on the CMM",
                              [](auto& o) -> auto& { return o.probe_name; }));
   t.push_back(number_option<O>("probe_diameter", "MM", "ball diameter",

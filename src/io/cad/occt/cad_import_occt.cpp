@@ -115,6 +115,8 @@ ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, con
   if (conversion.exact) analytic = recognise_analytic(nurbs);
   Face converted(name, std::move(nurbs), std::move(trim), reversed, report.source_type);
   converted.set_analytic(std::move(analytic));
+  converted.set_orientation_established(sense.basis == CadFaceOrientation::solid ||
+                                        sense.basis == CadFaceOrientation::closed_shell);
   return {std::move(converted), report};
 }
 
