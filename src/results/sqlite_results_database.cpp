@@ -3,8 +3,10 @@
 #include <sqlite3.h>
 #include <sys/stat.h>
 
+#include <chrono>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include "base/error.hpp"
 
@@ -123,6 +125,8 @@ class Statement {
     return *this;
   }
   // True for a row, false when done.
+  // SQLite's own result code, for a caller that retries.
+  int step_code() { return sqlite3_step(stmt_); }
   bool step() {
     const int rc = sqlite3_step(stmt_);
     if (rc == SQLITE_ROW) return true;
@@ -348,9 +352,18 @@ class SqliteResultsDatabase : public ResultsDatabase {
     }
     exec("PRAGMA foreign_keys = ON", "set foreign keys");
     // WAL: readers do not block the writer, writers queue (docs/results_database.md "SQLite").
-    {
+    // Switching needs the file to itself and does not wait on the busy
+    // handler: it answers the old mode while another writer still creates
+    // the file in rollback mode. So it is tried again until the busy timeout.
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(kSqliteBusyTimeoutMs);
+    for (;;) {
       Statement wal(db_, "PRAGMA journal_mode = WAL", path_);
-      if (!wal.step() || wal.text(0) != "wal") throw std::runtime_error(path_ + ": SQLite refused WAL mode");
+      const int rc = wal.step_code();
+      if (rc == SQLITE_ROW && wal.text(0) == "wal") break;
+      if (rc != SQLITE_ROW && rc != SQLITE_BUSY && rc != SQLITE_LOCKED) fail(db_, rc, path_, "set WAL mode");
+      if (std::chrono::steady_clock::now() > give_up)
+        throw std::runtime_error(path_ + ": SQLite could not switch to WAL mode within the busy timeout");
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     if (kind == Kind::furrow && schema_version() == kResultsSchemaVersion) return;
     Transaction t(*this);
