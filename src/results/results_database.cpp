@@ -135,7 +135,10 @@ SpcInput load_spc_input(ResultsDatabase& db, SpcBy by, const SerialRange& range)
   for (const StoredPart& p : parts) by_key[p.key] = &p;
   std::vector<std::int64_t> key_of_index(input.parts.size());
   for (const auto& [key, index] : index_of_key) key_of_index[index] = key;
-  for (auto& [id, c] : series) {
+  for (auto& entry : series) {
+    // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+    const std::string& id = entry.first;
+    CharacteristicSeries& c = entry.second;
     // values() lists parts in storing order; the selection is in production
     // order, which differs after a re-measurement.
     std::vector<std::size_t> order(c.part_index.size());
