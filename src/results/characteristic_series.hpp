@@ -13,6 +13,7 @@
 // not measure (the point not measured, or an outlier) has no entry for that
 // part, so `part_index` may skip numbers.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct PartRecord {
   std::string serial;   // --serial given when the part was stored
   std::string date;     // ISO 8601 UTC, when the comparison was made
   std::string verdict;  // "PASS", "FAIL", "INCONCLUSIVE" (report's wording)
+  std::string operator_name, cmm;  // from the inspection record; empty when none
+  std::optional<std::string> furrow_version;  // that stored it; none before schema 2
 };
 
 struct CharacteristicSeries {

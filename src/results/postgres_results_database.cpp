@@ -6,12 +6,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include <regex>
 #include <set>
 #include <stdexcept>
 #include <vector>
 
 #include "base/error.hpp"
+#include "results/postgres_location.hpp"
 
 namespace furrow {
 
@@ -74,7 +74,8 @@ const char* const kTables[] = {"meta", "parts", "points", "regions", "inputs"};
 const char* const kRecordTables[] = {"parts", "points", "regions", "inputs"};
 
 // Migration k takes a database from schema version k to k + 1; version 0 is
-// a schema without any table. Each runs inside the opening transaction.
+// a schema without any table, so a new database passes through every
+// migration. Each runs inside the transaction of the first store.
 std::string migration(int from) {
   if (from == 0) {
     std::string sql = kSchemaV1;
@@ -84,50 +85,11 @@ std::string migration(int from) {
              table + " FOR EACH STATEMENT EXECUTE FUNCTION furrow_append_only();\n";
     return sql;
   }
+  // Version 2: the Furrow version that stored each part (NULL for the
+  // parts stored before).
+  if (from == 1) return "ALTER TABLE parts ADD COLUMN furrow_version TEXT;\n";
   throw std::logic_error("no migration from results schema version " + std::to_string(from));
 }
-
-// libpq's messages end in a newline and may hold several lines.
-std::string one_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  std::string out;
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    if (text[k] == '\n' || text[k] == '\t') {
-      if (!out.empty() && out.back() != ' ') out += ' ';
-      continue;
-    }
-    out += text[k];
-  }
-  return out;
-}
-
-const char* const kPasswordHelp =
-    "put the password in ~/.pgpass (or the file PGPASSFILE names), in PGPASSWORD, or in a service file "
-    "(service=NAME, PGSERVICEFILE) and give the location without it (docs/results_database.md \"Passwords\")";
-
-// The location with any password replaced by ****, for the one message
-// that has to name a location holding one.
-std::string masked(const std::string& location) {
-  std::string out = location;
-  const std::size_t scheme = out.find("://");
-  if (scheme != std::string::npos) {
-    const std::size_t start = scheme + 3;
-    const std::size_t end = std::min(out.find_first_of("/?", start), out.size());
-    const std::size_t at = out.rfind('@', end == 0 ? 0 : end - 1);
-    if (at != std::string::npos && at >= start) {
-      const std::size_t colon = out.find(':', start);
-      if (colon < at) out.replace(colon + 1, at - colon - 1, "****");
-    }
-  }
-  // key=value pairs, and a URI's query parameters.
-  static const std::regex pair(R"(((?:^|[\s?&])(?:ssl)?password\s*=\s*)('(?:[^'\\]|\\.)*'|[^\s&]*))");
-  return std::regex_replace(out, pair, "$1****");
-}
-
-struct ConninfoFree {
-  void operator()(PQconninfoOption* o) const { PQconninfoFree(o); }
-};
-using Conninfo = std::unique_ptr<PQconninfoOption, ConninfoFree>;
 
 struct ResultClear {
   void operator()(PGresult* r) const { PQclear(r); }
@@ -186,8 +148,8 @@ class PostgresResultsDatabase : public ResultsDatabase {
     if (!conn_) throw std::runtime_error(location + ": libpq could not allocate a connection");
     if (PQstatus(conn_) != CONNECTION_OK) {
       std::string message = location + ": cannot connect to the PostgreSQL results database (" +
-                            one_line(PQerrorMessage(conn_)) + ")";
-      if (PQconnectionNeedsPassword(conn_)) message += "; the server asks for a password: " + std::string(kPasswordHelp);
+                            postgres_one_line(PQerrorMessage(conn_)) + ")";
+      if (PQconnectionNeedsPassword(conn_)) message += "; the server asks for a password: " + std::string(kPostgresPasswordHelp);
       PQfinish(conn_);
       throw InputError(message);
     }
@@ -199,7 +161,9 @@ class PostgresResultsDatabase : public ResultsDatabase {
       // 17 digits before), so numbers read back bit for bit.
       run("SET extra_float_digits = 3", {}, "set the float format");
       if (access == DatabaseAccess::read) run("SET default_transaction_read_only = on", {}, "open it read-only");
-      prepare(access);
+      found_ = classify();
+      if (access == DatabaseAccess::read && found_.kind == Kind::empty)
+        throw InputError(location_ + ": holds no Furrow results");
     } catch (...) {
       PQfinish(conn_);
       throw;
@@ -210,11 +174,13 @@ class PostgresResultsDatabase : public ResultsDatabase {
   const std::string& location() const override { return location_; }
 
   int schema_version() override {
+    if (found_.kind == Kind::empty) return 0;
     const Result r = run("SELECT value FROM meta WHERE key = 'schema_version'", {}, "read the schema version");
     return PQntuples(r.get()) ? std::atoi(PQgetvalue(r.get(), 0, 0)) : 0;
   }
 
   StoreResult store(const ComparisonRecord& r) override {
+    prepare_for_write();
     Transaction t(*this);
     // Writers queue here, so part_key follows the commit order and the
     // digest check below cannot race another writer (docs/results_database.md
@@ -224,12 +190,13 @@ class PostgresResultsDatabase : public ResultsDatabase {
     Params part;
     part.text(r.serial).text(r.part).text(r.plan_fingerprint).text(r.date).text(utc_iso8601(std::time(nullptr)));
     part.text(r.operator_name).text(r.cmm).text(r.verdict).text(r.comparison_sha256);
-    part.real(r.zone_lower).real(r.zone_upper);
+    part.real(r.zone_lower).real(r.zone_upper).text(FURROW_VERSION);
     // The unique digest is the second guard, against a client that does not
     // take the lock.
     const Result inserted = run(
         "INSERT INTO parts (serial, part, plan_fingerprint, made_at, stored_at, operator, cmm, verdict, "
-        "comparison_sha256, zone_lower, zone_upper) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11) "
+        "comparison_sha256, zone_lower, zone_upper, furrow_version) "
+        "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12) "
         "ON CONFLICT (comparison_sha256) DO NOTHING RETURNING part_key",
         part, "store a part");
     if (PQntuples(inserted.get()) != 1) {
@@ -302,19 +269,28 @@ class PostgresResultsDatabase : public ResultsDatabase {
   }
 
   std::vector<StoredPart> parts() override {
-    const Result r = run(
-        "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, zone_lower, zone_upper "
-        "FROM parts ORDER BY part_key",
-        {}, "read the parts");
+    if (found_.kind == Kind::empty) return {};
+    // Schema 1 has no furrow_version: read as NULL (absent).
+    const Result r = run(found_.version >= 2
+                             ? "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, "
+                               "zone_lower, zone_upper, operator, cmm, furrow_version FROM parts ORDER BY part_key"
+                             : "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, "
+                               "zone_lower, zone_upper, operator, cmm, NULL FROM parts ORDER BY part_key",
+                         {}, "read the parts");
     std::vector<StoredPart> out;
     const PGresult* res = r.get();
-    for (int row = 0; row < PQntuples(res); ++row)
-      out.push_back({integer(res, row, 0), text(res, row, 1), text(res, row, 2), text(res, row, 3),
-                     text(res, row, 4), text(res, row, 5), real(res, row, 6), real(res, row, 7)});
+    for (int row = 0; row < PQntuples(res); ++row) {
+      StoredPart p{integer(res, row, 0), text(res, row, 1), text(res, row, 2), text(res, row, 3),
+                   text(res, row, 4),    text(res, row, 5), real(res, row, 6), real(res, row, 7),
+                   text(res, row, 8),    text(res, row, 9), std::nullopt};
+      if (!PQgetisnull(res, row, 10)) p.furrow_version = text(res, row, 10);
+      out.push_back(std::move(p));
+    }
     return out;
   }
 
   std::vector<StoredValue> values(SpcBy by) override {
+    if (found_.kind == Kind::empty) return {};
     const Result r = run(by == SpcBy::point
                              ? "SELECT part_key, point_id, deviation FROM points WHERE evaluated = 1 AND outlier = '' "
                                "AND point_id <> '' ORDER BY part_key, seq"
@@ -330,6 +306,7 @@ class PostgresResultsDatabase : public ResultsDatabase {
   }
 
   std::vector<StoredPoint> points_of(std::int64_t part_key) override {
+    if (found_.kind == Kind::empty) return {};
     const Result r = run(
         "SELECT point_id, region, deviation, evaluated, in_tolerance, outlier FROM points "
         "WHERE part_key = $1 ORDER BY seq",
@@ -405,7 +382,7 @@ class PostgresResultsDatabase : public ResultsDatabase {
   [[noreturn]] void fail(const PGresult* r, const std::string& what) {
     const char* state = r ? PQresultErrorField(r, PG_DIAG_SQLSTATE) : nullptr;
     const char* primary = r ? PQresultErrorField(r, PG_DIAG_MESSAGE_PRIMARY) : nullptr;
-    const std::string message = one_line(primary ? primary : PQerrorMessage(conn_));
+    const std::string message = postgres_one_line(primary ? primary : PQerrorMessage(conn_));
     const std::string code = state ? state : "";
     if (code == "42501")
       throw InputError(location_ + ": cannot " + what + " (" + message +
@@ -474,22 +451,15 @@ class PostgresResultsDatabase : public ResultsDatabase {
     return {Kind::furrow, static_cast<int>(version)};
   }
 
-  void prepare(DatabaseAccess access) {
-    Found found = classify();
-    if (access == DatabaseAccess::read) {
-      if (found.kind == Kind::empty) throw InputError(location_ + ": holds no Furrow results");
-      if (found.version < kResultsSchemaVersion)
-        throw InputError(location_ + ": results schema version " + std::to_string(found.version) +
-                         "; storing a part with this furrow migrates it to " +
-                         std::to_string(kResultsSchemaVersion));
-      return;
-    }
-    if (found.kind == Kind::furrow && found.version == kResultsSchemaVersion) return;
+  // Before the first store: the tables created, or migrated to
+  // kResultsSchemaVersion, under the writers' lock.
+  void prepare_for_write() {
+    if (found_.kind == Kind::furrow && found_.version == kResultsSchemaVersion) return;
     Transaction t(*this);
     run("SELECT pg_advisory_xact_lock($1)", Params().integer(kPostgresWriterLock), "wait for other writers");
     // Another writer may have created or migrated it since.
-    found = classify();
-    for (int v = found.kind == Kind::empty ? 0 : found.version; v < kResultsSchemaVersion; ++v) {
+    const Found now = classify();
+    for (int v = now.kind == Kind::empty ? 0 : now.version; v < kResultsSchemaVersion; ++v) {
       // Constant DDL, no value in it: the one place a statement runs without
       // parameters through PQexec (which takes several statements).
       const std::string sql = migration(v);
@@ -500,55 +470,15 @@ class PostgresResultsDatabase : public ResultsDatabase {
         "ON CONFLICT (key) DO UPDATE SET value = EXCLUDED.value",
         Params().text(std::to_string(kResultsSchemaVersion)), "write the schema version");
     t.commit();
+    found_ = {Kind::furrow, kResultsSchemaVersion};
   }
 
   std::string location_;
   PGconn* conn_ = nullptr;
+  Found found_;  // what the database held when opened, or after prepare_for_write()
 };
 
 }  // namespace
-
-bool is_postgres_location(const std::string& location) {
-  if (location.rfind("postgresql://", 0) == 0 || location.rfind("postgres://", 0) == 0) return true;
-  // key=value pairs: the first key must be one of libpq's.
-  std::size_t k = location.find_first_not_of(" \t");
-  if (k == std::string::npos) return false;
-  const std::size_t key_end = location.find_first_of(" \t=", k);
-  if (key_end == std::string::npos) return false;
-  const std::size_t eq = location.find_first_not_of(" \t", key_end);
-  if (eq == std::string::npos || location[eq] != '=') return false;
-  const std::string key = location.substr(k, key_end - k);
-  const Conninfo defaults(PQconndefaults());
-  if (!defaults) return false;
-  for (const PQconninfoOption* o = defaults.get(); o->keyword; ++o)
-    if (key == o->keyword) return true;
-  return false;
-}
-
-void check_postgres_location(const std::string& location) {
-  char* error = nullptr;
-  const Conninfo options(PQconninfoParse(location.c_str(), &error));
-  if (!options) {
-    const std::string shown = masked(location);
-    // libpq's message may quote a piece of the string: only when no
-    // password could be in it.
-    std::string message = shown + ": not a valid PostgreSQL connection string";
-    if (error && shown == location) message += " (" + one_line(error) + ")";
-    PQfreemem(error);
-    throw InputError(message);
-  }
-  for (const PQconninfoOption* o = options.get(); o->keyword; ++o) {
-    const std::string keyword = o->keyword;
-    if ((keyword == "password" || keyword == "sslpassword") && o->val && *o->val) {
-      std::string shown = masked(location);
-      // A form the masking does not know (percent-encoded, say): not named at all.
-      if (shown.find(o->val) != std::string::npos) shown = "--db";
-      throw InputError(shown + ": the connection string holds a " +
-                       (keyword == "password" ? "password" : "key password") +
-                       ", which would show wherever the location is printed; " + kPasswordHelp);
-    }
-  }
-}
 
 std::unique_ptr<ResultsDatabase> open_postgres_results_database(const std::string& location,
                                                                 DatabaseAccess access) {

@@ -119,7 +119,7 @@ SpcInput load_spc_input(ResultsDatabase& db, SpcBy by, const SerialRange& range)
   for (std::size_t s = first; s < end; ++s) {
     const StoredPart& p = parts[latest.at(serials[s])];
     index_of_key[p.key] = input.parts.size();
-    input.parts.push_back({p.serial, p.date, p.verdict});
+    input.parts.push_back({p.serial, p.date, p.verdict, p.operator_name, p.cmm, p.furrow_version});
   }
   std::map<std::string, CharacteristicSeries> series;
   for (const StoredValue& v : db.values(by)) {

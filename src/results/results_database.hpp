@@ -92,6 +92,10 @@ struct StoredPart {
   std::int64_t key = 0;  // storing order: increases with every part stored
   std::string serial, date, verdict, comparison_sha256, plan_fingerprint;
   double zone_lower = 0, zone_upper = 0;
+  std::string operator_name, cmm;  // empty when the part had no inspection record
+  // The Furrow version that stored the part; none for parts stored before
+  // schema version 2, which did not record it.
+  std::optional<std::string> furrow_version;
 };
 
 // One characteristic value of one stored part.
@@ -124,16 +128,24 @@ class ResultsDatabase {
   // Every point of one part, in the comparison's order (for checks and
   // exports); empty for an unknown key.
   virtual std::vector<StoredPoint> points_of(std::int64_t part_key) = 0;
+  // The schema version of the database as it is now: 0 while a database
+  // opened for write has not been created yet (nothing stored).
   virtual int schema_version() = 0;
 };
 
-// The schema version this program writes and reads.
-constexpr int kResultsSchemaVersion = 1;
+// The schema version this program writes (docs/results_database.md
+// "Schema versions"). It reads every version from 1 on.
+constexpr int kResultsSchemaVersion = 2;
 
 enum class DatabaseAccess { write, read };
-// Opens (for write: creates, or migrates to kResultsSchemaVersion) the
-// database at `location`. InputError naming it when it cannot be opened, is
-// not Furrow's, is corrupt or is newer; for read, also when it does not exist.
+// Opens the database at `location` and checks it, writing nothing.
+// InputError naming it when it cannot be opened, is not Furrow's, is
+// corrupt or is newer; for read, also when it does not exist or holds no
+// Furrow results; for write, when a missing SQLite file could not be
+// created in its folder. A database opened for write is created, or
+// migrated to kResultsSchemaVersion, by the first store(): a command that
+// fails before storing leaves no new file and no changed schema behind.
+// Until then an absent database reads as empty.
 std::unique_ptr<ResultsDatabase> open_results_database(const std::string& location, DatabaseAccess access);
 
 // InputError for a location no message may print: a PostgreSQL connection

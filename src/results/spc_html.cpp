@@ -88,12 +88,15 @@ std::string chart_section(const SpcResult& r, std::size_t i) {
 }
 
 std::string parts_table(const SpcResult& r) {
-  std::string s = "<table class=\"parts\">\n<tr><th>#</th><th>serial</th><th>date</th><th>verdict</th></tr>\n";
+  std::string s =
+      "<table class=\"parts\">\n"
+      "<tr><th>#</th><th>serial</th><th>date</th><th>verdict</th><th>operator</th><th>CMM</th></tr>\n";
   for (std::size_t i = 0; i < r.parts.size(); ++i) {
     const PartRecord& p = r.parts[i];
     s += std::string("<tr") + (p.verdict == "FAIL" ? " class=\"fail\"" : "") + "><td>" + std::to_string(i) +
          "</td><td class=\"text\">" + esc(p.serial) + "</td><td class=\"text\">" + esc(p.date) +
-         "</td><td class=\"text verdict\">" + esc(p.verdict) + "</td></tr>\n";
+         "</td><td class=\"text verdict\">" + esc(p.verdict) + "</td><td class=\"text\">" + esc(p.operator_name) +
+         "</td><td class=\"text\">" + esc(p.cmm) + "</td></tr>\n";
   }
   return s + "</table>\n";
 }

@@ -63,7 +63,13 @@ std::string spc_json(const SpcResult& result, const SpcSelection& selection) {
   json parts = json::array();
   for (std::size_t i = 0; i < result.parts.size(); ++i) {
     const PartRecord& p = result.parts[i];
-    parts.push_back({{"index", i}, {"serial", p.serial}, {"date", p.date}, {"verdict", p.verdict}});
+    parts.push_back({{"index", i},
+                     {"serial", p.serial},
+                     {"date", p.date},
+                     {"verdict", p.verdict},
+                     {"operator", p.operator_name},
+                     {"cmm", p.cmm},
+                     {"furrow_version", p.furrow_version ? json(*p.furrow_version) : json(nullptr)}});
   }
   doc["parts"] = parts;
   json characteristics = json::array();

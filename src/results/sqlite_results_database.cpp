@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <optional>
@@ -67,7 +68,8 @@ INSERT INTO meta (key, value) VALUES ('application', 'furrow results');
 const char* const kTables[] = {"parts", "points", "regions", "inputs"};
 
 // Migration k takes a database from schema version k to k + 1; version 0
-// is an empty file. Each runs inside the opening transaction.
+// is an empty file, so a new file passes through every migration. Each runs
+// inside the transaction of the first store.
 std::string migration(int from) {
   if (from == 0) {
     std::string sql = kSchemaV1;
@@ -78,6 +80,9 @@ std::string migration(int from) {
                " BEGIN SELECT RAISE(ABORT, 'Furrow results are append-only'); END;\n";
     return sql;
   }
+  // Version 2: the Furrow version that stored each part (NULL for the
+  // parts stored before).
+  if (from == 1) return "ALTER TABLE parts ADD COLUMN furrow_version TEXT;\n";
   throw std::logic_error("no migration from results schema version " + std::to_string(from));
 }
 
@@ -161,28 +166,28 @@ class SqliteResultsDatabase : public ResultsDatabase {
     const bool exists = ::stat(path.c_str(), &st) == 0;
     if (!exists && access == DatabaseAccess::read) throw InputError(path + ": no such results database");
     if (exists && !S_ISREG(st.st_mode)) throw InputError(path + ": not a file");
-    const int flags = SQLITE_OPEN_READWRITE | (exists ? 0 : SQLITE_OPEN_CREATE) | SQLITE_OPEN_NOMUTEX;
-    const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
-    if (rc != SQLITE_OK) {
-      const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
-      sqlite3_close(db_);
-      throw InputError(path + ": cannot open the results database (" + message + ")");
+    if (!exists) {
+      // Created by the first store (results_database.hpp): only its folder is checked now.
+      check_folder_writable(path);
+      return;
     }
+    open(SQLITE_OPEN_READWRITE);
     try {
-      sqlite3_busy_timeout(db_, kSqliteBusyTimeoutMs);
-      prepare(access);
+      const Kind kind = classify();
+      if (access == DatabaseAccess::read && kind == Kind::empty) throw InputError(path_ + ": holds no Furrow results");
     } catch (...) {
-      sqlite3_close(db_);
+      close();
       throw;
     }
   }
-  ~SqliteResultsDatabase() override { sqlite3_close(db_); }
+  ~SqliteResultsDatabase() override { close(); }
 
   const std::string& location() const override { return path_; }
 
-  int schema_version() override { return pragma_int("PRAGMA user_version"); }
+  int schema_version() override { return db_ ? pragma_int("PRAGMA user_version") : 0; }
 
   StoreResult store(const ComparisonRecord& r) override {
+    prepare_for_write();
     Transaction t(*this);
     std::optional<std::string> stored_as;
     {
@@ -199,11 +204,12 @@ class SqliteResultsDatabase : public ResultsDatabase {
     }
     Statement part(db_,
                    "INSERT INTO parts (serial, part, plan_fingerprint, made_at, stored_at, operator, cmm, verdict, "
-                   "comparison_sha256, zone_lower, zone_upper) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
+                   "comparison_sha256, zone_lower, zone_upper, furrow_version) "
+                   "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)",
                    path_);
     part.text(1, r.serial).text(2, r.part).text(3, r.plan_fingerprint).text(4, r.date).text(5, utc_iso8601(std::time(nullptr)));
     part.text(6, r.operator_name).text(7, r.cmm).text(8, r.verdict).text(9, r.comparison_sha256);
-    part.real(10, r.zone_lower).real(11, r.zone_upper);
+    part.real(10, r.zone_lower).real(11, r.zone_upper).text(12, FURROW_VERSION);
     part.step();
     const std::int64_t key = sqlite3_last_insert_rowid(db_);
 
@@ -245,17 +251,27 @@ class SqliteResultsDatabase : public ResultsDatabase {
   }
 
   std::vector<StoredPart> parts() override {
+    if (!db_) return {};
+    // Schema 1 has no furrow_version: read as NULL (absent).
     Statement s(db_,
-                "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, zone_lower, "
-                "zone_upper FROM parts ORDER BY part_key",
+                schema_version() >= 2
+                    ? "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, zone_lower, "
+                      "zone_upper, operator, cmm, furrow_version FROM parts ORDER BY part_key"
+                    : "SELECT part_key, serial, made_at, verdict, comparison_sha256, plan_fingerprint, zone_lower, "
+                      "zone_upper, operator, cmm, NULL FROM parts ORDER BY part_key",
                 path_);
     std::vector<StoredPart> out;
-    while (s.step())
-      out.push_back({s.integer(0), s.text(1), s.text(2), s.text(3), s.text(4), s.text(5), s.real(6), s.real(7)});
+    while (s.step()) {
+      StoredPart p{s.integer(0), s.text(1), s.text(2), s.text(3), s.text(4), s.text(5), s.real(6), s.real(7),
+                   s.text(8), s.text(9), std::nullopt};
+      if (!s.is_null(10)) p.furrow_version = s.text(10);
+      out.push_back(std::move(p));
+    }
     return out;
   }
 
   std::vector<StoredValue> values(SpcBy by) override {
+    if (!db_) return {};
     Statement s(db_,
                 by == SpcBy::point
                     ? "SELECT part_key, point_id, deviation FROM points WHERE evaluated = 1 AND outlier = '' "
@@ -269,6 +285,7 @@ class SqliteResultsDatabase : public ResultsDatabase {
   }
 
   std::vector<StoredPoint> points_of(std::int64_t part_key) override {
+    if (!db_) return {};
     Statement s(db_,
                 "SELECT point_id, region, deviation, evaluated, in_tolerance, outlier FROM points "
                 "WHERE part_key = ?1 ORDER BY seq",
@@ -340,16 +357,37 @@ class SqliteResultsDatabase : public ResultsDatabase {
     return Kind::furrow;
   }
 
-  void prepare(DatabaseAccess access) {
-    Kind kind = classify();
-    if (access == DatabaseAccess::read) {
-      if (kind == Kind::empty) throw InputError(path_ + ": holds no Furrow results");
-      if (schema_version() < kResultsSchemaVersion)
-        throw InputError(path_ + ": results schema version " + std::to_string(schema_version()) +
-                         "; storing a part with this furrow migrates it to " +
-                         std::to_string(kResultsSchemaVersion));
-      return;
+  void open(int flags) {
+    const int rc = sqlite3_open_v2(path_.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+    if (rc != SQLITE_OK) {
+      const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+      close();
+      throw InputError(path_ + ": cannot open the results database (" + message + ")");
     }
+    sqlite3_busy_timeout(db_, kSqliteBusyTimeoutMs);
+  }
+
+  void close() {
+    sqlite3_close(db_);
+    db_ = nullptr;
+  }
+
+  // A missing file is created by the first store: its folder must let it be.
+  static void check_folder_writable(const std::string& path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+      throw InputError(path + ": cannot create the results database (no folder " + folder + ")");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+      throw InputError(path + ": cannot create the results database (the folder " + folder + " is not writable)");
+  }
+
+  // Before the first store: the file created when missing, in WAL mode, and
+  // brought to kResultsSchemaVersion.
+  void prepare_for_write() {
+    if (ready_) return;
+    if (!db_) open(SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
     exec("PRAGMA foreign_keys = ON", "set foreign keys");
     // WAL: readers do not block the writer, writers queue (docs/results_database.md "SQLite").
     // Switching needs the file to itself and does not wait on the busy
@@ -365,9 +403,13 @@ class SqliteResultsDatabase : public ResultsDatabase {
         throw std::runtime_error(path_ + ": SQLite could not switch to WAL mode within the busy timeout");
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    if (kind == Kind::furrow && schema_version() == kResultsSchemaVersion) return;
+    Kind kind = classify();
+    if (kind == Kind::furrow && schema_version() == kResultsSchemaVersion) {
+      ready_ = true;
+      return;
+    }
     Transaction t(*this);
-    // Another writer may have created or migrated it since classify().
+    // Another writer may have created or migrated it since.
     kind = classify();
     for (int v = kind == Kind::empty ? 0 : schema_version(); v < kResultsSchemaVersion; ++v)
       exec(migration(v) + "PRAGMA user_version = " + std::to_string(v + 1) + ";", "migrate the schema");
@@ -375,10 +417,12 @@ class SqliteResultsDatabase : public ResultsDatabase {
     Statement meta(db_, "INSERT OR REPLACE INTO meta (key, value) VALUES ('schema_version', ?1)", path_);
     meta.text(1, std::to_string(kResultsSchemaVersion)).step();
     t.commit();
+    ready_ = true;
   }
 
   std::string path_;
   sqlite3* db_ = nullptr;
+  bool ready_ = false;  // created and at kResultsSchemaVersion, in WAL mode
 };
 
 }  // namespace

@@ -124,6 +124,21 @@ TEST_CASE("cli results database: compare --db stores a part once, and refuses wh
     CHECK(!fs::exists(dir + "/c5.json"));
     CHECK(slurp(dir + "/other.db") == before);
   }
+  SUBCASE("a compare that fails before storing leaves no new database behind") {
+    // Measurements that are no measurements: exit 2 after the database was checked.
+    write_text(dir + "/broken.csv", "id,x,y,z\nP1,1,2\n");
+    const CliResult broken = compare(dir + "/broken.csv", dir + "/c6.json", {"--db", dir + "/new.db", "--serial", "SN-6"});
+    CHECK(broken.status == 2);
+    CHECK(broken.err.find("broken.csv") != std::string::npos);
+    CHECK(!fs::exists(dir + "/new.db"));
+    CHECK(!fs::exists(dir + "/new.db-wal"));
+    // A new database in a folder that does not exist: exit 2 before the comparison is made.
+    const CliResult no_folder =
+        compare(b.m2, dir + "/c7.json", {"--db", dir + "/missing/new.db", "--serial", "SN-7"});
+    CHECK(no_folder.status == 2);
+    CHECK(no_folder.err.find(dir + "/missing/new.db") != std::string::npos);
+    CHECK(!fs::exists(dir + "/c7.json"));
+  }
 }
 
 TEST_CASE("cli results database: import-results stores folders under their names, once") {

@@ -129,6 +129,18 @@ class PostgresCluster {
     return ok;
   }
 
+  // Runs an SQL script with PostgreSQL's own psql (which reads what
+  // pg_dump writes, meta-commands included), stopping at the first error.
+  void psql_file(const std::string& database, const std::string& script) const {
+    const std::string log = dir_ + "/psql.log";
+    const std::string command = shell_quote(bin_ + "/psql") + " -X -q -v ON_ERROR_STOP=1 -h " + shell_quote(dir_) +
+                                " -p " + std::to_string(port_) + " -U " + kSuperuser + " -d " + database + " -f " +
+                                shell_quote(script) + " > " + shell_quote(log) + " 2>&1";
+    const int raw = std::system(command.c_str());
+    if (!WIFEXITED(raw) || WEXITSTATUS(raw) != 0)
+      throw std::runtime_error("PostgreSQL test cluster: psql -f " + script + " failed: " + slurp(log));
+  }
+
  private:
   static std::string find_bin() {
     glob_t g{};

@@ -351,16 +351,33 @@ TEST_CASE("results database: a file that is not Furrow's, damaged or newer is re
   }
 }
 
-TEST_CASE("results database: a new file is marked as Furrow's, schema version 1, in WAL mode") {
-  const std::string db_path = scratch_dir("results-db-new") + "/results.db";
-  { CHECK(open_results_database(db_path, DatabaseAccess::write)->schema_version() == kResultsSchemaVersion); }
+TEST_CASE("results database: a new file is made by the first store, marked as Furrow's, schema version 2, in WAL mode") {
+  const std::string dir = scratch_dir("results-db-new");
+  const std::string db_path = dir + "/results.db";
+  // Opening for writing creates nothing: a command that fails before storing leaves no file.
+  { CHECK(open_results_database(db_path, DatabaseAccess::write)->schema_version() == 0); }
+  CHECK(!fs::exists(db_path));
+  {
+    const std::unique_ptr<ResultsDatabase> db = open_results_database(db_path, DatabaseAccess::write);
+    CHECK(db->parts().empty());
+    CHECK(db->values(SpcBy::point).empty());
+    CHECK(!fs::exists(db_path));
+    CHECK(db->store(made_up_record("S1", 1, 4, 1)) == StoreResult::stored);
+    CHECK(db->schema_version() == 2);
+  }
   CHECK(sqlite_query(db_path, "PRAGMA application_id") == std::to_string(kSqliteApplicationId));
-  CHECK(sqlite_query(db_path, "PRAGMA user_version") == "1");
+  CHECK(sqlite_query(db_path, "PRAGMA user_version") == "2");
   CHECK(sqlite_query(db_path, "PRAGMA journal_mode") == "wal");
-  CHECK(sqlite_query(db_path, "SELECT value FROM meta WHERE key = 'schema_version'") == "1");
+  CHECK(sqlite_query(db_path, "SELECT value FROM meta WHERE key = 'schema_version'") == "2");
   CHECK(sqlite_query(db_path, "SELECT value FROM meta WHERE key = 'application'") == "furrow results");
+  CHECK(sqlite_query(db_path, "SELECT furrow_version FROM parts") == FURROW_VERSION);
   // Opening it again neither fails nor changes the schema.
   const std::string schema = sqlite_query(db_path, "SELECT group_concat(sql, ';') FROM sqlite_master");
-  { open_results_database(db_path, DatabaseAccess::write); }
+  { open_results_database(db_path, DatabaseAccess::write)->store(made_up_record("S1", 1, 4, 1)); }
   CHECK(sqlite_query(db_path, "SELECT group_concat(sql, ';') FROM sqlite_master") == schema);
+  // A new file in a folder that is not there: refused when opened, before any work.
+  const std::string message =
+      expect_input_error([&] { open_results_database(dir + "/no-such-folder/results.db", DatabaseAccess::write); });
+  CHECK(message.find(dir + "/no-such-folder/results.db") != std::string::npos);
+  CHECK(message.find("no folder") != std::string::npos);
 }

@@ -55,16 +55,22 @@ std::string relations(const std::string& database) {
 
 }  // namespace
 
-TEST_CASE("results database on PostgreSQL: a new database gets Furrow's tables and schema version 1") {
+TEST_CASE("results database on PostgreSQL: the first store gives a new database Furrow's tables, schema version 2") {
   PostgresCluster& cluster = postgres_cluster();
   const std::string uri = cluster.new_database("pg_new");
   const std::string name = PostgresCluster::database_of(uri);
-  { CHECK(open_results_database(uri, DatabaseAccess::write)->schema_version() == kResultsSchemaVersion); }
-  CHECK(cluster.query(name, "SELECT value FROM meta WHERE key = 'schema_version'") == "1");
+  const std::string no_tables =
+      "SELECT count(*) FROM information_schema.tables WHERE table_schema = 'public'";
+  // Opening for writing creates nothing: a command that fails before storing leaves the database as it was.
+  { CHECK(open_results_database(uri, DatabaseAccess::write)->schema_version() == 0); }
+  CHECK(cluster.query(name, no_tables) == "0");
+  { CHECK(open_results_database(uri, DatabaseAccess::write)->store(made_up_record("K", 1, 4, 1)) == StoreResult::stored); }
+  CHECK(cluster.query(name, "SELECT value FROM meta WHERE key = 'schema_version'") == "2");
   CHECK(cluster.query(name, "SELECT value FROM meta WHERE key = 'application'") == "furrow results");
   CHECK(cluster.query(name,
                       "SELECT string_agg(table_name, ',' ORDER BY table_name) FROM information_schema.tables "
                       "WHERE table_schema = 'public'") == "inputs,meta,parts,points,regions");
+  CHECK(cluster.query(name, "SELECT furrow_version FROM parts") == FURROW_VERSION);
   // Opening it again changes nothing; the same database as key=value pairs.
   const std::string before = relations(name);
   { open_results_database(cluster.key_value(name), DatabaseAccess::write)->store(made_up_record("K", 1, 4, 1)); }
@@ -276,8 +282,8 @@ TEST_CASE("results database on PostgreSQL: a user with only the documented grant
   PostgresCluster& cluster = postgres_cluster();
   const std::string uri = cluster.new_database("pg_grants");
   const std::string name = PostgresCluster::database_of(uri);
-  // The owner's first run creates the tables (docs/results_database.md "Grants").
-  { open_results_database(uri, DatabaseAccess::write); }
+  // The owner's first store creates the tables (docs/results_database.md "Grants").
+  { open_results_database(uri, DatabaseAccess::write)->store(made_up_record("G0", 9, 20, 9)); }
   REQUIRE(cluster.exec("postgres", "DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = "
                                    "'furrow_writer') THEN CREATE ROLE furrow_writer LOGIN; END IF; END $$"));
   // The grants exactly as the documentation gives them.
@@ -291,15 +297,15 @@ TEST_CASE("results database on PostgreSQL: a user with only the documented grant
     CHECK(db->store(made_up_record("G1", 1, 20, 1)) == StoreResult::already_stored);
     CHECK(db->store(made_up_record("G2", 2, 20, 2)) == StoreResult::stored);
   }
-  CHECK(load_spc_input(*open_results_database(writer, DatabaseAccess::read), SpcBy::point, {}).parts.size() == 2);
-  CHECK(cluster.query(name, "SELECT count(*) FROM points") == "40");
+  CHECK(load_spc_input(*open_results_database(writer, DatabaseAccess::read), SpcBy::point, {}).parts.size() == 3);
+  CHECK(cluster.query(name, "SELECT count(*) FROM points") == "60");
   // Without the grants: exit 2 naming the location and the documentation.
   REQUIRE(cluster.exec(name, "REVOKE INSERT ON points FROM furrow_writer"));
   const std::string message = input_error_of(
       [&] { open_results_database(writer, DatabaseAccess::write)->store(made_up_record("G3", 3, 20, 3)); });
   CHECK(message.find(writer) != std::string::npos);
   CHECK(message.find("Grants") != std::string::npos);
-  CHECK(cluster.query(name, "SELECT count(*) FROM parts") == "2");  // the part's transaction rolled back
+  CHECK(cluster.query(name, "SELECT count(*) FROM parts") == "3");  // the part's transaction rolled back
 }
 
 TEST_CASE("results database on PostgreSQL: SQLite and PostgreSQL give the same SPC input and the same spc.json bytes") {
