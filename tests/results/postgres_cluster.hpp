@@ -129,6 +129,18 @@ class PostgresCluster {
     return ok;
   }
 
+  // The role furrow_writer with exactly the grants docs/results_database.md
+  // "Grants" gives a writer on `database` (the tables must exist); its URI.
+  std::string documented_writer(const std::string& database) const {
+    if (!exec("postgres", "DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = 'furrow_writer') "
+                          "THEN CREATE ROLE furrow_writer LOGIN; END IF; END $$") ||
+        !exec(database, "GRANT CONNECT ON DATABASE " + database + " TO furrow_writer;"
+                        "GRANT USAGE ON SCHEMA public TO furrow_writer;"
+                        "GRANT SELECT, INSERT ON meta, parts, points, regions, inputs TO furrow_writer;"))
+      throw std::runtime_error("PostgreSQL test cluster: cannot grant furrow_writer on " + database);
+    return uri(database, "furrow_writer");
+  }
+
   // Runs an SQL script with PostgreSQL's own psql (which reads what
   // pg_dump writes, meta-commands included), stopping at the first error.
   void psql_file(const std::string& database, const std::string& script) const {

@@ -262,12 +262,7 @@ TEST_CASE("results migration: on PostgreSQL a writer with only the documented gr
   PostgresCluster& cluster = postgres_cluster();
   const std::string location = version1_database(backend, "migration_grants");
   const std::string name = PostgresCluster::database_of(location);
-  REQUIRE(cluster.exec("postgres", "DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = "
-                                   "'furrow_writer') THEN CREATE ROLE furrow_writer LOGIN; END IF; END $$"));
-  REQUIRE(cluster.exec(name, "GRANT CONNECT ON DATABASE " + name + " TO furrow_writer;"
-                             "GRANT USAGE ON SCHEMA public TO furrow_writer;"
-                             "GRANT SELECT, INSERT ON meta, parts, points, regions, inputs TO furrow_writer;"));
-  const std::string writer = cluster.uri(name, "furrow_writer");
+  const std::string writer = cluster.documented_writer(name);
   // Reading the old version needs no migration.
   CHECK(open_results_database(writer, DatabaseAccess::read)->parts().size() == 4);
   // Storing needs it, and ALTER TABLE is the owner's: exit 2 naming the

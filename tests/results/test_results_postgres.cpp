@@ -284,13 +284,8 @@ TEST_CASE("results database on PostgreSQL: a user with only the documented grant
   const std::string name = PostgresCluster::database_of(uri);
   // The owner's first store creates the tables (docs/results_database.md "Grants").
   { open_results_database(uri, DatabaseAccess::write)->store(made_up_record("G0", 9, 20, 9)); }
-  REQUIRE(cluster.exec("postgres", "DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = "
-                                   "'furrow_writer') THEN CREATE ROLE furrow_writer LOGIN; END IF; END $$"));
   // The grants exactly as the documentation gives them.
-  REQUIRE(cluster.exec(name, "GRANT CONNECT ON DATABASE " + name + " TO furrow_writer;"
-                             "GRANT USAGE ON SCHEMA public TO furrow_writer;"
-                             "GRANT SELECT, INSERT ON meta, parts, points, regions, inputs TO furrow_writer;"));
-  const std::string writer = cluster.uri(name, "furrow_writer");
+  const std::string writer = cluster.documented_writer(name);
   {
     auto db = open_results_database(writer, DatabaseAccess::write);
     CHECK(db->store(made_up_record("G1", 1, 20, 1)) == StoreResult::stored);
