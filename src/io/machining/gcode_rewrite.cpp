@@ -342,6 +342,7 @@ GcodeRewrite rewrite_gcode(const std::string& text, const std::string& name, con
   }
   GcodeRewrite result;
   result.decimals = decimals < 3 ? 4 : decimals;
+  for (const GcodeMotionBlock& b : blocks) result.unit_mm = std::max(result.unit_mm, b.scale);
 
   Rewriter rewriter(name, result.decimals);
   std::size_t next_block = 0;
