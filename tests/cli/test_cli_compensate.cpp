@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/machining/apt_reader.hpp"
 #include "io/machining/gcode_reader.hpp"
 #include "io/part_file.hpp"
 #include "support/run_cli.hpp"
@@ -89,6 +90,28 @@ const Loop& loop() {
     return l;
   }();
   return made;
+}
+
+// The example program as APT CL data, point for point: the same tips
+// (written with the same 4 decimals, so read back to the same numbers),
+// each pass reached by RAPID GOTOs over the clearance height.
+std::string as_apt(const Toolpath& path) {
+  std::string text = "PARTNO MOULD BALL6\nUNITS/MM\nCUTTER/6.0000,3.0000\nFEDRAT/MMPM,1000.0000\n";
+  char line[128];
+  auto go_to = [&](const Eigen::Vector3d& p) {
+    std::snprintf(line, sizeof line, "GOTO/%.4f,%.4f,%.4f\n", p.x(), p.y(), p.z());
+    text += line;
+  };
+  const double safe = 34.6326;
+  for (const ToolpathPass& pass : path.passes) {
+    const Eigen::Vector3d start = pass.points.front().position;
+    text += "RAPID\n";
+    go_to({start.x(), start.y(), safe});
+    text += "RAPID\n";
+    go_to(start);
+    for (std::size_t i = 1; i < pass.points.size(); ++i) go_to(pass.points[i].position);
+  }
+  return text + "FINI\n";
 }
 
 }  // namespace
@@ -169,4 +192,76 @@ TEST_CASE("compensate: a bad option fails with status 2 naming it, and writes no
   CHECK(slurp(l.program) == slurp(test::source_path("examples/toolpaths/mould_ball6.nc")));
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(l.dir + "/bad.json"));
+}
+
+TEST_CASE("compensate: an APT CL file is compensated as the G-code program, written back as APT") {
+  const Loop& l = loop();
+  const Toolpath gcode = parse_gcode(slurp(l.program), "path.nc");
+  const std::string apt_path = l.dir + "/path.apt";
+  test::write_text(apt_path, as_apt(gcode));
+  const std::string out = l.dir + "/comp.apt", out_nc = l.dir + "/comp_for_apt.nc";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", apt_path, "--tool",
+                             l.tool, "--out", out, "--gain", "0.8"});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const json record = json::parse(slurp(l.dir + "/comp.json"));
+  CHECK(record["zmap_check"]["safe"] == true);
+  const std::string before_text = slurp(apt_path), after_text = slurp(out);
+  const Toolpath before = parse_apt(before_text, "before.apt"), after = parse_apt(after_text, "after.apt");
+  // Read as the G-code program is, point for point.
+  REQUIRE(before.passes.size() == gcode.passes.size());
+  REQUIRE(after.passes.size() == before.passes.size());
+  CHECK(after.rapids.size() == before.rapids.size());
+  const std::vector<std::string> a = lines_of(before_text), b = lines_of(after_text);
+  REQUIRE(a.size() == b.size());
+  // The same bounds as the G-code test above: the field's fade, the bump.
+  const double fade = record["faces"][0]["fade_distance"].get<double>();
+  const double far = kKept + fade + 3 + 1;
+  // The G-code program compensated alike: a second writer of the same tips.
+  const auto g = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program, "--tool",
+                             l.tool, "--out", out_nc, "--gain", "0.8"});
+  REQUIRE(g.status == 0);
+  const Toolpath by_gcode = parse_gcode(slurp(out_nc), "comp.nc");
+  REQUIRE(by_gcode.passes.size() == after.passes.size());
+  std::size_t near = 0, far_lines = 0, moved = 0;
+  double worst_near = 0, worst_writers = 0;
+  for (std::size_t p = 0; p < before.passes.size(); ++p) {
+    REQUIRE(after.passes[p].points.size() == before.passes[p].points.size());
+    REQUIRE(by_gcode.passes[p].points.size() == before.passes[p].points.size());
+    for (std::size_t i = 0; i < before.passes[p].points.size(); ++i) {
+      const ToolpathPoint& t0 = before.passes[p].points[i];
+      const ToolpathPoint& t1 = after.passes[p].points[i];
+      CHECK((t0.position - gcode.passes[p].points[i].position).norm() == 0);
+      worst_writers =
+          std::max(worst_writers, (t1.position - by_gcode.passes[p].points[i].position).cwiseAbs().maxCoeff());
+      moved += t1.position != t0.position;
+      if (i == 0) continue;
+      CHECK(t1.feed == t0.feed);
+      const double d = (t0.position - l.centre).head<2>().norm();
+      if (d > far) {
+        ++far_lines;
+        CHECK(a[static_cast<std::size_t>(t0.line - 1)] == b[static_cast<std::size_t>(t1.line - 1)]);
+      }
+      if (d < 2) {
+        ++near;
+        const Eigen::Vector3d step = t1.position - t0.position;
+        CHECK(step.z() < 0);
+        worst_near = std::max(worst_near, std::abs(step.norm() - 0.8 * kBumpHeight));
+      }
+    }
+  }
+  MESSAGE("APT: " << moved << " tips moved, near the centre " << near << " tips, worst |move - 40 um| "
+                  << worst_near * 1000 << " um; " << far_lines << " far lines; APT vs G-code writer "
+                  << worst_writers * 1000 << " um");
+  CHECK(near >= 3);
+  CHECK(far_lines > 100);
+  CHECK(moved > 0);
+  CHECK(worst_near < 0.15 * kBumpHeight);
+  // Both writers round the same tips to 4 decimals: identical numbers.
+  CHECK(worst_writers == 0);
+  // A G-code name for an APT program is refused before any work.
+  const auto wrong = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", apt_path,
+                                 "--tool", l.tool, "--out", l.dir + "/wrong.nc"});
+  CHECK(wrong.status == 2);
+  CHECK(!fs::exists(l.dir + "/wrong.nc"));
 }
