@@ -1,6 +1,7 @@
 // furrow compensate PART --comparison C.json --toolpath PATH.nc --tool TOOL.json --out COMP.nc
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
@@ -12,6 +13,7 @@
 #include "io/machining/tool_file.hpp"
 #include "io/machining/toolpath_file.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
 #include "stage/compensate_stage.hpp"
@@ -39,6 +41,7 @@ int run_compensate(Args& args) {
   const std::string toolpath_path = args.required_option("toolpath");
   const std::string tool_path = args.required_option("tool");
   const std::string out_path = args.required_option("out");
+  const std::optional<std::string> prediction_path = args.option("prediction");
   CompensateOptions options;
   read_option_flags(args, compensate_option_table(), options);
   ToolpathReadOptions read;
@@ -65,22 +68,28 @@ int run_compensate(Args& args) {
   outputs.add_input(comparison_path, "comparison");
   outputs.add_input(toolpath_path, "tool path");
   outputs.add_input(tool_path, "tool");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out_path);
   outputs.will_write(record);
 
   const Part part = read_part(part_path);
   const ComparisonDocument comparison = read_comparison(comparison_path);
+  std::optional<Prediction> prediction;
+  if (prediction_path) prediction = read_prediction(*prediction_path);
   const std::string program = json_fields::read_text(toolpath_path);
   const Toolpath path = read_toolpath(toolpath_path, read);
   const PathTools tools = tools_for_path(path, read_tool_file(tool_path), tool_path, std::nullopt, "");
   const CompensatedProgram done = naming_inputs(part_path + " with " + toolpath_path, [&] {
     return compensate_stage(part, tools, program, format, read, comparison, options,
-                            {part_path, comparison_path, toolpath_path, out_path});
+                            {part_path, comparison_path, toolpath_path, out_path, prediction_path.value_or("")},
+                            prediction ? &*prediction : nullptr);
   });
   std::size_t fitted = 0;
   for (const auto& face : done.field.field.faces) fitted += face && face->fitted();
   std::cout << "error field: " << done.field.samples << " points"
-            << (done.field.prediction_removed ? " (prediction removed)" : " (no prediction: deviations fitted as they are)")
+            << (done.field.prediction_given     ? " (the prediction given removed)"
+                : done.field.prediction_removed ? " (prediction removed)"
+                                                : " (no prediction: deviations fitted as they are)")
             << ", " << fitted << " of " << part.faces.size() << " faces fitted\n";
   std::cout << "moved " << done.offset.moved << " tips, largest offset " << um(done.offset.largest_offset) << "; "
             << done.offset.clipped.size() << " clipped at " << um(options.max_offset) << ", "
@@ -118,7 +127,8 @@ const Command kCompensateCommand = {
     "compensate", "a G-code or APT CL program moved by the measured error field of the part it cut",
     "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc|PATH.apt\n"
     "                         --tool TOOL.json --out COMP.nc|COMP.apt [--gain G] [--max-offset MM]\n"
-    "                         [--smoothing MM|auto] [--clip-back N] [--units mm|inch]\n"
+    "                         [--smoothing MM|auto] [--clip-back N] [--prediction P.json]\n"
+    "                         [--units mm|inch]\n"
     "\n"
     "Fits the systematic error of a measured part (the comparison's residuals\n"
     "against its prediction, or its deviations without one) as a smooth field per\n"
@@ -140,6 +150,11 @@ const Command kCompensateCommand = {
     "  --tool FILE           its tool JSON (required)\n"
     "  --out FILE            compensated program to write (required); its record\n"
     "                        goes beside it with the extension .json\n"
+    "  --prediction FILE     prediction.json of furrow predict for this program:\n"
+    "                        its error at each measured point (the path's own\n"
+    "                        furrows and cusps) is taken off the deviation\n"
+    "                        before the fit, instead of the comparison's own\n"
+    "                        prediction (if it has one)\n"
     "  --units U             units of G-code before G20/G21, of APT before UNITS/\n"
     "                        (default mm)\n"
     "\n"

@@ -61,7 +61,9 @@ std::string document(const Part& part, const CompensatedProgram& c, const Compen
       {"gain", options.gain},
       {"max_offset", options.max_offset},
       {"smoothing", options.smoothing ? json(*options.smoothing) : json("auto")},
+      {"prediction", names.prediction.empty() ? json(nullptr) : json(names.prediction)},
       {"prediction_removed", c.field.prediction_removed},
+      {"not_predicted", c.field.not_predicted},
       {"samples", c.field.samples},
       {"faces", faces},
       {"moves_moved", c.offset.moved},
@@ -100,7 +102,7 @@ std::string document(const Part& part, const CompensatedProgram& c, const Compen
 CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, const std::string& program_text,
                                     ProgramFormat format, const ToolpathReadOptions& read,
                                     const ComparisonDocument& comparison, const CompensateOptions& options,
-                                    const CompensationSources& names) {
+                                    const CompensationSources& names, const Prediction* prediction) {
   if (!(options.gain > 0 && options.gain <= 2))
     throw InputError("compensate: --gain must be in (0, 2]");
   if (!(options.max_offset > 0) || !std::isfinite(options.max_offset))
@@ -117,7 +119,8 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   CompensatedProgram out;
   ErrorFieldOptions field_options;
   field_options.smoothing_length = options.smoothing;
-  out.field = fit_error_field(comparison, part, field_options, names.comparison);
+  if (prediction) check_prediction_against_part(*prediction, part, names.prediction, names.part);
+  out.field = fit_error_field(comparison, part, field_options, names.comparison, prediction);
   const Cutter& cutter = tools.cutters.front();
   PathOffsetOptions offset_options;
   offset_options.gain = options.gain;

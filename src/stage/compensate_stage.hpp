@@ -55,6 +55,7 @@ struct CompensatedProgram {
 
 struct CompensationSources {
   std::string part, comparison, toolpath, out;
+  std::string prediction;  // the prediction given apart, empty when none
 };
 
 // `program_text` is the program (G-code or APT CL, `format`) of `tools`'
@@ -62,9 +63,13 @@ struct CompensationSources {
 // tools, a comparison of another part, or options out of range (naming
 // them). When the z-map check still fails after options.clip_back rounds,
 // the result's check is not safe: the caller writes nothing (exit 3).
+// `prediction` (may be null): a prediction given apart, whose error at each
+// measured point is taken off its deviation before the fit instead of the
+// comparison's residual (inspection/comparison_error_field.hpp); checked
+// against the part here.
 CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, const std::string& program_text,
                                     ProgramFormat format, const ToolpathReadOptions& read,
                                     const ComparisonDocument& comparison, const CompensateOptions& options,
-                                    const CompensationSources& names);
+                                    const CompensationSources& names, const Prediction* prediction = nullptr);
 
 }  // namespace furrow

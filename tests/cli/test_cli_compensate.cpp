@@ -265,3 +265,65 @@ TEST_CASE("compensate: an APT CL file is compensated as the G-code program, writ
   CHECK(wrong.status == 2);
   CHECK(!fs::exists(l.dir + "/wrong.nc"));
 }
+
+TEST_CASE("compensate: --prediction takes the path's own marks off a comparison made without one") {
+  // The same plan and bump, but the part simulated as the program really
+  // cuts it (its predicted furrows and cusps on top of the bump) and
+  // compared without a prediction: fitted as they are, the deviations carry
+  // the path's own mean error too. With --prediction the command takes it
+  // off again. Oracle: the planted bump, as in the first test.
+  const Loop& l = loop();
+  const std::string prediction = l.dir + "/prediction.json";
+  const auto pr = run_furrow({"predict", l.part, "--tool", l.tool, "--toolpath", l.program, "--out", prediction});
+  INFO(pr.err);
+  REQUIRE(pr.status == 0);
+  char bump[160];
+  std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,%g", l.centre.x(), l.centre.y(), l.centre.z(), kBumpRadius,
+                kBumpHeight);
+  REQUIRE(run_furrow({"simulate-measurement", l.part, "--plan", l.dir + "/plan.json", "--prediction", prediction,
+                      "--bump", bump, "--noise", "0.001", "--blunders", "0", "--seed", "3", "--misalign",
+                      "0,0,0,0,0,0", "--out", l.dir + "/cut.csv"})
+              .status == 0);
+  const std::string comparison = l.dir + "/cut_comparison.json";
+  run_furrow({"compare", l.part, "--measurements", l.dir + "/cut.csv", "--plan", l.dir + "/plan.json", "--align",
+              "cmm", "--no-outlier-rejection", "--out", comparison});
+  REQUIRE(fs::exists(comparison));
+  const Toolpath before = parse_gcode(slurp(l.program), "before.nc");
+  // The largest |move - 0.8 x bump| of the tips within 2 mm of the centre.
+  auto worst_near = [&](const std::string& out) {
+    const Toolpath after = parse_gcode(slurp(out), "after.nc");
+    REQUIRE(after.passes.size() == before.passes.size());
+    double worst = 0;
+    std::size_t near = 0;
+    for (std::size_t p = 0; p < before.passes.size(); ++p)
+      for (std::size_t i = 1; i < before.passes[p].points.size(); ++i) {
+        const Eigen::Vector3d& t0 = before.passes[p].points[i].position;
+        if ((t0 - l.centre).head<2>().norm() >= 2) continue;
+        ++near;
+        worst = std::max(worst, std::abs((after.passes[p].points[i].position - t0).norm() - 0.8 * kBumpHeight));
+      }
+    CHECK(near >= 3);
+    return worst;
+  };
+  const std::string with = l.dir + "/with.nc", without = l.dir + "/without.nc";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", comparison, "--toolpath", l.program, "--tool",
+                             l.tool, "--out", with, "--gain", "0.8", "--prediction", prediction});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const json record = json::parse(slurp(l.dir + "/with.json"));
+  CHECK(record["prediction"] == prediction);
+  CHECK(record["prediction_removed"] == true);
+  REQUIRE(run_furrow({"compensate", l.part, "--comparison", comparison, "--toolpath", l.program, "--tool", l.tool,
+                      "--out", without, "--gain", "0.8"})
+              .status == 0);
+  const double with_prediction = worst_near(with), without_prediction = worst_near(without);
+  MESSAGE("worst |move - 40 um| near the centre: " << with_prediction * 1000 << " um with --prediction, "
+                                                  << without_prediction * 1000 << " um without");
+  CHECK(with_prediction < 0.15 * kBumpHeight);
+  CHECK(with_prediction < without_prediction);
+  // A file that is not a prediction is refused before anything is written.
+  const auto other = run_furrow({"compensate", l.part, "--comparison", comparison, "--toolpath", l.program,
+                                 "--tool", l.tool, "--out", l.dir + "/other.nc", "--prediction", l.comparison});
+  CHECK(other.status == 2);
+  CHECK(!fs::exists(l.dir + "/other.nc"));
+}
