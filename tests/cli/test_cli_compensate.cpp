@@ -19,6 +19,7 @@
 #include "io/machining/apt_reader.hpp"
 #include "io/machining/gcode_reader.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction/zmap.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -326,4 +327,105 @@ TEST_CASE("compensate: --prediction takes the path's own marks off a comparison 
                                  "--tool", l.tool, "--out", l.dir + "/other.nc", "--prediction", l.comparison});
   CHECK(other.status == 2);
   CHECK(!fs::exists(l.dir + "/other.nc"));
+}
+
+TEST_CASE("compensate: one pass over the bump's flank is clipped back, or refused with exit 3 when rounds run out") {
+  // One pass of the example program alone, 11 mm from the planted bump's
+  // centre, where the field slopes across it: the compensated ball tilts
+  // with the field and its side cuts beside the pass deeper than the pass's
+  // own offset allows, which no neighbouring pass covers.
+  const Loop& l = loop();
+  const std::string text = slurp(l.program);
+  const std::vector<std::string> lines = lines_of(text);
+  const Toolpath all = parse_gcode(text, "path.nc");
+  std::size_t chosen = 0;
+  for (std::size_t p = 1; p < all.passes.size(); ++p)
+    if (std::abs(all.passes[p].points[0].position.y() - l.centre.y() - 11) <
+        std::abs(all.passes[chosen].points[0].position.y() - l.centre.y() - 11))
+      chosen = p;
+  // Its lines: from the rapid down to its start through its last cut, then
+  // up to the clearance.
+  const ToolpathPass& pass = all.passes[chosen];
+  std::string single = "G21 G90 G17\n";
+  char rapid[96];
+  std::snprintf(rapid, sizeof rapid, "G0 X%.4f Y%.4f Z34.6326\nG0 Z%.4f\n", pass.points[0].position.x(),
+                pass.points[0].position.y(), pass.points[0].position.z());
+  single += rapid;
+  for (int k = pass.points[1].line; k <= pass.points.back().line; ++k) single += lines[std::size_t(k - 1)] + "\n";
+  single += "G0 Z34.6326\nM30\n";
+  const std::string program = l.dir + "/single.nc";
+  test::write_text(program, single);
+  const Toolpath original = parse_gcode(single, "single.nc");
+  REQUIRE(original.passes.size() == 1);
+  REQUIRE(original.passes[0].points.size() == pass.points.size());
+
+  // Two rounds are not enough: exit 3, nothing written, the reason given.
+  const std::string refused = l.dir + "/refused.nc";
+  const auto r3 = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", program, "--tool",
+                              l.tool, "--out", refused, "--clip-back", "2"});
+  INFO(r3.out << r3.err);
+  CHECK(r3.status == 3);
+  CHECK(r3.err.find("after 2 clip-back rounds") != std::string::npos);
+  CHECK(!fs::exists(refused));
+  CHECK(!fs::exists(l.dir + "/refused.json"));
+
+  // The default rounds rescue it.
+  const std::string out = l.dir + "/rescued.nc";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", program, "--tool",
+                             l.tool, "--out", out});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const json record = json::parse(slurp(l.dir + "/rescued.json"));
+  const int rounds = record["clip_back"]["rounds"].get<int>();
+  CHECK(rounds > 2);
+  CHECK(rounds <= 8);
+  CHECK(!record["clip_back"]["points"].empty());
+  for (const json& p : record["clip_back"]["points"]) {
+    const double requested = p["requested"].get<double>(), applied = p["applied"].get<double>();
+    CHECK(std::abs(applied - requested / std::pow(2.0, p["rounds"].get<int>())) < 1e-12);
+  }
+  CHECK(record["zmap_check"]["safe"] == true);
+  // Oracle: z-maps the test makes of the original pass and of the program
+  // written, at 0.05 mm; within 2.5 mm of the pass and where the original's
+  // machined surface is flatter than n_z = 0.3 (central differences), the
+  // written one may lie below it by at most the largest offset written over
+  // n_z, plus 1 um and the rounding of 4 decimals.
+  const Toolpath written = parse_gcode(slurp(out), "rescued.nc");
+  const double largest = record["largest_offset"].get<double>();
+  Eigen::AlignedBox2d box;
+  for (const ToolpathPoint& t : original.passes[0].points) box.extend(t.position.head<2>());
+  box.min().array() -= 4;
+  box.max().array() += 4;
+  const Cutter ball("ball", 3, 3);
+  ZMap before(box, 0.05), after(box, 0.05);
+  before.cut(ball, moves_from_toolpath(original));
+  after.cut(ball, moves_from_toolpath(written));
+  const std::vector<ZMapMove> moves = moves_from_toolpath(original);
+  double worst = -1;
+  std::size_t judged = 0;
+  for (int j = 1; j + 1 < after.ny(); ++j)
+    for (int i = 1; i + 1 < after.nx(); ++i) {
+      const double h0 = before.node_height(i, j), h = after.node_height(i, j);
+      const double xm = before.node_height(i - 1, j), xp = before.node_height(i + 1, j);
+      const double ym = before.node_height(i, j - 1), yp = before.node_height(i, j + 1);
+      if (!std::isfinite(h0) || !std::isfinite(h) || !std::isfinite(xm + xp + ym + yp)) continue;
+      const Eigen::Vector2d at(after.x(i), after.y(j));
+      double near = 1e9;
+      for (const ZMapMove& m : moves) {
+        const Eigen::Vector2d a = m.from.head<2>(), b = m.to.head<2>();
+        const double t = std::clamp((at - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-30), 0.0, 1.0);
+        near = std::min(near, (a + t * (b - a) - at).norm());
+      }
+      if (near > 2.5) continue;
+      const double sx = (xp - xm) / 0.1, sy = (yp - ym) / 0.1;
+      const double nz = 1 / std::sqrt(1 + sx * sx + sy * sy);
+      if (nz < 0.3) continue;
+      ++judged;
+      worst = std::max(worst, (h0 - h) - (largest / nz + 1e-3 + std::sqrt(3.0) * 0.5e-4));
+    }
+  MESSAGE("single pass: " << rounds << " clip-back rounds, " << record["clip_back"]["points"].size()
+                          << " tips reduced, largest offset " << largest * 1000 << " um; oracle: " << judged
+                          << " nodes, worst excess " << worst * 1000 << " um");
+  CHECK(judged > 1000);
+  CHECK(worst <= 0);
 }
