@@ -1,6 +1,7 @@
 // furrow compensate PART --comparison C.json --toolpath PATH.nc --tool TOOL.json --out COMP.nc
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
@@ -12,6 +13,7 @@
 #include "io/machining/tool_file.hpp"
 #include "io/machining/toolpath_file.hpp"
 #include "io/part_file.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
 #include "stage/compensate_stage.hpp"
@@ -39,17 +41,25 @@ int run_compensate(Args& args) {
   const std::string toolpath_path = args.required_option("toolpath");
   const std::string tool_path = args.required_option("tool");
   const std::string out_path = args.required_option("out");
+  const std::optional<std::string> prediction_path = args.option("prediction");
   CompensateOptions options;
   read_option_flags(args, compensate_option_table(), options);
   ToolpathReadOptions read;
   read.units = args.option_or("units", "mm");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  auto is_apt = [](const std::string& ext) { return ext == ".cl" || ext == ".apt" || ext == ".cls"; };
   const std::string ext = lower_extension(toolpath_path);
-  if (ext == ".csv" || ext == ".txt" || ext == ".cl" || ext == ".apt" || ext == ".cls")
-    args.fail("--toolpath " + toolpath_path + ": compensate writes G-code back; give the G-code program");
-  if (lower_extension(out_path) == ".json")
-    args.fail("--out " + out_path + ": expected a G-code file name (its record is written beside it as .json)");
+  if (ext == ".csv" || ext == ".txt")
+    args.fail("--toolpath " + toolpath_path +
+              ": compensate writes the program back; give the G-code program or the APT CL file, not a CSV path");
+  const ProgramFormat format = is_apt(ext) ? ProgramFormat::apt : ProgramFormat::gcode;
+  const std::string out_ext = lower_extension(out_path);
+  if (out_ext == ".json")
+    args.fail("--out " + out_path + ": expected a program file name (its record is written beside it as .json)");
+  if (is_apt(out_ext) != (format == ProgramFormat::apt))
+    args.fail("--out " + out_path + ": the compensated program is written in the format it was read in (" +
+              (format == ProgramFormat::apt ? "APT CL: .apt, .cl or .cls" : "G-code: not .apt, .cl or .cls") + ")");
   if (lower_extension(comparison_path) != ".json")
     args.fail("--comparison " + comparison_path + ": expected a comparison (.json)");
   const std::string record = record_path(out_path);
@@ -58,26 +68,35 @@ int run_compensate(Args& args) {
   outputs.add_input(comparison_path, "comparison");
   outputs.add_input(toolpath_path, "tool path");
   outputs.add_input(tool_path, "tool");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out_path);
   outputs.will_write(record);
 
   const Part part = read_part(part_path);
   const ComparisonDocument comparison = read_comparison(comparison_path);
+  std::optional<Prediction> prediction;
+  if (prediction_path) prediction = read_prediction(*prediction_path);
   const std::string program = json_fields::read_text(toolpath_path);
   const Toolpath path = read_toolpath(toolpath_path, read);
   const PathTools tools = tools_for_path(path, read_tool_file(tool_path), tool_path, std::nullopt, "");
   const CompensatedProgram done = naming_inputs(part_path + " with " + toolpath_path, [&] {
-    return compensate_stage(part, tools, program, read, comparison, options,
-                            {part_path, comparison_path, toolpath_path, out_path});
+    return compensate_stage(part, tools, program, format, read, comparison, options,
+                            {part_path, comparison_path, toolpath_path, out_path, prediction_path.value_or("")},
+                            prediction ? &*prediction : nullptr);
   });
   std::size_t fitted = 0;
   for (const auto& face : done.field.field.faces) fitted += face && face->fitted();
   std::cout << "error field: " << done.field.samples << " points"
-            << (done.field.prediction_removed ? " (prediction removed)" : " (no prediction: deviations fitted as they are)")
+            << (done.field.prediction_given     ? " (the prediction given removed)"
+                : done.field.prediction_removed ? " (prediction removed)"
+                                                : " (no prediction: deviations fitted as they are)")
             << ", " << fitted << " of " << part.faces.size() << " faces fitted\n";
   std::cout << "moved " << done.offset.moved << " tips, largest offset " << um(done.offset.largest_offset) << "; "
             << done.offset.clipped.size() << " clipped at " << um(options.max_offset) << ", "
             << done.offset.gouge_clipped.size() << " cut back to avoid a local gouge\n";
+  if (done.clip_back_rounds > 0)
+    std::cout << "z-map check: " << done.clip_back.size() << " tips clipped back in " << done.clip_back_rounds
+              << " round" << (done.clip_back_rounds == 1 ? "" : "s") << " (of at most " << options.clip_back << ")\n";
   std::cout << "program: " << done.program.lines_moved << " lines moved (" << done.program.words_rewritten
             << " words rewritten, " << done.program.words_added << " added, " << done.program.arcs_split
             << " arcs split into lines)\n";
@@ -85,10 +104,11 @@ int run_compensate(Args& args) {
   if (!check.safe()) {
     char buf[240];
     std::snprintf(buf, sizeof buf,
-                  "furrow compensate: nothing written: the compensated program would cut %.4f mm deeper than its "
-                  "offset allows at (%.3f, %.3f, %.3f), line %d (%zu z-map nodes at %.3f mm)\n",
-                  check.worst_excess, check.worst.x(), check.worst.y(), check.worst.z(), check.worst_line,
-                  check.deeper, check.resolution);
+                  "furrow compensate: nothing written: after %d clip-back round%s the compensated program would "
+                  "still cut %.4f mm deeper than its offset allows at (%.3f, %.3f, %.3f), line %d (%zu z-map nodes "
+                  "at %.3f mm)\n",
+                  done.clip_back_rounds, done.clip_back_rounds == 1 ? "" : "s", check.worst_excess, check.worst.x(),
+                  check.worst.y(), check.worst.z(), check.worst_line, check.deeper, check.resolution);
     std::cerr << buf;
     return kExitInternal;
   }
@@ -104,29 +124,39 @@ std::string compensate_options_help() { return option_help_lines(describe(compen
 }  // namespace
 
 const Command kCompensateCommand = {
-    "compensate", "a G-code program moved by the measured error field of the part it cut",
-    "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc\n"
-    "                         --tool TOOL.json --out COMP.nc [--gain G] [--max-offset MM]\n"
-    "                         [--smoothing MM|auto] [--units mm|inch]\n"
+    "compensate", "a G-code or APT CL program moved by the measured error field of the part it cut",
+    "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc|PATH.apt\n"
+    "                         --tool TOOL.json --out COMP.nc|COMP.apt [--gain G] [--max-offset MM]\n"
+    "                         [--smoothing MM|auto] [--clip-back N] [--prediction P.json]\n"
+    "                         [--units mm|inch]\n"
     "\n"
     "Fits the systematic error of a measured part (the comparison's residuals\n"
     "against its prediction, or its deviations without one) as a smooth field per\n"
-    "face, moves every tool tip of the G-code program that cut it by -gain x the\n"
-    "field along the surface normal, and writes the program again: only the X Y Z\n"
-    "words of moved lines change; comments, feeds, spindle, tool changes, rapids,\n"
-    "work offsets and line numbers are kept, and a moved arc becomes G1 segments\n"
+    "face, moves every tool tip of the program that cut it (G-code, or APT CL\n"
+    "data: .apt, .cl, .cls) by -gain x the field along the surface normal, and\n"
+    "writes the program again in its own format: only the coordinates of moved\n"
+    "lines change; comments, feeds, spindle, tool changes, rapids, work offsets\n"
+    "and line numbers are kept, and a moved arc becomes straight segments\n"
     "(docs/compensation.md \"Writing the program\"). COMP.json, written beside\n"
-    "COMP.nc, holds the field per face, the clipped moves and the z-map check.\n"
-    "The written program is checked with a z-map against the original: if it\n"
-    "would cut deeper than its offsets allow, nothing is written and the exit\n"
-    "status is 3.\n"
+    "it, holds the field per face, the clipped moves and the z-map check.\n"
+    "The written program is checked with a z-map against the original; moves\n"
+    "that cut deeper than their offsets allow have their offsets halved and\n"
+    "the check runs again (--clip-back rounds); if it still fails, nothing is\n"
+    "written and the exit status is 3.\n"
     "\n"
     "  --comparison FILE     comparison.json of furrow compare for PART (required)\n"
-    "  --toolpath FILE       the G-code program the part was cut with (required)\n"
+    "  --toolpath FILE       the G-code program or APT CL file the part was cut\n"
+    "                        with (required)\n"
     "  --tool FILE           its tool JSON (required)\n"
     "  --out FILE            compensated program to write (required); its record\n"
     "                        goes beside it with the extension .json\n"
-    "  --units U             units of G-code before G20/G21 (default mm)\n"
+    "  --prediction FILE     prediction.json of furrow predict for this program:\n"
+    "                        its error at each measured point (the path's own\n"
+    "                        furrows and cusps) is taken off the deviation\n"
+    "                        before the fit, instead of the comparison's own\n"
+    "                        prediction (if it has one)\n"
+    "  --units U             units of G-code before G20/G21, of APT before UNITS/\n"
+    "                        (default mm)\n"
     "\n"
     "Compensation options (docs/options.md):\n",
     run_compensate, compensate_options_help};

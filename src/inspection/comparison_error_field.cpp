@@ -5,9 +5,11 @@
 namespace furrow {
 
 ComparisonErrorField fit_error_field(const ComparisonDocument& comparison, const Part& part,
-                                     const ErrorFieldOptions& options, const std::string& where) {
+                                     const ErrorFieldOptions& options, const std::string& where,
+                                     const Prediction* prediction) {
   ComparisonErrorField out;
-  out.prediction_removed = comparison.prediction.has_value();
+  out.prediction_given = prediction != nullptr;
+  out.prediction_removed = out.prediction_given || comparison.prediction.has_value();
   std::vector<std::vector<FieldSample>> by_face(part.faces.size());
   for (std::size_t i = 0; i < comparison.points.size(); ++i) {
     const ComparisonDocument::Point& p = comparison.points[i];
@@ -21,7 +23,16 @@ ComparisonErrorField fit_error_field(const ComparisonDocument& comparison, const
       throw InputError(name + ": face '" + p.face + "' (index " + std::to_string(p.face_index) +
                        ") is not a face of the part: the comparison is of another part");
     double value = p.deviation;
-    if (out.prediction_removed) {
+    if (prediction) {
+      const PredictedError e = prediction->find_face(p.face)
+                                   ? prediction->predicted_error_at(p.face, p.uv.x(), p.uv.y())
+                                   : PredictedError{};
+      if (!e.reached()) {
+        ++out.not_predicted;
+        continue;
+      }
+      value = p.deviation - e.value;
+    } else if (out.prediction_removed) {
       if (!p.prediction || !p.prediction->compared) {
         ++out.not_predicted;
         continue;

@@ -14,6 +14,17 @@
 // Points that are not evaluated (blunders, beyond an edge, no foot point)
 // give none either.
 //
+// A prediction given apart (`furrow compensate --prediction`: a comparison
+// made without one, or a prediction of the path as it is now) takes the
+// place of the comparison's: the sample is the point's deviation minus the
+// prediction's error at its foot (Prediction::predicted_error_at, the
+// error map's cell means interpolated: the furrows and cusps the path
+// leaves there), and a point whose face the prediction lacks or whose cell
+// it did not reach gives no sample. Unlike `furrow compare --prediction`
+// the placement is not re-fitted to the predicted surface first (the
+// deviations are taken as the comparison registered them). The caller
+// checks the prediction against the part (check_prediction_against_part).
+//
 // Why here and not in machining/compensation: the comparison is an
 // inspection document and machining sits below inspection
 // (docs/architecture.md "Module order"); the fit itself is machining's
@@ -29,18 +40,22 @@
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "machining/compensation/error_field.hpp"
+#include "machining/prediction/prediction.hpp"
 
 namespace furrow {
 
 struct ComparisonErrorField {
   ErrorField field;              // one per face of the part
   bool prediction_removed = false;  // samples are residuals against the prediction
+  bool prediction_given = false;    // ... against the one given apart, not the comparison's
   std::size_t samples = 0;          // points used
   std::size_t not_evaluated = 0;    // points skipped: not evaluated
   std::size_t not_predicted = 0;    // evaluated, but the prediction did not reach them
 };
 
+// `prediction` (may be null): one given apart, see above.
 ComparisonErrorField fit_error_field(const ComparisonDocument& comparison, const Part& part,
-                                     const ErrorFieldOptions& options, const std::string& where);
+                                     const ErrorFieldOptions& options, const std::string& where,
+                                     const Prediction* prediction = nullptr);
 
 }  // namespace furrow

@@ -42,6 +42,19 @@ OptionTable<CompensateOptions> make_table() {
       [](const std::optional<double>& v) { return v ? shortest(*v) : std::string("auto"); }, {"auto"});
   smoothing.example = "5";
   t.push_back(smoothing);
+  OptionSpec<O> clip_back = integer_option<O>(
+      "clip_back", "N",
+      "rounds of clip-back, in [0, 30]: each halves the offsets of the moves the z-map check finds cutting deeper "
+      "than their offset; still unsafe after N rounds: nothing written, exit 3",
+      [](auto& o) -> auto& { return o.clip_back; }, 0);
+  clip_back.schema["maximum"] = 30;
+  const auto read_clip = clip_back.read;
+  clip_back.read = [read_clip](const nlohmann::json& v, const std::string& where, O& o) {
+    read_clip(v, where, o);
+    if (o.clip_back > 30) throw InputError(where + ": must be in [0, 30], got " + std::to_string(o.clip_back));
+  };
+  clip_back.example = "4";
+  t.push_back(clip_back);
   return t;
 }
 

@@ -11,6 +11,10 @@ struct CompensateOptions {
   double gain = 1;          // share of the measured error taken off, in (0, 2]
   double max_offset = 0.2;  // [mm] largest offset applied, > 0
   std::optional<double> smoothing;  // [mm] fixed smoothing length; unset: GCV
+  // Rounds of the clip-back (docs/compensation.md "Safety"): each halves
+  // the offsets of the moves the z-map check blames; after this many the
+  // program is refused (exit 3). 0: refused at the first failed check.
+  int clip_back = 8;
 };
 
 const OptionTable<CompensateOptions>& compensate_option_table();

@@ -1,64 +1,75 @@
 #pragma once
 // The compensation stage (`furrow compensate`): a measured part's error
-// field taken off the G-code program that cut it (docs/compensation.md).
+// field taken off the program (G-code or APT CL) that cut it
+// (docs/compensation.md).
 // One function for the command and for later callers (a job's stage).
 //
 // Steps: the error field from the comparison (with the prediction removed
 // when the comparison has one), the program's tips located on the part and
 // offset by -gain x field (clipped to max_offset, cut back where the moved
 // surface would gouge locally), the program written again with only those
-// words changed (io/machining/gcode_rewrite.hpp), and the written program
-// read back and checked with a z-map against the original
-// (docs/compensation.md "Writing the program": the z-map check). `safe`
-// false means the caller must write nothing.
+// values changed (io/machining/gcode_rewrite.hpp, apt_rewrite.hpp), and the
+// written program read back and checked with a z-map against the original
+// (machining/compensation/zmap_check.hpp). Where the check fails, the
+// clip-back: the offsets of both ends of every move it blames are halved
+// (recomputed exactly, machining/compensation/path_offset.hpp
+// reduce_offset), the program written and checked again, at most
+// options.clip_back rounds (docs/compensation.md "Safety"). `safe` false
+// at the end means the caller must write nothing.
 #include <string>
 #include <vector>
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "inspection/comparison_error_field.hpp"
-#include "io/machining/gcode_rewrite.hpp"
+#include "io/machining/program_rewrite.hpp"
 #include "machining/compensation/path_offset.hpp"
+#include "machining/compensation/zmap_check.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
 
 namespace furrow {
 
-// The written program cut against the original, node by node of a z-map
-// over where tips moved: a node the compensated program cuts lower than the
-// original by more than the offset of the move that cuts it (along the
-// surface's normal, so divided by its n_z) plus `tolerance` is a gouge the
-// compensation would add. Nodes at the rim of the swept region or where
-// the machined surface is steeper than n_z = 0.2 are not judged (counted).
-struct CompensationGougeCheck {
-  double resolution = 0;        // z-map node spacing [mm]
-  double tolerance = 0;         // allowed beyond the offset [mm]
-  std::size_t nodes = 0;        // nodes both programs cut
-  std::size_t not_judged = 0;   // of those: at the rim or too steep
-  std::size_t deeper = 0;       // nodes beyond the allowance
-  double worst_excess = 0;      // [mm] the largest excess (0 when none)
-  Eigen::Vector3d worst = Eigen::Vector3d::Zero();  // where [mm]
-  int worst_line = 0;           // line of the compensated program cutting it there
-  bool safe() const { return deeper == 0; }
+// A point whose offset the clip-back reduced: the offset offset_path
+// applied and the one written, after `rounds` halvings.
+struct ClipBackPoint {
+  std::size_t pass = 0, point = 0;
+  int line = 0;
+  double requested = 0;  // [mm] before the clip-back
+  double applied = 0;    // [mm] written
+  int rounds = 0;
 };
+
+// The program formats compensation writes back.
+enum class ProgramFormat { gcode, apt };
 
 struct CompensatedProgram {
   ComparisonErrorField field;
-  PathOffset offset;
-  GcodeRewrite program;
-  CompensationGougeCheck check;
-  std::string json;  // COMP.json's text
+  PathOffset offset;          // as written (after the clip-back)
+  ProgramRewrite program;     // the last program written (the one to publish when check.safe())
+  CompensationGougeCheck check;  // of that program
+  int clip_back_rounds = 0;   // rounds the clip-back ran
+  std::vector<ClipBackPoint> clip_back;  // points whose offsets it reduced, in path order
+  std::string json;           // COMP.json's text
 };
 
 struct CompensationSources {
   std::string part, comparison, toolpath, out;
+  std::string prediction;  // the prediction given apart, empty when none
 };
 
-// `program_text` is the G-code of `tools`' path as read with `read`. Throws
-// InputError for a program that changes tools, a comparison of another
-// part, or options out of range (naming them).
+// `program_text` is the program (G-code or APT CL, `format`) of `tools`'
+// path as read with `read`. Throws InputError for a program that changes
+// tools, a comparison of another part, or options out of range (naming
+// them). When the z-map check still fails after options.clip_back rounds,
+// the result's check is not safe: the caller writes nothing (exit 3).
+// `prediction` (may be null): a prediction given apart, whose error at each
+// measured point is taken off its deviation before the fit instead of the
+// comparison's residual (inspection/comparison_error_field.hpp); checked
+// against the part here.
 CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, const std::string& program_text,
-                                    const ToolpathReadOptions& read, const ComparisonDocument& comparison,
-                                    const CompensateOptions& options, const CompensationSources& names);
+                                    ProgramFormat format, const ToolpathReadOptions& read,
+                                    const ComparisonDocument& comparison, const CompensateOptions& options,
+                                    const CompensationSources& names, const Prediction* prediction = nullptr);
 
 }  // namespace furrow

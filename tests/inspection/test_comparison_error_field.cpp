@@ -66,7 +66,64 @@ ComparisonDocument planted_comparison(bool with_prediction) {
   return doc;
 }
 
+// The prediction of the path as `furrow predict` writes it, given apart: the
+// scallops as cell means on cells 0.05 mm wide across x (two along y), every
+// cell reached except those below x = 10 mm, which the path did not cut.
+Prediction scallop_prediction() {
+  FaceGridRecord f;
+  f.name = "top";
+  f.cells_u = 2000;
+  f.cells_v = 2;
+  const std::size_t n = 4000;
+  f.status.resize(n);
+  f.mean.resize(n);
+  f.max_undercut.resize(n);
+  f.max_overcut.resize(n);
+  for (int cj = 0; cj < f.cells_v; ++cj)
+    for (int ci = 0; ci < f.cells_u; ++ci) {
+      const std::size_t k = std::size_t(cj) * f.cells_u + ci;
+      const double x = 100 * (ci + 0.5) / f.cells_u;
+      const bool reached = ci >= 200;
+      f.status[k] = reached ? ErrorCellStatus::reached : ErrorCellStatus::not_reached;
+      if (!reached) continue;
+      f.mean[k] = f.max_undercut[k] = f.max_overcut[k] = scallop(x);
+    }
+  Prediction prediction;
+  prediction.faces.push_back(f);
+  return prediction;
+}
+
 }  // namespace
+
+TEST_CASE("comparison error field: a prediction given apart is taken off the deviations before the fit") {
+  const Part part = two_plates();
+  const ComparisonDocument doc = planted_comparison(false);
+  const Prediction prediction = scallop_prediction();
+  const ComparisonErrorField fit = fit_error_field(doc, part, {}, "comparison.json", &prediction);
+  CHECK(fit.prediction_removed);
+  CHECK(fit.prediction_given);
+  // Points below x = 10 mm lie on cells the prediction did not reach.
+  std::size_t uncut = 0;
+  for (const auto& p : doc.points) uncut += p.evaluated && p.uv.x() < 0.1;
+  CHECK(uncut > 10);
+  CHECK(fit.not_predicted == uncut);
+  CHECK(fit.samples == 270 - uncut);
+  // Oracle: the planted field, as in the test above (where the comparison
+  // held the residuals), over the plate from 15 mm (5 mm beyond the samples'
+  // edge at 10 mm) to its rim; the 5 um scallop mean is gone.
+  double sum = 0, sum2 = 0, worst = 0;
+  int count = 0;
+  for (double x = 15; x <= 95; x += 2.5)
+    for (double y = 5; y <= 55; y += 2.5) {
+      const double e = fit.field.value(0, x / 100, y / 60) - planted(x, y);
+      sum += e, sum2 += e * e, worst = std::max(worst, std::abs(e)), ++count;
+    }
+  MESSAGE("mean " << 1000 * sum / count << " um, RMS " << 1000 * std::sqrt(sum2 / count) << " um, worst "
+                  << 1000 * worst << " um");
+  CHECK(std::abs(sum / count) < 0.0005);
+  CHECK(std::sqrt(sum2 / count) < 0.002);
+  CHECK(worst < 0.006);
+}
 
 TEST_CASE("comparison error field: the planted machine error is recovered once the prediction is removed") {
   const Part part = two_plates();

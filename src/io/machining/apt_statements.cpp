@@ -1,6 +1,7 @@
 #include "io/machining/apt_statements.hpp"
 
 #include <cctype>
+#include <vector>
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
@@ -73,16 +74,46 @@ std::vector<AptStatement> split_apt_statements(const std::string& text, const st
   std::vector<AptStatement> statements;
   const std::string body = strip_bom(text);
   std::string pending;  // the statement so far, over continuation lines
+  struct Place {
+    int line;
+    std::size_t column;
+  };
+  std::vector<Place> places;  // where each byte of `pending` is in the file
   int pending_line = 0;
   int number = 0;
   std::size_t begin = 0;
   auto finish = [&](const std::string& statement, int line) {
     AptStatement s;
     s.line = line;
+    s.last_line = number;
     const auto slash = statement.find('/');
     s.has_slash = slash != std::string::npos;
     s.major = normalise_major(statement.substr(0, slash));
-    if (s.has_slash) s.params = split_apt_params(upper(statement.substr(slash + 1)), name, line);
+    if (s.has_slash) {
+      s.params = split_apt_params(upper(statement.substr(slash + 1)), name, line);
+      // The same cut as split_apt_params, on positions (it has checked the
+      // parentheses): each parameter's trimmed bytes.
+      std::size_t from = slash + 1;
+      int depth = 0;
+      auto span = [&](std::size_t a, std::size_t b) {
+        while (a < b && std::isspace(static_cast<unsigned char>(statement[a]))) ++a;
+        while (b > a && std::isspace(static_cast<unsigned char>(statement[b - 1]))) --b;
+        AptSpan out;
+        if (a < b && places[a].line == places[b - 1].line &&
+            places[b - 1].column - places[a].column == b - 1 - a)
+          out = {places[a].line, places[a].column, places[b - 1].column + 1};
+        s.spans.push_back(out);
+      };
+      for (std::size_t k = from; k < statement.size(); ++k) {
+        if (statement[k] == '(') ++depth;
+        if (statement[k] == ')') --depth;
+        if (statement[k] == ',' && depth == 0) {
+          span(from, k);
+          from = k + 1;
+        }
+      }
+      span(from, statement.size());
+    }
     statements.push_back(std::move(s));
   };
   while (begin < body.size()) {
@@ -95,7 +126,7 @@ std::vector<AptStatement> split_apt_statements(const std::string& text, const st
     std::string major, rest;
     if (pending.empty() && is_text_statement(line, major, rest)) {
       AptStatement s;
-      s.line = number;
+      s.line = s.last_line = number;
       s.major = major;
       s.text = rest;
       statements.push_back(std::move(s));
@@ -108,10 +139,13 @@ std::vector<AptStatement> split_apt_statements(const std::string& text, const st
     if (continues) code.pop_back();
     if (pending.empty() && code.empty() && !continues) continue;
     if (pending.empty() && pending_line == 0) pending_line = number;
+    const std::size_t lead = code.empty() ? 0 : line.find_first_not_of(" \t\r\n");
+    for (std::size_t k = 0; k < code.size(); ++k) places.push_back({number, lead + k});
     pending += code;
     if (continues) continue;
     finish(pending, pending_line);
     pending.clear();
+    places.clear();
     pending_line = 0;
   }
   if (pending_line != 0)

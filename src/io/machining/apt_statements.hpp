@@ -15,17 +15,29 @@
 //
 // Failure: InputError "name:line: what" for a `$` continuation on the last
 // line and for unbalanced parentheses.
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace furrow {
 
+// Where a parameter is written: its bytes [begin, end) in line `line`
+// (1-based, counted without a byte-order mark and without the line's
+// ending), trimmed as the parameter is. `line` 0: the parameter is empty or
+// runs over a continuation, so it has no single place.
+struct AptSpan {
+  int line = 0;
+  std::size_t begin = 0, end = 0;
+};
+
 struct AptStatement {
   int line = 0;                     // first line of the statement (1-based)
+  int last_line = 0;                // last line (after `$` continuations)
   std::string major;                // "GOTO", "TLON,GOFWD", "PPRINT"; may be empty for a blank statement
   std::vector<std::string> params;  // after '/', upper case; text statements: none
   std::string text;                 // text statements: the words after the major word, as written
   bool has_slash = false;           // whether the statement has a '/'
+  std::vector<AptSpan> spans;       // where each of params is written (writers that rewrite values)
 };
 
 std::vector<AptStatement> split_apt_statements(const std::string& text, const std::string& name);

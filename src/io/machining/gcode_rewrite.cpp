@@ -89,9 +89,13 @@ struct Edit {
   std::string text;
 };
 
-// Edits sorted by position, none overlapping; an insertion has begin == end.
+// Edits sorted by position, none overlapping; an insertion has begin == end
+// and goes before a word replaced at the same position (a Y added in front
+// of a rewritten Z: "G1 Z0." becoming "G1 Y10.09 Z-0.05").
 std::string apply_edits(const std::string& line, std::vector<Edit> edits) {
-  std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
+  std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) {
+    return a.begin < b.begin || (a.begin == b.begin && a.end == a.begin && b.end != b.begin);
+  });
   std::string out;
   std::size_t at = 0;
   for (const Edit& e : edits) {
@@ -338,6 +342,7 @@ GcodeRewrite rewrite_gcode(const std::string& text, const std::string& name, con
   }
   GcodeRewrite result;
   result.decimals = decimals < 3 ? 4 : decimals;
+  for (const GcodeMotionBlock& b : blocks) result.unit_mm = std::max(result.unit_mm, b.scale);
 
   Rewriter rewriter(name, result.decimals);
   std::size_t next_block = 0;

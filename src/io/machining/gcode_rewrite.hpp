@@ -35,19 +35,14 @@
 #include <string>
 #include <vector>
 
+#include "io/machining/program_rewrite.hpp"
 #include "io/machining/toolpath_file.hpp"
 
 namespace furrow {
 
-struct GcodeRewrite {
-  std::string text;             // the program written again
-  int decimals = 4;             // of the written words
-  std::size_t lines_moved = 0;  // lines whose X Y Z words changed or were added
-  std::size_t words_rewritten = 0;
-  std::size_t words_added = 0;
-  std::size_t arcs_split = 0;      // G2/G3 lines written as G1 segments
-  std::size_t lines_inserted = 0;  // segment lines after the first of each split arc
-};
+// The record of what was changed (program_rewrite.hpp); lines_removed
+// stays 0: a G-code line is never dropped.
+using GcodeRewrite = ProgramRewrite;
 
 // Throws InputError naming `name` when `tips` does not have the shape of the
 // passes parse_gcode(text, name, options) reads, or when a moved position

@@ -63,11 +63,13 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
     PathOffset& out = per_pass[p];
     out.tips.resize(1);
     out.offsets.resize(1);
+    out.tilts.resize(1);
     const Cutter& cutter = tools.cutters[std::size_t(tools.of_pass[p])];
     for (std::size_t k = 0; k < geometry.passes[p].size(); ++k) {
       const PathPoint& pt = geometry.passes[p][k];
       out.tips[0].push_back(pt.tip);
       out.offsets[0].push_back(0.0);
+      out.tilts[0].push_back(Eigen::Vector3d::Zero());
       if (!pt.contact.valid) {
         ++out.no_contact;
         continue;
@@ -116,6 +118,7 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
       }
       out.tips[0][k] = pt.tip + (after.tip - before.tip);
       out.offsets[0][k] = record.applied;
+      out.tilts[0][k] = normal - at.normal;
       out.largest_offset = std::max(out.largest_offset, std::abs(record.applied));
       ++out.moved;
     }
@@ -124,6 +127,7 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
   for (PathOffset& one : per_pass) {
     out.tips.push_back(std::move(one.tips[0]));
     out.offsets.push_back(std::move(one.offsets[0]));
+    out.tilts.push_back(std::move(one.tilts[0]));
     out.clipped.insert(out.clipped.end(), one.clipped.begin(), one.clipped.end());
     out.gouge_clipped.insert(out.gouge_clipped.end(), one.gouge_clipped.begin(), one.gouge_clipped.end());
     out.unreachable.insert(out.unreachable.end(), one.unreachable.begin(), one.unreachable.end());
@@ -131,6 +135,28 @@ PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeome
     out.largest_offset = std::max(out.largest_offset, one.largest_offset);
   }
   return out;
+}
+
+void reduce_offset(PathOffset& offset, const Cutter& cutter, const PathGeometry& geometry, std::size_t pass,
+                   std::size_t point, double factor, const CutterLocationOptions& location) {
+  const PathPoint& pt = geometry.passes.at(pass).at(point);
+  double& d = offset.offsets.at(pass).at(point);
+  Eigen::Vector3d& tilt = offset.tilts.at(pass).at(point);
+  d *= factor;
+  tilt *= factor;
+  const SurfacePoint& at = pt.contact.at;
+  const CutterLocation before = cutter_location(cutter, at.point, at.normal, location);
+  const CutterLocation after = cutter_location(cutter, at.point + d * at.normal, at.normal + tilt, location);
+  if (before.reachable && after.reachable) {
+    offset.tips[pass][point] = pt.tip + (after.tip - before.tip);
+  } else {  // not for a point offset_path moved; kept safe all the same
+    offset.tips[pass][point] = pt.tip;
+    d = 0;
+    tilt.setZero();
+  }
+  offset.largest_offset = 0;
+  for (const auto& one : offset.offsets)
+    for (double o : one) offset.largest_offset = std::max(offset.largest_offset, std::abs(o));
 }
 
 }  // namespace furrow

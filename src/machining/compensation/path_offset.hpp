@@ -74,6 +74,7 @@ struct OffsetPoint {
 struct PathOffset {
   std::vector<std::vector<Eigen::Vector3d>> tips;  // per pass and point, the new tips [mm]
   std::vector<std::vector<double>> offsets;        // applied d per point [mm] (0 where not moved)
+  std::vector<std::vector<Eigen::Vector3d>> tilts; // n' - n before normalising (0 where not tilted)
   std::vector<OffsetPoint> clipped;                // |requested| > max_offset
   std::vector<OffsetPoint> gouge_clipped;          // cut back to the largest clear offset
   std::vector<OffsetPoint> unreachable;            // tilted normal faces down: tip kept
@@ -88,5 +89,17 @@ struct PathOffset {
 // non-positive max_offset, naming the option.
 PathOffset offset_path(const Part& part, const PathTools& tools, const PathGeometry& geometry,
                        const ErrorField& field, const PathOffsetOptions& options = {});
+
+// Point `point` of pass `pass` moved again with its correction scaled by
+// `factor` in (0, 1): the applied offset d and the tilt of the normal both
+// times factor (the tip T + L(P + f d n, n + f t) - L(P, n), t the tilt
+// offset_path applied), as if the field there were f times smaller. What
+// the clip-back of docs/compensation.md ("Safety") does, round after round,
+// to the ends of a move the z-map check blames. Updates tips, offsets,
+// tilts and largest_offset. Precondition: the point was moved by
+// offset_path, `cutter` is its pass's. Throws std::out_of_range for a
+// point that is not in the path.
+void reduce_offset(PathOffset& offset, const Cutter& cutter, const PathGeometry& geometry, std::size_t pass,
+                   std::size_t point, double factor, const CutterLocationOptions& location = {});
 
 }  // namespace furrow

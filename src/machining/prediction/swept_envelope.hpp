@@ -86,6 +86,18 @@ class SweptEnvelope {
   // bound is above every node's height so far: cheaper than the row.
   double row_lower_bound(double y, double x0, double dx, int ka, int kb) const;
 
+  // A lower bound of z_env anywhere on the rows from y_lo to y_hi (any
+  // cutter): the lower tip plus the profile at the distance between that
+  // strip and the move's projection. One square root for the whole strip:
+  // the z-map skips a band of rows, or a row, where it is above every
+  // node's height so far before bounding it piece by piece (on a raster,
+  // the neighbouring passes' rows: most of them).
+  double strip_floor(double y_lo, double y_hi) const {
+    const double lo = std::min(from_.y(), to_.y()), hi = std::max(from_.y(), to_.y());
+    const double gap = hi < y_lo ? y_lo - hi : lo > y_hi ? lo - y_hi : 0.0;
+    return low_z_ + cutter_->height_at(std::min(gap, cutter_->radius()));
+  }
+
   // A lower bound of z_env over the rectangle `area` (any cutter): the lower
   // tip plus the profile at the distance between the rectangle and the
   // move's projection, as row_lower_bound for non-ball cutters. Lets a

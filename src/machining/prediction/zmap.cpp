@@ -81,7 +81,8 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
   if (first + moves.size() > std::size_t(std::numeric_limits<std::int32_t>::max()))
     throw InputError("z-map: too many moves (more than 2^31)");
   struct RowRange {
-    int lo, hi;
+    int lo, hi;    // rows of the move's shadow box
+    int blo, bhi;  // its blocks of kPiece columns (the first holding column 0)
   };
   std::vector<RowRange> rows;
   rows.reserve(moves.size());
@@ -92,8 +93,13 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
     shadow_.extend(box);
     lowest_tip_ = std::min({lowest_tip_, m.from.z(), m.to.z()});
     const double lo = std::ceil((box.min().y() - y0_) / cell_), hi = std::floor((box.max().y() - y0_) / cell_);
+    // One column more on each side than the box: a row's span, computed
+    // apart, may round across a node the box's own rounding leaves out.
+    const double il = std::ceil((box.min().x() - x0_) / cell_) - 1, ih = std::floor((box.max().x() - x0_) / cell_) + 1;
     rows.push_back({static_cast<int>(std::clamp(lo, 0.0, double(ny_))),
-                    static_cast<int>(std::clamp(hi, -1.0, double(ny_ - 1)))});
+                    static_cast<int>(std::clamp(hi, -1.0, double(ny_ - 1))),
+                    static_cast<int>(std::clamp(il, 0.0, double(nx_ - 1))) / kPiece,
+                    static_cast<int>(std::clamp(ih, 0.0, double(nx_ - 1))) / kPiece});
   }
   const int band = std::max(1, options_.band_rows);
   const int bands = (ny_ + band - 1) / band;
@@ -101,6 +107,13 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
 #pragma omp parallel
   {
     std::vector<double> buffer(nx_);
+    std::vector<double> piece_high;
+    // Per block of kPiece columns, the highest node of the band's rows so
+    // far (heights only fall, so a value computed earlier stays above), and
+    // the blocks a move changed, whose value is then computed again.
+    const int blocks = (nx_ + kPiece - 1) / kPiece;
+    std::vector<double> block_high(static_cast<std::size_t>(blocks));
+    std::vector<char> touched(static_cast<std::size_t>(blocks), 0);
     struct Visit {
       double distance;
       std::size_t move;
@@ -125,12 +138,31 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
       std::sort(order.begin(), order.end(), [](const Visit& a, const Visit& c) {
         return a.distance < c.distance || (a.distance == c.distance && a.move < c.move);
       });
+      auto block_top = [&](int b) {
+        double top = -kInf;
+        const int ia = b * kPiece, ib = std::min(nx_, ia + kPiece);
+        for (int j = j0; j <= j1; ++j) {
+          const double* h = heights_.data() + index(0, j);
+          for (int i = ia; i < ib; ++i) top = std::max(top, h[i]);
+        }
+        return top;
+      };
+      for (int b = 0; b < blocks; ++b) block_high[static_cast<std::size_t>(b)] = block_top(b);
       for (const Visit& v : order) {
         const std::size_t k = v.move;
         const RowRange& r = rows[k];
         const SweptEnvelope& env = envelopes_[first + k];
         const auto owner = static_cast<std::int32_t>(first + k);
-        for (int j = std::max(j0, r.lo); j <= std::min(j1, r.hi); ++j) {
+        const int ja = std::max(j0, r.lo), jb = std::min(j1, r.hi);
+        // The move leaves the band alone where its floor over these rows is
+        // above every node under its shadow box (the margin covers rounding
+        // in the bounds, a few ulps of the heights, far below it): the same
+        // nodes the rows' and pieces' bounds below would leave.
+        double band_high = -kInf;
+        for (int b = r.blo; b <= r.bhi; ++b) band_high = std::max(band_high, block_high[static_cast<std::size_t>(b)]);
+        if (env.strip_floor(y(ja), y(jb)) > band_high + kBoundMargin) continue;
+        bool changed = false;
+        for (int j = ja; j <= jb; ++j) {
           const double yj = y(j);
           double xl = 0, xh = 0;
           if (!env.row_span(yj, xl, xh)) continue;
@@ -140,23 +172,48 @@ void ZMap::cut(const Cutter& cutter, const std::vector<ZMapMove>& moves,
           const double xs = x(i0);
           double* h = heights_.data() + index(i0, j);
           std::int32_t* o = owners_.data() + index(i0, j);
-          for (int c0 = 0; c0 <= i1 - i0; c0 += kPiece) {
-            const int c1 = std::min(i1 - i0, c0 + kPiece - 1);
+          // The highest node of each piece, and of the row: a row whose
+          // floor is above all of it is left at once (the same nodes the
+          // pieces' bounds would leave, for one square root).
+          const int pieces = (i1 - i0) / kPiece + 1;
+          piece_high.resize(static_cast<std::size_t>(pieces));
+          double row_high = -kInf;
+          for (int p = 0; p < pieces; ++p) {
+            const int c0 = p * kPiece, c1 = std::min(i1 - i0, c0 + kPiece - 1);
             double highest = -kInf;
             for (int i = c0; i <= c1; ++i) highest = std::max(highest, h[i]);
-            // The margin covers rounding in the bound (a few ulps of the
-            // heights, far below it).
+            piece_high[static_cast<std::size_t>(p)] = highest;
+            row_high = std::max(row_high, highest);
+          }
+          // The margin covers rounding in the bounds (a few ulps of the
+          // heights, far below it).
+          if (env.strip_floor(yj, yj) > row_high + kBoundMargin) continue;
+          for (int c0 = 0; c0 <= i1 - i0; c0 += kPiece) {
+            const int c1 = std::min(i1 - i0, c0 + kPiece - 1);
+            const double highest = piece_high[static_cast<std::size_t>(c0 / kPiece)];
             if (env.row_lower_bound(yj, xs, cell_, c0, c1) > highest + kBoundMargin) continue;
             env.row(yj, xs, cell_, c0, c1 - c0 + 1, buffer.data());
+            bool lowered = false;
             for (int i = c0; i <= c1; ++i) {
               const double z = buffer[i - c0];
               if (z < h[i] || (z == h[i] && owner < o[i])) {
+                lowered = lowered || z < h[i];
                 h[i] = z;
                 o[i] = owner;
               }
             }
+            if (lowered) {
+              for (int b = (i0 + c0) / kPiece; b <= (i0 + c1) / kPiece; ++b) touched[static_cast<std::size_t>(b)] = 1;
+              changed = true;
+            }
           }
         }
+        if (changed)
+          for (int b = r.blo; b <= r.bhi; ++b)
+            if (touched[static_cast<std::size_t>(b)]) {
+              touched[static_cast<std::size_t>(b)] = 0;
+              block_high[static_cast<std::size_t>(b)] = block_top(b);
+            }
       }
       const std::size_t d = ++done;
       if (progress && omp_get_thread_num() == 0) progress(d, bands);
