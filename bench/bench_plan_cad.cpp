@@ -12,11 +12,14 @@
 // memory (only writing them to disk is left out). The faces the part stands
 // on (facing straight down at the lowest height) are left out, as a user
 // leaves them out of an inspection: no probe reaches them on the table.
-// Run twice: with the vertical stylus and with an indexable head (a PH10M
-// with 21 qualified tips). Prints per run the wall time of each stage, the
-// points allocated and placed, the regions covered and the peak resident
-// memory. Prints figures; it does not pass or fail.
-//   usage: bench_plan_cad [stylus|head]     (default: both)
+// Run three times: with the vertical stylus, with an indexable head (a PH10M
+// with 21 qualified tips), and with the same head and `--tips auto` (the
+// planner chooses among the head's 673 grid orientations, only A0B0
+// qualified: docs/cmm.md "Tips chosen by the planner"). Prints per run the
+// wall time of each stage, the points allocated and placed, the regions and
+// area covered, the tips chosen and the peak resident memory. Prints
+// figures; it does not pass or fail.
+//   usage: bench_plan_cad [stylus|head|auto] [fixed]    (default: all three)
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -129,7 +132,7 @@ const char* kHead = R"({
 
 // `fixed`: the border clearance for every region (--border given), as
 // before the contact rule of narrow regions (docs/cmm.md "Narrow regions").
-void run(const std::string& step, bool head, bool fixed) {
+void run(const std::string& step, bool head, bool fixed, bool automatic = false) {
   const auto t0 = std::chrono::steady_clock::now();
   Part part = import_cad(step).part;
   const std::size_t imported = part.faces.size();
@@ -148,6 +151,10 @@ void run(const std::string& step, bool head, bool fixed) {
   PlannerOptions options;
   options.part_name = "fixture";
   if (head) use_head(options, parse_probe_head(kHead, "head.json"));
+  if (automatic) {
+    options.head->qualified = {TipAngles{0, 0}};
+    options.tips = TipChoice::automatic;
+  }
   if (fixed) options.border = border_clearance(options);
   const auto t2 = std::chrono::steady_clock::now();
   const PlanStage stage = plan_stage(part, map, options, nullptr, "fixture", "regions.json", "");
@@ -155,7 +162,8 @@ void run(const std::string& step, bool head, bool fixed) {
   std::size_t bytes = 0;
   for (const FolderFile& f : stage.files) bytes += f.bytes.size();
   const PlanCoverage& c = stage.coverage;
-  std::printf("\n%s, %s, %d OpenMP threads\n", head ? "indexable head (21 tips)" : "vertical stylus",
+  std::printf("\n%s, %s, %d OpenMP threads\n",
+              automatic ? "indexable head, --tips auto (A0B0 qualified)" : head ? "indexable head (21 tips)" : "vertical stylus",
               fixed ? "fixed border clearance" : "contact rule in narrow regions", omp_get_max_threads());
   std::printf("  faces %zu imported, %zu planned (the table side left out), %zu regions\n", imported,
               part.faces.size(), map.regions.size());
@@ -182,6 +190,22 @@ void run(const std::string& step, bool head, bool fixed) {
   std::printf("  area covered %.0f of %.0f mm^2 (%.1f %%); regions skipped (no point admissible) %d; "
               "by the contact rule %d, of which covered %d; orientation warnings %d\n",
               covered_area, area, area > 0 ? 100 * covered_area / area : 0.0, skipped, narrow, narrow_covered, warnings);
+  if (head) {
+    int fresh = 0;
+    std::string names;
+    for (const PlanTip& tip : stage.result.plan.tips) {
+      fresh += !tip.qualified;
+      names += " " + tip_name(tip.angles) + (tip.qualified ? "" : "*");
+    }
+    std::printf("  tips used %zu (%d new, marked *):%s\n", stage.result.plan.tips.size(), fresh, names.c_str());
+    const TipChoiceSummary& tc = stage.result.tip_choice;
+    if (tc.automatic)
+      std::printf("  tip choice: %d orientations, %ld pairs within the tilt limit, %ld checked; %s; greedy bound "
+                  "H(%d) = %.3f; %zu points no orientation reaches\n",
+                  tc.orientations, tc.pairs, tc.cover.tests,
+                  tc.cover.optimal ? "exact, optimal" : tc.cover.exact ? "exact search capped" : "greedy",
+                  tc.cover.bound_n, tc.cover.bound, tc.cover.uncoverable.size());
+  }
   if (!c.complete()) std::printf("  uncovered: %s\n", c.describe_uncovered(getenv("BENCH_ALL") ? 1000 : 6).c_str());
   std::printf("  files %zu (%.1f kB); peak resident memory so far %.0f MB (target < 500 MB)\n", stage.files.size(),
               bytes / 1024.0, peak_rss_mb());
@@ -205,9 +229,10 @@ int main(int argc, char** argv) {
   std::printf("part: %d faces in %d solids (plate with 20 filleted bosses, 20 bores, 20 dimples; B-spline block, "
               "ball, ring, cone), STEP %.1f MB\n",
               faces.Extent(), solids.Extent(), std::filesystem::file_size(step) / 1e6);
-  // bench_plan_cad [stylus|head] [fixed]
+  // bench_plan_cad [stylus|head|auto] [fixed]
   const bool fixed = argc > 2 && std::string(argv[2]) == "fixed";
-  if (only != "head") run(step, false, fixed);
-  if (only != "stylus") run(step, true, fixed);
+  if (only.empty() || only == "stylus") run(step, false, fixed);
+  if (only.empty() || only == "head") run(step, true, fixed);
+  if (only.empty() || only == "auto") run(step, true, fixed, true);
   return 0;
 }

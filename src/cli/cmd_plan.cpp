@@ -78,6 +78,23 @@ void print_summary(std::ostream& out, const PlanResult& r, const std::string& fo
     out << "tips: " << r.tip_changes << " changes;";
     for (const std::string& t : used) out << ' ' << t;
     out << "\n";
+    // What the operator qualifies before running, in the order used.
+    int fresh = 0;
+    out << "tips in the order used:";
+    for (const PlanTip& t : r.plan.tips) {
+      out << ' ' << tip_name(t.angles) << (t.qualified ? " (qualified)" : " (new)");
+      fresh += !t.qualified;
+    }
+    out << "; " << fresh << " to qualify\n";
+    if (r.tip_choice.automatic) {
+      const TipCover& c = r.tip_choice.cover;
+      out << "tip choice: " << r.tip_choice.orientations << " orientations, " << c.tests << " of "
+          << r.tip_choice.pairs << " point-tip pairs checked; "
+          << (c.optimal ? std::string("exact, optimal")
+                        : (c.exact ? "exact search stopped at its node cap, " : "greedy, ") +
+                              std::string("new tips within ") + fixed(c.bound, 3) + " x the fewest")
+          << "\n";
+    }
   }
   out << "cycle time estimate: " << fixed(r.cycle.seconds / 60, 1) << " min (" << fixed(r.cycle.positioning_length, 0)
       << " mm positioning)\n";
@@ -110,6 +127,9 @@ int run_plan(Args& args) {
         o.stylus_length != defaults.stylus_length)
       args.fail("--head gives the stylus: leave out --probe-diameter, --stylus-diameter and --stylus-length");
     use_head(o, read_probe_head(*head_path));  // validated up front: errors name the file and field
+    if (o.head->qualified.empty() && o.tips != TipChoice::automatic)
+      args.fail(*head_path + ".qualified: no qualified tip is listed; qualify at least one, or let the planner "
+                "choose the tips with --tips auto");
   }
   try {
     validate(o);
@@ -191,7 +211,9 @@ const Command kPlanCommand = {
     "  --head FILE          indexable probe head (docs/formats.md \"Probe head\"): each\n"
     "                       point gets a qualified tip that reaches it, points are\n"
     "                       grouped by tip; the file gives the stylus, and\n"
-    "                       --max-tilt is then measured from the tip's axis\n"
+    "                       --max-tilt is then measured from the tip's axis; with\n"
+    "                       --tips auto the planner chooses the tips on the head's\n"
+    "                       grid and lists those to qualify\n"
     "  --allow-uncovered    exit 0 although some region holds fewer than\n"
     "                       --min-per-region points (they are still reported, and\n"
     "                       plan.json lists them so no verdict passes them unseen)\n"

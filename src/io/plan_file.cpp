@@ -239,6 +239,17 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
       plan.uncovered_regions.push_back(
           parse_uncovered(JsonCursor(list[k], jf::child(root.path("uncovered_regions"), k))));
   }
+  if (root.has("tips")) {
+    const json& list = root.array("tips");
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const JsonCursor t(list[k], jf::child(root.path("tips"), k));
+      t.only({"a", "b", "qualified"}, "docs/formats.md \"Plan\"");
+      PlanTip tip{{t.number("a"), t.number("b")}, t.boolean("qualified")};
+      if (tip.angles.a < 0 || tip.angles.a > 180) throw InputError(t.path("a") + ": must be from 0 to 180 degrees");
+      if (std::abs(tip.angles.b) > 360) throw InputError(t.path("b") + ": must be from -360 to 360 degrees");
+      plan.tips.push_back(tip);
+    }
+  }
   if (root.has("alignment")) {
     const JsonCursor alignment = root.at("alignment");
     plan.alignment = parse_alignment(alignment, scale);
@@ -261,6 +272,13 @@ std::string plan_to_json_text(const InspectionPlan& plan) {
                   {"diameter", jf::finite(plan.probe.diameter, "probe diameter")}};
   doc["points"] = points_json(plan.points);
   if (plan.alignment) doc["alignment"] = alignment_json(*plan.alignment);
+  if (!plan.tips.empty()) {
+    json list = json::array();
+    for (const PlanTip& t : plan.tips)
+      list.push_back({{"a", jf::finite(t.angles.a, "tip a")}, {"b", jf::finite(t.angles.b, "tip b")},
+                      {"qualified", t.qualified}});
+    doc["tips"] = std::move(list);
+  }
   if (!plan.uncovered_regions.empty()) {
     json list = json::array();
     for (const UncoveredRegion& u : plan.uncovered_regions)

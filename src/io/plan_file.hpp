@@ -49,6 +49,9 @@ struct InspectionPlan {
   // of older versions and in re-measuring plans (run on the first one's
   // alignment).
   std::optional<PartAlignment> alignment;
+  // With an indexable head: the tips in the order the program selects them
+  // (optional in plan.json; empty for the vertical stylus).
+  std::vector<PlanTip> tips;
 
   // Index of the point with that id, or nullopt (linear search).
   std::optional<std::size_t> find(const std::string& id) const;

@@ -23,6 +23,15 @@ struct TipAngles {
   bool operator!=(const TipAngles& o) const { return !(*this == o); }
 };
 
+// A tip a plan uses (plan.json `tips`, docs/cmm.md "Tips chosen by the
+// planner"): whether the head file listed it as qualified; one that is not
+// must be qualified on the CMM before the program runs.
+struct PlanTip {
+  TipAngles angles;
+  bool qualified = true;
+  bool operator==(const PlanTip& o) const { return angles == o.angles && qualified == o.qualified; }
+};
+
 struct PlannedPoint {
   std::string id;    // unique, non-empty, no ',' or white space (also a DMIS label)
   int order = 0;     // execution order, unique, >= 1

@@ -101,61 +101,114 @@ Eigen::Vector3d retract_point(const Eigen::Vector3d& p, const Eigen::Vector3d& n
   return p + (probe.ball_radius + options.retract) * n;
 }
 
-AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
-                          const ProbeGeometry& probe, const AccessOptions& options) {
-  AccessResult result;
-  result.tilt = std::acos(std::clamp(n.dot(probe.axis), -1.0, 1.0));
-  auto fail = [&](AccessProblem problem, const SegmentContact& c) {
-    result.problem = problem;
-    result.where = c.where;
-    result.distance = c.distance;
-    result.step_cap = c.step_cap;
-    return result;
-  };
-  if (result.tilt > options.max_tilt) {
-    result.problem = AccessProblem::tilt;
-    result.where = p;
-    return result;
-  }
+namespace {
+
+AccessResult failure(AccessResult result, AccessProblem problem, const SegmentContact& c) {
+  result.problem = problem;
+  result.where = c.where;
+  result.distance = c.distance;
+  result.step_cap = c.step_cap;
+  return result;
+}
+
+// Checks 2 and 3: the ball at contact and along the normal.
+AccessResult ball_checks(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                         const ProbeGeometry& probe, const AccessOptions& options, AccessResult result) {
   const double r = probe.ball_radius;
   const double tol = options.contact_tolerance;
   const Eigen::Vector3d c = probe_centre(p, n, probe);
-  // 2. The ball at contact.
   const double dc = finder.project(c).distance;
-  if (dc < r - tol) return fail(AccessProblem::ball, {0, c, dc, false});
-  // 3. Along the normal to the farther of approach and retract.
+  if (dc < r - tol) return failure(result, AccessProblem::ball, {0, c, dc, false});
   const Eigen::Vector3d out = p + (r + std::max(options.approach, options.retract)) * n;
   if (auto hit = first_contact(finder, c, out, r, tol, options.min_step, options.max_steps))
-    return fail(AccessProblem::approach_path, *hit);
-  // 4. The shaft, from where it leaves the ball to the probe body.
-  const double rs = probe.stylus_radius;
+    return failure(result, AccessProblem::approach_path, *hit);
+  return result;
+}
+
+// Check 4: the shaft, from where it leaves the ball to the probe body.
+AccessResult shaft_check(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                         const ProbeGeometry& probe, const AccessOptions& options, AccessResult result) {
+  const double r = probe.ball_radius, rs = probe.stylus_radius;
+  const Eigen::Vector3d c = probe_centre(p, n, probe);
   const double leave = std::sqrt(std::max(0.0, r * r - rs * rs));
   if (probe.stylus_length > leave) {
     const Eigen::Vector3d s0 = c + leave * probe.axis;
     const Eigen::Vector3d s1 = c + probe.stylus_length * probe.axis;
-    if (auto hit = first_contact(finder, s0, s1, rs, tol, options.min_step, options.max_steps))
-      return fail(AccessProblem::stylus, *hit);
+    if (auto hit = first_contact(finder, s0, s1, rs, options.contact_tolerance, options.min_step, options.max_steps))
+      return failure(result, AccessProblem::stylus, *hit);
   }
-  // 5. Straight down to the approach point, straight up from the retract point.
+  return result;
+}
+
+// Check 5: straight down to the approach point, straight up from the retract point.
+AccessResult vertical_check(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                            const ProbeGeometry& probe, const AccessOptions& options, AccessResult result) {
   for (const Eigen::Vector3d& q : {approach_point(p, n, probe, options), retract_point(p, n, probe, options)}) {
     if (q.z() >= options.clearance_z) continue;
     const Eigen::Vector3d top(q.x(), q.y(), options.clearance_z);
-    if (auto hit = first_contact(finder, q, top, r, tol, options.min_step, options.max_steps))
-      return fail(AccessProblem::vertical_access, *hit);
+    if (auto hit = first_contact(finder, q, top, probe.ball_radius, options.contact_tolerance, options.min_step,
+                                 options.max_steps))
+      return failure(result, AccessProblem::vertical_access, *hit);
   }
-  // 6. The whole assembly of an indexable head, along the touch and the
-  // vertical legs.
+  return result;
+}
+
+// Check 6: the whole assembly of an indexable head, along the touch and the
+// vertical legs.
+AccessResult assembly_check(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                            const ProbeGeometry& probe, const AccessOptions& options, AccessResult result) {
+  const double r = probe.ball_radius, tol = options.contact_tolerance;
+  const Eigen::Vector3d c = probe_centre(p, n, probe);
+  const Eigen::Vector3d out = p + (r + std::max(options.approach, options.retract)) * n;
   for (const ProbeCapsule& k : probe_capsules(c, probe))
     if (auto hit = swept_contact(finder, k.a, k.b, out - c, k.radius, tol, options.min_step, options.max_steps))
-      return fail(k.part, *hit);
+      return failure(result, k.part, *hit);
   for (const Eigen::Vector3d& q : {approach_point(p, n, probe, options), retract_point(p, n, probe, options)}) {
     if (q.z() >= options.clearance_z || !probe.articulated()) continue;
     const Eigen::Vector3d rise(0, 0, options.clearance_z - q.z());
     for (const ProbeCapsule& k : probe_capsules(q, probe))
       if (auto hit = swept_contact(finder, k.a, k.b, rise, k.radius, tol, options.min_step, options.max_steps))
-        return fail(AccessProblem::vertical_access, *hit);
+        return failure(result, AccessProblem::vertical_access, *hit);
   }
   return result;
+}
+
+AccessResult tilt_check(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe,
+                        const AccessOptions& options) {
+  AccessResult result;
+  result.tilt = std::acos(std::clamp(n.dot(probe.axis), -1.0, 1.0));
+  if (result.tilt > options.max_tilt) {
+    result.problem = AccessProblem::tilt;
+    result.where = p;
+  }
+  return result;
+}
+
+}  // namespace
+
+AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                          const ProbeGeometry& probe, const AccessOptions& options) {
+  AccessResult result = tilt_check(p, n, probe, options);
+  if (!result.ok()) return result;
+  if (result = ball_checks(finder, p, n, probe, options, result); !result.ok()) return result;
+  if (result = shaft_check(finder, p, n, probe, options, result); !result.ok()) return result;
+  if (result = vertical_check(finder, p, n, probe, options, result); !result.ok()) return result;
+  return assembly_check(finder, p, n, probe, options, result);
+}
+
+AccessResult check_point_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                                const ProbeGeometry& probe, const AccessOptions& options) {
+  AccessResult result;
+  if (result = ball_checks(finder, p, n, probe, options, result); !result.ok()) return result;
+  return vertical_check(finder, p, n, probe, options, result);
+}
+
+AccessResult check_axis_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                               const ProbeGeometry& probe, const AccessOptions& options) {
+  AccessResult result = tilt_check(p, n, probe, options);
+  if (!result.ok()) return result;
+  if (result = shaft_check(finder, p, n, probe, options, result); !result.ok()) return result;
+  return assembly_check(finder, p, n, probe, options, result);
 }
 
 }  // namespace furrow

@@ -145,4 +145,16 @@ Eigen::Vector3d retract_point(const Eigen::Vector3d& p, const Eigen::Vector3d& n
 AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                           const ProbeGeometry& probe, const AccessOptions& options);
 
+// The same checks split by what depends on the probe's axis, for trying
+// many tips of an indexable head at one point (docs/cmm.md "Tips chosen by
+// the planner"): check_point_access runs 2, 3 and 5 (the ball alone, the
+// same for every tip; `probe.axis` is not read), check_axis_access 1, 4 and
+// 6. For every probe, check_access(...).ok() equals
+// check_point_access(...).ok() && check_axis_access(...).ok(); only which
+// failure is named first may differ.
+AccessResult check_point_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                                const ProbeGeometry& probe, const AccessOptions& options);
+AccessResult check_axis_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
+                               const ProbeGeometry& probe, const AccessOptions& options);
+
 }  // namespace furrow

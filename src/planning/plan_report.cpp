@@ -45,9 +45,43 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
     for (const TipAngles& t : o.head->qualified) tips.push_back(tip_name(t));
     opt["head"] = {{"type", o.head->type},
                    {"head_to_ball_mm", jf::finite(o.head->reach(), "head reach")},
-                   {"qualified", std::move(tips)}};
+                   {"qualified", std::move(tips)},
+                   {"tips", to_string(o.tips)}};
   }
   doc["options"] = std::move(opt);
+  // The tips the operator must have qualified, in the order the program
+  // uses them (docs/cmm.md "Tips chosen by the planner").
+  if (o.head) {
+    json order = json::array();
+    int fresh = 0;
+    for (const PlanTip& t : r.plan.tips) {
+      int points = 0;
+      for (const PlannedPoint& p : r.plan.points) points += p.tip && *p.tip == t.angles;
+      order.push_back({{"name", tip_name(t.angles)},
+                       {"a", jf::finite(t.angles.a, "tip a")},
+                       {"b", jf::finite(t.angles.b, "tip b")},
+                       {"qualified", t.qualified},
+                       {"points", points}});
+      fresh += !t.qualified;
+    }
+    json jt;
+    jt["choice"] = to_string(o.tips);
+    jt["order"] = std::move(order);
+    jt["to_qualify"] = fresh;
+    if (r.tip_choice.automatic) {
+      const TipCover& c = r.tip_choice.cover;
+      jt["orientations"] = r.tip_choice.orientations;
+      jt["pairs_within_tilt"] = r.tip_choice.pairs;
+      jt["pairs_checked"] = c.tests;
+      jt["method"] = c.exact ? "exact" : "greedy";
+      jt["optimal"] = c.optimal;
+      jt["search_nodes"] = c.nodes;
+      jt["greedy_bound_n"] = c.bound_n;
+      jt["greedy_bound"] = jf::finite(c.bound, "greedy bound");
+      jt["unreachable_points"] = c.uncoverable.size();
+    }
+    doc["tips"] = std::move(jt);
+  }
 
   json alloc;
   alloc["budget"] = r.allocation.budget;

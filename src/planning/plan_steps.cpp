@@ -9,10 +9,12 @@
 #include "base/error.hpp"
 #include "base/limits.hpp"
 #include "base/numbers.hpp"
+#include "planning/auto_tips.hpp"
 #include "planning/face_orientation_hint.hpp"
 #include "planning/narrow_region.hpp"
 #include "planning/relocation.hpp"
 #include "planning/tip_groups.hpp"
+#include "planning/tip_grid.hpp"
 
 namespace furrow {
 
@@ -36,10 +38,10 @@ std::string problem_text(const AccessResult& a, const ProbeGeometry& probe) {
 
 
 
-// Probe geometry per qualified tip: the axis runs from the ball towards the head.
-std::vector<ProbeGeometry> tip_probes(const ProbeGeometry& probe, const ProbeHead& head) {
+// Probe geometry per tip: the axis runs from the ball towards the head.
+std::vector<ProbeGeometry> tip_probes(const ProbeGeometry& probe, const std::vector<TipAngles>& angles) {
   std::vector<ProbeGeometry> out;
-  for (const TipAngles& t : head.qualified) {
+  for (const TipAngles& t : angles) {
     ProbeGeometry g = probe;
     g.axis = -tip_direction(t);
     out.push_back(g);
@@ -130,11 +132,21 @@ void start_plan(PlanState& s) {
   result.clearance_z = clearance_plane(part, result.probe.ball_radius, options.clearance);
   if (options.head) {
     // Raised so that the assembly clears the part over any tilt up to the
-    // largest qualified A: the head turns on this plane.
+    // largest A the plan may use (qualified, or of the grid when the
+    // planner chooses): the head turns on this plane.
+    const bool automatic = options.tips == TipChoice::automatic;
+    const std::vector<TipAngles> grid = automatic ? tip_grid(*options.head) : std::vector<TipAngles>{};
     double max_a = 0;
-    for (const TipAngles& t : options.head->qualified) max_a = std::max(max_a, t.a);
+    for (const TipAngles& t : automatic ? grid : options.head->qualified) max_a = std::max(max_a, t.a);
     result.clearance_z += assembly_drop(result.probe, max_a) - result.probe.ball_radius;
-    tips = tip_probes(result.probe, *options.head);
+    if (automatic) {
+      if (const auto v = vertical_orientation(grid)) result.vertical_tip = grid[*v];
+    } else {
+      s.tip_angles = options.head->qualified;
+      tips = tip_probes(result.probe, s.tip_angles);
+      for (const TipAngles& t : options.head->qualified)
+        if (t.a == 0 && !result.vertical_tip) result.vertical_tip = t;
+    }
   }
   access = options.access;
   access.approach = options.approach;
@@ -344,6 +356,17 @@ void check_reach(PlanState& s) {
   for (std::size_t r = 0; r < region_count; ++r)
     if (result.regions[r].sampled > 0) spacing[r] = std::sqrt(map.regions[r].area / result.regions[r].sampled);
   std::size_t checked = 0;
+  if (s.options.head && s.options.tips == TipChoice::automatic) {
+    // The planner chooses the tips; then the points none of them reaches
+    // are relocated as below.
+    choose_auto_tips(s);
+#pragma omp parallel for schedule(dynamic, 16)
+    for (long k = 0; k < n_candidates; ++k) {
+      PlanCandidate& c = candidates[static_cast<std::size_t>(k)];
+      if (c.kept) continue;
+      relocate_candidate(c, s, domains[static_cast<std::size_t>(c.region)], spacing[static_cast<std::size_t>(c.region)]);
+    }
+  } else {
 #pragma omp parallel for schedule(dynamic, 16)
   for (long k = 0; k < n_candidates; ++k) {
     PlanCandidate& c = candidates[static_cast<std::size_t>(k)];
@@ -371,6 +394,7 @@ void check_reach(PlanState& s) {
       ++checked;
       if (s.progress && (checked % 64 == 0 || checked == candidates.size())) s.progress("access", checked, candidates.size());
     }
+  }
   }
   // The tip per point, in sampling order: keep the previous point's tip
   // while it reaches, else the reaching tip nearest the normal.
@@ -407,8 +431,11 @@ void order(PlanState& s) {
       issue.problem = c.access.problem;
       issue.where = c.original;
       if (!tips.empty())
-        issue.reason = "no qualified tip reaches the point; the tip nearest its normal, " +
-                       tip_name(options.head->qualified[static_cast<std::size_t>(c.nearest_tip)]) + ": " +
+        issue.reason = std::string(options.tips == TipChoice::automatic
+                                       ? "no orientation of the head's grid reaches the point; of the chosen tips "
+                                         "the one nearest its normal, "
+                                       : "no qualified tip reaches the point; the tip nearest its normal, ") +
+                       tip_name(s.tip_angles[static_cast<std::size_t>(c.nearest_tip)]) + ": " +
                        problem_text(c.access, tips[static_cast<std::size_t>(c.nearest_tip)]);
       else
         issue.reason = problem_text(c.access, result.probe) + "; no accessible point within " +
@@ -486,7 +513,7 @@ void emit_points(PlanState& s) {
     p.ijk = c.normal;
     p.approach = approach_point(c.xyz, c.normal, result.probe, access);
     p.retract = retract_point(c.xyz, c.normal, result.probe, access);
-    if (!tips.empty()) p.tip = options.head->qualified[static_cast<std::size_t>(c.tip)];
+    if (!tips.empty()) p.tip = s.tip_angles[static_cast<std::size_t>(c.tip)];
     retracts[k] = p.retract;
     if (c.moved) {
       PlanIssue issue;
@@ -541,6 +568,7 @@ void emit_points(PlanState& s) {
   }
   const Eigen::Vector3d& last = result.plan.points.back().retract;
   if (last.z() < result.clearance_z) result.final_moves = {Eigen::Vector3d(last.x(), last.y(), result.clearance_z)};
+  result.plan.tips = tips_in_use(result, options);
   result.cycle = estimate_cycle(result.start, result.moves, retracts, result.final_moves, options.approach,
                                 options.retract, options.motion);
 }

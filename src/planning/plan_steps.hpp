@@ -44,7 +44,7 @@ struct PlanCandidate {
   Eigen::Vector3d original = Eigen::Vector3d::Zero();
   double moved_by = 0;
   AccessResult access;
-  // With an indexable head: which qualified tips reach the point, the tip
+  // With an indexable head: which of the plan's tips reach the point, the tip
   // nearest the normal (whose access result `access` is when none reaches)
   // and the tip chosen.
   std::vector<char> reach;
@@ -71,7 +71,10 @@ struct PlanState {
   const ClosestPointFinder finder;
 
   PlanResult result;
-  std::vector<ProbeGeometry> tips;  // one per qualified tip; empty without a head
+  // With a head: the tips the plan may use (the qualified ones, or those
+  // the planner chose: auto_tips.hpp) and their angles; empty without one.
+  std::vector<ProbeGeometry> tips;
+  std::vector<TipAngles> tip_angles;
   AccessOptions access;
   std::vector<RegionDomain> domains;         // per region
   std::vector<RegionDemand> demands;         // per region

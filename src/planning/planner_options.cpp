@@ -8,6 +8,7 @@
 #include "base/limits.hpp"
 #include "base/text_fields.hpp"
 #include "planning/probe_planner.hpp"
+#include "planning/tip_grid.hpp"
 
 namespace furrow {
 
@@ -49,10 +50,25 @@ void validate(const PlannerOptions& o) {
         o.stylus_length != o.head->stylus_length)
       throw InputError("--head gives the stylus: leave out --probe-diameter, --stylus-diameter and --stylus-length");
     if (o.program.head_length) throw InputError("--head gives the head-to-ball length: leave out --head-length");
+    if (o.tips == TipChoice::qualified && o.head->qualified.empty())
+      throw InputError("--head: the head file lists no qualified tip: qualify at least one, or let the planner "
+                       "choose them with --tips auto");
     bool vertical = false;
     for (const TipAngles& t : o.head->qualified) vertical = vertical || t.a == 0;
-    if (!vertical)
+    if (o.tips == TipChoice::automatic) {
+      if (!vertical && !o.head->a.on_grid(0))
+        throw InputError("--tips auto: the part alignment is measured with the vertical tip, and the head's A grid "
+                         "does not include 0");
+      const long orientations = tip_grid_size(*o.head);
+      if (orientations > kMaxTipOrientations)
+        throw InputError("--tips auto: the head's grid has " + std::to_string(orientations) +
+                         " orientations, more than the limit of " + std::to_string(kMaxTipOrientations) +
+                         " (docs/formats.md \"Limits\"): use coarser steps");
+    } else if (!vertical) {
       throw InputError("--head: the part alignment is measured with the vertical tip: qualify a tip with a = 0");
+    }
+  } else if (o.tips == TipChoice::automatic) {
+    throw InputError("--tips auto chooses among the orientations of an indexable head: give --head");
   }
   if (o.points && o.density) throw InputError("--points and --density exclude each other");
   if (o.points && *o.points < 1)
@@ -102,6 +118,8 @@ void validate(const PlannerOptions& o) {
   non_negative(o.weights.curvature, "curvature weight");
   non_negative(o.weights.risk, "risk weight");
   positive(o.max_move_fraction, "relocation radius fraction");
+  if (o.tip_cover.exact_max_pairs < 0 || o.tip_cover.exact_max_nodes < 0)
+    throw InputError("tip cover limits must not be negative");
   if (o.relocation_rings < 1 || o.relocation_directions < 1) throw InputError("relocation rings and directions must be >= 1");
 }
 

@@ -23,6 +23,15 @@ const char* to_string(PlanIssue::Kind kind) {
   return "?";
 }
 
+const char* to_string(TipChoice choice) { return choice == TipChoice::automatic ? "auto" : "qualified"; }
+
+TipChoice parse_tip_choice(const std::string& text, const std::string& where) {
+  if (text == "qualified") return TipChoice::qualified;
+  if (text == "auto") return TipChoice::automatic;
+  throw InputError(where + ": \"" + text + "\" is not a tip choice: qualified (the head file's tips) or auto "
+                   "(chosen by the planner)");
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -78,21 +87,31 @@ ProbeProgram make_probe_program(const PlanResult& result, const std::string& nam
   program.final_moves = result.final_moves;
   if (result.plan.alignment) add_alignment_moves(program, *result.plan.alignment, result.clearance_z, result.start);
   if (options.head) {
-    // The alignment is measured with the vertical tip (validate() makes sure
-    // there is one), the steps with theirs; sensors in order of first use.
-    if (program.alignment)
-      for (const TipAngles& t : options.head->qualified)
-        if (t.a == 0) {
-          program.start_tip = t;
-          break;
-        }
-    if (!program.start_tip && !program.steps.empty()) program.start_tip = program.steps.front().point.tip;
-    if (program.start_tip) program.tips.push_back(*program.start_tip);
-    for (const ProgramStep& step : program.steps)
-      if (step.point.tip && std::find(program.tips.begin(), program.tips.end(), *step.point.tip) == program.tips.end())
-        program.tips.push_back(*step.point.tip);
+    // Sensors in the order the program selects them: the vertical tip
+    // first when it measures the alignment (validate() makes sure there is
+    // one), then the steps' tips in order of first use.
+    for (const PlanTip& t : tips_in_use(result, options)) {
+      program.tips.push_back(t.angles);
+      if (!t.qualified) program.unqualified_tips.push_back(t.angles);
+    }
+    if (!program.tips.empty()) program.start_tip = program.tips.front();
   }
   return program;
+}
+
+std::vector<PlanTip> tips_in_use(const PlanResult& result, const PlannerOptions& options) {
+  std::vector<PlanTip> out;
+  if (!options.head) return out;
+  auto add = [&](const TipAngles& t) {
+    for (const PlanTip& u : out)
+      if (u.angles == t) return;
+    const std::vector<TipAngles>& q = options.head->qualified;
+    out.push_back({t, std::find(q.begin(), q.end(), t) != q.end()});
+  };
+  if (result.plan.alignment && result.vertical_tip) add(*result.vertical_tip);
+  for (const PlannedPoint& p : result.plan.points)
+    if (p.tip) add(*p.tip);
+  return out;
 }
 
 }  // namespace furrow

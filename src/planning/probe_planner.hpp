@@ -55,9 +55,18 @@
 #include "planning/region_domain.hpp"
 #include "planning/risk_map.hpp"
 #include "planning/sampling_strategy.hpp"
+#include "planning/tip_cover.hpp"
 #include "planning/tour.hpp"
 
 namespace furrow {
+
+// Which tips of an indexable head the plan may use: the head file's
+// qualified list as it is, or any orientation of the head's index grid,
+// chosen by the planner (docs/cmm.md "Tips chosen by the planner").
+enum class TipChoice { qualified, automatic };
+const char* to_string(TipChoice choice);  // "qualified", "auto"
+// Throws InputError naming `where` for another word.
+TipChoice parse_tip_choice(const std::string& text, const std::string& where);
 
 constexpr double kDefaultDensity = 1.0;  // points per cm^2 when neither points nor density is given
 
@@ -97,6 +106,10 @@ struct PlannerOptions {
   // Indexable head (set with use_head); none: the fixed vertical stylus.
   // The part alignment is measured with its vertical tip A0B0.
   std::optional<ProbeHead> head;
+  // With a head: use the qualified tips only, or choose among the grid's
+  // orientations (then the head file's qualified list may be empty).
+  TipChoice tips = TipChoice::qualified;
+  TipCoverOptions tip_cover;       // limits of the exact tip choice
 };
 
 // Plans with `head`: also sets the ball, stem and stylus length from it.
@@ -147,6 +160,14 @@ struct PlanIssue {
 };
 const char* to_string(PlanIssue::Kind kind);
 
+// How the tips were chosen (`--tips auto`; tip_cover.hpp).
+struct TipChoiceSummary {
+  bool automatic = false;
+  int orientations = 0;         // distinct orientations of the head's grid
+  long pairs = 0;               // point-orientation pairs within --max-tilt
+  TipCover cover;               // `known` cleared
+};
+
 struct PlanTiming {
   double regions_seconds = 0, sampling_seconds = 0, access_seconds = 0, tour_seconds = 0, moves_seconds = 0;
 };
@@ -169,6 +190,10 @@ struct PlanResult {
   Allocation allocation;
   TourResult tour;
   int tip_changes = 0;             // with a head: tip changes between consecutive points
+  // With a head: the vertical tip, which measures the part alignment (the
+  // qualified one with A = 0, or the grid's when the planner chooses).
+  std::optional<TipAngles> vertical_tip;
+  TipChoiceSummary tip_choice;
   CycleEstimate cycle;
   PlanTiming timing;               // wall clock, not part of any output file
 };
@@ -188,5 +213,12 @@ PlanResult plan_probe_points(const Part& part, const RegionMap& map, const Plann
 // per tip used (the vertical one first when there is an alignment) and the
 // head-to-ball length from the head.
 ProbeProgram make_probe_program(const PlanResult& result, const std::string& name, const PlannerOptions& options);
+
+// With a head: the tips a plan uses in the order the program selects them
+// (the vertical one first when the plan has an alignment, else the first
+// point's; then in order of first use), each marked qualified when the head
+// file lists it; the operator qualifies the others before running. Empty
+// without a head.
+std::vector<PlanTip> tips_in_use(const PlanResult& result, const PlannerOptions& options);
 
 }  // namespace furrow

@@ -73,6 +73,16 @@ OptionTable<PlannerOptions> make_table() {
                                [](auto& o) -> auto& { return o.motion.dwell; }, Bound::non_negative));
   t.push_back(integer_option<O>("gouge_points", "N", "points on each predicted gouge site",
                                 [](auto& o) -> auto& { return o.gouge_points; }, 1));
+  OptionSpec<O> tips = parsed_option<O>(
+      "tips", "qualified|auto",
+      "with --head: measure with the head file's qualified tips only, or let the planner choose among the "
+      "orientations of the head's grid (already-qualified tips first, then the fewest; the new ones are listed "
+      "for qualifying; docs/cmm.md \"Tips chosen by the planner\")",
+      [](auto& o) -> auto& { return o.tips; }, parse_tip_choice,
+      [](TipChoice c) { return std::string(to_string(c)); },
+      choice_names({TipChoice::qualified, TipChoice::automatic}));
+  tips.example = "auto";
+  t.push_back(tips);
   OptionSpec<O> revision = text_option<O>("revision", "TEXT", "part revision stated in the DMIS program (PARTRV)",
                                           [](auto& o) -> auto& { return o.program.revision; });
   t.push_back(revision);

@@ -39,6 +39,8 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
     out.result.plan.alignment =
         choose_alignment(part, finder, out.result.probe, access, options.datums, datum_options);
   }
+  // The vertical tip measures the alignment first: the tips in program order.
+  out.result.plan.tips = tips_in_use(out.result, options);
   out.program = program;
   const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);

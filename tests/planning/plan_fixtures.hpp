@@ -44,6 +44,19 @@ inline std::vector<Eigen::Vector3d> floor_and_wall_samples(double h, double x_mi
   return s;
 }
 
+// A top face z = height over x in [-height tan(lean), top_to], y in
+// [0, width], and below its -x edge a wall from its foot (0, y, 0) up to
+// that edge, leaning out over the foot by `lean_degrees`: its normal points
+// -x and `lean_degrees` below horizontal, an undercut no vertical stylus
+// takes (test_auto_tips.cpp, tests/cli/test_cli_plan_tips.cpp).
+inline Part undercut_part(double height, double width, double top_to, double lean_degrees) {
+  const double top_x = -height * std::tan(lean_degrees * 3.14159265358979323846 / 180);
+  Part part;
+  part.faces.emplace_back("top", make_plane({top_x, 0, height}, {top_to - top_x, 0, 0}, {0, width, 0}));
+  part.faces.emplace_back("overhang", make_plane({0, 0, 0}, {top_x, 0, height}, {0, width, 0}));
+  return part;
+}
+
 inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }
 
 // A flat floor z = 0 over x in [-10, 10], y in [0, 20], cut by a groove of

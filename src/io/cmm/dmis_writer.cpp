@@ -1,5 +1,7 @@
 #include "io/cmm/dmis_writer.hpp"
 
+#include <algorithm>
+
 #include <functional>
 #include <sstream>
 
@@ -165,6 +167,14 @@ std::string dmis_program_text(const ProbeProgram& program) {
          "," + fixed_number(program.probe.diameter, kProgramDecimals));
     line("SNSLCT/S(" + probe + ")");
   } else {
+    // The tips to qualify, in the order the program uses them.
+    std::string list;
+    for (const TipAngles& t : program.tips) {
+      const bool fresh = std::find(program.unqualified_tips.begin(), program.unqualified_tips.end(), t) !=
+                         program.unqualified_tips.end();
+      list += (list.empty() ? " " : ", ") + tip_name(t) + (fresh ? " (new: qualify it)" : " (qualified)");
+    }
+    line("$$ tips in the order used:" + list);
     // One sensor per tip: its A and B, the stylus straight along the probe
     // body (0,0,-1 in the head's frame), the head-to-ball length.
     for (const TipAngles& t : program.tips)

@@ -126,7 +126,6 @@ ProbeHead parse_probe_head(const std::string& text, const std::string& name) {
 
   const std::string q_at = root.path("qualified");
   const json& jq = root.array("qualified");
-  if (jq.empty()) throw InputError(q_at + ": at least one qualified tip is needed");
   std::set<std::string> seen;
   for (std::size_t k = 0; k < jq.size(); ++k) {
     const JsonCursor q(jq[k], jf::child(q_at, k));

@@ -21,10 +21,12 @@
 // The centre of rotation is at the end of the probe body: the DMIS SNSDEF
 // length is stylus + extension + body.
 //
-// Only qualified tips are used: the CMM measures with the tip angles its
-// operator qualified, which must lie on the head's grid (a range and a step
-// per axis). The list keeps the file's order; the planner prefers nothing by
-// that order (it picks by the surface normal).
+// The CMM measures with the tip angles its operator qualified, which must
+// lie on the head's grid (a range and a step per axis). The list keeps the
+// file's order; the planner prefers nothing by that order (it picks by the
+// surface normal). It may be empty here: the planner then chooses the tips
+// itself (`--tips auto`), and refuses an empty list otherwise
+// (planning/probe_planner.hpp).
 //
 // Errors: InputError naming the file and the field ("head.json:
 // qualified[3].a: 52 is not on the A grid 0 + k * 7.5"). Units: mm, degrees.
@@ -55,7 +57,7 @@ struct ProbeHead {
   double body_diameter = 0;         // [mm] > 0
   double head_length = 0;           // vertical housing above the centre of rotation [mm] >= 0
   double head_diameter = 0;         // [mm] > 0 when head_length > 0
-  std::vector<TipAngles> qualified; // at least one, no duplicates, on the grid
+  std::vector<TipAngles> qualified; // no duplicates, on the grid; may be empty (see above)
 
   // Centre of rotation to ball centre [mm] (the DMIS SNSDEF length).
   double reach() const { return stylus_length + extension_length + body_length; }

@@ -108,6 +108,10 @@ struct ProbeProgram {
   // tip: the probe name, '_', tip_name() (PROBE1_A30B90, Probe1_A30B90).
   std::vector<TipAngles> tips;
   std::optional<TipAngles> start_tip;
+  // Those of `tips` the head file did not list as qualified (the planner
+  // chose them): the operator qualifies them before running. DMIS lists
+  // every tip with its state in a comment; I++ DME has no comments.
+  std::vector<TipAngles> unqualified_tips;
 };
 
 // The DMIS sensor label / I++ tool name of a tip of `program`'s probe.
