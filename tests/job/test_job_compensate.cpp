@@ -1,0 +1,140 @@
+// The job file's "compensate" member through `furrow run`: the mould's
+// example program, simulated measurements with a planted bump, compared,
+// then compensated inside the job. Oracle: the second implementation -
+// `furrow compensate` run by hand on the comparison.json the job wrote must
+// give the same program bytes (and the same record apart from its file
+// names). Bad members are refused with status 2 before any work, naming
+// the member, and nothing is written.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "io/part_file.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+using furrow::test::run_furrow;
+using furrow::test::slurp;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kBumpRadius = 15;    // [mm]
+constexpr double kBumpHeight = 0.05;  // [mm], material left
+
+// The mould job with measurements simulated on a bump; `extra` members are
+// added (or replace the defaults) as given.
+json mould_job(const std::string& out, const json& extra) {
+  const std::string part = test::source_path("examples/parts/mould.json");
+  const Eigen::Vector3d c = read_part(part).faces[0].surface().point(0.5, 0.5);
+  json job = {{"part", part},
+              {"tool", test::source_path("examples/tools/ball_d6.json")},
+              {"toolpath", test::source_path("examples/toolpaths/mould_ball6.nc")},
+              {"tolerance", {{"zone", 0.2}}},
+              {"prediction", {{"tolerance", 0.01}}},
+              {"plan", {{"points", 300}}},
+              {"measurements",
+               {{"simulate",
+                 {{"noise", 0.001},
+                  {"seed", 3},
+                  {"bumps", json::array({{c.x(), c.y(), c.z(), kBumpRadius, kBumpHeight}})}}}}},
+              {"comparison", {{"align", "cmm"}, {"outlier_rejection", false}}},
+              {"compensate", {{"out", "comp.nc"}, {"gain", 0.5}}},
+              {"output", out}};
+  for (const auto& [key, value] : extra.items()) {
+    if (value.is_null())
+      job.erase(key);
+    else
+      job[key] = value;
+  }
+  return job;
+}
+
+// The record without the members that name files (the job names them
+// relative to its output folder, the command as given).
+json without_names(json record) {
+  for (const char* key : {"part", "comparison", "toolpath", "program"}) record.erase(key);
+  return record;
+}
+
+}  // namespace
+
+TEST_CASE("job compensate: furrow run writes the program furrow compensate writes from the job's comparison") {
+  const std::string dir = test::scratch_dir("job-compensate");
+  const std::string out = dir + "/out";
+  test::write_text(dir + "/job.json", mould_job(out, json::object()).dump(1));
+  const auto run = run_furrow({"run", dir + "/job.json"});
+  INFO(run.err);
+  REQUIRE(run.status == 0);  // the bump (50 um) is inside the 0.2 mm zone: PASS
+  REQUIRE(fs::exists(out + "/comp.nc"));
+  REQUIRE(fs::exists(out + "/comp.json"));
+  CHECK(run.out.find("compensate: comp.nc") != std::string::npos);
+
+  const std::string program = test::source_path("examples/toolpaths/mould_ball6.nc");
+  const auto by_hand = run_furrow({"compensate", test::source_path("examples/parts/mould.json"), "--comparison",
+                                   out + "/comparison.json", "--toolpath", program, "--tool",
+                                   test::source_path("examples/tools/ball_d6.json"), "--out", dir + "/hand.nc",
+                                   "--gain", "0.5"});
+  INFO(by_hand.err);
+  REQUIRE(by_hand.status == 0);
+  const std::string compensated = slurp(out + "/comp.nc");
+  CHECK(compensated == slurp(dir + "/hand.nc"));
+  // The bump moved the program: the check above is not of two copies of the input.
+  CHECK(compensated != slurp(program));
+  const json record = json::parse(slurp(out + "/comp.json"));
+  CHECK(without_names(record) == without_names(json::parse(slurp(dir + "/hand.json"))));
+  CHECK(record["gain"].get<double>() == 0.5);
+  // Half of a 50 um bump at its top is taken off, within the clip at max_offset.
+  CHECK(record["largest_offset"].get<double>() > 0.5 * kBumpHeight * 0.5);
+  CHECK(record["largest_offset"].get<double>() <= 0.2);
+}
+
+TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, nothing written") {
+  const std::string dir = test::scratch_dir("job-compensate-bad");
+  struct Case {
+    json extra;
+    std::string named;
+  };
+  const std::vector<Case> cases = {
+      {{{"compensate", {{"out", "comp.nc"}, {"gain", 3}}}}, "compensate.gain"},
+      {{{"compensate", {{"out", "comp.nc"}, {"clip_back", 31}}}}, "compensate.clip_back"},
+      {{{"compensate", {{"out", "comp.nc"}, {"max_offset", -1}}}}, "compensate.max_offset"},
+      {{{"compensate", {{"out", "comp.nc"}, {"gian", 0.5}}}}, "gian"},
+      {{{"compensate", {{"gain", 0.5}}}}, "compensate.out"},
+      {{{"compensate", {{"out", "../comp.nc"}}}}, "compensate.out"},
+      {{{"compensate", {{"out", "comp.apt"}}}}, "compensate.out"},
+      {{{"compensate", {{"out", "comp.json"}}}}, "compensate.out"},
+      {{{"measurements", nullptr}}, "compensate"},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string out = dir + "/out" + std::to_string(k);
+    test::write_text(dir + "/job.json", mould_job(out, cases[k].extra).dump(1));
+    const auto r = run_furrow({"run", dir + "/job.json"});
+    INFO(k, r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(cases[k].named) != std::string::npos);
+    CHECK(r.err.find("partition") == std::string::npos);  // refused before the stages ran
+    CHECK_FALSE(fs::exists(out));
+  }
+}
+
+TEST_CASE("job compensate: a job whose tool path is generated or a CSV path is refused clearly") {
+  const std::string dir = test::scratch_dir("job-compensate-no-program");
+  const std::string csv = dir + "/path.csv";
+  test::write_text(csv, "x,y,z\n0,0,10\n1,0,10\n");
+  const json generated = {{"generate", {{"scallop", 0.01}}}};
+  for (const json& toolpath : {generated, json(csv)}) {
+    const std::string out = dir + "/out";
+    test::write_text(dir + "/job.json", mould_job(out, {{"toolpath", toolpath}}).dump(1));
+    const auto r = run_furrow({"run", dir + "/job.json"});
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("compensat") != std::string::npos);
+    CHECK(r.err.find("toolpath") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+}
