@@ -9,10 +9,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "io/machining/gcode_reader.hpp"
 #include "io/part_file.hpp"
 #include "support/run_cli.hpp"
 
@@ -138,4 +141,52 @@ TEST_CASE("job compensate: a job whose tool path is generated or a CSV path is r
     CHECK(r.err.find("toolpath") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
   }
+}
+
+TEST_CASE("job compensate: a program the z-map check still refuses is exit 3 and no folder is written") {
+  // One pass of the example program alone, 11 mm beside the planted bump's
+  // centre where the field slopes across it (as in furrow compensate's own
+  // test): its compensated ball cuts beside the pass deeper than the offset
+  // allows, and with no clip-back round the check refuses it.
+  const std::string dir = test::scratch_dir("job-compensate-refused");
+  const std::string text = slurp(test::source_path("examples/toolpaths/mould_ball6.nc"));
+  const Eigen::Vector3d c =
+      read_part(test::source_path("examples/parts/mould.json")).faces[0].surface().point(0.5, 0.5);
+  const Toolpath all = parse_gcode(text, "mould_ball6.nc");
+  std::size_t chosen = 0;
+  for (std::size_t p = 1; p < all.passes.size(); ++p)
+    if (std::abs(all.passes[p].points[0].position.y() - c.y() - 11) <
+        std::abs(all.passes[chosen].points[0].position.y() - c.y() - 11))
+      chosen = p;
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  const ToolpathPass& pass = all.passes[chosen];
+  std::string single = "G21 G90 G17\n";
+  char rapid[96];
+  std::snprintf(rapid, sizeof rapid, "G0 X%.4f Y%.4f Z34.6326\nG0 Z%.4f\n", pass.points[0].position.x(),
+                pass.points[0].position.y(), pass.points[0].position.z());
+  single += rapid;
+  for (int k = pass.points[1].line; k <= pass.points.back().line; ++k) single += lines[std::size_t(k - 1)] + "\n";
+  single += "G0 Z34.6326\nM30\n";
+  test::write_text(dir + "/single.nc", single);
+  const std::string out = dir + "/out";
+  json job = mould_job(out, {{"toolpath", dir + "/single.nc"},
+                             {"plan", {{"points", 600}, {"prediction", false}}},
+                             {"comparison", {{"align", "cmm"}, {"outlier_rejection", false}, {"prediction", false}}},
+                             {"compensate", {{"out", "comp.nc"}, {"clip_back", 0}}}});
+  job["measurements"]["simulate"]["prediction"] = false;
+  test::write_text(dir + "/job.json", job.dump(1));
+  const auto r = run_furrow({"run", dir + "/job.json"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 3);
+  CHECK(r.err.find("compensate: nothing written: after 0 clip-back rounds") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  // The command's default rounds rescue the same job: the refusal above was the check's, not the job's.
+  job["compensate"].erase("clip_back");
+  test::write_text(dir + "/job.json", job.dump(1));
+  const auto rescued = run_furrow({"run", dir + "/job.json"});
+  INFO(rescued.out << rescued.err);
+  CHECK(rescued.status == 0);
+  CHECK(fs::exists(out + "/comp.nc"));
 }
