@@ -67,7 +67,9 @@ const Command kRunCommand = {
     "\"Job file\"; paths in it are relative to the job file): partition, tool\n"
     "path (a file, or generated), machining prediction, probe plan, then -\n"
     "when the job names measurements (a file, or a simulation) - registration,\n"
-    "comparison with the prediction, gouge confirmation and the QA report.\n"
+    "comparison with the prediction, gouge confirmation and the QA report,\n"
+    "and with a \"compensate\" member the program moved by the measured error\n"
+    "(furrow compensate on the job's comparison, docs/compensation.md).\n"
     "Without measurements it stops after the plan. Everything is written into\n"
     "the job's output folder, replaced as a whole (docs/report.md).\n"
     "\n"
@@ -80,6 +82,7 @@ const Command kRunCommand = {
     "\n"
     "Exit status: 0 pass (or plan only), 1 fail (out of tolerance or a\n"
     "confirmed gouge), 2 bad input, 3 the computation did not succeed,\n"
-    "4 inconclusive (see furrow compare).\n"};
+    "4 inconclusive (see furrow compare). A compensated program the z-map check\n"
+    "still refuses: 3, nothing written.\n"};
 
 }  // namespace furrow::cli

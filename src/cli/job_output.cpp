@@ -1,6 +1,7 @@
 #include "cli/job_output.hpp"
 
 #include <cstdio>
+#include <iostream>
 
 #include "cli/commands.hpp"
 #include "cli/terminal_progress.hpp"
@@ -14,6 +15,10 @@ int run_and_report(const Job& job, std::ostream& out, const ProcessLookup& proce
     progress.update(stage, done, total);
   }, process);
   progress.finish();
+  if (result.compensation_refused) {  // nothing written, like furrow compensate (docs/compensation.md "Safety")
+    std::cerr << "furrow run: " << result.compensation_message << "\n";
+    return kExitInternal;
+  }
   write_job_output(job, result);
   for (const std::string& line : result.summary) out << line << "\n";
   out << "stage times:";

@@ -11,6 +11,7 @@
 #include "io/part_file.hpp"
 #include "stage/compare_options.hpp"
 #include "stage/compare_stage.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
@@ -225,6 +226,39 @@ void read_comparison(const JsonCursor& c, Job& job, const std::string& folder) {
   c.finish("docs/formats.md \"Job file\"");
 }
 
+bool is_apt_extension(const std::string& ext) { return ext == ".cl" || ext == ".apt" || ext == ".cls"; }
+
+// The compensation member, checked against the rest of the job before any
+// work: it moves the program the job read, after the comparison it made.
+void read_compensate(const JsonCursor& c, Job& job) {
+  CompensateOptions options;
+  read_option_members(c, compensate_option_table(), options);
+  const std::string out = jf::string(c.raw("out"), c.path("out"));
+  c.finish("docs/formats.md \"Job file\"");
+  if (out.empty() || out.find('/') != std::string::npos || out.find('\\') != std::string::npos || out == "." ||
+      out == "..")
+    throw InputError(c.path("out") + ": expected a file name inside the output folder, got '" + out + "'");
+  if (!job.toolpath_file)
+    throw InputError(c.where() + ": compensation writes back the program the part was cut with: the job needs a "
+                     "\"toolpath\" file (G-code or APT CL), not a generated one");
+  const std::string ext = lower_extension(*job.toolpath_file);
+  if (ext == ".csv" || ext == ".txt")
+    throw InputError(c.where() + ": compensation writes the program back: the toolpath must be the G-code program or "
+                     "the APT CL file, not a CSV path");
+  if (!job.tool_table.empty())
+    throw InputError(c.where() + ": the program changes tools (toolpath.tools); compensation takes one tool");
+  if (!job.has_measurements())
+    throw InputError(c.where() + ": compensation needs the measured comparison: the job has no \"measurements\"");
+  const std::string out_ext = lower_extension(out);
+  if (out_ext == ".json")
+    throw InputError(c.path("out") + ": expected a program file name (its record is written beside it as .json)");
+  if (is_apt_extension(out_ext) != is_apt_extension(ext))
+    throw InputError(c.path("out") + ": the compensated program is written in the format it was read in (" +
+                     (is_apt_extension(ext) ? "APT CL: .apt, .cl or .cls" : "G-code: not .apt, .cl or .cls") + ")");
+  job.compensate = options;
+  job.compensate_out = out;
+}
+
 }  // namespace
 
 Job parse_job(const std::string& text, const std::string& name, const std::string& folder) {
@@ -260,6 +294,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
       throw InputError(root.path("record") + ": expected a record file name or the record as an object");
     }
   }
+  if (auto s = root.optional_at("compensate")) read_compensate(*s, job);
   job.output = path_member(root, "output", folder);
   root.boolean("pdf", job.pdf);
   if (auto paper = root.optional_string("paper")) job.paper = *paper;

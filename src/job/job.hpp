@@ -27,6 +27,7 @@
 #include "partition/partition.hpp"
 #include "planning/probe_planner.hpp"
 #include "report/inspection_record.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/toolpath_stage.hpp"
 
 namespace furrow {
@@ -74,6 +75,13 @@ struct Job {
 
   CompareOptions compare;              // tolerance zone, registration, verification rules
   bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
+
+  // "compensate": the program moved by the measured error field, written
+  // into the output folder as `compensate_out` (a bare file name in the
+  // program's own format) with its record beside it (docs/compensation.md
+  // "In a job"). Needs measurements and a G-code or APT CL toolpath file.
+  std::optional<CompensateOptions> compensate;
+  std::string compensate_out;
 
   std::string output;  // resolved output folder
   bool pdf = false;            // "pdf": also report.pdf, printed by headless Chromium (report/pdf_print.hpp)

@@ -2,6 +2,7 @@
 
 #include "base/json_fields.hpp"
 #include "stage/compare_options.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
@@ -66,6 +67,11 @@ std::string job_options_json(const Job& job) {
   j["comparison"] = option_members(compare_option_table(), job.compare);
   j["comparison"]["prediction"] = job.compare_with_prediction;
   if (!job.rps_file.empty()) j["comparison"]["rps"] = job.rps_file;
+  // Only when given, so that a job without it echoes what it always did.
+  if (job.compensate) {
+    j["compensate"] = option_members(compensate_option_table(), *job.compensate);
+    j["compensate"]["out"] = job.compensate_out;
+  }
   j["output"] = job.output;
   return jf::to_text(j);
 }

@@ -4,6 +4,7 @@
 #include "base/option_table.hpp"
 #include "job/job.hpp"
 #include "stage/compare_options.hpp"
+#include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
@@ -76,6 +77,14 @@ json measurements_schema() {
   return one_of({files, read, object({{"simulate", simulate}}, {"simulate"}), {{"type", "null"}}});
 }
 
+json compensate_schema() {
+  json c = section_schema(describe(compensate_option_table()),
+                          {{"out", path("the compensated program's file name in the output folder (its record goes "
+                                        "beside it as .json)")}});
+  c["required"] = json::array({"out"});
+  return c;
+}
+
 }  // namespace
 
 std::string job_schema_json() {
@@ -97,6 +106,7 @@ std::string job_schema_json() {
       {"comparison", section_schema(describe(compare_option_table()),
                                     {{"prediction", typed("boolean", "predicted vs measured, gouge confirmation")},
                                      {"rps", path("the reference point system of \"align\": \"rps\"")}})},
+      {"compensate", compensate_schema()},
       {"record", one_of({path("an inspection record file"), {{"type", "object"}}})},
       {"output", path("the output folder, replaced as a whole")},
       {"pdf", {{"type", "boolean"}}},

@@ -8,6 +8,7 @@
 
 #include "base/atomic_file.hpp"
 #include "base/json_fields.hpp"
+#include "base/text_fields.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
 #include "io/machining/apt_reader.hpp"
@@ -22,6 +23,7 @@
 #include "partition/regions_file.hpp"
 #include "planning/prediction_risk.hpp"
 #include "stage/compare_stage.hpp"
+#include "stage/compensate_stage.hpp"
 #include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
 #include "report/pdf_print.hpp"
@@ -237,6 +239,44 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
   return doc;
 }
 
+// The compensation stage of `furrow compensate`, on the comparison.json the
+// job wrote (read back, as the command reads it), the job's part, program
+// and tool. A program the z-map check still refuses marks the result
+// refused: nothing is written (docs/compensation.md "Safety").
+void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
+  const Job& job = s.job;
+  std::string comparison_text;
+  for (const FolderFile& f : s.result.files)
+    if (f.path == "comparison.json") comparison_text = f.bytes;
+  const ComparisonDocument comparison = parse_comparison(comparison_text, "comparison.json");
+  const std::string ext = lower_extension(*job.toolpath_file);
+  const ProgramFormat format = ext == ".cl" || ext == ".apt" || ext == ".cls" ? ProgramFormat::apt : ProgramFormat::gcode;
+  const std::string program = json_fields::read_text(*job.toolpath_file);
+  const std::string out = job.compensate_out;
+  const std::string record = std::filesystem::path(out).replace_extension(".json").string();
+  const CompensateOptions& options = *job.compensate;
+  const CompensatedProgram done =
+      compensate_stage(part, tools, program, format, job.toolpath_read, comparison, options,
+                       {s.part_name, "comparison.json", relative_to_folder(job.output, *job.toolpath_file), out, ""});
+  if (!done.check.safe()) {
+    const CompensationGougeCheck& c = done.check;
+    s.result.compensation_refused = true;
+    s.result.compensation_message =
+        line("compensate: nothing written: after %d clip-back round%s the compensated program would still cut %.4f mm "
+             "deeper than its offset allows at (%.3f, %.3f, %.3f), line %d (%zu z-map nodes at %.3f mm)",
+             done.clip_back_rounds, done.clip_back_rounds == 1 ? "" : "s", c.worst_excess, c.worst.x(), c.worst.y(),
+             c.worst.z(), c.worst_line, c.deeper, c.resolution);
+    return;
+  }
+  s.add(out, done.program.text);
+  s.add(record, done.json);
+  s.result.summary.push_back(line("compensate: %s, %zu tips moved, largest offset %.2f um, %zu clipped at %.2f um, "
+                                  "%zu clipped back in %d round%s",
+                                  out.c_str(), done.offset.moved, done.offset.largest_offset * 1000,
+                                  done.offset.clipped.size(), options.max_offset * 1000, done.clip_back.size(),
+                                  done.clip_back_rounds, done.clip_back_rounds == 1 ? "" : "s"));
+}
+
 }  // namespace
 
 PipelineResult run_job(const Job& job, const PipelineProgress& progress, const ProcessLookup& process) {
@@ -330,6 +370,11 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
                                   to_string(doc.summary.verdict), doc.summary.profile * 1000,
                                   doc.options.tolerance.width * 1000, doc.summary.out_of_tolerance,
                                   doc.summary.evaluated));
+    if (job.compensate) {
+      s.note("compensate");
+      compensate_job_stage(s, part, tools);
+      clock.done("compensate");
+    }
   } else {
     result.summary.push_back("no measurements in the job: stopped after the plan");
   }

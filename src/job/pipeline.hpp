@@ -22,6 +22,8 @@
 //   measurements.csv    (simulated measurements only)
 //   comparison.json
 //   report.html, report.json, points.csv, results.qif, figures/*.png   (qa_report.hpp)
+//   COMP.nc|COMP.apt, COMP.json   ("compensate": the program moved by the
+//                       measured error field, compensate_stage.hpp)
 // The paths inside comparison.json are relative to the output folder (the
 // part's and a measurement file's too), so `furrow report OUT/comparison.json`
 // finds them from any directory.
@@ -54,6 +56,10 @@ struct PipelineResult {
   bool plan_complete = true;        // every region holds its minimum of plan points
   std::size_t rapid_gouges = 0;     // rapids into the part or stock: the job fails (docs/architecture.md "Rapid moves")
   std::vector<std::string> summary;  // a few lines for people
+  // "compensate": the z-map check still failed after the clip-back rounds;
+  // the caller writes nothing and exits 3 (docs/compensation.md "Safety").
+  bool compensation_refused = false;
+  std::string compensation_message;  // why, when refused
 };
 
 // The part's place in its batch for the report's Process section, from the

@@ -312,3 +312,22 @@ TEST_CASE("comparison.rps: the reference point system of an rps alignment, read 
   }
   CHECK(stray.find("job.json: comparison.rps: the reference point system is for") == 0);
 }
+
+TEST_CASE("compensate: read with compensate's option table, the command's defaults, echoed only when given") {
+  const Job job = parse_job(minimal(R"("measurements": "m.csv", "compensate": {"out": "c.nc", "gain": 0.5},)"),
+                            "job.json", "jobs");
+  REQUIRE(job.compensate);
+  CHECK(job.compensate_out == "c.nc");
+  CHECK(job.compensate->gain == 0.5);
+  const CompensateOptions defaults;  // what `furrow compensate` takes without the flags
+  CHECK(job.compensate->max_offset == defaults.max_offset);
+  CHECK(job.compensate->clip_back == defaults.clip_back);
+  CHECK_FALSE(job.compensate->smoothing);
+  const nlohmann::json echoed = nlohmann::json::parse(job_options_json(job));
+  CHECK(echoed["compensate"]["out"] == "c.nc");
+  CHECK(echoed["compensate"]["gain"].get<double>() == 0.5);
+  CHECK(echoed["compensate"]["smoothing"] == "auto");
+  CHECK_FALSE(nlohmann::json::parse(job_options_json(parse_job(minimal(), "job.json", "jobs"))).contains("compensate"));
+  // Without measurements there is no comparison to compensate from.
+  CHECK(error_of(minimal(R"("compensate": {"out": "c.nc"},)")).find("job.json: compensate: compensation needs") == 0);
+}
