@@ -407,7 +407,7 @@ bool is_ippdme_response_log(std::string_view text) {
 void parse_ippdme_response_log(std::string_view text, const std::string& name, const IppdmeSession* program,
                                const std::string& program_name, MeasurementSet& set) {
   // Every point has its data line, and every data line its '#'.
-  set.points.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '#')) + 1);
+  set.points.reserve(mf::count_char(text, '#') + 1);
   SessionReader reader(name, program, program_name, set);
   mf::for_each_line(text, [&](int number, std::string_view line) { reader.line(number, line); });
   reader.finish();

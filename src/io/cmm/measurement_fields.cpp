@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "base/number_text.hpp"
@@ -61,9 +62,20 @@ Eigen::Vector3d unit_direction(const Eigen::Vector3d& v, const std::string& name
   return v / n;
 }
 
-std::size_t count_lines(std::string_view text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+std::size_t count_char(std::string_view text, char c) {
+  std::size_t n = 0;
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  while (p < end) {
+    p = static_cast<const char*>(std::memchr(p, c, static_cast<std::size_t>(end - p)));
+    if (!p) break;
+    ++n;
+    ++p;
+  }
+  return n;
 }
+
+std::size_t count_lines(std::string_view text) { return count_char(text, '\n') + 1; }
 
 void add_point(MeasurementSet& set, MeasuredPoint&& p, const std::string& name) {
   // After unit conversion (docs/formats.md "Limits"); the message is built
