@@ -56,6 +56,8 @@ TEST_CASE("CAD import: IGES sphere patches with holes, all bounded by model-spac
       {0.5, 2.5, -0.6, 0.9, {{1.5, 0.1, 0.4}}},                  // a hole inside a patch
       {-1.0, 1.0, -0.6, 0.9, {{0.0, 0.1, 0.4}}},                 // ... across the seam, the patch too
       {-1.0, 1.0, 0.2, pi / 2, {{0.0, 0.9, 0.25}, {0.7, 0.6, 0.2}}},  // ... up to the pole
+      {0, 2 * pi, -0.7, 0.7, {{0.0, 0.0, 0.4}, {pi, 0.2, 0.3}}},  // a band, one hole on its seam
+      {0, 2 * pi, 0.2, pi / 2, {{1.0, 0.9, 0.25}, {0.0, 0.9, 0.25}}},  // a cap around the pole
   };
   IgesBuilder builder;
   std::vector<ExpectedFace> cases;
@@ -89,6 +91,7 @@ TEST_CASE("CAD import: IGES cylinder patches with holes, all bounded by model-sp
   const std::vector<Shape> shapes = {
       {0, pi, {pi / 2}},                 // a hole inside a half cylinder
       {-pi / 2, pi / 2, {0.0}},          // ... across the seam, the patch too
+      {0, 2 * pi, {0.0, pi}},            // a ring, one hole on its seam
       {0.2, 0.2 + 1.6 * pi, {2.0}},
   };
   constexpr double rho = 2;

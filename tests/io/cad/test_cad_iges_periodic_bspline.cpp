@@ -131,6 +131,7 @@ TEST_CASE("CAD import: IGES faces on a periodic type 128 cylinder bounded by mod
   std::vector<ExpectedFace> cases;
   std::vector<CylinderFace> faces(std::begin(kFaces), std::end(kFaces));
   faces.push_back({-pi / 2, pi / 2, 2, 8, true});
+  faces.push_back({0, 2 * pi, 2, 8, true});
   for (const CylinderFace& f : faces)
     for (int crtn = 0; crtn <= 3; ++crtn)
       for (int pref = 0; pref <= 3; ++pref)
