@@ -29,6 +29,16 @@
 
 namespace furrow::test {
 
+// A circular hole in a sphere patch: the circle of angular radius `alpha`
+// around the direction of rotation angle `theta` and latitude `phi` from the
+// centre, written as one type 126 (a full rational circle) and given by
+// that model-space curve only (type 142 PPTR 0). `reversed`: the circle runs
+// the other way round.
+struct SphereHole {
+  double theta = 0, phi = 0, alpha = 0.5;
+  bool reversed = false;
+};
+
 // How the parameter-space curves give the generatrix parameter u.
 enum class ArcParameter {
   standard,    // the arc's angle as IGES defines it (start angle in [0, 2 pi))
@@ -71,6 +81,8 @@ struct SpherePatch {
   bool line_pcurves = false;   // B pieces as type 110 lines instead of type 126
   bool polyline_pcurves = false;  // ... or as type 106 form 11 (2-D linear paths)
   int pref = 0;                // type 142 PREF
+  int crtn = 0;                // type 142 CRTN (how the curve was made)
+  std::vector<SphereHole> holes;  // inner boundaries (model-space curves only)
   // Whether the parameter-space curve runs along a degenerate pole edge
   // (B then has one piece more than C, which has no curve there).
   bool pcurve_along_pole = true;
@@ -84,8 +96,16 @@ struct SpherePatch {
   // report's file has its quarter circles) instead of type 126 B-splines.
   bool arc_meridians = false;
 
+  // The patch less its holes (each a cap of area 2 pi R^2 (1 - cos alpha)).
   double area() const {
-    return radius * radius * std::abs(theta1 - theta0) * (std::sin(phi1) - std::sin(phi0));
+    double holes_area = 0;
+    for (const SphereHole& h : holes) holes_area += 2 * M_PI * radius * radius * (1 - std::cos(h.alpha));
+    return radius * radius * std::abs(theta1 - theta0) * (std::sin(phi1) - std::sin(phi0)) - holes_area;
+  }
+  // Unit direction from the centre of rotation angle theta and latitude phi.
+  static Eigen::Vector3d direction(double theta, double phi) {
+    return std::cos(phi) * (std::cos(theta) * Eigen::Vector3d::UnitX() - std::sin(theta) * Eigen::Vector3d::UnitZ()) +
+           std::sin(phi) * Eigen::Vector3d::UnitY();
   }
   // The file's v (rotation angle of the type 120) of the angle theta.
   double file_v(double theta) const {
@@ -121,6 +141,9 @@ struct SpherePatch {
     auto append = [&](const char* text) {
       std::snprintf(buf + std::strlen(buf), sizeof buf - std::strlen(buf), "%s", text);
     };
+    if (crtn != 0) append((", CRTN " + std::to_string(crtn)).c_str());
+    if (model_space_only) append(", model-space curves only");
+    if (!holes.empty()) append((", " + std::to_string(holes.size()) + " hole(s)").c_str());
     if (split_at_equator) append(", meridians split at the equator");
     if (north_to_south) append(", generatrix north to south");
     if (axis_reversed) append(", axis -y");
@@ -128,15 +151,30 @@ struct SpherePatch {
   }
 };
 
-// Writes the patch's entities into `b`; returns the type 144's DE pointer.
-inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
-  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+// Analytic centroid of the patch (holes not taken out): over
+// theta0..theta1, phi0..phi1 with the area element R^2 cos(phi), of
+// c + R (cos phi (cos theta x - sin theta z) + sin phi y).
+inline Eigen::Vector3d patch_centroid(const SpherePatch& p) {
+  auto cos2 = [](double phi) { return phi / 2 + std::sin(2 * phi) / 4; };  // integral of cos^2
+  const double measure = (p.theta1 - p.theta0) * (std::sin(p.phi1) - std::sin(p.phi0));
+  const double c2 = cos2(p.phi1) - cos2(p.phi0);
+  const double sc = (std::pow(std::sin(p.phi1), 2) - std::pow(std::sin(p.phi0), 2)) / 2;
+  const Eigen::Vector3d mean(c2 * (std::sin(p.theta1) - std::sin(p.theta0)), sc * (p.theta1 - p.theta0),
+                             c2 * (std::cos(p.theta1) - std::cos(p.theta0)));
+  return p.centre + p.radius * mean / measure;
+}
+
+// Writes the patch's surface (a type 120 and its axis and generatrix) into
+// `b`; returns the type 120's DE pointer and sets `arc_start`, the
+// generatrix arc's IGES start angle (of the south pole, or the north pole
+// when the generatrix runs north to south).
+inline int write_sphere_surface(IgesBuilder& b, const SpherePatch& p, double& arc_start) {
+  const Eigen::Vector3d Y = Eigen::Vector3d::UnitY();
   const Eigen::Vector3d& c = p.centre;
   const double R = p.radius;
   // Axis +y through the centre (v turns x toward -z), or -y.
   const int axis = b.line(c, c + (p.axis_reversed ? -Y : Y));
   int generatrix;
-  double arc_start;  // the arc's IGES start angle (of the south pole)
   if (p.generatrix_transformed) {
     // Definition space: centre 0, from (R, 0) to (-R, 0) through (0, R);
     // x_def -> -y (south pole), y_def -> +x (equator), z_def -> +z.
@@ -152,7 +190,30 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
     generatrix = b.arc(c.z(), {c.x(), c.y()}, {c.x(), c.y() - R}, {c.x(), c.y() + R});
     arc_start = 1.5 * M_PI;
   }
-  const int surface = b.revolution(axis, generatrix, p.start_angle, p.end_angle);
+  return b.revolution(axis, generatrix, p.start_angle, p.end_angle);
+}
+
+// A circle on the sphere of angular radius `alpha` about the unit direction
+// `d` from its centre, as one closed type 126 from the point farthest from
+// the axis's +y end round to it again; counterclockwise about d (seen from
+// outside the sphere) unless `reversed`. Returns the curve's DE pointer.
+inline int write_sphere_circle(IgesBuilder& b, const Eigen::Vector3d& centre, double radius, const Eigen::Vector3d& d,
+                               double alpha, bool reversed) {
+  Eigen::Vector3d e1 = -(Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitY().dot(d) * d);
+  if (e1.norm() < 1e-12) e1 = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(d) * d;
+  e1.normalize();
+  const Eigen::Vector3d e2 = d.cross(e1);
+  return b.bspline_arc(centre + radius * std::cos(alpha) * d, e1, e2, radius * std::sin(alpha), reversed ? 2 * M_PI : 0,
+                       reversed ? 0 : 2 * M_PI);
+}
+
+// Writes the patch's entities into `b`; returns the type 144's DE pointer.
+inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d& c = p.centre;
+  const double R = p.radius;
+  double arc_start = 0;
+  const int surface = write_sphere_surface(b, p, arc_start);
 
   // u of latitude phi (the arc's angle is arc_start + phi + pi/2, or pi - phi
   // from the north).
@@ -220,8 +281,13 @@ inline int write_sphere_patch(IgesBuilder& b, const SpherePatch& p) {
   }
   const int bc = p.model_space_only ? 0 : b.composite(b_pieces, IgesBuilder::kParametric);
   const int cc = b.composite(c_pieces);
-  const int boundary = b.curve_on_surface(surface, bc, cc, p.pref);
-  return b.trimmed_surface(surface, boundary);
+  const int boundary = b.curve_on_surface(surface, bc, cc, p.pref, p.crtn);
+  std::vector<int> inner;
+  for (const SphereHole& h : p.holes)
+    inner.push_back(b.curve_on_surface(
+        surface, 0, write_sphere_circle(b, c, R, SpherePatch::direction(h.theta, h.phi), h.alpha, h.reversed), p.pref,
+        p.crtn));
+  return b.trimmed_surface(surface, boundary, inner);
 }
 
 }  // namespace furrow::test
@@ -242,6 +308,7 @@ struct RevolvedPatch {
   double theta0 = 0, theta1 = M_PI, s0 = 0, s1 = 1;
   bool reversed_loop = false;
   int pref = 0;
+  int crtn = 0;  // type 142 CRTN
   bool model_space_only = false;  // type 142 PPTR = 0: no parameter-space curve
 
   // Generatrix point at u = s, relative to the centre, in the x-y plane.
@@ -261,15 +328,18 @@ struct RevolvedPatch {
   }
   std::string name() const {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d%s",
+    std::snprintf(buf, sizeof buf, "%s theta %.4f..%.4f u %.4f..%.4f, %s, PREF %d, CRTN %d%s",
                   kind == Kind::cylinder ? "cylinder" : "torus", theta0, theta1, s0, s1,
-                  reversed_loop ? "loop reversed" : "loop as built", pref,
+                  reversed_loop ? "loop reversed" : "loop as built", pref, crtn,
                   model_space_only ? ", model-space curves only" : "");
     return buf;
   }
 };
 
-inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
+// `holes`: model-space curves already in `b` (closed, on the patch), each
+// written as an inner boundary without a parameter-space curve (type 142
+// PPTR 0) with the patch's PREF and CRTN.
+inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p, const std::vector<int>& holes = {}) {
   const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d& c = p.centre;
   const int axis = b.line(c, c + Y);
@@ -305,7 +375,9 @@ inline int write_revolved_patch(IgesBuilder& b, const RevolvedPatch& p) {
   }
   const int bc = p.model_space_only ? 0 : b.composite(b_pieces, IgesBuilder::kParametric);
   const int cc = b.composite(c_pieces);
-  return b.trimmed_surface(surface, b.curve_on_surface(surface, bc, cc, p.pref));
+  std::vector<int> inner;
+  for (const int hole : holes) inner.push_back(b.curve_on_surface(surface, 0, hole, p.pref, p.crtn));
+  return b.trimmed_surface(surface, b.curve_on_surface(surface, bc, cc, p.pref, p.crtn), inner);
 }
 
 }  // namespace furrow::test

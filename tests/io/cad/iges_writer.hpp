@@ -4,7 +4,8 @@
 // with the entities CAD systems use for trimmed surfaces of revolution
 // (100 circular arc, 102 composite curve, 106 copious data, 110 line, 120
 // surface of revolution, 124 transformation, 126 rational B-spline curve,
-// 142 curve on a parametric surface, 144 trimmed surface). It writes files the way
+// 128 rational B-spline surface, 142 curve on a parametric surface, 144
+// trimmed surface). It writes files the way
 // CATIA/NX-class systems do, which OpenCASCADE's own IGES writer does not
 // (docs/formats.md "CAD import"): the reader is then tested on input it did
 // not produce itself.
@@ -238,15 +239,52 @@ class IgesBuilder {
     return file.add(120, 0, {std::to_string(axis), std::to_string(generatrix), r(start_angle), r(end_angle)},
                     kDependent);
   }
-  // Type 142: CRTN 0 (unspecified), surface, parameter-space curve B,
-  // model-space curve C, preferred representation PREF: 0 unspecified, 1 the
-  // parameter-space curve (S o B), 2 the model-space curve C, 3 both alike.
-  // (OpenCASCADE follows PREF 2 to C: with a B whose u is normalised, only
-  // PREF 2 files import right; see the tests.) `b` = 0 writes no
-  // parameter-space curve (PPTR 0), as CATIA does: C alone bounds the face.
-  int curve_on_surface(int surface, int b, int c, int pref) {
+  // Type 126 of degree `degree` given by OpenCASCADE-style distinct knots
+  // and multiplicities (expanded here into IGES's flat knot sequence).
+  int bspline_flat(int degree, const std::vector<double>& knots, const std::vector<int>& multiplicities,
+                   const std::vector<Eigen::Vector3d>& poles, const std::vector<double>& weights) {
+    std::vector<double> flat;
+    for (std::size_t k = 0; k < knots.size(); ++k) flat.insert(flat.end(), multiplicities[k], knots[k]);
+    return bspline(degree, flat, poles, weights, false);
+  }
+  // Type 128: a rational B-spline surface of degrees `du` x `dv` over flat
+  // knot sequences; poles[i][j] with i along u (IGES runs u fastest);
+  // `closed_u`/`periodic_u` are PROP1/PROP4 (the surface closes on itself
+  // in u; it is periodic there, as a cylinder's angle is).
+  int bspline_surface(int du, int dv, const std::vector<double>& knots_u, const std::vector<double>& knots_v,
+                      const std::vector<std::vector<Eigen::Vector3d>>& poles,
+                      const std::vector<std::vector<double>>& weights, bool closed_u, bool periodic_u) {
+    const int nu = static_cast<int>(poles.size()), nv = static_cast<int>(poles.front().size());
+    if (static_cast<int>(knots_u.size()) != nu + du + 1 || static_cast<int>(knots_v.size()) != nv + dv + 1)
+      throw std::logic_error("bad B-spline surface");
+    bool polynomial = true;
+    for (const auto& row : weights)
+      for (double w : row) polynomial = polynomial && w == 1;
+    std::vector<std::string> p{std::to_string(nu - 1), std::to_string(nv - 1), std::to_string(du),
+                               std::to_string(dv), closed_u ? "1" : "0", "0", polynomial ? "1" : "0",
+                               periodic_u ? "1" : "0", "0"};
+    for (double k : knots_u) p.push_back(r(k));
+    for (double k : knots_v) p.push_back(r(k));
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i) p.push_back(r(weights[i][j]));
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i)
+        for (int c = 0; c < 3; ++c) p.push_back(r(poles[i][j](c)));
+    for (double x : {knots_u[du], knots_u[nu], knots_v[dv], knots_v[nv]}) p.push_back(r(x));
+    return file.add(128, 0, p, kDependent);
+  }
+  // Type 142: CRTN (how the curve was made: 0 unspecified, 1 projection,
+  // 2 intersection of two surfaces, 3 isoparametric), surface,
+  // parameter-space curve B, model-space curve C, preferred representation
+  // PREF: 0 unspecified, 1 the parameter-space curve (S o B), 2 the
+  // model-space curve C, 3 both alike. (OpenCASCADE follows PREF 2 to C:
+  // with a B whose u is normalised, only PREF 2 files import right; see the
+  // tests.) `b` = 0 writes no parameter-space curve (PPTR 0), as CATIA does:
+  // C alone bounds the face.
+  int curve_on_surface(int surface, int b, int c, int pref, int crtn = 0) {
     return file.add(142, 0,
-                    {"0", std::to_string(surface), std::to_string(b), std::to_string(c), std::to_string(pref)},
+                    {std::to_string(crtn), std::to_string(surface), std::to_string(b), std::to_string(c),
+                     std::to_string(pref)},
                     kDependent);
   }
   int trimmed_surface(int surface, int outer, const std::vector<int>& inner = {}) {

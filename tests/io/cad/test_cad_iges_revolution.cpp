@@ -19,6 +19,7 @@
 
 #include "io/cad/cad_import.hpp"
 #include "iges_revolved_patches.hpp"
+#include "kept_region.hpp"
 #include "support/run_cli.hpp"
 #include "support/trimmed_area.hpp"
 
@@ -28,39 +29,6 @@ using namespace furrow::test;
 namespace {
 
 constexpr double kSpacing = 80;  // sphere centres along x, one per case
-
-// Centroid of the kept region of a face by the midpoint rule on an n x n
-// grid of its domain (cells whose centre the trim keeps), weighted by the
-// area element: within ~1e-3 of the radius here, while a face that came in
-// as the rest of the sphere has its centroid on the other side.
-Eigen::Vector3d kept_centroid(const Face& f, int n = 240) {
-  const ParameterDomain& d = f.domain();
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  double weight = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const Eigen::Vector2d st(d.u0 + d.width_u() * (i + 0.5) / n, d.v0 + d.width_v() * (j + 0.5) / n);
-      if (!f.trim().empty() && !f.trim().contains(st)) continue;
-      const SurfaceDerivatives e = f.surface().evaluate(st.x(), st.y(), 1);
-      const double w = e.Su.cross(e.Sv).norm();
-      sum += w * e.S;
-      weight += w;
-    }
-  return weight > 0 ? Eigen::Vector3d(sum / weight) : Eigen::Vector3d::Constant(std::nan(""));
-}
-
-// Analytic centroid of the patch: over theta0..theta1, phi0..phi1 with the
-// area element R^2 cos(phi), of c + R (cos phi (cos theta x - sin theta z)
-// + sin phi y).
-Eigen::Vector3d patch_centroid(const SpherePatch& p) {
-  auto cos2 = [](double phi) { return phi / 2 + std::sin(2 * phi) / 4; };  // integral of cos^2
-  const double measure = (p.theta1 - p.theta0) * (std::sin(p.phi1) - std::sin(p.phi0));
-  const double c2 = cos2(p.phi1) - cos2(p.phi0);
-  const double sc = (std::pow(std::sin(p.phi1), 2) - std::pow(std::sin(p.phi0), 2)) / 2;
-  const Eigen::Vector3d mean(c2 * (std::sin(p.theta1) - std::sin(p.theta0)), sc * (p.theta1 - p.theta0),
-                             c2 * (std::cos(p.theta1) - std::cos(p.theta0)));
-  return p.centre + p.radius * mean / measure;
-}
 
 // Centroid of a cylinder or torus patch by the midpoint rule on the exact
 // parametrisation (area element |dP/ds x dP/dtheta| = generatrix speed times
@@ -97,24 +65,6 @@ Eigen::Vector3d file_normal(const RevolvedPatch& patch, const Eigen::Vector3d& p
   const Eigen::Vector3d radial = Eigen::Vector3d(r.x(), 0, r.z()).normalized();
   if (patch.kind == RevolvedPatch::Kind::cylinder) return -radial;
   return -(r - patch.major * radial).normalized();
-}
-
-// Share of a grid of kept points of the face (where it has a normal) at
-// which `holds` does; 0 when the grid keeps none.
-template <class Predicate>
-double kept_share(const Face& f, Predicate holds, int n = 24) {
-  const ParameterDomain& d = f.domain();
-  int yes = 0, total = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const Eigen::Vector2d st(d.u0 + d.width_u() * (i + 0.5) / n, d.v0 + d.width_v() * (j + 0.5) / n);
-      if (!f.trim().empty() && !f.trim().contains(st)) continue;
-      const DifferentialGeometry g = f.geometry(st.x(), st.y());
-      if (g.degenerate) continue;
-      ++total;
-      yes += holds(g);
-    }
-  return total == 0 ? 0.0 : static_cast<double>(yes) / total;
 }
 
 // Share of the face's kept points whose normal (Face::reversed() applied)
@@ -321,7 +271,7 @@ TEST_CASE("CAD import: IGES sphere patches keep their region whichever way the g
 }
 
 // Cylinder and torus patches touching and crossing the seam, loops both
-// ways, PREF 0, 1 and 2.
+// ways, PREF 0, 1 and 2 (and 3, and every CRTN, for model-space curves only).
 std::vector<RevolvedPatch> revolved_cases(bool model_space_only) {
   using Kind = RevolvedPatch::Kind;
   struct Case {
@@ -339,10 +289,15 @@ std::vector<RevolvedPatch> revolved_cases(bool model_space_only) {
       {Kind::torus, 0.2, 0.2 + 1.6 * pi, 0.5, 1.5 * pi},
   };
   std::vector<RevolvedPatch> cases;
+  int variant = 0;
   for (const Case& c : shapes)
     for (const bool reversed : {false, true})
-      for (const int pref : {0, 1, 2}) {
+      for (const int pref : {0, 1, 2, 3}) {
+        // PREF 3 (both representations alike) only without a parameter-space
+        // curve; model-space boundaries also cycle through CRTN 0-3.
+        if (pref == 3 && !model_space_only) continue;
         RevolvedPatch p;
+        p.crtn = model_space_only ? variant++ % 4 : 0;
         p.kind = c.kind;
         p.theta0 = c.theta0;
         p.theta1 = c.theta1;
@@ -383,7 +338,7 @@ TEST_CASE("CAD import: a whole IGES sphere bounded by its seam and poles in para
 }
 
 // Boundaries given as model-space curves only (type 142 with PPTR = 0, any
-// PREF, CRTN 0), as CATIA writes every boundary: the importer builds the
+// PREF and CRTN), as CATIA writes every boundary: the importer builds the
 // loop in the surface's parameters from the 3-D curves (docs/formats.md
 // "CAD import", "IGES boundaries"). Every face keeps the region its loop
 // encloses and the file's surface normal.
@@ -392,11 +347,12 @@ TEST_CASE("CAD import: IGES sphere patches bounded by model-space curves only ke
   int variant = 0;
   for (const Range& r : kRanges)
     for (const bool reversed : {false, true})
-      for (const int pref : {0, 1, 2}) {
+      for (const int pref : {0, 1, 2, 3}) {
         SpherePatch p = patch_over(r);
         p.model_space_only = true;
         p.reversed_loop = reversed;
         p.pref = pref;
+        p.crtn = (variant / 3) % 4;
         p.generatrix_transformed = variant % 2;
         p.split_at_equator = (variant / 2) % 2;
         p.arc_meridians = (variant / 4) % 2;

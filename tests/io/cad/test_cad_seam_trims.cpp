@@ -26,6 +26,7 @@
 
 #include "io/cad/cad_import.hpp"
 #include "io/cad/cad_reference.hpp"
+#include "kept_region.hpp"
 #include "support/run_cli.hpp"
 #include "support/trimmed_area.hpp"
 
@@ -107,24 +108,6 @@ std::map<int, const Face*> by_case(const CadImportResult& result) {
     faces[static_cast<int>(std::lround(p.x() / kSpacing))] = &f;
   }
   return faces;
-}
-
-// Integral of the unit normal (Face::reversed() applied) over the kept
-// region, by the midpoint rule on a grid of the domain: the same region
-// with the same orientation gives the same vector, the other orientation
-// its negative.
-Eigen::Vector3d normal_integral(const Face& f, int n = 160) {
-  const ParameterDomain& d = f.domain();
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  const double cell = d.width_u() * d.width_v() / (n * n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const Eigen::Vector2d st(d.u0 + d.width_u() * (i + 0.5) / n, d.v0 + d.width_v() * (j + 0.5) / n);
-      if (!f.trim().empty() && !f.trim().contains(st)) continue;
-      const DifferentialGeometry g = f.geometry(st.x(), st.y());
-      if (!g.degenerate) sum += g.normal * g.area_element * cell;
-    }
-  return sum;
 }
 
 }  // namespace

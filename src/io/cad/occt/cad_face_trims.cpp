@@ -202,7 +202,11 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     std::vector<EdgeUse>& chain = use.edges;
     const bool rebuild = from_model_space && (use.outer || face_wire_count == 1);
     const Eigen::Vector2d period(periods.u ? periods.du : 0.0, periods.v ? periods.dv : 0.0);
-    std::vector<std::pair<double, double>> pcurve_ranges;  // to go back to the pcurves
+    // The wire rebuilt from the edges' 3-D curves, each cut where it passes
+    // through a pole (cad_projected_curve.hpp pole_passages()); `chain`
+    // keeps the pcurves to fall back on.
+    std::vector<EdgeUse> model_chain;
+    bool model_curves = rebuild;  // every edge has what the rebuilt wire needs
     for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) {
       const TopoDS_Edge& edge = we.Current();
       const bool reversed = edge.Orientation() == TopAbs_REVERSED;
@@ -215,39 +219,49 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
       use_of_edge.to = reversed ? first : last;
       use_of_edge.degenerate = degenerate;
       use_of_edge.tolerance = BRep_Tool::Tolerance(edge);
-      pcurve_ranges.emplace_back(use_of_edge.from, use_of_edge.to);
-      if (rebuild && !degenerate) {
+      if (pcurve.IsNull() && !rebuild)
+        throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
+      if (model_curves && degenerate) model_chain.push_back(use_of_edge);
+      if (model_curves && !degenerate) {
         double c0 = 0, c1 = 0;
         const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, c0, c1);
-        if (!curve.IsNull()) {
-          use_of_edge.from = reversed ? c1 : c0;
-          use_of_edge.to = reversed ? c0 : c1;
-          use_of_edge.projected =
-              std::make_shared<const ProjectedCurve>(curve, projector, use_of_edge.from, use_of_edge.to, period);
+        if (curve.IsNull()) {
+          model_curves = false;
+        } else {
+          const double from = reversed ? c1 : c0, to = reversed ? c0 : c1;
+          std::vector<double> cuts{from};
+          for (const double t : pole_passages(curve, projector, from, to, period)) cuts.push_back(t);
+          cuts.push_back(to);
+          for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+            EdgeUse piece = use_of_edge;
+            piece.pcurve.Nullify();
+            piece.from = cuts[k];
+            piece.to = cuts[k + 1];
+            piece.projected = std::make_shared<const ProjectedCurve>(curve, projector, piece.from, piece.to, period,
+                                                                     k > 0, k + 2 < cuts.size());
+            model_chain.push_back(std::move(piece));
+          }
         }
       }
-      if (pcurve.IsNull() && !use_of_edge.projected && !(rebuild && degenerate))
-        throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
       chain.push_back(std::move(use_of_edge));
     }
     if (chain.empty()) continue;
     if (static_cast<int>(chain.size()) < edges_in_wire)
       throw FaceFailure("a boundary wire is not a connected chain of edges");
-    if (rebuild) {
+    if (model_curves) {
+      WireUse model;
+      model.outer = use.outer;
+      model.edges = std::move(model_chain);
       bool turn = false;
-      if (model_space_loop(use, surface, periods, file, face.Orientation() == TopAbs_REVERSED, turn)) {
+      if (model_space_loop(model, surface, periods, file, face.Orientation() == TopAbs_REVERSED, turn)) {
         turned = turn;
-        use.model_space = true;
-        wires.push_back(std::move(use));
+        model.model_space = true;
+        wires.push_back(std::move(model));
         continue;
       }
-      for (std::size_t k = 0; k < chain.size(); ++k) {
-        if (chain[k].pcurve.IsNull())
-          throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
-        chain[k].projected.reset();
-        std::tie(chain[k].from, chain[k].to) = pcurve_ranges[k];
-      }
     }
+    for (const EdgeUse& e : chain)
+      if (e.pcurve.IsNull()) throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
     Eigen::Vector2d end = chain.front().uv(chain.front().to);
     for (std::size_t k = 1; k < chain.size(); ++k) {
       const Eigen::Vector2d start = chain[k].uv(chain[k].from);

@@ -20,6 +20,7 @@
 #include <TopoDS_Face.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <unordered_map>
 
@@ -234,7 +235,11 @@ OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const T
     for (std::size_t k = 0; k < g.members.size(); ++k) {
       const TopoDS_Face& original = TopoDS::Face(faces(g.members[k] + 1));
       agrees[k] = same_sense(original, g.oriented[k]);
-      agreeing_area += (agrees[k] ? 1 : -1) * area_of(original);
+      // The size of the face: OpenCASCADE integrates over the face's own
+      // pcurves, which for a boundary the file gives in model space only
+      // may run the wrong way round a hole across the seam and make the
+      // integral negative (a lone ring with such a hole was turned round).
+      agreeing_area += (agrees[k] ? 1 : -1) * std::abs(area_of(original));
     }
     bool turn = false;  // turn the whole group round
     CadFaceOrientation basis = CadFaceOrientation::file;

@@ -13,7 +13,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <utility>
+#include <vector>
+
+#include "base/numbers.hpp"
 
 namespace furrow::cad {
 
@@ -23,18 +27,38 @@ constexpr int kSamples = 32;          // reference samples along an edge
 constexpr double kPoleLength = 1e-7;  // [mm] a parameter circle shorter than this is a pole
 constexpr double kProjection = 1e-9;  // [mm] ShapeAnalysis_Surface's precision
 constexpr int kNewtonSteps = 4;       // Gauss-Newton steps after it
+constexpr int kPassageSamples = 64;   // samples searched for a pole passage
+constexpr int kGoldenSteps = 200;     // golden-section steps refining one
+constexpr double kPassageLength = 1e-6;  // [mm] circle length below which the curve passes the pole
+
+// Length of the shortest periodic parameter circle through the surface
+// point nearest to p: ~2 pi times its distance from the axis on a surface
+// of revolution, 0 at a pole; +inf on a surface without a periodic parameter.
+double circle_length(const Handle(ShapeAnalysis_Surface)& surface, const gp_Pnt& p, const Eigen::Vector2d& periods) {
+  const gp_Pnt2d q = surface->ValueOfUV(p, kProjection);
+  gp_Pnt at;
+  gp_Vec du, dv;
+  surface->Surface()->D1(q.X(), q.Y(), at, du, dv);
+  double length = std::numeric_limits<double>::infinity();
+  if (periods.x() > 0) length = std::min(length, du.Magnitude() * periods.x());
+  if (periods.y() > 0) length = std::min(length, dv.Magnitude() * periods.y());
+  return length;
+}
 
 }  // namespace
 
 ProjectedCurve::ProjectedCurve(Handle(Geom_Curve) curve, Handle(ShapeAnalysis_Surface) surface, double from,
-                               double to, const Eigen::Vector2d& periods)
-    : curve_(std::move(curve)), surface_(std::move(surface)), periods_(periods) {
+                               double to, const Eigen::Vector2d& periods, bool start_pole, bool end_pole)
+    : curve_(std::move(curve)), surface_(std::move(surface)), periods_(periods),
+      start_pole_(start_pole), end_pole_(end_pole) {
   for (int k = 0; k <= kSamples; ++k) {
     Sample s;
     s.t = from + (to - from) * k / kSamples;
     s.uv = raw(s.t, s.pole);
     samples_.push_back(s);
   }
+  samples_.front().pole = samples_.front().pole || start_pole_;
+  samples_.back().pole = samples_.back().pole || end_pole_;
   // Unwrap the periodic parameters along the curve; a pole takes its
   // neighbours' value (the nearest sample that is not one).
   const Sample* previous = nullptr;
@@ -100,6 +124,9 @@ Eigen::Vector2d ProjectedCurve::reference(double t) const {
 Eigen::Vector2d ProjectedCurve::uv(double t) const {
   bool pole = false;
   Eigen::Vector2d q = raw(t, pole);
+  // A declared pole end takes its piece's parameter even where rounding
+  // puts the curve's point a hair off the axis.
+  pole = pole || (start_pole_ && t == samples_.front().t) || (end_pole_ && t == samples_.back().t);
   const Eigen::Vector2d ref = reference(t);
   for (int d = 0; d < 2; ++d) {
     if (!(periods_[d] > 0)) continue;
@@ -135,6 +162,47 @@ Eigen::Vector4d ProjectedCurve::box() const {
   for (int d = 0; d < 2; ++d)
     if (b[d] > b[d + 2]) b[d] = b[d + 2] = std::clamp(mean[d], b[d + 2], b[d]);
   return b;
+}
+
+std::vector<double> pole_passages(const Handle(Geom_Curve)& curve, const Handle(ShapeAnalysis_Surface)& surface,
+                                  double from, double to, const Eigen::Vector2d& periods) {
+  std::vector<double> passages;
+  if (!(periods.x() > 0 || periods.y() > 0) || from == to) return passages;
+  auto length_at = [&](double t) { return circle_length(surface, curve->Value(t), periods); };
+  std::vector<double> t(kPassageSamples + 1), length(kPassageSamples + 1);
+  for (int k = 0; k <= kPassageSamples; ++k) {
+    t[static_cast<std::size_t>(k)] = from + (to - from) * k / kPassageSamples;
+    length[static_cast<std::size_t>(k)] = length_at(t[static_cast<std::size_t>(k)]);
+  }
+  const gp_Pnt start = curve->Value(from), end = curve->Value(to);
+  for (std::size_t k = 1; k < t.size() - 1; ++k) {
+    if (!(length[k] <= length[k - 1] && length[k] < length[k + 1])) continue;  // not a local minimum
+    // A curve through a pole passes it within its samples' spacing: farther
+    // off, the minimum is a circle the curve only runs along (or rounding).
+    const double spacing = curve->Value(t[k - 1]).Distance(curve->Value(t[k + 1]));
+    if (!(length[k] <= 2 * kPi * spacing)) continue;
+    // Golden-section search for the shortest circle between the neighbours.
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1);
+    double a = t[k - 1], b = t[k + 1];
+    double c = b - ratio * (b - a), d = a + ratio * (b - a);
+    double lc = length_at(c), ld = length_at(d);
+    for (int step = 0; step < kGoldenSteps && std::abs(b - a) > 1e-15 * (std::abs(a) + std::abs(b) + 1); ++step) {
+      if (lc <= ld) {
+        b = d, d = c, ld = lc;
+        c = b - ratio * (b - a), lc = length_at(c);
+      } else {
+        a = c, c = d, lc = ld;
+        d = a + ratio * (b - a), ld = length_at(d);
+      }
+    }
+    const double best = lc <= ld ? c : d;
+    if (!(std::min(lc, ld) < kPassageLength)) continue;
+    const gp_Pnt p = curve->Value(best);
+    if (p.Distance(start) < kPassageLength || p.Distance(end) < kPassageLength) continue;  // an end, not a passage
+    if (!passages.empty() && std::abs(best - passages.back()) <= 1e-12 * std::abs(to - from)) continue;
+    passages.push_back(best);
+  }
+  return passages;
 }
 
 }  // namespace furrow::cad
