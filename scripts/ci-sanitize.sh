@@ -32,11 +32,17 @@ tests_regex='^(base|io|job):|^selection:.*(bad|exits? 2|reader: errors|fuzz: )'
 # take 10 s to 3 min each under ASan, and run in the Release suite; the
 # readers and the trim code they pass through are exercised here by the
 # quicker cases of each kind (a partial revolution, a pole cap, holes across
-# a seam, the open shell, the bad files).
+# a seam, a curve over a pole, a type 128 plane with holes, the open shell,
+# the bad files).
+# CMake's regular expressions hold at most 10 groups; with more, ctest -E
+# matches nothing and says nothing, so new names are added as plain
+# alternatives, and the count below catches a pattern that stops working.
 tests_exclude='^io:(indexable head: (walls|furrow plan --head)|APT in a job|furrow run \(the demo\))'
 tests_exclude+='|^io:CAD import: (trims touching|the report.s quarter sphere|IGES cylinder and torus patches'
 tests_exclude+='|IGES sphere patches (bounded by model-space curves(,| only)|touching|keep their region|of a surface)'
-tests_exclude+='|an IGES lune|a STEP round trip|an IGES round trip|furrow import writes|a whole IGES sphere)'
+tests_exclude+='|an IGES lune|a STEP round trip|an IGES round trip|furrow import writes|a whole IGES sphere'
+tests_exclude+='|IGES sphere patches with holes|IGES cylinder patches with holes|solids as IGES|IGES faces on a periodic'
+tests_exclude+='|an IGES face on a periodic|IGES caps whose)'
 tests_exclude+='|^io:orientation: (a surface model with random|a filleted block)'
 tests_exclude+='|^io:(one rule|bore alignment|named datums)|^io:APT (through furrow predict: the G-code|that changes)'
 
@@ -58,6 +64,12 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
 # --no-tests=error: a build without its tests (a stale cache) must not pass.
+selected=$(ctest --test-dir "$build" -N -R "$tests_regex" | grep -c '^ *Test *#' || true)
+kept=$(ctest --test-dir "$build" -N -R "$tests_regex" -E "$tests_exclude" | grep -c '^ *Test *#' || true)
+if [ "$kept" -ge "$selected" ]; then
+  echo "ci-sanitize.sh: the exclusion pattern leaves out none of the $selected tests: it no longer compiles or matches" >&2
+  exit 1
+fi
 ctest --test-dir "$build" -j2 --output-on-failure --no-tests=error -R "$tests_regex" -E "$tests_exclude"
 
 # Every fuzz target, from its seed corpus; new inputs go to a scratch corpus
