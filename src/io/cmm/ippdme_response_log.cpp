@@ -1,7 +1,6 @@
 #include "io/cmm/ippdme_response_log.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <deque>
 #include <unordered_map>
@@ -9,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/cmm/ippdme_line_lexer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
 #include "io/cmm/measurement_fields.hpp"
 
@@ -17,21 +17,6 @@ namespace furrow {
 namespace mf = measurement_fields;
 
 namespace {
-
-bool is_response_mark(char c) { return c == '#' || c == '%' || c == '&' || c == '!'; }
-
-// The tag's number (0..99999) when `line` starts with five digits and a
-// space; -1 otherwise. Event tags (E and four digits) give -2.
-int tag_of(std::string_view line) {
-  if (line.size() < 7 || line[5] != ' ') return -1;
-  const bool event = line[0] == 'E';
-  int tag = 0;
-  for (int k = event ? 1 : 0; k < 5; ++k) {
-    if (!std::isdigit(static_cast<unsigned char>(line[k]))) return -1;
-    tag = 10 * tag + (line[k] - '0');
-  }
-  return event ? -2 : tag;
-}
 
 // Five digits, as tags are written ("%05d" without printf's cost: one per point).
 std::string tag_text(int tag) {
@@ -42,38 +27,6 @@ std::string tag_text(int tag) {
 
 std::string command_id(int tag, int use) {
   return use == 1 ? tag_text(tag) : tag_text(tag) + "_" + std::to_string(use);
-}
-
-bool starts_with_word(std::string_view s, std::string_view word) {
-  if (s.size() < word.size()) return false;
-  for (std::size_t k = 0; k < word.size(); ++k) {
-    const char c = s[k] >= 'A' && s[k] <= 'Z' ? static_cast<char>(s[k] - 'A' + 'a') : s[k];  // ASCII, no locale
-    if (c != word[k]) return false;
-  }
-  return true;
-}
-
-// The I++ DME part of a line of any layout: without a session log's time
-// stamp and its "Sent:"/"Received:" (`directed` tells whether it had one);
-// empty for a line with none (blank, `\\`, `:`, a log's note such as
-// "Final Tag: 09999").
-std::string_view ipp_part(std::string_view line, bool& directed) {
-  directed = false;
-  line = mf::trimmed(line);
-  if (line.empty() || line == "\\\\" || line == ":") return {};
-  const std::size_t space = line.find(' ');
-  const std::string_view first = line.substr(0, space);
-  bool stamp = first.find(':') != std::string_view::npos;
-  for (char c : first)
-    if (!std::isdigit(static_cast<unsigned char>(c)) && c != ':' && c != '_' && c != '.' && c != '/' && c != '-')
-      stamp = false;
-  if (stamp) line = space == std::string_view::npos ? std::string_view() : mf::trimmed(line.substr(space + 1));
-  for (std::string_view word : {std::string_view("sent:"), std::string_view("received:")})
-    if (starts_with_word(line, word)) {
-      directed = true;
-      return mf::trimmed(line.substr(word.size()));
-    }
-  return stamp ? std::string_view() : line;  // a time-stamped note
 }
 
 enum class Known { unknown, other, ptmeas };
@@ -102,6 +55,11 @@ struct Pending {
 
 constexpr int kTags = kMaxIppTag + 1;
 
+// Lexed a chunk ahead on a second thread (ippdme_line_lexer.hpp): about
+// 40,000 lines of a session log, small enough for two chunks to cost next to
+// nothing in memory, large enough for a thread a chunk to cost nothing in time.
+constexpr std::size_t kLexChunkBytes = std::size_t{1} << 21;
+
 long occurrence_key(int tag, int use) { return static_cast<long>(use) * kTags + tag; }
 
 bool same_frame(const IppdmeFrame& a, const IppdmeFrame& b) {
@@ -124,23 +82,22 @@ class SessionReader {
     }
   }
 
-  void line(int number, std::string_view raw) {
-    bool directed = false;
-    const std::string_view ipp = ipp_part(raw, directed);
-    if (ipp.empty()) return;
-    const int tag = tag_of(ipp);
+  void line(const IppdmeLexedLine& l, const IppdmePointItems* fast_items) {
+    const int number = l.number, tag = l.tag;
+    const std::string_view ipp = l.ipp;
     if (tag == -1) {
       // What a log records as sent or received without a tag of the spec: a
       // malformed command of the client (NIST's parser tests send them), which
       // the server refuses; no answer can belong to it.
-      if (directed) return;
+      if (l.directed) return;
       mf::fail(name_, number, "not an I++ DME response or command: " + quote_field(std::string(ipp.substr(0, 200))));
     }
-    const char mark = ipp[6];
-    if (!is_response_mark(mark)) return command(number, tag, ipp);
+    const char mark = l.mark;
+    if (!mark) return command(l, fast_items);
     const std::string_view rest = ipp.substr(7);
-    if (mark == '#' && ippdme_point_items_fast(mf::trimmed(rest), kIppdmeAnswerDigits, point_items_)) {
-      point_items_error_.clear();  // the usual answer of a PtMeas, read in place
+    if (mark == '#' && fast_items) {
+      point_items_ = *fast_items;  // the usual answer of a PtMeas, read in place
+      point_items_error_.clear();
     } else if (mark == '#' || mark == '!') {
       const std::string why = parse_ippdme_items(rest, items_);
       if (!why.empty()) mf::fail(name_, number, std::string(mark == '#' ? "data" : "error") + ": " + why);
@@ -194,22 +151,24 @@ class SessionReader {
   }
 
  private:
-  void command(int number, int tag, std::string_view ipp) {
+  void command(const IppdmeLexedLine& l, const IppdmePointItems* fast_items) {
+    const int number = l.number, tag = l.tag;
+    const std::string_view ipp = l.ipp;
     logged_ = true;
     if (tag == -2) return;  // event commands hold event tags
     Pending& p = pending_[tag];
     if (p.slot >= 0) free_slot(p.slot);  // a command the server never answered
     p = Pending{true, Known::other, -1};
-    IppdmePointItems& items = point_items_;
-    // A PtMeas of point items only is read in place; anything else is parsed.
-    const bool fast = ipp.size() > 14 && ipp.substr(6, 7) == "PtMeas(" && ipp.back() == ')' &&
-                      ippdme_point_items_fast(ipp.substr(13, ipp.size() - 14), kIppdmeDigits, items);
-    if (!fast) {
+    // A PtMeas of point items only was read in place; anything else is parsed.
+    const IppdmePointItems* found = fast_items;
+    if (!found) {
       if (!parse_ippdme_command(ipp, cmd_).empty()) return;  // the server answers it with an error
       advance_ippdme_frame(cmd_, frame_);
       if (cmd_.name != "PtMeas") return;
-      if (!ippdme_point_items(cmd_.arguments, items).empty()) return;
+      if (!ippdme_point_items(cmd_.arguments, point_items_).empty()) return;
+      found = &point_items_;
     }
+    const IppdmePointItems& items = *found;
     p.slot = take_slot();
     IppdmePtMeas& m = slots_[p.slot];
     m.tag.assign(ipp.substr(0, 5));
@@ -395,11 +354,11 @@ bool is_ippdme_response_log(std::string_view text) {
   mf::for_each_line(text, [&](int, std::string_view line) {
     if (decided) return;
     bool directed = false;
-    const std::string_view ipp = ipp_part(line, directed);
+    const std::string_view ipp = ippdme_line_part(line, directed);
     if (ipp.empty()) return;
     decided = true;
-    const int tag = tag_of(ipp);
-    answer = tag != -1 && (is_response_mark(ipp[6]) || looks_like_ippdme_command(ipp));
+    const int tag = ippdme_tag_of(ipp);
+    answer = tag != -1 && (is_ippdme_response_mark(ipp[6]) || looks_like_ippdme_command(ipp));
   });
   return answer;
 }
@@ -409,7 +368,7 @@ void parse_ippdme_response_log(std::string_view text, const std::string& name, c
   // Every point has its data line, and every data line its '#'.
   set.points.reserve(mf::count_char(text, '#') + 1);
   SessionReader reader(name, program, program_name, set);
-  mf::for_each_line(text, [&](int number, std::string_view line) { reader.line(number, line); });
+  for_each_lexed_ippdme_line(text, kLexChunkBytes, [&](const IppdmeLexedLine& line, const IppdmePointItems* items) { reader.line(line, items); });
   reader.finish();
 }
 
