@@ -121,15 +121,11 @@ int run_plan(Args& args) {
                                                  "--tolerance/--outside");
   o.program.tolerance = PointProfileTolerance{zone.lower(), zone.upper()};
   if (head_path) {
-    // The head file gives the stylus: the stylus options would contradict it.
-    const PlannerOptions defaults;
-    if (o.probe_diameter != defaults.probe_diameter || o.stylus_diameter != defaults.stylus_diameter ||
-        o.stylus_length != defaults.stylus_length)
-      args.fail("--head gives the stylus: leave out --probe-diameter, --stylus-diameter and --stylus-length");
-    use_head(o, read_probe_head(*head_path));  // validated up front: errors name the file and field
-    if (o.head->qualified.empty() && o.tips != TipChoice::automatic)
-      args.fail(*head_path + ".qualified: no qualified tip is listed; qualify at least one, or let the planner "
-                "choose the tips with --tips auto");
+    try {
+      use_head_file(o, *head_path, stylus_changed(o), kHeadFlags);
+    } catch (const InputError& e) {
+      args.fail(e.what());
+    }
   }
   try {
     validate(o);

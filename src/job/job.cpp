@@ -106,11 +106,17 @@ void read_prediction(const JsonCursor& p, Job& job) {
   p.finish("docs/formats.md \"Job file\"");
 }
 
-void read_plan(const JsonCursor& p, Job& job) {
+void read_plan(const JsonCursor& p, Job& job, const std::string& folder) {
   PlannerOptions& o = job.plan;
   p.boolean("prediction", job.plan_with_prediction);
   p.boolean("allow_uncovered", job.plan_allow_uncovered);
   read_option_members(p, plan_option_table(), o);
+  if (p.find("head")) {
+    job.head_file = path_member(p, "head", folder);
+    const bool stylus_given = stylus_changed(o) || p.find("probe_diameter") || p.find("stylus_diameter") ||
+                              p.find("stylus_length");
+    use_head_file(o, job.head_file, stylus_given, kHeadJobMembers);
+  }
   p.finish("docs/formats.md \"Job file\"");
   with_context(p.where(), [&] { validate(o); });
   if (needs_risk(o.strategy) && !job.plan_with_prediction)
@@ -281,7 +287,7 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   read_tolerance(root, job);
   if (auto s = root.optional_at("partition")) read_partition(*s, job);
   if (auto s = root.optional_at("prediction")) read_prediction(*s, job);
-  if (auto s = root.optional_at("plan")) read_plan(*s, job);
+  if (auto s = root.optional_at("plan")) read_plan(*s, job, folder);
   read_measurements(root, job, folder);
   if (auto s = root.optional_at("comparison")) read_comparison(*s, job, folder);
   if (const json* v = root.find("record")) {
@@ -301,7 +307,8 @@ Job parse_job(const std::string& text, const std::string& name, const std::strin
   paper_size_css(job.paper, root.path("paper"));  // a4 or letter, checked before any work
   root.finish("docs/formats.md \"Job file\"");
   scale_registration_to_tolerance(job.compare);
-  for (const std::string* input : {&job.part, &job.tool, &job.record_file, &job.tool_table, &job.rps_file})
+  for (const std::string* input :
+       {&job.part, &job.tool, &job.record_file, &job.tool_table, &job.rps_file, &job.head_file})
     if (*input == job.output) throw InputError(root.path("output") + ": the output folder is an input file");
   return job;
 }

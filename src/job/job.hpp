@@ -62,6 +62,7 @@ struct Job {
   double prediction_map_scale = 0;  // [mm] colour saturation of prediction.png; 0: 2 x tolerance
 
   PlannerOptions plan;
+  std::string head_file;  // plan.head: the indexable head (plan.head set from it); empty: none
   bool plan_with_prediction = true;  // risk-weighted plan, points on every gouge site
   bool plan_allow_uncovered = false;  // a plan with regions below their minimum is not an error (docs/cmm.md "Coverage")
 

@@ -37,6 +37,12 @@ std::string job_options_json(const Job& job) {
   j["plan"] = option_members(plan_option_table(), job.plan);
   j["plan"]["prediction"] = job.plan_with_prediction;
   j["plan"]["allow_uncovered"] = job.plan_allow_uncovered;
+  if (!job.head_file.empty()) {
+    // The head gives the stylus and its length; echoing their values would
+    // contradict it on reading.
+    j["plan"]["head"] = job.head_file;
+    for (const char* key : {"probe_diameter", "stylus_diameter", "stylus_length", "head_length"}) j["plan"].erase(key);
+  }
   if (job.simulate) {
     const SimulationOptions& s = job.simulate->options;
     json bumps = json::array();

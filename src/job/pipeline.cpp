@@ -306,6 +306,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     s.inputs.push_back(digest_file("I++ DME program", job.measurement_read.ippdme_program));
   if (!job.record_file.empty()) s.inputs.push_back(digest_file("record", job.record_file));
   if (!job.rps_file.empty()) s.inputs.push_back(digest_file("rps", job.rps_file));
+  if (!job.head_file.empty()) s.inputs.push_back(digest_file("head", job.head_file));
   check_inputs_outside(job.output, s.inputs);  // before the work, not after it
   const Part part = read_part(job.part);
   const Cutter cutter(read_tool_file(job.tool));

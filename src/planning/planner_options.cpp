@@ -68,7 +68,7 @@ void validate(const PlannerOptions& o) {
       throw InputError("--head: the part alignment is measured with the vertical tip: qualify a tip with a = 0");
     }
   } else if (o.tips == TipChoice::automatic) {
-    throw InputError("--tips auto chooses among the orientations of an indexable head: give --head");
+    throw InputError("--tips auto chooses among the orientations of an indexable head: give --head (in a job, plan.head)");
   }
   if (o.points && o.density) throw InputError("--points and --density exclude each other");
   if (o.points && *o.points < 1)

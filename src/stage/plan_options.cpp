@@ -1,5 +1,8 @@
 #include "stage/plan_options.hpp"
 
+#include "base/error.hpp"
+#include "io/cmm/probe_head.hpp"
+
 namespace furrow {
 
 namespace {
@@ -123,5 +126,23 @@ const std::vector<std::string> kProbeMotionKeys = {"stylus_length", "stylus_diam
                                                    "retract",       "search",          "clearance",
                                                    "max_tilt",      "move_speed",      "touch_speed"};
 const std::vector<std::string> kProgramKeys = {"revision", "program_date", "head_length"};
+
+const HeadOptionNames kHeadFlags{"--head", "--probe-diameter, --stylus-diameter and --stylus-length", "--tips auto"};
+const HeadOptionNames kHeadJobMembers{"plan.head", "probe_diameter, stylus_diameter and stylus_length",
+                                      "\"tips\": \"auto\""};
+
+bool stylus_changed(const PlannerOptions& o) {
+  const PlannerOptions defaults;
+  return o.probe_diameter != defaults.probe_diameter || o.stylus_diameter != defaults.stylus_diameter ||
+         o.stylus_length != defaults.stylus_length;
+}
+
+void use_head_file(PlannerOptions& o, const std::string& path, bool stylus_given, const HeadOptionNames& names) {
+  if (stylus_given) throw InputError(names.head + " gives the stylus: leave out " + names.stylus);
+  use_head(o, read_probe_head(path));
+  if (o.head->qualified.empty() && o.tips != TipChoice::automatic)
+    throw InputError(path + ".qualified: no qualified tip is listed; qualify at least one, or let the planner "
+                            "choose the tips with " + names.tips_auto);
+}
 
 }  // namespace furrow
