@@ -41,6 +41,12 @@ void print_coverage(const PlanCoverage& c, bool allowed) {
   std::cout << "coverage: " << c.regions_covered << " of " << c.regions.size()
             << " regions hold their minimum of points; " << c.planned << " of " << c.allocated
             << " allocated points planned, " << c.dropped << " dropped\n";
+  const CoverageArea& a = c.area;
+  std::cout << "area: " << fixed(100 * a.share_covered(), 1) << " % covered of " << fixed(a.total, 0)
+            << " mm^2; reachable but not planned " << fixed(a.reachable_unplanned, 0)
+            << " mm^2; unreachable " << fixed(a.unreachable_narrow + a.unreachable_access, 0) << " mm^2 ("
+            << fixed(a.unreachable_narrow, 0) << " too narrow for the ball, " << fixed(a.unreachable_access, 0)
+            << " out of the probe's reach)\n";
   if (c.complete()) return;
   if (allowed) {
     std::cout << "uncovered regions (accepted with --allow-uncovered):\n" << c.describe_uncovered();

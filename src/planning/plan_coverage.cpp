@@ -1,5 +1,6 @@
 #include "planning/plan_coverage.hpp"
 
+#include <algorithm>
 #include <map>
 
 namespace furrow {
@@ -36,7 +37,43 @@ std::string shortfall_reason(const RegionPlanSummary& s, const std::vector<PlanI
   return out;
 }
 
+// The state of a short region: too narrow for any ball position (the
+// planner skipped it), else unreachable when the points dropped for access
+// are what left it short (it would hold its minimum with them, or no point
+// of it is reachable), else reachable but not planned. `access` gets the most frequent problem.
+CoverageState shortfall_state(const RegionPlanSummary& s, int required, const std::vector<PlanIssue>& issues,
+                              AccessProblem& access) {
+  std::map<AccessProblem, int> drops;
+  bool skipped = false;
+  for (const PlanIssue& i : issues) {
+    if (i.region != s.region) continue;
+    if (i.kind == PlanIssue::Kind::region_skipped) skipped = true;
+    if (i.kind == PlanIssue::Kind::dropped) ++drops[i.problem];
+  }
+  if (skipped || !s.samplable) return CoverageState::unreachable_narrow;
+  if (s.dropped > 0 && (s.planned + s.dropped >= required || s.planned == 0)) {
+    int most = 0;
+    for (const auto& [problem, count] : drops)
+      if (count > most) {  // ties: the first in AccessProblem order
+        most = count;
+        access = problem;
+      }
+    return CoverageState::unreachable_access;
+  }
+  return CoverageState::reachable_unplanned;
+}
+
 }  // namespace
+
+const char* to_string(CoverageState state) {
+  switch (state) {
+    case CoverageState::covered: return "covered";
+    case CoverageState::reachable_unplanned: return "reachable_unplanned";
+    case CoverageState::unreachable_narrow: return "unreachable_narrow";
+    case CoverageState::unreachable_access: return "unreachable_access";
+  }
+  return "?";
+}
 
 PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
   PlanCoverage c;
@@ -50,7 +87,25 @@ PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
     r.planned = s.planned;
     r.dropped = s.dropped;
     r.covered = s.planned >= r.required;
-    if (!r.covered) r.reason = shortfall_reason(s, result.issues);
+    r.area = s.area;
+    if (!r.covered) {
+      r.reason = shortfall_reason(s, result.issues);
+      r.state = shortfall_state(s, r.required, result.issues, r.access);
+    }
+    c.area.total += s.area;
+    switch (r.state) {
+      case CoverageState::covered: c.area.covered += s.area; break;
+      case CoverageState::reachable_unplanned: c.area.reachable_unplanned += s.area; break;
+      case CoverageState::unreachable_narrow: c.area.unreachable_narrow += s.area; break;
+      case CoverageState::unreachable_access: {
+        c.area.unreachable_access += s.area;
+        auto& list = c.area.by_access_problem;
+        auto it = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.first == r.access; });
+        if (it == list.end()) list.emplace_back(r.access, s.area);
+        else it->second += s.area;
+        break;
+      }
+    }
     FaceCoverage& f = faces[s.face];
     f.face = s.face;
     ++f.regions;
@@ -65,6 +120,7 @@ PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
     c.regions.push_back(std::move(r));
   }
   for (auto& [face, f] : faces) c.faces.push_back(f);
+  std::sort(c.area.by_access_problem.begin(), c.area.by_access_problem.end());
   return c;
 }
 

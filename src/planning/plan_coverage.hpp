@@ -15,16 +15,32 @@
 // (the largest ball that would fit named); fewer admissible points fit than were
 // allocated; points were dropped because the probe cannot reach them (each
 // access problem counted). Pure function of the plan result: no geometry.
+//
+// By area, each region counts whole under one state: covered (its minimum
+// planned); unreachable (no ball position measures it - too narrow - or
+// points were dropped because the probe cannot reach them, which is what
+// left it short); or reachable but not planned (the probe reaches what was
+// tried, but too few admissible points fit or the allocation gave too few).
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planning/probe_planner.hpp"
 
 namespace furrow {
 
+// Why a region is short, by what an operator would change: the probe or the
+// setup (unreachable) or the plan's parameters (reachable, not planned).
+enum class CoverageState { covered, reachable_unplanned, unreachable_narrow, unreachable_access };
+const char* to_string(CoverageState state);
+
 struct RegionCoverage {
   int region = 0;
   int face = 0;
+  double area = 0;  // [mm^2]
+  CoverageState state = CoverageState::covered;
+  // unreachable_access: the access problem that dropped most of its points.
+  AccessProblem access = AccessProblem::none;
   int required = 0;   // the plan's minimum per region
   int allocated = 0;  // by the allocation rule
   int planned = 0;    // in the plan
@@ -39,11 +55,20 @@ struct FaceCoverage {
   int allocated = 0, planned = 0, dropped = 0;
 };
 
+// The part's area by coverage state [mm^2]; the unreachable area also by
+// access problem (to_string(AccessProblem) as key), in a fixed order.
+struct CoverageArea {
+  double total = 0, covered = 0, reachable_unplanned = 0, unreachable_narrow = 0, unreachable_access = 0;
+  std::vector<std::pair<AccessProblem, double>> by_access_problem;  // AccessProblem order, non-zero only
+  double share_covered() const { return total > 0 ? covered / total : 0.0; }
+};
+
 struct PlanCoverage {
   std::vector<RegionCoverage> regions;  // in the plan result's region order
   std::vector<FaceCoverage> faces;      // faces holding at least one region, by face index
   int regions_covered = 0;
   long allocated = 0, planned = 0, dropped = 0;
+  CoverageArea area;
 
   bool complete() const { return regions_covered == static_cast<int>(regions.size()); }
   std::vector<RegionCoverage> uncovered() const;

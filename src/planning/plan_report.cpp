@@ -114,6 +114,15 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   cov["allocated"] = coverage.allocated;
   cov["planned"] = coverage.planned;
   cov["dropped"] = coverage.dropped;
+  const CoverageArea& a = coverage.area;
+  json by_problem = json::object();
+  for (const auto& [problem, area] : a.by_access_problem) by_problem[to_string(problem)] = area;
+  cov["area"] = {{"total", a.total},
+                 {"covered", a.covered},
+                 {"reachable_unplanned", a.reachable_unplanned},
+                 {"unreachable_narrow", a.unreachable_narrow},
+                 {"unreachable_access", a.unreachable_access},
+                 {"unreachable_by_access_problem", std::move(by_problem)}};
   json faces = json::array();
   for (const FaceCoverage& f : coverage.faces)
     faces.push_back({{"face", f.face},
@@ -131,6 +140,8 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
                              {"allocated", c.allocated},
                              {"planned", c.planned},
                              {"dropped", c.dropped},
+                             {"area", c.area},
+                             {"state", to_string(c.state)},
                              {"reason", c.reason}});
   cov["uncovered_regions"] = std::move(short_regions);
   doc["coverage"] = std::move(cov);

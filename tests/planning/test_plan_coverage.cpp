@@ -3,7 +3,9 @@
 // probe reaches.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <utility>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -89,6 +91,79 @@ TEST_CASE("coverage counts every region's plan points and names why the groove i
   CHECK(plan_coverage(fits, 5).complete());
   CHECK(plan_coverage(r, 0).complete());
   CHECK(plan_coverage(r, 0).describe_uncovered().empty());
+}
+
+TEST_CASE("coverage by area: each region whole under one state, the states sum to the part") {
+  // Four regions built by hand, one a state, areas 10, 20, 30 and 40 mm^2:
+  // 0 holds its minimum of 4; 1 was skipped (no ball position measures it);
+  // 2 is short because 3 of its points were dropped (2 for the ball, 1 for
+  // the tilt); 3 is short because only 2 admissible points fit, none dropped.
+  PlanResult r;
+  const int planned[] = {4, 0, 2, 2}, dropped[] = {0, 0, 3, 0}, sampled[] = {6, 0, 5, 2};
+  for (int k = 0; k < 4; ++k) {
+    RegionPlanSummary s;
+    s.region = k;
+    s.face = k / 2;
+    s.area = 10.0 * (k + 1);
+    s.allocated = 5;
+    s.sampled = sampled[k];
+    s.planned = planned[k];
+    s.dropped = dropped[k];
+    s.samplable = k != 1;
+    r.regions.push_back(s);
+  }
+  PlanIssue skipped;
+  skipped.kind = PlanIssue::Kind::region_skipped;
+  skipped.region = 1;
+  skipped.reason = "too narrow";
+  r.issues.push_back(skipped);
+  for (const AccessProblem problem : {AccessProblem::ball, AccessProblem::tilt, AccessProblem::ball}) {
+    PlanIssue d;
+    d.kind = PlanIssue::Kind::dropped;
+    d.region = 2;
+    d.problem = problem;
+    r.issues.push_back(d);
+  }
+  const PlanCoverage c = plan_coverage(r, 4);
+  REQUIRE(c.regions.size() == 4);
+  CHECK(c.regions[0].state == CoverageState::covered);
+  CHECK(c.regions[1].state == CoverageState::unreachable_narrow);
+  CHECK(c.regions[2].state == CoverageState::unreachable_access);
+  CHECK(c.regions[2].access == AccessProblem::ball);
+  CHECK(c.regions[3].state == CoverageState::reachable_unplanned);
+  CHECK(c.area.total == 100.0);
+  CHECK(c.area.covered == 10.0);
+  CHECK(c.area.unreachable_narrow == 20.0);
+  CHECK(c.area.unreachable_access == 30.0);
+  CHECK(c.area.reachable_unplanned == 40.0);
+  REQUIRE(c.area.by_access_problem.size() == 1);
+  CHECK(c.area.by_access_problem[0] == std::pair<AccessProblem, double>(AccessProblem::ball, 30.0));
+  CHECK(c.area.share_covered() == 0.1);
+  // A region with every point dropped is out of reach however few it needed.
+  r.regions[3].dropped = 1;
+  r.regions[3].planned = 0;
+  r.issues[1].region = 3;
+  const PlanCoverage none = plan_coverage(r, 4);
+  CHECK(none.regions[3].state == CoverageState::unreachable_access);
+  CHECK(none.regions[3].access == AccessProblem::ball);
+
+  // The groove: the states add up to the part's area as the region map
+  // measures it, and the groove's bottom is out of the 4 mm ball's reach.
+  const Part part = groove_part(1.0);
+  const RegionMap map = partition_of(part, 60, 60);
+  const PlanCoverage g = plan_coverage(plan_probe_points(part, map, groove_options(4)), 5);
+  double map_area = 0;
+  for (const Region& region : map.regions) map_area += region.area;
+  const CoverageArea& a = g.area;
+  CHECK(std::abs(a.total - map_area) <= 1e-9 * map_area);
+  CHECK(std::abs(a.covered + a.reachable_unplanned + a.unreachable_narrow + a.unreachable_access - a.total) <=
+        1e-9 * a.total);
+  CHECK(a.unreachable_access > 0);
+  double by_problem = 0;
+  for (const auto& [problem, area] : a.by_access_problem) by_problem += area;
+  CHECK(std::abs(by_problem - a.unreachable_access) <= 1e-9 * a.total);
+  const PlanCoverage fits = plan_coverage(plan_probe_points(part, map, groove_options(1)), 5);
+  CHECK(fits.area.covered == fits.area.total);
 }
 
 TEST_CASE("furrow plan exits 1 naming an uncovered region, 0 with --allow-uncovered, and compare cannot pass it") {
