@@ -88,7 +88,7 @@ TEST_CASE("job plan.head: read relative to the job, set up as furrow plan --head
   CHECK(reread.plan.tips == TipChoice::automatic);
 }
 
-TEST_CASE("job plan.head: a head with qualified tips plans with them; the refusals name the job's members") {
+TEST_CASE("job plan.head: a head with qualified tips plans with them, and the refusals name the job's members") {
   const std::string dir = job_folder();
   const Job job = parse_job(job_text(R"({"head": "heads/two.json"})"), "job.json", dir);
   REQUIRE(job.plan.head);
