@@ -179,7 +179,7 @@ int run_plan(Args& args) {
   const PlanResult& result = stage.result;
   print_summary(std::cout, result, out);
   print_coverage(stage.coverage, allow_uncovered);
-  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, report.json, plan.qif}\n";
+  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, coverage.png, report.json, plan.qif}\n";
   return stage.coverage.complete() || allow_uncovered ? kExitOk : kExitFail;
 }
 
@@ -198,8 +198,8 @@ const Command kPlanCommand = {
     "one (ball touches only there, shaft clear, tilt), moves or drops those it cannot\n"
     "(with the reason in report.json), orders them into a short tour and writes FOLDER\n"
     "with plan.json, plan.csv, NAME.dmi (DMIS), NAME.prg (I++ DME), plan.png,\n"
-    "report.json and plan.qif (QIF 3.0, docs/qif.md), NAME being the folder's\n"
-    "name (docs/cmm.md, docs/formats.md).\n"
+    "coverage.png, report.json and plan.qif (QIF 3.0, docs/qif.md), NAME being the\n"
+    "folder's name (docs/cmm.md, docs/formats.md).\n"
     "The same inputs and seed give the same files.\n"
     "\n"
     "  --regions FILE       regions of PART (required)\n"

@@ -17,7 +17,7 @@
 //   regions.json, regions.png
 //   toolpath.nc, toolpath.csv     (generated paths only)
 //   prediction.json, prediction.png
-//   plan/               plan.json, plan.csv, NAME.dmi, NAME.prg, plan.png, report.json,
+//   plan/               plan.json, plan.csv, NAME.dmi, NAME.prg, plan.png, coverage.png, report.json,
 //                       plan.qif (docs/qif.md)
 //   measurements.csv    (simulated measurements only)
 //   comparison.json

@@ -6,6 +6,7 @@
 #include "io/cmm/ippdme_writer.hpp"
 #include "io/plan_csv.hpp"
 #include "io/plan_file.hpp"
+#include "planning/coverage_image.hpp"
 #include "planning/plan_image.hpp"
 #include "planning/plan_report.hpp"
 
@@ -45,6 +46,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);
   const std::vector<unsigned char> png = plan_image_png(part, map, out.result);
+  const std::vector<unsigned char> coverage_png = coverage_image_png(part, map, out.result, out.coverage);
   out.files = {
       {"plan.json", out.plan_json},
       {"plan.csv", plan_to_csv_text(out.result.plan)},
@@ -52,6 +54,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
       {program + ".prg", ippdme_program_text(cmm)},
       {"report.json", plan_report_json(out.result, out.coverage, options, options.part_name, regions_name, prediction_name)},
       {"plan.png", std::string(png.begin(), png.end())},
+      {"coverage.png", std::string(coverage_png.begin(), coverage_png.end())},
   };
   return out;
 }

@@ -429,7 +429,7 @@ TEST_CASE("furrow run gives byte for byte what the chain of single commands give
     CHECK((r.status == 0 || (r.status == 1 && (step[0] == "compare" || step[0] == "report"))));
   }
   for (const char* f : {"regions.json", "regions.png", "toolpath.nc", "toolpath.csv", "prediction.json",
-                        "prediction.png", "plan/plan.json", "plan/plan.csv", "plan/report.json", "plan/plan.png",
+                        "prediction.png", "plan/plan.json", "plan/plan.csv", "plan/report.json", "plan/plan.png", "plan/coverage.png",
                         "measurements.csv", "comparison.json"}) {
     INFO(f);
     CHECK(fs::exists(chain + "/" + f));

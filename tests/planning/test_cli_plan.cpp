@@ -43,7 +43,7 @@ TEST_CASE("furrow plan writes the plan folder, and the same seed gives the same 
   REQUIRE(r.status == 0);
   CHECK(r.err.empty());  // not a terminal: no progress
   CHECK(r.out.find("plan: 120 points in 7 regions") != std::string::npos);
-  for (const char* f : {"plan.json", "plan.csv", "mould_a.dmi", "mould_a.prg", "plan.png", "report.json"})
+  for (const char* f : {"plan.json", "plan.csv", "mould_a.dmi", "mould_a.prg", "plan.png", "coverage.png", "report.json"})
     CHECK(fs::exists(dir + "/mould_a/" + f));
   const InspectionPlan plan = read_plan(dir + "/mould_a/plan.json");
   CHECK(plan.points.size() == 120);
@@ -68,7 +68,7 @@ TEST_CASE("furrow plan writes the plan folder, and the same seed gives the same 
   // A second run (the first folder moved aside): the same bytes in every file.
   fs::rename(dir + "/mould_a", dir + "/first");
   REQUIRE(run_furrow(args).status == 0);
-  for (const char* f : {"plan.json", "plan.csv", "mould_a.dmi", "mould_a.prg", "plan.png", "report.json"})
+  for (const char* f : {"plan.json", "plan.csv", "mould_a.dmi", "mould_a.prg", "plan.png", "coverage.png", "report.json"})
     CHECK(slurp(dir + "/first/" + f) == slurp(dir + "/mould_a/" + f));
 }
 

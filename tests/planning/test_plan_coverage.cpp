@@ -8,10 +8,12 @@
 #include <utility>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "io/part_file.hpp"
 #include "io/plan_file.hpp"
 #include "plan_fixtures.hpp"
+#include "planning/coverage_image.hpp"
 #include "planning/plan_coverage.hpp"
 #include "support/run_cli.hpp"
 
@@ -164,6 +166,38 @@ TEST_CASE("coverage by area: each region whole under one state, the states sum t
   CHECK(std::abs(by_problem - a.unreachable_access) <= 1e-9 * a.total);
   const PlanCoverage fits = plan_coverage(plan_probe_points(part, map, groove_options(1)), 5);
   CHECK(fits.area.covered == fits.area.total);
+}
+
+TEST_CASE("coverage.png shows the groove's bottom out of reach of a 4 mm ball, and nothing out of reach of a 1 mm ball") {
+  // Pixels by hue, which shading does not change: out of reach is red
+  // (green and blue under 40 % of red), covered green (green over 1.5 x red).
+  auto count = [](const std::vector<unsigned char>& png, bool red) {
+    const cv::Mat img = cv::imdecode(png, cv::IMREAD_COLOR);
+    REQUIRE_FALSE(img.empty());
+    int n = 0;
+    for (int y = 0; y < img.rows; ++y)
+      for (int x = 0; x < img.cols; ++x) {
+        const cv::Vec3b bgr = img.at<cv::Vec3b>(y, x);
+        const double b = bgr[0], g = bgr[1], r = bgr[2];
+        if (red ? (r > 60 && g < 0.4 * r && b < 0.4 * r) : (g > 60 && g > 1.5 * r && g > 1.5 * b)) ++n;
+      }
+    return n;
+  };
+  const Part part = groove_part(1.0);
+  const RegionMap map = partition_of(part, 60, 60);
+  const PlanResult short_plan = plan_probe_points(part, map, groove_options(4));
+  const PlanCoverage short_coverage = plan_coverage(short_plan, 5);
+  REQUIRE(short_coverage.area.unreachable_access > 0);
+  const std::vector<unsigned char> png = coverage_image_png(part, map, short_plan, short_coverage);
+  CHECK(png == coverage_image_png(part, map, short_plan, short_coverage));  // deterministic
+  CHECK(count(png, true) > 100);
+  CHECK(count(png, false) > 100);
+  const PlanResult fits = plan_probe_points(part, map, groove_options(1));
+  const PlanCoverage fits_coverage = plan_coverage(fits, 5);
+  REQUIRE(fits_coverage.complete());
+  const std::vector<unsigned char> all = coverage_image_png(part, map, fits, fits_coverage);
+  CHECK(count(all, true) == 0);
+  CHECK(count(all, false) > 100);
 }
 
 TEST_CASE("furrow plan exits 1 naming an uncovered region, 0 with --allow-uncovered, and compare cannot pass it") {

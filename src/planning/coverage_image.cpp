@@ -1,0 +1,70 @@
+#include "planning/coverage_image.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgproc.hpp>
+
+#include "render/colour_scale.hpp"
+#include "render/part_views.hpp"
+#include "render/plot_canvas.hpp"
+
+namespace furrow {
+
+namespace {
+
+const Rgb kOutsideRegions{215, 215, 215}, kHiddenPoint{150, 150, 150};
+
+}  // namespace
+
+Rgb coverage_colour(CoverageState state) {
+  switch (state) {
+    case CoverageState::covered: return {90, 175, 90};
+    case CoverageState::reachable_unplanned: return {240, 180, 40};
+    case CoverageState::unreachable_narrow: return {150, 90, 200};
+    case CoverageState::unreachable_access: return {215, 50, 50};
+  }
+  return kOutsideRegions;
+}
+
+std::vector<unsigned char> coverage_image_png(const Part& part, const RegionMap& map, const PlanResult& result,
+                                              const PlanCoverage& coverage) {
+  // The state of each region id; a region the plan does not know is grey.
+  std::vector<const RegionCoverage*> of_region(map.regions.size(), nullptr);
+  for (const RegionCoverage& r : coverage.regions)
+    if (r.region >= 0 && static_cast<std::size_t>(r.region) < of_region.size())
+      of_region[static_cast<std::size_t>(r.region)] = &r;
+  const SurfacePainter paint = [&](std::size_t face, const Eigen::Vector2d& uv) {
+    const std::optional<int> id = map.region_at(static_cast<int>(face), uv.x(), uv.y());
+    if (!id || !of_region[static_cast<std::size_t>(*id)]) return SurfacePaint{kOutsideRegions, id ? *id : -1};
+    return SurfacePaint{coverage_colour(of_region[static_cast<std::size_t>(*id)]->state), *id};
+  };
+  bool present[4] = {false, false, false, false};
+  for (const RegionCoverage& r : coverage.regions) present[static_cast<int>(r.state)] = true;
+  static const char* const kNames[] = {"covered", "reachable, not planned", "too narrow for the ball",
+                                       "out of the probe's reach"};
+  std::vector<LegendEntry> legend;
+  for (int k = 0; k < 4; ++k)
+    if (present[k]) legend.push_back({coverage_colour(static_cast<CoverageState>(k)), kNames[k]});
+  legend.push_back({Rgb{35, 35, 35}, "planned point"});
+  char title[160];
+  std::snprintf(title, sizeof title, "Coverage: %.1f %% of %.0f mm2 measured, %d of %zu regions at their minimum",
+                100 * coverage.area.share_covered(), coverage.area.total, coverage.regions_covered,
+                coverage.regions.size());
+  PartViewsFigure fig = draw_part_views(title, part, paint, legend);
+  cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());
+  for (const ViewPanel& panel : fig.panels) {
+    // Drawn within the panel, as plan.png draws its marks.
+    cv::Mat view = img(cv::Rect(panel.left, panel.top, panel.raster.width, panel.raster.height));
+    const double tolerance = 1.5 / panel.raster.camera.scale;
+    for (const PlannedPoint& p : result.plan.points) {
+      const Eigen::Vector2d at = panel.to_figure(p.xyz);
+      const cv::Point c(static_cast<int>(std::lround(at.x())) - panel.left,
+                        static_cast<int>(std::lround(at.y())) - panel.top);
+      if (panel.raster.visible(p.xyz, tolerance)) cv::circle(view, c, 1, plot::kInk, cv::FILLED, cv::LINE_AA);
+      else cv::circle(view, c, 2, plot::bgr(kHiddenPoint), 1, cv::LINE_AA);
+    }
+  }
+  return part_views_png(fig);
+}
+
+}  // namespace furrow
