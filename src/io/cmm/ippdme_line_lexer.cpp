@@ -1,5 +1,7 @@
 #include "io/cmm/ippdme_line_lexer.hpp"
 
+#include <omp.h>
+
 #include <exception>
 #include <system_error>
 #include <thread>
@@ -103,6 +105,8 @@ std::string_view next_part(std::string_view text, std::size_t start, std::size_t
   const std::size_t end = text.find('\n', start + chunk_bytes - 1);
   return text.substr(start, end == std::string_view::npos ? std::string_view::npos : end + 1 - start);
 }
+
+bool second_thread_allowed() { return omp_get_max_threads() >= 2; }
 
 struct ChunkInFlight::State {
   std::thread thread;

@@ -49,7 +49,7 @@ bool lex_ippdme_line(int number, std::string_view line, IppdmeLexedLine& out, Ip
 // items)` one by one, `items` null when the line's point items were not read
 // in place. Chunks of about `chunk_bytes` (cut after a line end) are lexed in
 // pairs, one on the calling thread and one on a second thread; a text within
-// one chunk is lexed on the calling thread alone. An exception from `apply`
+// one chunk, or with OMP_NUM_THREADS=1, is lexed on the calling thread alone. An exception from `apply`
 // ends the read once the chunk in flight is lexed. The lines' string views
 // point into `text`.
 template <class Apply>
@@ -68,6 +68,9 @@ void lex_chunk(std::string_view part, Chunk& chunk);
 // The chunk from `start`: about `chunk_bytes`, ending after a line end (or
 // at the text's end).
 std::string_view next_part(std::string_view text, std::size_t start, std::size_t chunk_bytes);
+// Whether a second thread may be used: OpenMP's thread limit
+// (OMP_NUM_THREADS), which bounds every parallel stage of Furrow, is 2 or more.
+bool second_thread_allowed();
 // Runs `lex_chunk(part, chunk)` on a second thread; `wait` returns when it
 // is done (rethrowing what it threw). Joins in its destructor.
 class ChunkInFlight {
@@ -102,10 +105,16 @@ void for_each_lexed_ippdme_line(std::string_view text, std::size_t chunk_bytes, 
   // and applies the first; the lexing dominates, so both cores share it. The
   // two chunks' buffers are kept from pair to pair.
   d::Chunk first_chunk, second_chunk;
+  const bool two_threads = text.size() > chunk_bytes && d::second_thread_allowed();
   std::size_t start = 0;
   while (start < text.size()) {
     const std::string_view first = d::next_part(text, start, chunk_bytes);
     start += first.size();
+    if (!two_threads) {
+      d::lex_chunk(first, first_chunk);
+      apply_chunk(first_chunk);
+      continue;
+    }
     std::unique_ptr<d::ChunkInFlight> second;
     if (start < text.size()) {
       const std::string_view part = d::next_part(text, start, chunk_bytes);

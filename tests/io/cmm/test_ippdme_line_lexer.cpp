@@ -7,6 +7,7 @@
 // through the pipeline: a log larger than one chunk reads back the points
 // written, bit for bit, and an error in a later chunk names its own line.
 #include <doctest/doctest.h>
+#include <omp.h>
 
 #include <cstring>
 #include <filesystem>
@@ -100,15 +101,22 @@ TEST_CASE("I++ DME lexer: chunks of any size give the lines one by one in file o
   for (const char* name : {"/ClientServerLogs/AlignPart_Client.log", "/ClientServerLogs/AlignPart_Server.log",
                            "/AlignPart.res", "/AlignPart.prg", "/scan.res"})
     texts.push_back(read_file(nist + name));
-  for (const std::string& text : texts) {
-    const std::vector<std::string> oracle = line_by_line(text);
-    for (const std::size_t chunk : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{64},
-                                    std::size_t{1000}, text.size(), text.size() + 1}) {
-      CAPTURE(chunk);
-      CAPTURE(text.size());
-      CHECK(pipelined(text, chunk) == oracle);
+  // With OpenMP's thread limit at 1 the chunks are lexed on this thread alone.
+  const int threads = omp_get_max_threads();
+  for (const int limit : {threads, 1}) {
+    omp_set_num_threads(limit);
+    CAPTURE(limit);
+    for (const std::string& text : texts) {
+      const std::vector<std::string> oracle = line_by_line(text);
+      for (const std::size_t chunk : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{64},
+                                      std::size_t{1000}, text.size(), text.size() + 1}) {
+        CAPTURE(chunk);
+        CAPTURE(text.size());
+        CHECK(pipelined(text, chunk) == oracle);
+      }
     }
   }
+  omp_set_num_threads(threads);
 }
 
 TEST_CASE("I++ DME lexer: an exception from the reader ends the read with a chunk in flight") {
