@@ -354,3 +354,43 @@ TEST_CASE("compensate --rework: a bad threshold, or one without --rework, fails 
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(l.dir + "/bad.json"));
 }
+
+TEST_CASE("compensate --rework: a program in inches is refused with status 2, as the rework writes millimetres") {
+  const Setup& l = setup();
+  // The example program in inches (G20, every coordinate / 25.4 with 5
+  // decimals): the full compensation reads it, the rework written in mm
+  // after its G20 header would not be where it was written.
+  std::string inch;
+  for (const std::string& line : lines_of(slurp(l.program))) {
+    if (line == "G21 G90 G17") {
+      inch += "G20 G90 G17\n";
+      continue;
+    }
+    std::string out;
+    for (std::size_t i = 0; i < line.size();) {
+      const char c = line[i];
+      if ((c == 'X' || c == 'Y' || c == 'Z') && i + 1 < line.size() && line[0] == 'G') {
+        std::size_t end = i + 1;
+        while (end < line.size() && line[end] != ' ') ++end;
+        char value[32];
+        std::snprintf(value, sizeof value, "%.5f", std::stod(line.substr(i + 1, end - i - 1)) / 25.4);
+        out += c;
+        out += value;
+        i = end;
+      } else {
+        out += c;
+        ++i;
+      }
+    }
+    inch += out + "\n";
+  }
+  const std::string program = l.dir + "/inch.nc", out = l.dir + "/inch_rework.nc";
+  test::write_text(program, inch);
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", program, "--tool",
+                             l.tool, "--out", out, "--rework"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("units") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(l.dir + "/inch_rework.json"));
+}
