@@ -49,7 +49,8 @@ std::vector<std::string> split_lines(const std::string& text) {
 
 class Writer {
  public:
-  Writer(ReworkFormat format, int decimals, std::string eol) : apt_(format == ReworkFormat::apt), decimals_(decimals), eol_(std::move(eol)) {}
+  Writer(ReworkFormat format, int decimals, std::string eol)
+      : apt_(format == ReworkFormat::apt), decimals_(decimals), eol_(std::move(eol)) {}
 
   void raw(const std::string& line) { out_ += line + eol_; }
 
@@ -102,7 +103,8 @@ std::string write_rework_program(const std::string& original_text, const Toolpat
   int header_end = std::min(first, static_cast<int>(lines.size()) + 1);
   // APT: a RAPID just before the first motion is that motion's modifier,
   // not header: the rework writes its own.
-  while (format == ReworkFormat::apt && header_end > 1 && is_rapid_statement(lines[static_cast<std::size_t>(header_end - 2)]))
+  while (format == ReworkFormat::apt && header_end > 1 &&
+         is_rapid_statement(lines[static_cast<std::size_t>(header_end - 2)]))
     --header_end;
   for (int i = 1; i < header_end; ++i) w.raw(lines[static_cast<std::size_t>(i - 1)]);
   bool up = false;  // at the clearance height over a known position
