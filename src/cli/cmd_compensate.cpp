@@ -112,8 +112,40 @@ int run_compensate(Args& args) {
     std::cerr << buf;
     return kExitInternal;
   }
+  if (done.rework) {
+    const ReworkProgram& r = *done.rework;
+    const ReworkSelection& sel = r.selection;
+    if (r.text.empty()) {
+      // Nothing to re-cut: a programmer expects no program rather than an
+      // empty one to load, and the exit status of success.
+      std::cout << "no rework needed: the error field's largest material left, " << um(sel.largest_field)
+                << ", is within the threshold " << um(r.threshold) << "; nothing written\n";
+      return kExitOk;
+    }
+    const ReworkCheck& rc = r.check;
+    if (!rc.safe()) {
+      char buf[320];
+      if (rc.deeper > 0)
+        std::snprintf(buf, sizeof buf,
+                      "furrow compensate: nothing written: the rework program would cut %.4f mm deeper than the "
+                      "compensated program at (%.3f, %.3f, %.3f) (%zu z-map nodes at %.3f mm)\n",
+                      rc.worst_excess, rc.worst.x(), rc.worst.y(), rc.worst.z(), rc.deeper, rc.resolution);
+      else
+        std::snprintf(buf, sizeof buf,
+                      "furrow compensate: nothing written: a rapid of the rework program (line %d) would cut %.4f mm "
+                      "into the part at (%.3f, %.3f, %.3f) (%zu z-map nodes at %.3f mm)\n",
+                      rc.worst_rapid_line, rc.worst_rapid_depth, rc.worst_rapid.x(), rc.worst_rapid.y(),
+                      rc.worst_rapid.z(), rc.rapid_nodes_cut, rc.resolution);
+      std::cerr << buf;
+      return kExitInternal;
+    }
+    std::cout << "rework: " << sel.stretches.size() << " stretch" << (sel.stretches.size() == 1 ? "" : "es") << " in "
+              << sel.regions.size() << " region" << (sel.regions.size() == 1 ? "" : "s") << ", " << sel.moves_kept
+              << " of " << sel.moves << " moves re-cut where material left exceeds " << um(r.threshold)
+              << "; rapids at the clearance height " << sel.clearance << " mm\n";
+  }
   outputs.file(record, done.json);
-  outputs.file(out_path, done.program.text);
+  outputs.file(out_path, done.rework ? done.rework->text : done.program.text);
   outputs.publish(out_path);
   std::cout << "wrote " << out_path << " and " << record << "\n";
   return kExitOk;
@@ -128,6 +160,7 @@ const Command kCompensateCommand = {
     "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc|PATH.apt\n"
     "                         --tool TOOL.json --out COMP.nc|COMP.apt [--gain G] [--max-offset MM]\n"
     "                         [--smoothing MM|auto] [--clip-back N] [--prediction P.json]\n"
+    "                         [--rework [--rework-threshold MM]]\n"
     "                         [--units mm|inch]\n"
     "\n"
     "Fits the systematic error of a measured part (the comparison's residuals\n"
@@ -143,6 +176,11 @@ const Command kCompensateCommand = {
     "that cut deeper than their offsets allow have their offsets halved and\n"
     "the check runs again (--clip-back rounds); if it still fails, nothing is\n"
     "written and the exit status is 3.\n"
+    "With --rework, the program written re-cuts the same part: only the\n"
+    "compensated moves where the field says material is left beyond the\n"
+    "threshold, joined by rapids at the program's clearance height, checked\n"
+    "against the full compensated program; when no move needs it, nothing is\n"
+    "written (exit 0, docs/compensation.md \"Rework\").\n"
     "\n"
     "  --comparison FILE     comparison.json of furrow compare for PART (required)\n"
     "  --toolpath FILE       the G-code program or APT CL file the part was cut\n"

@@ -241,6 +241,8 @@ void read_compensate(const JsonCursor& c, Job& job) {
   read_option_members(c, compensate_option_table(), options);
   const std::string out = jf::string(c.raw("out"), c.path("out"));
   c.finish("docs/formats.md \"Job file\"");
+  if (options.rework_threshold && !options.rework)
+    throw InputError(c.path("rework_threshold") + ": is given without \"rework\": true");
   if (out.empty() || out.find('/') != std::string::npos || out.find('\\') != std::string::npos || out == "." ||
       out == "..")
     throw InputError(c.path("out") + ": expected a file name inside the output folder, got '" + out + "'");

@@ -268,6 +268,38 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
              c.worst.z(), c.worst_line, c.deeper, c.resolution);
     return;
   }
+  if (done.rework) {
+    // The rework program instead of the full one (docs/compensation.md
+    // "Rework"): none when nothing needs re-cutting, refused as the full
+    // program is when its check fails.
+    const ReworkProgram& r = *done.rework;
+    if (r.text.empty()) {
+      s.result.summary.push_back(line("compensate: no rework needed (largest material left %.2f um, threshold "
+                                      "%.2f um); nothing written",
+                                      r.selection.largest_field * 1000, r.threshold * 1000));
+      return;
+    }
+    if (!r.check.safe()) {
+      s.result.compensation_refused = true;
+      s.result.compensation_message =
+          r.check.deeper > 0
+              ? line("compensate: nothing written: the rework program would cut %.4f mm deeper than the compensated "
+                     "program at (%.3f, %.3f, %.3f)",
+                     r.check.worst_excess, r.check.worst.x(), r.check.worst.y(), r.check.worst.z())
+              : line("compensate: nothing written: a rapid of the rework program (line %d) would cut %.4f mm into "
+                     "the part at (%.3f, %.3f, %.3f)",
+                     r.check.worst_rapid_line, r.check.worst_rapid_depth, r.check.worst_rapid.x(),
+                     r.check.worst_rapid.y(), r.check.worst_rapid.z());
+      return;
+    }
+    s.add(out, r.text);
+    s.add(record, done.json);
+    s.result.summary.push_back(line("compensate: rework %s, %zu stretches in %zu regions, %zu of %zu moves re-cut "
+                                    "beyond %.2f um",
+                                    out.c_str(), r.selection.stretches.size(), r.selection.regions.size(),
+                                    r.selection.moves_kept, r.selection.moves, r.threshold * 1000));
+    return;
+  }
   s.add(out, done.program.text);
   s.add(record, done.json);
   s.result.summary.push_back(line("compensate: %s, %zu tips moved, largest offset %.2f um, %zu clipped at %.2f um, "

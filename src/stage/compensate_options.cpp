@@ -55,6 +55,16 @@ OptionTable<CompensateOptions> make_table() {
   };
   clip_back.example = "4";
   t.push_back(clip_back);
+  t.push_back(toggle_option<O>(
+      "rework",
+      "write a rework program instead: only the compensated moves where the field says material is left beyond the "
+      "rework threshold, joined by rapids at the program's clearance height (nothing written when there are none)",
+      [](auto& o) -> auto& { return o.rework; }));
+  t.push_back(default_is(
+      number_option<O>("rework_threshold", "MM",
+                       "material left [mm] beyond which a move is re-cut (with rework only)",
+                       [](auto& o) -> auto& { return o.rework_threshold; }, Bound::non_negative),
+      "the upper limit of the comparison's tolerance zone"));
   return t;
 }
 

@@ -15,6 +15,11 @@ struct CompensateOptions {
   // the offsets of the moves the z-map check blames; after this many the
   // program is refused (exit 3). 0: refused at the first failed check.
   int clip_back = 8;
+  // Write a rework program instead of the full one (docs/compensation.md
+  // "Rework"): only where the field says material is left beyond
+  // rework_threshold, unset: the upper limit of the comparison's tolerance.
+  bool rework = false;
+  std::optional<double> rework_threshold;  // [mm], >= 0; only with rework
 };
 
 const OptionTable<CompensateOptions>& compensate_option_table();

@@ -14,6 +14,7 @@
 #include "io/machining/apt_rewrite.hpp"
 #include "io/machining/gcode_reader.hpp"
 #include "io/machining/gcode_rewrite.hpp"
+#include "io/machining/rework_program.hpp"
 #include "machining/prediction/path_contacts.hpp"
 
 namespace furrow {
@@ -34,6 +35,47 @@ json clip_back_list(const std::vector<ClipBackPoint>& points) {
   for (const ClipBackPoint& p : points)
     out.push_back({{"line", p.line}, {"requested", p.requested}, {"applied", p.applied}, {"rounds", p.rounds}});
   return out;
+}
+
+json rework_section(const ReworkProgram& r) {
+  const ReworkSelection& s = r.selection;
+  json stretches = json::array();
+  for (const ReworkStretch& st : s.stretches) {
+    double length = 0;
+    for (std::size_t k = 1; k < st.tips.size(); ++k) length += (st.tips[k] - st.tips[k - 1]).norm();
+    stretches.push_back({{"first_line", st.first_line},
+                         {"last_line", st.last_line},
+                         {"points", st.tips.size()},
+                         {"length", length}});
+  }
+  json regions = json::array();
+  for (const ReworkRegion& g : s.regions)
+    regions.push_back({{"box", {g.box.min().x(), g.box.min().y(), g.box.max().x(), g.box.max().y()}},
+                       {"stretches", g.stretches.size()}});
+  json doc = {{"threshold", r.threshold},
+              {"threshold_from", r.threshold_given ? "option" : "comparison tolerance"},
+              {"largest_field", s.largest_field},
+              {"written", !r.text.empty()},
+              {"clearance", s.clearance},
+              {"step", s.step},
+              {"moves", s.moves},
+              {"moves_kept", s.moves_kept},
+              {"pieces", s.pieces},
+              {"pieces_kept", s.pieces_kept},
+              {"stretches", stretches},
+              {"regions", regions}};
+  if (!r.text.empty())
+    doc["check"] = {{"resolution", r.check.resolution},
+                    {"tolerance", r.check.tolerance},
+                    {"nodes", r.check.nodes},
+                    {"deeper", r.check.deeper},
+                    {"worst_excess", r.check.worst_excess},
+                    {"rapids", r.check.rapids},
+                    {"rapids_unchecked", r.check.rapids_unchecked},
+                    {"rapid_nodes_cut", r.check.rapid_nodes_cut},
+                    {"worst_rapid_depth", r.check.worst_rapid_depth},
+                    {"safe", r.check.safe()}};
+  return doc;
 }
 
 std::string document(const Part& part, const CompensatedProgram& c, const CompensateOptions& options,
@@ -94,6 +136,7 @@ std::string document(const Part& part, const CompensatedProgram& c, const Compen
         {"worst_excess", c.check.worst_excess},
         {"safe", c.check.safe()}}},
   };
+  if (c.rework) doc["rework"] = rework_section(*c.rework);
   return doc.dump(2) + "\n";
 }
 
@@ -109,6 +152,10 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
     throw InputError("compensate: --max-offset must be a positive number of mm");
   if (options.clip_back < 0 || options.clip_back > 30)
     throw InputError("compensate: --clip-back must be in [0, 30]");
+  if (options.rework_threshold && !options.rework)
+    throw InputError("compensate: --rework-threshold is given without --rework");
+  if (options.rework_threshold && (!(*options.rework_threshold >= 0) || !std::isfinite(*options.rework_threshold)))
+    throw InputError("compensate: --rework-threshold must be a length >= 0 in mm");
   if (tools.changes_tools())
     throw InputError(names.toolpath + ": the program changes tools; compensation takes one tool");
   const bool apt = format == ProgramFormat::apt;
@@ -155,6 +202,40 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
     ++out.clip_back_rounds;
   }
   for (const auto& [where, point] : reduced) out.clip_back.push_back(point);
+  if (options.rework && out.check.safe()) {
+    ReworkProgram r;
+    r.threshold_given = options.rework_threshold.has_value();
+    r.threshold = options.rework_threshold.value_or(comparison.options.tolerance.upper());
+    ReworkOptions rework_options;
+    rework_options.threshold = r.threshold;
+    r.selection = select_rework(part, cutter, path, out.offset, out.field.field, rework_options);
+    if (!r.selection.stretches.empty()) {
+      const int decimals = out.program.decimals;
+      r.text = write_rework_program(program_text, path, r.selection.stretches, r.selection.clearance, decimals,
+                                    apt ? ReworkFormat::apt : ReworkFormat::gcode);
+      const Toolpath rework = parse(r.text, names.out);
+      // Read back to the tips written: the header may set inch units or a
+      // work offset that the rework's millimetres in the part frame ignore.
+      const double half = 0.5 * std::pow(10.0, -decimals);
+      bool same = rework.passes.size() == r.selection.stretches.size();
+      for (std::size_t s = 0; same && s < rework.passes.size(); ++s) {
+        const auto& tips = r.selection.stretches[s].tips;
+        const auto& points = rework.passes[s].points;
+        same = points.size() == tips.size() + 1;
+        for (std::size_t k = 0; same && k < tips.size(); ++k)
+          same = (points[k + 1].position - tips[k]).cwiseAbs().maxCoeff() <= half * (1 + 1e-6) + 1e-9;
+      }
+      if (!same)
+        throw InputError(names.toolpath +
+                         ": the rework program, read back, is not where it was written: its header sets units or a "
+                         "work offset the rework (written in millimetres in the part frame) cannot carry");
+      const Toolpath written = parse(out.program.text, names.out);
+      const double full_half = 0.5 * std::pow(10.0, -out.program.decimals) * out.program.unit_mm;
+      r.check = check_rework(cutter, path, written, rework, r.selection.clearance,
+                             1e-3 + std::sqrt(3.0) * (half + full_half));
+    }
+    out.rework = std::move(r);
+  }
   out.json = document(part, out, options, names);
   return out;
 }

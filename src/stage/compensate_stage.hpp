@@ -16,6 +16,7 @@
 // reduce_offset), the program written and checked again, at most
 // options.clip_back rounds (docs/compensation.md "Safety"). `safe` false
 // at the end means the caller must write nothing.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@
 #include "inspection/comparison_error_field.hpp"
 #include "io/machining/program_rewrite.hpp"
 #include "machining/compensation/path_offset.hpp"
+#include "machining/compensation/rework_check.hpp"
+#include "machining/compensation/rework_selection.hpp"
 #include "machining/compensation/zmap_check.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
@@ -40,6 +43,18 @@ struct ClipBackPoint {
   int rounds = 0;
 };
 
+// A rework program (options.rework; docs/compensation.md "Rework"): the
+// stretches of the compensated path over material left beyond the
+// threshold, written and checked. Empty `text` when nothing needs
+// re-cutting (the caller writes nothing and says so).
+struct ReworkProgram {
+  double threshold = 0;            // [mm] used
+  bool threshold_given = false;    // false: the comparison's upper tolerance limit
+  ReworkSelection selection;
+  std::string text;                // the program; empty when no stretch
+  ReworkCheck check;               // of `text` read back
+};
+
 // The program formats compensation writes back.
 enum class ProgramFormat { gcode, apt };
 
@@ -50,6 +65,8 @@ struct CompensatedProgram {
   CompensationGougeCheck check;  // of that program
   int clip_back_rounds = 0;   // rounds the clip-back ran
   std::vector<ClipBackPoint> clip_back;  // points whose offsets it reduced, in path order
+  // With options.rework and a safe full program: what to write instead of it.
+  std::optional<ReworkProgram> rework;
   std::string json;           // COMP.json's text
 };
 

@@ -97,6 +97,35 @@ TEST_CASE("job compensate: furrow run writes the program furrow compensate write
   CHECK(std::abs(record["largest_offset"].get<double>() - 0.5 * kBumpHeight) < 0.1 * 0.5 * kBumpHeight);
 }
 
+TEST_CASE("job compensate: with rework, furrow run writes the rework program furrow compensate --rework writes") {
+  const std::string dir = test::scratch_dir("job-compensate-rework");
+  const std::string out = dir + "/out";
+  // The job's zone (0.2 mm) would leave the 50 um bump alone: a threshold
+  // of 20 um asks for it.
+  test::write_text(dir + "/job.json",
+                   mould_job(out, {{"compensate", {{"out", "rework.nc"}, {"rework", true}, {"rework_threshold", 0.02}}}})
+                       .dump(1));
+  const auto run = run_furrow({"run", dir + "/job.json"});
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  REQUIRE(fs::exists(out + "/rework.nc"));
+  CHECK(run.out.find("compensate: rework rework.nc") != std::string::npos);
+  const auto by_hand = run_furrow({"compensate", test::source_path("examples/parts/mould.json"), "--comparison",
+                                   out + "/comparison.json", "--toolpath",
+                                   test::source_path("examples/toolpaths/mould_ball6.nc"), "--tool",
+                                   test::source_path("examples/tools/ball_d6.json"), "--out", dir + "/hand.nc",
+                                   "--rework", "--rework-threshold", "0.02"});
+  INFO(by_hand.err);
+  REQUIRE(by_hand.status == 0);
+  const std::string rework = slurp(out + "/rework.nc");
+  CHECK(rework == slurp(dir + "/hand.nc"));
+  const json record = json::parse(slurp(out + "/rework.json"));
+  CHECK(without_names(record) == without_names(json::parse(slurp(dir + "/hand.json"))));
+  // Not a copy of the whole program: only the stretches over the bump.
+  CHECK(record["rework"]["moves_kept"].get<std::size_t>() > 0);
+  CHECK(record["rework"]["moves_kept"].get<std::size_t>() < record["rework"]["moves"].get<std::size_t>() / 4);
+}
+
 TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, nothing written") {
   const std::string dir = test::scratch_dir("job-compensate-bad");
   struct Case {
@@ -112,6 +141,9 @@ TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, 
       {{{"compensate", {{"out", "../comp.nc"}}}}, "compensate.out"},
       {{{"compensate", {{"out", "comp.apt"}}}}, "compensate.out"},
       {{{"compensate", {{"out", "comp.json"}}}}, "compensate.out"},
+      {{{"compensate", {{"out", "comp.nc"}, {"rework", true}, {"rework_threshold", -0.01}}}},
+       "compensate.rework_threshold"},
+      {{{"compensate", {{"out", "comp.nc"}, {"rework_threshold", 0.01}}}}, "compensate.rework_threshold"},
       {{{"measurements", nullptr}}, "compensate"},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
