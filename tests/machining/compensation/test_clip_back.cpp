@@ -77,7 +77,7 @@ CompensatedProgram run(int rounds) {
   CompensateOptions options;
   options.clip_back = rounds;
   return compensate_stage(plate(), single_tool(kBall, path), text, ProgramFormat::gcode, {}, measured(), options,
-                          {"plate.json", "c.json", "pass.nc", "comp.nc"});
+                          {"plate.json", "c.json", "pass.nc", "comp.nc", ""});
 }
 
 // The largest excess [mm] of the written program's cut below the
