@@ -171,7 +171,7 @@ Eigen::Vector3d foot_normal(const Face& face, const Eigen::Vector2d& uv, Eigen::
 }  // namespace
 
 ClosestPointFinder::ClosestPointFinder(const Part& part, ClosestPointOptions options)
-    : part_(&part), options_(options) {
+    : part_(&part), control_box_(part.control_box()), options_(options) {
   check_options(options_);
   grid_ = std::make_unique<SeedGrid>(part, options_);
   if (options_.candidate_voxels) voxels_ = std::make_unique<CandidateVoxels>(*grid_);

@@ -114,6 +114,11 @@ class ClosestPointFinder {
   ClosestPointFinder& operator=(ClosestPointFinder&&) noexcept;
 
   const Part& part() const { return *part_; }
+  // The part's control box (Part::control_box) as it was at construction:
+  // it contains the part, so its exterior distance bounds the part's from
+  // below. Kept because callers that march along segments ask for it per
+  // segment, and Part::control_box walks every face.
+  const Eigen::AlignedBox3d& control_box() const { return control_box_; }
   const ClosestPointOptions& options() const { return options_; }
   std::size_t cell_count() const;
 
@@ -142,6 +147,7 @@ class ClosestPointFinder {
   ClosestPoint search(const Eigen::Vector3d& q, const ClosestPoint* hint, std::size_t excluded = kNoFace) const;
 
   const Part* part_;
+  Eigen::AlignedBox3d control_box_;
   ClosestPointOptions options_;
   std::unique_ptr<SeedGrid> grid_;
   std::unique_ptr<CandidateVoxels> voxels_;  // over grid_'s cells

@@ -24,7 +24,7 @@ std::optional<SegmentContact> first_contact(const ClosestPointFinder& finder, co
                                             double min_step, int max_steps) {
   const double length = (b - a).norm();
   const Eigen::Vector3d dir = length > 0 ? Eigen::Vector3d((b - a) / length) : Eigen::Vector3d::Zero();
-  const Eigen::AlignedBox3d box = finder.part().control_box();
+  const Eigen::AlignedBox3d& box = finder.control_box();
   const double allowed = radius - tolerance;
   double t = 0;
   for (int step = 0; step < max_steps; ++step) {

@@ -50,6 +50,18 @@ void choose_auto_tips(PlanState& s) {
       if (tilt <= access.max_tilt) problem.maybe[o].push_back(static_cast<int>(k));
     }
     pairs += static_cast<long>(problem.maybe[o].size());
+    // The greedy tests the points most tilted from the axis first: the
+    // likeliest to be blocked, so a tip that will not rank first is
+    // found out with fewest checks.
+    std::vector<int>& order = problem.test_order.emplace_back(problem.maybe[o].size());
+    std::vector<double> cosine(problem.maybe[o].size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      order[i] = static_cast<int>(i);
+      cosine[i] = candidates[static_cast<std::size_t>(problem.maybe[o][i])].normal.dot(probes[o].axis);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return cosine[static_cast<std::size_t>(a)] < cosine[static_cast<std::size_t>(b)];
+    });
   }
   problem.test = [&](int o, const std::vector<int>& list) {
     std::vector<char> out(list.size(), 0);

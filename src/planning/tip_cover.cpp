@@ -42,6 +42,40 @@ class CoverState {
     tests_ += static_cast<long>(batch.size());
   }
 
+  // Tests the untested pairs of s among uncovered elements a batch at a
+  // time, in problem.test_order's order, while `go_on(bound)` holds for the
+  // gain bound (gain(s) below) after each batch. True when none is left
+  // untested. The bound only shrinks, so stopping early never hides a set
+  // that would have ranked first.
+  template <class GoOn>
+  bool test_while(int s, long batch_size, GoOn go_on) {
+    const std::vector<int>& list = p_.maybe[static_cast<std::size_t>(s)];
+    const std::vector<int>* order =
+        p_.test_order.empty() ? nullptr : &p_.test_order[static_cast<std::size_t>(s)];
+    std::vector<signed char>& k = known_[static_cast<std::size_t>(s)];
+    std::vector<int> at;
+    for (std::size_t j = 0; j < list.size(); ++j) {
+      const std::size_t i = order ? static_cast<std::size_t>((*order)[j]) : j;
+      if (k[i] < 0 && !covered_[static_cast<std::size_t>(list[i])]) at.push_back(static_cast<int>(i));
+    }
+    int bound = gain(s);
+    for (std::size_t from = 0; from < at.size();) {
+      if (!go_on(bound)) return false;
+      const std::size_t to = std::min(at.size(), from + static_cast<std::size_t>(std::max(1L, batch_size)));
+      std::vector<int> batch;
+      for (std::size_t j = from; j < to; ++j) batch.push_back(list[static_cast<std::size_t>(at[j])]);
+      const std::vector<char> got = p_.test(s, batch);
+      if (got.size() != batch.size()) throw std::logic_error("tip cover: test gave the wrong number of answers");
+      for (std::size_t j = 0; j < batch.size(); ++j) {
+        k[static_cast<std::size_t>(at[from + j])] = got[j] ? 1 : 0;
+        bound -= got[j] ? 0 : 1;
+      }
+      tests_ += static_cast<long>(batch.size());
+      from = to;
+    }
+    return true;
+  }
+
   // Uncovered elements s covers, counting untested pairs as covered (an
   // upper bound; exact once test(s, true) ran since the last cover).
   int gain(int s) const {
@@ -97,7 +131,7 @@ void remove_redundant(const TipCoverProblem& p, CoverState& state, std::vector<i
 }
 
 // The greedy cover (header), chosen sets in the order chosen.
-std::vector<int> greedy(const TipCoverProblem& p, CoverState& state, TipCover& out) {
+std::vector<int> greedy(const TipCoverProblem& p, const TipCoverOptions& options, CoverState& state, TipCover& out) {
   const int sets = static_cast<int>(p.kinds.size());
   std::vector<int> chosen;
   for (int s = 0; s < sets; ++s)
@@ -132,7 +166,10 @@ std::vector<int> greedy(const TipCoverProblem& p, CoverState& state, TipCover& o
   while (!queue.empty()) {
     const int s = -queue.top().second;
     queue.pop();
-    state.test(s, true);
+    // Tested only while it may still rank first: once its bound drops
+    // below the next entry's it goes back with that bound.
+    state.test_while(s, options.test_batch,
+                     [&](int bound) { return queue.empty() || !(Entry{bound, -s} < queue.top()); });
     const int g = state.gain(s);
     if (g == 0) continue;
     if (!queue.empty() && Entry{g, -s} < queue.top()) {
@@ -325,6 +362,16 @@ bool exact(const TipCoverProblem& p, const CoverState& state, std::vector<int>& 
 
 TipCover solve_tip_cover(const TipCoverProblem& p, const TipCoverOptions& options) {
   if (p.maybe.size() != p.kinds.size()) throw std::invalid_argument("tip cover: one `maybe` list per set is needed");
+  if (!p.test_order.empty()) {
+    if (p.test_order.size() != p.maybe.size()) throw std::invalid_argument("tip cover: one `test_order` per set is needed");
+    for (std::size_t s = 0; s < p.maybe.size(); ++s) {
+      std::vector<int> sorted = p.test_order[s];
+      std::sort(sorted.begin(), sorted.end());
+      for (std::size_t i = 0; i < sorted.size(); ++i)
+        if (sorted.size() != p.maybe[s].size() || sorted[i] != static_cast<int>(i))
+          throw std::invalid_argument("tip cover: a `test_order` is not a permutation of its `maybe` list's positions");
+    }
+  }
   TipCover out;
   CoverState state(p);
   long pairs = 0;
@@ -332,7 +379,7 @@ TipCover solve_tip_cover(const TipCoverProblem& p, const TipCoverOptions& option
   out.exact = pairs <= options.exact_max_pairs;
   if (out.exact)
     for (int s = 0; s < static_cast<int>(p.maybe.size()); ++s) state.test(s, false);
-  std::vector<int> chosen = greedy(p, state, out);
+  std::vector<int> chosen = greedy(p, options, state, out);
   out.bound = harmonic(out.bound_n);
   if (out.exact) out.optimal = exact(p, state, chosen, options.exact_max_nodes, out.nodes);
   std::sort(chosen.begin(), chosen.end());

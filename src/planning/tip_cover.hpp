@@ -34,7 +34,9 @@
 //   greedy otherwise: the forced sets, then qualified sets by most newly
 //     covered elements while one adds any, then fresh sets likewise (a
 //     set's untested pairs count as covered until it is the best candidate
-//     and gets tested: the gain only shrinks, so this picks what the full
+//     and gets tested, `test_batch` pairs at a time in `test_order`, and
+//     goes back into the queue as soon as its bound falls below the next
+//     candidate's: the gain only shrinks, so this picks what the full
 //     greedy would), then every set whose elements the others cover is
 //     removed, the last chosen first. The fresh count is at most
 //     H(n) = 1 + 1/2 + ... + 1/n times the fewest possible, n being the
@@ -53,6 +55,11 @@ enum class TipKind { forced, qualified, fresh };
 struct TipCoverOptions {
   long exact_max_pairs = 20000;   // size limit of the exact search (pairs tested)
   long exact_max_nodes = 200000;  // branch-and-bound nodes before it gives up proving
+  // Greedy: pairs of a candidate set tested per batch before its gain bound
+  // is compared with the next candidate's again. Changes how many pairs are
+  // tested (`tests`), never the cover; fixed, not tied to the thread count,
+  // so that the report is the same on every machine.
+  long test_batch = 32;
 };
 
 struct TipCoverProblem {
@@ -60,6 +67,11 @@ struct TipCoverProblem {
   std::vector<TipKind> kinds;               // per set
   std::vector<std::vector<int>> maybe;      // per set, ascending element indices
   std::function<std::vector<char>(int set, const std::vector<int>& elements)> test;
+  // Optional, per set: the positions in maybe[s] (a permutation of 0 ..
+  // size - 1) in the order the greedy tests them, the pairs most likely not
+  // covered first. Empty: list order. Changes how many pairs are tested,
+  // never the cover.
+  std::vector<std::vector<int>> test_order;
 };
 
 struct TipCover {

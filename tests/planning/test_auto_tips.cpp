@@ -234,3 +234,122 @@ TEST_CASE("tips auto: the split access checks agree with check_access on every g
   CHECK(reach > 0);
   MESSAGE(agree << " pairs agree, " << reach << " reachable");
 }
+
+TEST_CASE("tips auto: the cover over the split checks picks what the plain greedy over check_access picks") {
+  // A floor and a wall facing -x (plan_fixtures.hpp); points on the floor
+  // and up the wall, the lowest ones where the probe body of every tip
+  // within 20 degrees of the wall's normal hits the floor: no orientation
+  // reaches them. The fast path, as choose_auto_tips runs it: the ball
+  // checks once per point, then the axis checks per orientation within the
+  // tilt limit, tested by the greedy in batches, most tilted first, with
+  // early stops. Oracle: check_access on every point and every orientation
+  // of the grid, and the plain greedy over that relation (written here).
+  const Part part = floor_and_wall(-40, 15, 25);
+  const ClosestPointFinder finder(part);
+  ProbeHead h = head_with("[]");
+  h.a = {0, 90, 15};
+  h.b = {-180, 180, 45};
+  PlannerOptions o = options("[]", TipChoice::automatic);
+  use_head(o, h);
+  ProbeGeometry base = planner_probe(o);
+  AccessOptions access;
+  access.max_tilt = 20 * 3.14159265358979323846 / 180;
+  access.clearance_z = 60;
+  std::vector<Eigen::Vector3d> points, normals;
+  for (double y : {-6.0, 0.0, 6.0}) {
+    for (double x : {-30.0, -15.0, -4.0, 2.0}) points.emplace_back(x, y, 0), normals.emplace_back(Eigen::Vector3d::UnitZ());
+    for (double z : {1.2, 1.6, 3.0, 6.0, 10.0, 15.0, 20.0})
+      points.emplace_back(5, y, z), normals.emplace_back(-Eigen::Vector3d::UnitX());
+  }
+  const std::vector<TipAngles> grid = tip_grid(h);
+  std::vector<ProbeGeometry> probes(grid.size(), base);
+  for (std::size_t t = 0; t < grid.size(); ++t) probes[t].axis = -tip_direction(grid[t]);
+  const int n = static_cast<int>(points.size()), sets = static_cast<int>(grid.size());
+
+  // The oracle relation and cover.
+  std::vector<std::set<int>> covers(grid.size());
+  for (int t = 0; t < sets; ++t)
+    for (int k = 0; k < n; ++k)
+      if (check_access(finder, points[static_cast<std::size_t>(k)], normals[static_cast<std::size_t>(k)],
+                       probes[static_cast<std::size_t>(t)], access).ok())
+        covers[static_cast<std::size_t>(t)].insert(k);
+  std::set<int> coverable;
+  for (const std::set<int>& c : covers) coverable.insert(c.begin(), c.end());
+  const std::size_t vertical = *vertical_orientation(grid);
+  std::vector<char> covered(static_cast<std::size_t>(n), 0);
+  std::vector<int> oracle = {static_cast<int>(vertical)};
+  for (int k : covers[vertical]) covered[static_cast<std::size_t>(k)] = 1;
+  for (;;) {
+    int best = -1, best_gain = 0;
+    for (int t = 0; t < sets; ++t) {
+      int g = 0;
+      for (int k : covers[static_cast<std::size_t>(t)]) g += !covered[static_cast<std::size_t>(k)];
+      if (g > best_gain) best = t, best_gain = g;
+    }
+    if (best < 0) break;
+    oracle.push_back(best);
+    for (int k : covers[static_cast<std::size_t>(best)]) covered[static_cast<std::size_t>(k)] = 1;
+  }
+  for (std::size_t j = oracle.size(); j-- > 1;) {
+    std::set<int> others;
+    for (std::size_t i = 0; i < oracle.size(); ++i)
+      if (i != j) others.insert(covers[static_cast<std::size_t>(oracle[i])].begin(), covers[static_cast<std::size_t>(oracle[i])].end());
+    bool needed = false;
+    for (int k : covers[static_cast<std::size_t>(oracle[j])]) needed = needed || !others.count(k);
+    if (!needed) oracle.erase(oracle.begin() + static_cast<long>(j));
+  }
+  std::sort(oracle.begin(), oracle.end());
+
+  // The fast path.
+  TipCoverProblem problem;
+  problem.elements = n;
+  problem.maybe.resize(grid.size());
+  for (int t = 0; t < sets; ++t) {
+    problem.kinds.push_back(static_cast<std::size_t>(t) == vertical ? TipKind::forced : TipKind::fresh);
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector3d& p = points[static_cast<std::size_t>(k)];
+      const Eigen::Vector3d& nk = normals[static_cast<std::size_t>(k)];
+      const double tilt = std::acos(std::clamp(nk.dot(probes[static_cast<std::size_t>(t)].axis), -1.0, 1.0));
+      if (tilt <= access.max_tilt && check_point_access(finder, p, nk, base, access).ok())
+        problem.maybe[static_cast<std::size_t>(t)].push_back(k);
+    }
+    const std::vector<int>& m = problem.maybe[static_cast<std::size_t>(t)];
+    std::vector<int> order(m.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      const Eigen::Vector3d& axis = probes[static_cast<std::size_t>(t)].axis;
+      return normals[static_cast<std::size_t>(m[static_cast<std::size_t>(a)])].dot(axis) <
+             normals[static_cast<std::size_t>(m[static_cast<std::size_t>(b)])].dot(axis);
+    });
+    problem.test_order.push_back(order);
+  }
+  problem.test = [&](int t, const std::vector<int>& list) {
+    std::vector<char> out;
+    for (int k : list)
+      out.push_back(check_axis_access(finder, points[static_cast<std::size_t>(k)], normals[static_cast<std::size_t>(k)],
+                                      probes[static_cast<std::size_t>(t)], access).ok());
+    return out;
+  };
+  TipCoverOptions greedy_only;
+  greedy_only.exact_max_pairs = -1;
+  greedy_only.test_batch = 2;
+  const TipCover cover = solve_tip_cover(problem, greedy_only);
+  CHECK(cover.chosen == oracle);
+  std::vector<int> unreachable;
+  for (int k = 0; k < n; ++k)
+    if (!coverable.count(k)) unreachable.push_back(k);
+  CHECK(cover.uncoverable == unreachable);
+  REQUIRE(!unreachable.empty());                             // some points no orientation reaches
+  REQUIRE(unreachable.size() < static_cast<std::size_t>(n));  // and some it does
+  // Every pair the fast path tested agrees with the whole check.
+  long pairs = 0;
+  for (int t = 0; t < sets; ++t) {
+    const std::vector<int>& m = problem.maybe[static_cast<std::size_t>(t)];
+    pairs += static_cast<long>(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i)
+      if (cover.known[static_cast<std::size_t>(t)][i] >= 0)
+        CHECK((cover.known[static_cast<std::size_t>(t)][i] == 1) == (covers[static_cast<std::size_t>(t)].count(m[i]) == 1));
+  }
+  MESSAGE(n << " points, " << unreachable.size() << " unreachable, " << oracle.size() << " tips; " << cover.tests << " of "
+            << pairs << " pairs tested");
+}
