@@ -57,7 +57,8 @@ ProcessContext process_context(ResultsDatabase& db, const ComparisonRecord& part
     input = load_spc_input(db, SpcBy::region, {});
     const auto same = std::find_if(input.parts.begin(), input.parts.end(),
                                    [&](const PartRecord& p) { return p.serial == part.serial; });
-    const PartRecord record{part.serial, part.date, part.verdict};
+    // Not stored: no Furrow version is on record for it.
+    const PartRecord record{part.serial, part.date, part.verdict, part.operator_name, part.cmm, std::nullopt};
     if (same == input.parts.end()) {
       input.parts.push_back(record);
       pc.position = input.parts.size() - 1;
