@@ -100,6 +100,12 @@ int run_compensate(Args& args) {
   std::cout << "program: " << done.program.lines_moved << " lines moved (" << done.program.words_rewritten
             << " words rewritten, " << done.program.words_added << " added, " << done.program.arcs_split
             << " arcs split into lines)\n";
+  if (done.expected.overall.count > 0) {
+    const ExpectedStatistics& e = done.expected.overall;
+    std::cout << "expected at the " << e.count << " measured points: RMS " << um(e.rms_before) << " measured, "
+              << um(e.rms_after) << " after compensation (worst " << e.worst_after_id << ", " << um(e.worst_after)
+              << ")\n";
+  }
   const CompensationGougeCheck& check = done.check;
   if (!check.safe()) {
     char buf[240];

@@ -23,6 +23,7 @@
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "inspection/comparison_error_field.hpp"
+#include "inspection/compensation_expectation.hpp"
 #include "io/machining/program_rewrite.hpp"
 #include "machining/compensation/path_offset.hpp"
 #include "machining/compensation/rework_check.hpp"
@@ -67,6 +68,9 @@ struct CompensatedProgram {
   std::vector<ClipBackPoint> clip_back;  // points whose offsets it reduced, in path order
   // With options.rework and a safe full program: what to write instead of it.
   std::optional<ReworkProgram> rework;
+  // At the measured points: the deviation, the field, the correction
+  // written and the residual expected after it (COMP.json `expected`).
+  CompensationExpectation expected;
   std::string json;           // COMP.json's text
 };
 
