@@ -273,4 +273,17 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   return out;
 }
 
+PredictedPath predict_compensated(const Part& part, const ToolSpec& tool, const std::string& tool_source,
+                                  const std::string& program_text, ProgramFormat format,
+                                  const ToolpathReadOptions& read, const PathPredictionOptions& options,
+                                  const PredictionSources& names, const StageProgress& progress) {
+  // read_toolpath's rules, on the text about to be written.
+  if (program_text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(names.toolpath + ": the file is empty");
+  const Toolpath path = format == ProgramFormat::apt ? parse_apt(program_text, names.toolpath, read)
+                                                     : parse_gcode(program_text, names.toolpath, read);
+  const PathTools tools = tools_for_path(path, tool, tool_source, std::nullopt, "");
+  return predict_stage(part, tools, path, options, names, nullptr, progress);
+}
+
 }  // namespace furrow

@@ -4,6 +4,8 @@
 // CMM's frame kept (no best fit takes part of the bump off). Oracles: the
 // analytic bump at each planned point's nominal position, computed here;
 // the per-region statistics recomputed here from the per-point values.
+// And --predict-out: the prediction of the program written, whose oracle is
+// `furrow predict` run on the written file (byte for byte).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -194,4 +196,49 @@ TEST_CASE("compensate expected: with gain 0.5 the residual inside a planted bump
   const double after = expected["overall"]["rms_after"].get<double>();
   CHECK(after > 0.35 * before);
   CHECK(after < 0.65 * before);
+}
+
+TEST_CASE("compensate predict-out: the prediction is furrow predict's of the written program, byte for byte") {
+  const Measured& m = measured();
+  const std::string out = m.dir + "/predicted.nc", pred = m.dir + "/predicted_prediction.json";
+  const auto r = run_furrow({"compensate", m.part, "--comparison", m.comparison, "--toolpath", m.program, "--tool",
+                             m.tool, "--out", out, "--predict-out", pred, "--cell", "2"});
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  REQUIRE(fs::exists(pred));
+  // The oracle: the written file predicted by the prediction command, with
+  // the same tool and options.
+  const std::string again = m.dir + "/predicted_again.json";
+  const auto p = run_furrow({"predict", m.part, "--toolpath", out, "--tool", m.tool, "--cell", "2", "--out", again});
+  INFO(p.err);
+  REQUIRE(p.status == 0);
+  CHECK(slurp(pred) == slurp(again));
+  // The uncompensated program: the compensated one moves tips by at most
+  // largest_offset, so its scallops (ridges between passes) grow by at
+  // most that.
+  const std::string before = m.dir + "/uncompensated.json";
+  REQUIRE(run_furrow({"predict", m.part, "--toolpath", m.program, "--tool", m.tool, "--cell", "2", "--out", before})
+              .status == 0);
+  const json a = json::parse(slurp(pred)), b = json::parse(slurp(before));
+  const json record = json::parse(slurp(m.dir + "/predicted.json"));
+  const double largest = record["largest_offset"].get<double>();
+  REQUIRE(largest > 0.5 * kHeight);
+  const double scallop = a["summary"]["max_scallop"].get<double>();
+  const double scallop_before = b["summary"]["max_scallop"].get<double>();
+  MESSAGE("worst scallop " << scallop * 1000 << " um compensated, " << scallop_before * 1000
+                           << " um before, largest offset " << largest * 1000 << " um");
+  CHECK(scallop <= scallop_before + largest + 1e-9);
+  // The compensated program cuts the bump's height deeper than nominal
+  // there: its predicted overcut reaches about -largest_offset.
+  CHECK(a["summary"]["max_overcut"]["error"].get<double>() < -0.8 * largest);
+}
+
+TEST_CASE("compensate predict-out: a file name that is not .json fails with status 2 and writes nothing") {
+  const Measured& m = measured();
+  const std::string out = m.dir + "/refused.nc";
+  const auto r = run_furrow({"compensate", m.part, "--comparison", m.comparison, "--toolpath", m.program, "--tool",
+                             m.tool, "--out", out, "--predict-out", m.dir + "/refused.png"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--predict-out") != std::string::npos);
+  CHECK(!fs::exists(out));
 }
