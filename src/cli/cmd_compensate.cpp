@@ -47,9 +47,16 @@ int run_compensate(Args& args) {
   CompensateOptions options;
   read_option_flags(args, compensate_option_table(), options);
   // The prediction of the compensated program takes furrow predict's
-  // options, with its defaults, so that it is that command's file.
+  // options, with its defaults, so that it is that command's file. Read
+  // only with --predict-out: without it one of them is refused, naming it.
   PathPredictionOptions predict_options;
-  read_option_flags(args, prediction_option_table(), predict_options);
+  if (predict_out) {
+    read_option_flags(args, prediction_option_table(), predict_options);
+  } else {
+    for (const OptionDoc& doc : describe(prediction_option_table()))
+      if (option_value(args, doc))
+        args.fail(doc.flag + " is an option of the prediction of the compensated program: give --predict-out too");
+  }
   if (!(predict_options.gouge_threshold > 0)) predict_options.gouge_threshold = 2 * predict_options.tolerance;
   ToolpathReadOptions read;
   read.units = args.option_or("units", "mm");

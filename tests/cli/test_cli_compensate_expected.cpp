@@ -233,12 +233,18 @@ TEST_CASE("compensate predict-out: the prediction is furrow predict's of the wri
   CHECK(a["summary"]["max_overcut"]["error"].get<double>() < -0.8 * largest);
 }
 
-TEST_CASE("compensate predict-out: a file name that is not .json fails with status 2 and writes nothing") {
+TEST_CASE("compensate predict-out: a name that is not .json, or a prediction option without it, fails with status 2") {
   const Measured& m = measured();
   const std::string out = m.dir + "/refused.nc";
   const auto r = run_furrow({"compensate", m.part, "--comparison", m.comparison, "--toolpath", m.program, "--tool",
                              m.tool, "--out", out, "--predict-out", m.dir + "/refused.png"});
   CHECK(r.status == 2);
   CHECK(r.err.find("--predict-out") != std::string::npos);
+  CHECK(!fs::exists(out));
+  const auto alone = run_furrow({"compensate", m.part, "--comparison", m.comparison, "--toolpath", m.program,
+                                 "--tool", m.tool, "--out", out, "--resolution", "0.1"});
+  CHECK(alone.status == 2);
+  CHECK(alone.err.find("--resolution") != std::string::npos);
+  CHECK(alone.err.find("--predict-out") != std::string::npos);
   CHECK(!fs::exists(out));
 }
