@@ -4,7 +4,8 @@
 // bumps, +80 um and -60 um) and 1 um noise. Prints the seconds of each step
 // of the library's part of `compensate` - the field fit (thin-plate spline
 // and GCV), locating the path's contacts, the offset, and the re-prediction
-// of the compensated path by the z-map (0.05 mm) - and the machine error's
+// of the compensated path by the z-map (0.05 mm), the expected residual at
+// the measured points (COMP.json `expected`) - and the machine error's
 // RMS inside the bumps before and after, and digests of the compensated
 // tips and of the re-predicted z-map (heights and owners), bit for bit, so
 // that a faster version can be shown to give the same results. The issue's
@@ -23,6 +24,7 @@
 #include "bench_clock.hpp"
 #include "geometry/primitives.hpp"
 #include "inspection/comparison_error_field.hpp"
+#include "inspection/compensation_expectation.hpp"
 #include "machining/compensation/path_offset.hpp"
 #include "machining/prediction/zmap.hpp"
 
@@ -83,6 +85,7 @@ int main() {
     p.face = "plate";
     const double x = ux(rng), y = uy(rng);
     p.uv = {x / 200, y / 100};
+    p.foot = {x, y, 0};
     p.evaluated = true;
     PointPrediction q;
     q.face_predicted = true;
@@ -112,6 +115,12 @@ int main() {
   std::printf("  locating contacts: %.2f s; offset: %.2f s (%zu moved, %zu clipped, largest %.1f um)\n", locating,
               offsetting, offset.moved, offset.clipped.size(), 1000 * offset.largest_offset);
 
+  t0 = std::chrono::steady_clock::now();
+  const CompensationExpectation expected = expect_compensation(doc, fit.field, geometry, offset, ball.radius());
+  const double expecting = seconds_since(t0);
+  std::printf("  expected residual at the %zu points: %.2f s (RMS %.2f um measured, %.2f um expected after)\n",
+              expected.overall.count, expecting, 1000 * expected.overall.rms_before, 1000 * expected.overall.rms_after);
+
   Toolpath compensated = path;
   for (std::size_t p = 0; p < path.passes.size(); ++p)
     for (std::size_t k = 0; k < path.passes[p].points.size(); ++k)
@@ -121,7 +130,7 @@ int main() {
   second.cut(ball, moves_from_toolpath(compensated));
   const double repredicting = seconds_since(t0);
   std::printf("  re-prediction (z-map of the compensated path): %.2f s\n", repredicting);
-  std::printf("  total without the nominal z-map: %.2f s\n", fitting + locating + offsetting + repredicting);
+  std::printf("  total without the nominal z-map: %.2f s\n", fitting + locating + offsetting + expecting + repredicting);
   Digest tips, heights;
   for (const auto& pass : offset.tips)
     for (const Eigen::Vector3d& t : pass) tips.add(t.x()), tips.add(t.y()), tips.add(t.z());

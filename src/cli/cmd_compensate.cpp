@@ -17,6 +17,7 @@
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
 #include "stage/compensate_stage.hpp"
+#include "stage/prediction_options.hpp"
 
 namespace furrow::cli {
 
@@ -42,8 +43,21 @@ int run_compensate(Args& args) {
   const std::string tool_path = args.required_option("tool");
   const std::string out_path = args.required_option("out");
   const std::optional<std::string> prediction_path = args.option("prediction");
+  const std::optional<std::string> predict_out = args.option("predict-out");
   CompensateOptions options;
   read_option_flags(args, compensate_option_table(), options);
+  // The prediction of the compensated program takes furrow predict's
+  // options, with its defaults, so that it is that command's file. Read
+  // only with --predict-out: without it one of them is refused, naming it.
+  PathPredictionOptions predict_options;
+  if (predict_out) {
+    read_option_flags(args, prediction_option_table(), predict_options);
+  } else {
+    for (const OptionDoc& doc : describe(prediction_option_table()))
+      if (option_value(args, doc))
+        args.fail(doc.flag + " is an option of the prediction of the compensated program: give --predict-out too");
+  }
+  if (!(predict_options.gouge_threshold > 0)) predict_options.gouge_threshold = 2 * predict_options.tolerance;
   ToolpathReadOptions read;
   read.units = args.option_or("units", "mm");
   const std::string part_path = args.positional("PART (a part file)");
@@ -63,6 +77,10 @@ int run_compensate(Args& args) {
   if (lower_extension(comparison_path) != ".json")
     args.fail("--comparison " + comparison_path + ": expected a comparison (.json)");
   const std::string record = record_path(out_path);
+  if (predict_out && lower_extension(*predict_out) != ".json")
+    args.fail("--predict-out " + *predict_out + ": expected a prediction file name (.json)");
+  if (predict_out && (*predict_out == record || *predict_out == out_path))
+    args.fail("--predict-out " + *predict_out + ": is the compensated program or its record");
   OutputSet outputs;
   outputs.add_input(part_path, "part");
   outputs.add_input(comparison_path, "comparison");
@@ -71,6 +89,7 @@ int run_compensate(Args& args) {
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out_path);
   outputs.will_write(record);
+  if (predict_out) outputs.will_write(*predict_out);
 
   const Part part = read_part(part_path);
   const ComparisonDocument comparison = read_comparison(comparison_path);
@@ -100,6 +119,12 @@ int run_compensate(Args& args) {
   std::cout << "program: " << done.program.lines_moved << " lines moved (" << done.program.words_rewritten
             << " words rewritten, " << done.program.words_added << " added, " << done.program.arcs_split
             << " arcs split into lines)\n";
+  if (done.expected.overall.count > 0) {
+    const ExpectedStatistics& e = done.expected.overall;
+    std::cout << "expected at the " << e.count << " measured points: RMS " << um(e.rms_before) << " measured, "
+              << um(e.rms_after) << " after compensation (worst " << e.worst_after_id << ", " << um(e.worst_after)
+              << ")\n";
+  }
   const CompensationGougeCheck& check = done.check;
   if (!check.safe()) {
     char buf[240];
@@ -144,14 +169,31 @@ int run_compensate(Args& args) {
               << " of " << sel.moves << " moves re-cut where material left exceeds " << um(r.threshold)
               << "; rapids at the clearance height " << sel.clearance << " mm\n";
   }
+  const std::string& written = done.rework ? done.rework->text : done.program.text;
+  if (predict_out) {
+    const ToolSpec tool = read_tool_file(tool_path);
+    const PredictedPath predicted = naming_inputs(part_path + " with " + out_path, [&] {
+      return predict_compensated(part, tool, tool_path, written, format, read, predict_options,
+                                 {part_path, out_path, ""});
+    });
+    const PredictionSummary& s = predicted.record.summary;
+    std::cout << "predicted (" << *predict_out << "): max undercut " << um(s.max_undercut.error) << ", max overcut "
+              << um(s.max_overcut.error) << ", scallop " << um(s.max_scallop) << ", " << s.gouge_sites
+              << " gouge sites, " << predicted.record.rapids.gouges.size() << " rapid gouges\n";
+    outputs.file(*predict_out, predicted.json);
+  }
   outputs.file(record, done.json);
-  outputs.file(out_path, done.rework ? done.rework->text : done.program.text);
+  outputs.file(out_path, written);
   outputs.publish(out_path);
   std::cout << "wrote " << out_path << " and " << record << "\n";
   return kExitOk;
 }
 
-std::string compensate_options_help() { return option_help_lines(describe(compensate_option_table())); }
+std::string compensate_options_help() {
+  return option_help_lines(describe(compensate_option_table())) +
+         "\nPrediction options, for --predict-out (as furrow predict's, docs/options.md):\n" +
+         option_help_lines(describe(prediction_option_table()));
+}
 
 }  // namespace
 
@@ -161,6 +203,7 @@ const Command kCompensateCommand = {
     "                         --tool TOOL.json --out COMP.nc|COMP.apt [--gain G] [--max-offset MM]\n"
     "                         [--smoothing MM|auto] [--clip-back N] [--prediction P.json]\n"
     "                         [--rework [--rework-threshold MM]]\n"
+    "                         [--predict-out PRED.json [prediction options]]\n"
     "                         [--units mm|inch]\n"
     "\n"
     "Fits the systematic error of a measured part (the comparison's residuals\n"
@@ -171,7 +214,9 @@ const Command kCompensateCommand = {
     "lines change; comments, feeds, spindle, tool changes, rapids, work offsets\n"
     "and line numbers are kept, and a moved arc becomes straight segments\n"
     "(docs/compensation.md \"Writing the program\"). COMP.json, written beside\n"
-    "it, holds the field per face, the clipped moves and the z-map check.\n"
+    "it, holds the field per face, the clipped moves, the z-map check and\n"
+    "the residual expected at each measured point and region once the\n"
+    "program is cut (docs/compensation.md \"Predicted before it is cut\").\n"
     "The written program is checked with a z-map against the original; moves\n"
     "that cut deeper than their offsets allow have their offsets halved and\n"
     "the check runs again (--clip-back rounds); if it still fails, nothing is\n"
@@ -193,6 +238,11 @@ const Command kCompensateCommand = {
     "                        furrows and cusps) is taken off the deviation\n"
     "                        before the fit, instead of the comparison's own\n"
     "                        prediction (if it has one)\n"
+    "  --predict-out FILE    also predict the program written (as furrow predict\n"
+    "                        would read it, with the same tool) and write that\n"
+    "                        prediction.json; the prediction options of furrow\n"
+    "                        predict (--tolerance, --resolution, --cell, ...)\n"
+    "                        apply to it\n"
     "  --units U             units of G-code before G20/G21, of APT before UNITS/\n"
     "                        (default mm)\n"
     "\n"

@@ -254,6 +254,15 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
   const std::string program = json_fields::read_text(*job.toolpath_file);
   const std::string out = job.compensate_out;
   const std::string record = std::filesystem::path(out).replace_extension(".json").string();
+  // The prediction of the program written (docs/compensation.md "Predicted
+  // before it is cut"), beside it: comp.nc -> comp_prediction.json.
+  const std::string predicted_name = std::filesystem::path(out).stem().string() + "_prediction.json";
+  auto predict_written = [&](const std::string& text, ProgramFormat written_format) {
+    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, text,
+                                                        written_format, job.toolpath_read, job.prediction,
+                                                        {s.part_name, out, ""});
+    s.add(predicted_name, predicted.json);
+  };
   const CompensateOptions& options = *job.compensate;
   const CompensatedProgram done =
       compensate_stage(part, tools, program, format, job.toolpath_read, comparison, options,
@@ -294,6 +303,7 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
     }
     s.add(out, r.text);
     s.add(record, done.json);
+    predict_written(r.text, format);
     s.result.summary.push_back(line("compensate: rework %s, %zu stretches in %zu regions, %zu of %zu moves re-cut "
                                     "beyond %.2f um",
                                     out.c_str(), r.selection.stretches.size(), r.selection.regions.size(),
@@ -302,6 +312,7 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
   }
   s.add(out, done.program.text);
   s.add(record, done.json);
+  predict_written(done.program.text, format);
   s.result.summary.push_back(line("compensate: %s, %zu tips moved, largest offset %.2f um, %zu clipped at %.2f um, "
                                   "%zu clipped back in %d round%s",
                                   out.c_str(), done.offset.moved, done.offset.largest_offset * 1000,

@@ -78,6 +78,36 @@ json rework_section(const ReworkProgram& r) {
   return doc;
 }
 
+json statistics_json(const ExpectedStatistics& s) {
+  return {{"points", s.count},
+          {"rms_before", s.rms_before},
+          {"worst_before", {{"id", s.worst_before_id}, {"value", s.worst_before}}},
+          {"rms_field", s.rms_field},
+          {"largest_standard_error", s.largest_standard_error},
+          {"rms_after", s.rms_after},
+          {"worst_after", {{"id", s.worst_after_id}, {"value", s.worst_after}}}};
+}
+
+json expected_section(const CompensationExpectation& e) {
+  json regions = json::array();
+  for (const RegionExpectation& r : e.regions) {
+    json one = statistics_json(r.statistics);
+    one["region"] = r.region;
+    regions.push_back(one);
+  }
+  json points = json::array();
+  for (const ExpectedPoint& p : e.points)
+    points.push_back({{"id", p.id},
+                      {"region", p.region >= 0 ? json(p.region) : json(nullptr)},
+                      {"measured", p.measured},
+                      {"field", p.field},
+                      {"standard_error", p.standard_error},
+                      {"cut", p.cut},
+                      {"correction", p.correction},
+                      {"residual", p.residual}});
+  return {{"reach", e.reach}, {"overall", statistics_json(e.overall)}, {"regions", regions}, {"points", points}};
+}
+
 std::string document(const Part& part, const CompensatedProgram& c, const CompensateOptions& options,
                      const CompensationSources& names) {
   json faces = json::array();
@@ -136,6 +166,7 @@ std::string document(const Part& part, const CompensatedProgram& c, const Compen
         {"worst_excess", c.check.worst_excess},
         {"safe", c.check.safe()}}},
   };
+  doc["expected"] = expected_section(c.expected);
   if (c.rework) doc["rework"] = rework_section(*c.rework);
   return doc.dump(2) + "\n";
 }
@@ -202,6 +233,8 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
     ++out.clip_back_rounds;
   }
   for (const auto& [where, point] : reduced) out.clip_back.push_back(point);
+  // After the clip-back: the offsets the program carries.
+  out.expected = expect_compensation(comparison, out.field.field, geometry, out.offset, cutter.radius());
   if (options.rework && out.check.safe()) {
     ReworkProgram r;
     r.threshold_given = options.rework_threshold.has_value();
@@ -238,6 +271,19 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   }
   out.json = document(part, out, options, names);
   return out;
+}
+
+PredictedPath predict_compensated(const Part& part, const ToolSpec& tool, const std::string& tool_source,
+                                  const std::string& program_text, ProgramFormat format,
+                                  const ToolpathReadOptions& read, const PathPredictionOptions& options,
+                                  const PredictionSources& names, const StageProgress& progress) {
+  // read_toolpath's rules, on the text about to be written.
+  if (program_text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(names.toolpath + ": the file is empty");
+  const Toolpath path = format == ProgramFormat::apt ? parse_apt(program_text, names.toolpath, read)
+                                                     : parse_gcode(program_text, names.toolpath, read);
+  const PathTools tools = tools_for_path(path, tool, tool_source, std::nullopt, "");
+  return predict_stage(part, tools, path, options, names, nullptr, progress);
 }
 
 }  // namespace furrow

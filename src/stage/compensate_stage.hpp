@@ -23,6 +23,7 @@
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "inspection/comparison_error_field.hpp"
+#include "inspection/compensation_expectation.hpp"
 #include "io/machining/program_rewrite.hpp"
 #include "machining/compensation/path_offset.hpp"
 #include "machining/compensation/rework_check.hpp"
@@ -30,6 +31,7 @@
 #include "machining/compensation/zmap_check.hpp"
 #include "machining/cutter/path_tools.hpp"
 #include "stage/compensate_options.hpp"
+#include "stage/predict_stage.hpp"
 
 namespace furrow {
 
@@ -67,6 +69,9 @@ struct CompensatedProgram {
   std::vector<ClipBackPoint> clip_back;  // points whose offsets it reduced, in path order
   // With options.rework and a safe full program: what to write instead of it.
   std::optional<ReworkProgram> rework;
+  // At the measured points: the deviation, the field, the correction
+  // written and the residual expected after it (COMP.json `expected`).
+  CompensationExpectation expected;
   std::string json;           // COMP.json's text
 };
 
@@ -88,5 +93,17 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
                                     ProgramFormat format, const ToolpathReadOptions& read,
                                     const ComparisonDocument& comparison, const CompensateOptions& options,
                                     const CompensationSources& names, const Prediction* prediction = nullptr);
+
+// The prediction of a compensated program before it is cut
+// (docs/compensation.md "Predicted before it is cut"): `program_text` (what
+// compensate writes, `format`) read back under the name `names.toolpath`
+// exactly as `furrow predict` reads that file, with the tool `tool` (named
+// `tool_source`), and predicted with `options` - so the result is, byte for
+// byte, what `furrow predict PART --toolpath COMP --tool TOOL` writes for the
+// written file. Throws InputError as parsing and predict_stage do.
+PredictedPath predict_compensated(const Part& part, const ToolSpec& tool, const std::string& tool_source,
+                                  const std::string& program_text, ProgramFormat format,
+                                  const ToolpathReadOptions& read, const PathPredictionOptions& options,
+                                  const PredictionSources& names, const StageProgress& progress = {});
 
 }  // namespace furrow

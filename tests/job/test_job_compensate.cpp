@@ -95,6 +95,21 @@ TEST_CASE("job compensate: furrow run writes the program furrow compensate write
   // Gain 0.5 of the 50 um bump at its top: the largest offset is half its
   // height, less what the smoothing takes off the peak (well under 10 %).
   CHECK(std::abs(record["largest_offset"].get<double>() - 0.5 * kBumpHeight) < 0.1 * 0.5 * kBumpHeight);
+  // The prediction of the written program beside it: furrow predict's of
+  // comp.nc with the job's prediction options (the second implementation),
+  // but for the file names, which the job gives relative to its folder.
+  REQUIRE(fs::exists(out + "/comp_prediction.json"));
+  const auto predicted = run_furrow({"predict", test::source_path("examples/parts/mould.json"), "--toolpath",
+                                     out + "/comp.nc", "--tool", test::source_path("examples/tools/ball_d6.json"),
+                                     "--tolerance", "0.01", "--out", dir + "/hand_prediction.json"});
+  INFO(predicted.err);
+  REQUIRE(predicted.status == 0);
+  json job_prediction = json::parse(slurp(out + "/comp_prediction.json"));
+  json hand_prediction = json::parse(slurp(dir + "/hand_prediction.json"));
+  CHECK(job_prediction["toolpath"] == "comp.nc");
+  for (json* p : {&job_prediction, &hand_prediction})
+    for (const char* key : {"part", "toolpath"}) p->erase(key);
+  CHECK(job_prediction == hand_prediction);
 }
 
 TEST_CASE("job compensate: with rework, furrow run writes the rework program furrow compensate --rework writes") {
