@@ -20,6 +20,7 @@
 #include "io/machining/gcode_reader.hpp"
 #include "io/part_file.hpp"
 #include "machining/prediction/zmap.hpp"
+#include "mould_bump_fixture.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -34,62 +35,12 @@ constexpr double kBumpRadius = 15;   // [mm]
 constexpr double kBumpHeight = 0.05;  // [mm], material left
 constexpr double kKept = 30;          // [mm] plan points kept within this of the bump centre
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-struct Loop {
-  std::string dir, part, program, tool, comparison;
-  Eigen::Vector3d centre;
-};
+using Loop = test::MouldBump;
+using test::lines_of;
 
 // The measured comparison of a mould cut with a bump left on it.
 const Loop& loop() {
-  static const Loop made = [] {
-    Loop l;
-    l.dir = test::scratch_dir("cli-compensate");
-    l.part = test::source_path("examples/parts/mould.json");
-    l.program = l.dir + "/path.nc";  // a copy: one test writes over it, or must not
-    fs::copy_file(test::source_path("examples/toolpaths/mould_ball6.nc"), l.program);
-    l.tool = test::source_path("examples/tools/ball_d6.json");
-    const Part part = read_part(l.part);
-    l.centre = part.faces[0].surface().point(0.5, 0.5);
-    REQUIRE(run_furrow({"partition", l.part, "--out", l.dir + "/regions.json", "--grid", "40x40"}).status == 0);
-    REQUIRE(run_furrow({"plan", l.part, "--regions", l.dir + "/regions.json", "--points", "600", "--out",
-                        l.dir + "/plan"})
-                .status == 0);
-    // Only the points near the bump: the rest of the mould is not measured.
-    json plan = json::parse(slurp(l.dir + "/plan/plan.json"));
-    json kept = json::array();
-    for (const json& p : plan["points"]) {
-      const Eigen::Vector3d at(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
-      if ((at - l.centre).norm() <= kKept) kept.push_back(p);
-    }
-    REQUIRE(kept.size() >= 40);
-    plan["points"] = kept;
-    test::write_text(l.dir + "/plan.json", plan.dump(1));
-    char bump[160];
-    std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,%g", l.centre.x(), l.centre.y(), l.centre.z(), kBumpRadius,
-                  kBumpHeight);
-    const auto sim = run_furrow({"simulate-measurement", l.part, "--plan", l.dir + "/plan.json", "--bump", bump,
-                                 "--noise", "0.001", "--blunders", "0", "--seed", "3", "--misalign", "0,0,0,0,0,0",
-                                 "--out", l.dir + "/m.csv"});
-    INFO(sim.err);
-    REQUIRE(sim.status == 0);
-    // The part sits where the CMM says and no point is dropped: the bump is
-    // the subject here, not the registration (a best fit to points around
-    // one bump would take part of it off as a translation).
-    l.comparison = l.dir + "/comparison.json";
-    const auto compare = run_furrow({"compare", l.part, "--measurements", l.dir + "/m.csv", "--plan",
-                                     l.dir + "/plan.json", "--align", "cmm", "--no-outlier-rejection", "--out",
-                                     l.comparison});
-    INFO(compare.err);
-    REQUIRE(fs::exists(l.comparison));
-    return l;
-  }();
+  static const Loop made = test::measured_mould_bump("cli-compensate", kBumpRadius, kBumpHeight, kKept, 3);
   return made;
 }
 

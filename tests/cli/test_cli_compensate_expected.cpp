@@ -18,6 +18,7 @@
 
 #include "base/numbers.hpp"
 #include "io/part_file.hpp"
+#include "mould_bump_fixture.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -33,58 +34,12 @@ constexpr double kHeight = 0.05;  // [mm], material left
 constexpr double kKept = 25;      // [mm] plan points kept within this of the bump centre
 constexpr double kNoise = 0.001;  // [mm] 1-sigma
 
-struct Measured {
-  std::string dir, part, program, tool, comparison;
-  Eigen::Vector3d centre;
-  std::map<std::string, Eigen::Vector3d> nominal;  // planned point by id
-};
+using Measured = test::MouldBump;
 
-double bump_at(const Measured& m, const Eigen::Vector3d& p) {
-  const double rho = (p - m.centre).norm();
-  return rho < kRadius ? kHeight * (1 + std::cos(kPi * rho / kRadius)) / 2 : 0.0;
-}
+using test::bump_at;
 
 const Measured& measured() {
-  static const Measured made = [] {
-    Measured m;
-    m.dir = test::scratch_dir("cli-compensate-expected");
-    m.part = test::source_path("examples/parts/mould.json");
-    m.program = test::source_path("examples/toolpaths/mould_ball6.nc");
-    m.tool = test::source_path("examples/tools/ball_d6.json");
-    const Part part = read_part(m.part);
-    m.centre = part.faces[0].surface().point(0.5, 0.5);
-    REQUIRE(run_furrow({"partition", m.part, "--out", m.dir + "/regions.json", "--grid", "40x40"}).status == 0);
-    REQUIRE(run_furrow({"plan", m.part, "--regions", m.dir + "/regions.json", "--points", "600", "--out",
-                        m.dir + "/plan"})
-                .status == 0);
-    json plan = json::parse(slurp(m.dir + "/plan/plan.json"));
-    json kept = json::array();
-    for (const json& p : plan["points"]) {
-      const Eigen::Vector3d at(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
-      if ((at - m.centre).norm() <= kKept) {
-        kept.push_back(p);
-        m.nominal[p["id"].get<std::string>()] = at;
-      }
-    }
-    REQUIRE(kept.size() >= 40);
-    plan["points"] = kept;
-    test::write_text(m.dir + "/plan.json", plan.dump(1));
-    char bump[160];
-    std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,%g", m.centre.x(), m.centre.y(), m.centre.z(), kRadius,
-                  kHeight);
-    const auto sim = run_furrow({"simulate-measurement", m.part, "--plan", m.dir + "/plan.json", "--bump", bump,
-                                 "--noise", "0.001", "--blunders", "0", "--seed", "5", "--misalign", "0,0,0,0,0,0",
-                                 "--out", m.dir + "/m.csv"});
-    INFO(sim.err);
-    REQUIRE(sim.status == 0);
-    m.comparison = m.dir + "/comparison.json";
-    const auto compare = run_furrow({"compare", m.part, "--measurements", m.dir + "/m.csv", "--plan",
-                                     m.dir + "/plan.json", "--align", "cmm", "--no-outlier-rejection", "--out",
-                                     m.comparison});
-    INFO(compare.err);
-    REQUIRE(fs::exists(m.comparison));
-    return m;
-  }();
+  static const Measured made = test::measured_mould_bump("cli-compensate-expected", kRadius, kHeight, kKept, 5);
   return made;
 }
 

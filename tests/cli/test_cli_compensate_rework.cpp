@@ -24,6 +24,7 @@
 #include "io/part_file.hpp"
 #include "machining/cutter/cutter.hpp"
 #include "machining/prediction/zmap.hpp"
+#include "mould_bump_fixture.hpp"
 #include "support/run_cli.hpp"
 
 using namespace furrow;
@@ -39,64 +40,16 @@ constexpr double kHeight = 0.08;   // [mm], material left
 constexpr double kKept = 30;       // [mm] plan points kept within this of the centre
 constexpr double kBall = 3;        // [mm] the example tool's radius
 
-struct Setup {
-  std::string dir, part, program, tool, comparison;
-  Eigen::Vector3d centre;
-};
+using Setup = test::MouldBump;
+using test::lines_of;
 
-double bump_at(const Setup& s, const Eigen::Vector3d& p) {
-  const double rho = (p - s.centre).norm();
-  return rho < kRadius ? kHeight * (1 + std::cos(kPi * rho / kRadius)) / 2 : 0.0;
-}
+using test::bump_at;
 
 const Setup& setup() {
-  static const Setup made = [] {
-    Setup l;
-    l.dir = test::scratch_dir("cli-rework");
-    l.part = test::source_path("examples/parts/mould.json");
-    l.program = l.dir + "/path.nc";
-    fs::copy_file(test::source_path("examples/toolpaths/mould_ball6.nc"), l.program);
-    l.tool = test::source_path("examples/tools/ball_d6.json");
-    const Part part = read_part(l.part);
-    l.centre = part.faces[0].surface().point(0.5, 0.5);
-    REQUIRE(run_furrow({"partition", l.part, "--out", l.dir + "/regions.json", "--grid", "40x40"}).status == 0);
-    REQUIRE(run_furrow({"plan", l.part, "--regions", l.dir + "/regions.json", "--points", "600", "--out",
-                        l.dir + "/plan"})
-                .status == 0);
-    json plan = json::parse(slurp(l.dir + "/plan/plan.json"));
-    json kept = json::array();
-    for (const json& p : plan["points"]) {
-      const Eigen::Vector3d at(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
-      if ((at - l.centre).norm() <= kKept) kept.push_back(p);
-    }
-    REQUIRE(kept.size() >= 40);
-    plan["points"] = kept;
-    test::write_text(l.dir + "/plan.json", plan.dump(1));
-    char bump[160];
-    std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,%g", l.centre.x(), l.centre.y(), l.centre.z(), kRadius,
-                  kHeight);
-    const auto sim = run_furrow({"simulate-measurement", l.part, "--plan", l.dir + "/plan.json", "--bump", bump,
-                                 "--noise", "0.001", "--blunders", "0", "--seed", "5", "--misalign", "0,0,0,0,0,0",
-                                 "--out", l.dir + "/m.csv"});
-    INFO(sim.err);
-    REQUIRE(sim.status == 0);
-    l.comparison = l.dir + "/comparison.json";
-    const auto compare = run_furrow({"compare", l.part, "--measurements", l.dir + "/m.csv", "--plan",
-                                     l.dir + "/plan.json", "--align", "cmm", "--no-outlier-rejection", "--out",
-                                     l.comparison});
-    INFO(compare.err);
-    REQUIRE(fs::exists(l.comparison));
-    return l;
-  }();
+  static const Setup made = test::measured_mould_bump("cli-rework", kRadius, kHeight, kKept, 5);
   return made;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 double highest_rapid(const Toolpath& path) {
   double z = -1e300;
