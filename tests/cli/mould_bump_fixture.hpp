@@ -19,6 +19,7 @@
 
 #include "base/numbers.hpp"
 #include "io/part_file.hpp"
+#include "io/machining/toolpath_file.hpp"
 #include "support/run_cli.hpp"
 
 namespace furrow::test {
@@ -81,6 +82,27 @@ inline MouldBump measured_mould_bump(const std::string& name, double radius, dou
   INFO(compare.err);
   REQUIRE(std::filesystem::exists(m.comparison));
   return m;
+}
+
+// A tool path as APT CL data, point for point: the same tips (written with
+// 4 decimals, as the example program, so read back to the same numbers),
+// each pass reached by RAPID GOTOs over `safe` [mm].
+inline std::string as_apt(const Toolpath& path, double safe) {
+  std::string text = "PARTNO MOULD BALL6\nUNITS/MM\nCUTTER/6.0000,3.0000\nFEDRAT/MMPM,1000.0000\n";
+  char line[128];
+  auto go_to = [&](const Eigen::Vector3d& p) {
+    std::snprintf(line, sizeof line, "GOTO/%.4f,%.4f,%.4f\n", p.x(), p.y(), p.z());
+    text += line;
+  };
+  for (const ToolpathPass& pass : path.passes) {
+    const Eigen::Vector3d start = pass.points.front().position;
+    text += "RAPID\n";
+    go_to({start.x(), start.y(), safe});
+    text += "RAPID\n";
+    go_to(start);
+    for (std::size_t i = 1; i < pass.points.size(); ++i) go_to(pass.points[i].position);
+  }
+  return text + "FINI\n";
 }
 
 inline std::vector<std::string> lines_of(const std::string& text) {

@@ -36,6 +36,7 @@ constexpr double kBumpHeight = 0.05;  // [mm], material left
 constexpr double kKept = 30;          // [mm] plan points kept within this of the bump centre
 
 using Loop = test::MouldBump;
+using test::as_apt;
 using test::lines_of;
 
 // The measured comparison of a mould cut with a bump left on it.
@@ -44,27 +45,6 @@ const Loop& loop() {
   return made;
 }
 
-// The example program as APT CL data, point for point: the same tips
-// (written with the same 4 decimals, so read back to the same numbers),
-// each pass reached by RAPID GOTOs over the clearance height.
-std::string as_apt(const Toolpath& path) {
-  std::string text = "PARTNO MOULD BALL6\nUNITS/MM\nCUTTER/6.0000,3.0000\nFEDRAT/MMPM,1000.0000\n";
-  char line[128];
-  auto go_to = [&](const Eigen::Vector3d& p) {
-    std::snprintf(line, sizeof line, "GOTO/%.4f,%.4f,%.4f\n", p.x(), p.y(), p.z());
-    text += line;
-  };
-  const double safe = 34.6326;
-  for (const ToolpathPass& pass : path.passes) {
-    const Eigen::Vector3d start = pass.points.front().position;
-    text += "RAPID\n";
-    go_to({start.x(), start.y(), safe});
-    text += "RAPID\n";
-    go_to(start);
-    for (std::size_t i = 1; i < pass.points.size(); ++i) go_to(pass.points[i].position);
-  }
-  return text + "FINI\n";
-}
 
 }  // namespace
 
@@ -150,7 +130,7 @@ TEST_CASE("compensate: an APT CL file is compensated as the G-code program, writ
   const Loop& l = loop();
   const Toolpath gcode = parse_gcode(slurp(l.program), "path.nc");
   const std::string apt_path = l.dir + "/path.apt";
-  test::write_text(apt_path, as_apt(gcode));
+  test::write_text(apt_path, as_apt(gcode, 34.6326));  // the program's clearance height
   const std::string out = l.dir + "/comp.apt", out_nc = l.dir + "/comp_for_apt.nc";
   const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", apt_path, "--tool",
                              l.tool, "--out", out, "--gain", "0.8"});

@@ -41,6 +41,7 @@ constexpr double kKept = 30;       // [mm] plan points kept within this of the c
 constexpr double kBall = 3;        // [mm] the example tool's radius
 
 using Setup = test::MouldBump;
+using test::as_apt;
 using test::lines_of;
 
 using test::bump_at;
@@ -65,25 +66,6 @@ double segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, cons
   return (a + t * ab - p).norm();
 }
 
-// The G-code mould program as APT CL data, point for point (as the
-// compensate tests write it).
-std::string as_apt(const Toolpath& path, double safe) {
-  std::string text = "PARTNO MOULD BALL6\nUNITS/MM\nCUTTER/6.0000,3.0000\nFEDRAT/MMPM,1000.0000\n";
-  char line[128];
-  auto go_to = [&](const Eigen::Vector3d& p) {
-    std::snprintf(line, sizeof line, "GOTO/%.4f,%.4f,%.4f\n", p.x(), p.y(), p.z());
-    text += line;
-  };
-  for (const ToolpathPass& pass : path.passes) {
-    const Eigen::Vector3d start = pass.points.front().position;
-    text += "RAPID\n";
-    go_to({start.x(), start.y(), safe});
-    text += "RAPID\n";
-    go_to(start);
-    for (std::size_t i = 1; i < pass.points.size(); ++i) go_to(pass.points[i].position);
-  }
-  return text + "FINI\n";
-}
 
 }  // namespace
 
