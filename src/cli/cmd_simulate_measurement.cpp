@@ -1,9 +1,13 @@
 // furrow simulate-measurement PART --plan plan.json: realistic CMM data for
 // tests and demos (probe centres, noise, misalignment, blunders).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.hpp"
 #include "cli/option_flags.hpp"
+#include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "inspection/measurement_simulation.hpp"
 #include "inspection/prediction_comparison.hpp"
@@ -12,13 +16,84 @@
 #include "base/text_fields.hpp"
 #include "io/cmm/measurement_qif.hpp"
 #include "io/part_file.hpp"
+#include "io/ply_writer.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
 namespace furrow::cli {
 
 namespace {
 
+// --bump X,Y,Z,R,H, repeated.
+std::vector<SurfaceBump> bumps_of(Args& args, const std::vector<std::string>& texts) {
+  std::vector<SurfaceBump> bumps;
+  for (const std::string& text : texts) {
+    const std::vector<double> b = parse_number_list(text, 5, "bump");
+    if (!(b[3] > 0)) args.fail("--bump \"" + text + "\": the radius must be positive");
+    bumps.push_back({{b[0], b[1], b[2]}, b[3], b[4]});
+  }
+  return bumps;
+}
+
+// --scan: a scanner's point cloud of PART as a PLY (docs/scan_simulation.md).
+int run_simulate_scan(Args& args) {
+  const std::string out = args.required_option("out");
+  SimulationOptions common;
+  read_option_flags(args, simulation_option_table(), common);
+  ScanSimulationOptions o;
+  read_option_flags(args, scan_simulation_option_table(), o);
+  const std::vector<std::string> bump_texts = args.repeated_option("bump");
+  const bool plan_given = args.option("plan").has_value(), prediction_given = args.option("prediction").has_value();
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+  if (plan_given) args.fail("--plan: a scan follows no plan (it takes every point the scanner sees)");
+  if (prediction_given) args.fail("--prediction: not taken with --scan (plant bumps with --bump)");
+  const SimulationOptions probe_defaults;
+  if (common.noise_sigma != probe_defaults.noise_sigma)
+    args.fail("--noise is the probing noise; a scan's noise along the line of sight is --scan-noise");
+  if (common.blunders != 0 || common.anonymous || common.kind != probe_defaults.kind)
+    args.fail("--blunders, --points and --anonymous are for probe points; a scan's blunders are --spray");
+  const std::string extension = std::filesystem::path(out).extension().string();
+  if (to_lower(extension) != ".ply") args.fail("--out " + out + ": a scan is written as PLY (.ply)");
+  o.scanner.part_to_scanner = common.misalignment;
+  o.scanner.seed = common.seed;
+  o.scanner.bumps = bumps_of(args, bump_texts);
+
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.will_write(out);
+  const Part part = read_part(part_path);
+  const SimulatedScan scan = simulate_scan(part, o.scanner);
+  const double unit = o.inch ? 25.4 : 1.0;
+  std::vector<PlyColumn> columns = {{"x", PlyScalar::float64, {}}, {"y", PlyScalar::float64, {}},
+                                    {"z", PlyScalar::float64, {}}, {"nx", PlyScalar::float32, {}},
+                                    {"ny", PlyScalar::float32, {}}, {"nz", PlyScalar::float32, {}},
+                                    {"red", PlyScalar::uchar, {}},  {"green", PlyScalar::uchar, {}},
+                                    {"blue", PlyScalar::uchar, {}}, {"intensity", PlyScalar::float32, {}}};
+  for (std::size_t k = 0; k < scan.points.size(); ++k) {
+    for (int a = 0; a < 3; ++a) {
+      columns[a].values.push_back(scan.points[k][a] / unit);
+      columns[3 + a].values.push_back(scan.normals[k][a]);
+    }
+    // Grey by the return's strength, as a monochrome scanner colours it.
+    const double grey = std::round(40 + 200 * std::clamp(double(scan.intensity[k]), 0.0, 1.0));
+    for (int c = 6; c < 9; ++c) columns[c].values.push_back(grey);
+    columns[9].values.push_back(scan.intensity[k]);
+  }
+  outputs.file(out, ply_vertex_text(columns, {"furrow simulate-measurement --scan of " +
+                                                  std::filesystem::path(part_path).filename().string(),
+                                              std::string("units ") + (o.inch ? "inch" : "mm"),
+                                              "seed " + std::to_string(o.scanner.seed)}));
+  outputs.publish();
+  const ScanRayCounts& c = scan.counts;
+  std::printf("%zu points (%zu spray) of %zu rays: %zu missed the part, %zu grazing, %zu from behind, %zu not "
+              "solved; noise %g mm along the line of sight, seed %u -> %s\n",
+              c.points, c.spray, c.rays, c.missed, c.grazing, c.from_behind, c.not_solved, o.scanner.noise_sigma,
+              o.scanner.seed, out.c_str());
+  return kExitOk;
+}
+
 int run_simulate(Args& args) {
+  if (args.flag("scan")) return run_simulate_scan(args);
   const std::string plan_path = args.required_option("plan");
   const std::string out = args.required_option("out");
   SimulationOptions o;
@@ -27,12 +102,7 @@ int run_simulate(Args& args) {
   const std::vector<std::string> bumps = args.repeated_option("bump");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
-
-  for (const std::string& text : bumps) {
-    const std::vector<double> b = parse_number_list(text, 5, "bump");
-    if (!(b[3] > 0)) args.fail("--bump \"" + text + "\": the radius must be positive");
-    o.bumps.push_back({{b[0], b[1], b[2]}, b[3], b[4]});
-  }
+  o.bumps = bumps_of(args, bumps);
 
   OutputSet outputs;
   outputs.add_input(part_path, "part");
@@ -86,20 +156,30 @@ int run_simulate(Args& args) {
   return kExitOk;
 }
 
-std::string simulation_options_help() { return option_help_lines(describe(simulation_option_table())); }
+std::string simulation_options_help() {
+  return option_help_lines(describe(simulation_option_table())) +
+         "\nScan options (with --scan; a scan takes --misalign, --seed and --bump too):\n" +
+         option_help_lines(describe(scan_simulation_option_table()));
+}
 
 }  // namespace
 
 const Command kSimulateMeasurementCommand = {
     "simulate-measurement", "realistic CMM points from a plan (a test and demo aid)",
     "usage: furrow simulate-measurement PART --plan plan.json --out FILE [options]\n"
+    "       furrow simulate-measurement PART --scan --out FILE.ply [options]\n"
     "\n"
     "Writes what a CMM would report for the plan's points on PART: probe-ball\n"
     "centres (or contact points) with Gaussian probing noise along the normal,\n"
     "the part placed on the table with a misalignment, and a few blunders; the\n"
     "surface as machined when a prediction is given, with planted bumps. A\n"
     "test and demo aid for `furrow compare`; every random draw comes from --seed.\n"
+    "With --scan, writes instead what a scanner looking along --view reports:\n"
+    "the first surface each ray of its stripes meets, exactly on the part, with\n"
+    "noise along the line of sight and spray, in the scanner's frame (--misalign),\n"
+    "as a binary PLY (docs/scan_simulation.md).\n"
     "\n"
+    "  --scan               simulate a scan instead of probe points\n"
     "  --plan FILE          plan.json (points, normals, probe)\n"
     "  --prediction FILE    prediction.json of PART: the machined surface is the\n"
     "                       nominal one plus the predicted error along the normal\n"

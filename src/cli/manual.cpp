@@ -12,6 +12,7 @@
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
 #include "stage/results_options.hpp"
+#include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -108,6 +109,11 @@ void write_options_reference(std::ostream& out) {
           "bumps are `--bump X,Y,Z,R,H` (repeated) on the command line and `bumps` `[[x, y, z, r, h], ...]` in a "
           "job file.",
           describe(simulation_option_table()));
+  section("Simulated scan",
+          "`furrow simulate-measurement --scan`, on the command line only (a job's measurements are probe points); "
+          "the part's placement (`--misalign`), `--seed` and `--bump` are the simulated measurement's. See "
+          "scan_simulation.md.",
+          describe(scan_simulation_option_table()));
   section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
   section("Compensation", "`furrow compensate`, on the command line (no job-file stage yet).",
           describe(compensate_option_table()));

@@ -5,9 +5,6 @@
 
 namespace furrow {
 
-namespace {
-
-// Mean length of three iso-curves of a face along u (along_u) or v [mm].
 double iso_length(const Face& face, bool along_u) {
   const ParameterDomain& d = face.domain();
   const int segments = 32;
@@ -25,8 +22,6 @@ double iso_length(const Face& face, bool along_u) {
   }
   return total / 3;
 }
-
-}  // namespace
 
 std::vector<SurfaceSample> sample_part_surface(const Part& part, std::size_t target_count) {
   std::vector<double> lu(part.faces.size()), lv(part.faces.size());

@@ -18,6 +18,11 @@ struct SurfaceSample {
   Eigen::Vector2d uv = Eigen::Vector2d::Zero();
 };
 
+// Mean length of three iso-curves (at a quarter, half and three quarters of
+// the other parameter) of a face along u (along_u) or along v [mm], each
+// walked in 32 chords: the face's extent, to size a grid on it.
+double iso_length(const Face& face, bool along_u);
+
 // Samples at the centres of an nu x nv (u,v) grid of face `face` (cells
 // trimmed away and degenerate points skipped), in grid order.
 std::vector<SurfaceSample> sample_face_grid(const Part& part, std::size_t face, int nu, int nv);

@@ -21,6 +21,7 @@
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
 #include "stage/results_options.hpp"
+#include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 #include "support/run_cli.hpp"
@@ -159,6 +160,7 @@ TEST_CASE("every partition, tool-path, prediction and simulation option reads th
   check_both_readers_agree(toolpath_option_table());
   check_both_readers_agree(prediction_option_table());
   check_both_readers_agree(simulation_option_table());
+  check_both_readers_agree(scan_simulation_option_table());
 }
 
 TEST_CASE("every compensation option reads the same both ways, and a gain above 2 is refused by both") {
@@ -243,6 +245,7 @@ TEST_CASE("every table option is in its command's help, in the man page and in d
   check("toolpath", describe(toolpath_option_table()));
   check("predict", describe(prediction_option_table()));
   check("simulate-measurement", describe(simulation_option_table()));
+  check("simulate-measurement", describe(scan_simulation_option_table()));
   check("plan", describe(plan_option_table()));
   check("compare", describe(compare_option_table()));
   check("remeasure", describe(only_options(plan_option_table(), kProbeMotionKeys)));
