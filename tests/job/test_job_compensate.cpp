@@ -110,6 +110,25 @@ TEST_CASE("job compensate: furrow run writes the program furrow compensate write
   for (json* p : {&job_prediction, &hand_prediction})
     for (const char* key : {"part", "toolpath"}) p->erase(key);
   CHECK(job_prediction == hand_prediction);
+
+  // The job's report has the Compensation section of its record: what
+  // `furrow report --compensation` makes of the job's comparison and
+  // record (the second implementation), but for the record's name.
+  const json report = json::parse(slurp(out + "/report.json"));
+  REQUIRE(report["compensation"].is_object());
+  CHECK(report["compensation"]["record"] == "comp.json");
+  CHECK(slurp(out + "/report.html").find("<section id=\"compensation\">") != std::string::npos);
+  CHECK(fs::exists(out + "/figures/compensation_after.png"));
+  const auto reported = run_furrow({"report", out + "/comparison.json", "--compensation", out + "/comp.json",
+                                    "--out", dir + "/hand_report"});
+  INFO(reported.err);
+  REQUIRE(reported.status == 0);
+  json by_job = report["compensation"], by_command = json::parse(slurp(dir + "/hand_report/report.json"))["compensation"];
+  by_job.erase("record");
+  by_command.erase("record");
+  CHECK(by_job == by_command);
+  CHECK(by_job["overall"]["rms_after"] == record["expected"]["overall"]["rms_after"]);
+  CHECK(slurp(out + "/figures/compensation_after.png") == slurp(dir + "/hand_report/figures/compensation_after.png"));
 }
 
 TEST_CASE("job compensate: with rework, furrow run writes the rework program furrow compensate --rework writes") {
