@@ -329,3 +329,70 @@ TEST_CASE("compensate --rework: a program in inches is refused with status 2, as
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(l.dir + "/inch_rework.json"));
 }
+
+TEST_CASE("compensate --rework: a program whose rapids stay below the part fails the rework check, exit 3, nothing written") {
+  // The example program with every retract lowered to 24 mm, just above
+  // the highest pass start: a programmer's "safe" plane that the mould
+  // rises through inside the bump (its tips there reach about 27 mm). The
+  // full compensated program only moves the cutting tips and passes its
+  // own check; the rework must go up to the program's highest rapid
+  // between stretches, and at 24 mm its moves to and from each stretch
+  // run through the part.
+  const Setup& l = setup();
+  const std::string low = l.dir + "/low_rapids.nc";
+  std::string text = slurp(l.program);
+  std::size_t replaced = 0;
+  for (std::size_t at = text.find("Z34.6326"); at != std::string::npos; at = text.find("Z34.6326", at), ++replaced)
+    text.replace(at, 8, "Z24.0000");
+  REQUIRE(replaced > 100);
+  test::write_text(low, text);
+  const Toolpath path = parse_gcode(text, "low_rapids.nc");
+  const double clearance = highest_rapid(path);
+  REQUIRE(std::abs(clearance - 24.0) < 1e-9);
+  // The set-up's oracle: original tips inside the bump stand well above the
+  // clearance, so any move at the clearance there cuts the part.
+  double highest_in_bump = -1e300;
+  for (const ToolpathPass& pass : path.passes)
+    for (const ToolpathPoint& p : pass.points)
+      if ((p.position.head<2>() - l.centre.head<2>()).norm() < kRadius)
+        highest_in_bump = std::max(highest_in_bump, p.position.z());
+  REQUIRE(highest_in_bump > clearance + 1.0);
+
+  const std::string out = l.dir + "/low_rework.nc", predicted = l.dir + "/low_rework_prediction.json";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", low, "--tool", l.tool,
+                             "--out", out, "--rework", "--predict-out", predicted});
+  INFO(r.out << r.err);
+  CHECK(r.status == 3);
+  CHECK(r.err.find("nothing written") != std::string::npos);
+  CHECK(r.err.find("rework program") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(l.dir + "/low_rework.json"));
+  CHECK(!fs::exists(predicted));
+  // The place named: the compensated program's surface there (the
+  // rework's height plus the depth) stands above the clearance - the
+  // reason for the failure - and below the highest tip of the program
+  // plus a cutter radius, which bounds every height a ball leaves.
+  double depth = 0, x = 0, y = 0, z = 0;
+  const std::size_t at = r.err.find(" would cut ");
+  REQUIRE(at != std::string::npos);
+  REQUIRE(std::sscanf(r.err.c_str() + at, " would cut %lf mm", &depth) == 1);
+  const std::size_t open = r.err.find('(', at);
+  REQUIRE(open != std::string::npos);
+  REQUIRE(std::sscanf(r.err.c_str() + open, "(%lf, %lf, %lf)", &x, &y, &z) == 3);
+  double highest = -1e300;
+  for (const ToolpathPass& pass : path.passes)
+    for (const ToolpathPoint& p : pass.points) highest = std::max(highest, p.position.z());
+  MESSAGE("rework check: " << depth << " mm at (" << x << ", " << y << ", " << z << "), tips in the bump up to "
+                           << highest_in_bump << " mm, clearance " << clearance << " mm");
+  CHECK(depth > 0.5);
+  CHECK(depth + z > clearance);
+  CHECK(depth + z < highest + kBall);
+  CHECK((Eigen::Vector2d(x, y) - l.centre.head<2>()).norm() < kRadius + kBall);
+
+  // The control: the program as it was, rapids at 34.6 mm, is written.
+  const auto control = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program,
+                                   "--tool", l.tool, "--out", l.dir + "/control_rework.nc", "--rework"});
+  INFO(control.err);
+  CHECK(control.status == 0);
+  CHECK(fs::exists(l.dir + "/control_rework.nc"));
+}
