@@ -260,8 +260,8 @@ std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, con
   // before it is cut"), beside it: comp.nc -> comp_prediction.json.
   const std::string predicted_name = std::filesystem::path(out).stem().string() + "_prediction.json";
   auto predict_written = [&](const std::string& text, ProgramFormat written_format) {
-    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, text,
-                                                        written_format, job.toolpath_read, job.prediction,
+    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, std::nullopt, "",
+                                                        text, written_format, job.toolpath_read, job.prediction,
                                                         {s.part_name, out, ""});
     s.add(predicted_name, predicted.json);
   };
