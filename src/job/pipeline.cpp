@@ -245,30 +245,36 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
 // refused: nothing is written (docs/compensation.md "Safety"). Returns the
 // record written (COMP.json's name), for the report's Compensation
 // section; none when nothing was written.
-std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
+std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, const PathTools& tools,
+                                                const std::optional<std::vector<ToolTableEntry>>& table) {
   const Job& job = s.job;
-  std::string comparison_text;
-  for (const FolderFile& f : s.result.files)
+  std::string comparison_text, generated_program;
+  for (const FolderFile& f : s.result.files) {
     if (f.path == "comparison.json") comparison_text = f.bytes;
+    if (f.path == "toolpath.nc") generated_program = f.bytes;
+  }
   const ComparisonDocument comparison = parse_comparison(comparison_text, "comparison.json");
-  const std::string ext = lower_extension(*job.toolpath_file);
+  // A generated path: the G-code program the job wrote, as it wrote it.
+  const std::string ext = job.toolpath_file ? lower_extension(*job.toolpath_file) : ".nc";
   const ProgramFormat format = ext == ".cl" || ext == ".apt" || ext == ".cls" ? ProgramFormat::apt : ProgramFormat::gcode;
-  const std::string program = json_fields::read_text(*job.toolpath_file);
+  const std::string program = job.toolpath_file ? json_fields::read_text(*job.toolpath_file) : generated_program;
+  const std::string program_name =
+      job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file) : std::string("toolpath.nc");
   const std::string out = job.compensate_out;
   const std::string record = std::filesystem::path(out).replace_extension(".json").string();
   // The prediction of the program written (docs/compensation.md "Predicted
   // before it is cut"), beside it: comp.nc -> comp_prediction.json.
   const std::string predicted_name = std::filesystem::path(out).stem().string() + "_prediction.json";
   auto predict_written = [&](const std::string& text, ProgramFormat written_format) {
-    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, std::nullopt, "",
-                                                        text, written_format, job.toolpath_read, job.prediction,
-                                                        {s.part_name, out, ""});
+    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, table,
+                                                        job.tool_table, text, written_format, job.toolpath_read,
+                                                        job.prediction, {s.part_name, out, ""});
     s.add(predicted_name, predicted.json);
   };
   const CompensateOptions& options = *job.compensate;
   const CompensatedProgram done =
       compensate_stage(part, tools, program, format, job.toolpath_read, comparison, options,
-                       {s.part_name, "comparison.json", relative_to_folder(job.output, *job.toolpath_file), out, ""});
+                       {s.part_name, "comparison.json", program_name, out, ""});
   if (!done.check.safe()) {
     const CompensationGougeCheck& c = done.check;
     s.result.compensation_refused = true;
@@ -390,7 +396,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     std::string compensation_file;
     if (job.compensate) {
       s.note("compensate");
-      if (const std::optional<std::string> name = compensate_job_stage(s, part, tools)) {
+      if (const std::optional<std::string> name = compensate_job_stage(s, part, tools, table)) {
         for (const FolderFile& f : result.files)
           if (f.path == *name) compensation = parse_compensation_record(f.bytes, *name);
         check_record_against(*compensation, doc, *name);
