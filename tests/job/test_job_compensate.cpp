@@ -180,6 +180,13 @@ TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, 
        "compensate.rework_threshold"},
       {{{"compensate", {{"out", "comp.nc"}, {"rework_threshold", 0.01}}}}, "compensate.rework_threshold"},
       {{{"measurements", nullptr}}, "compensate"},
+      // A program with a tool table is compensated pass by pass, but its
+      // rework takes one tool.
+      {{{"toolpath",
+         {{"file", test::source_path("examples/toolpaths/mould_ball6.nc")},
+          {"tools", test::source_path("examples/tools/table.json")}}},
+        {"compensate", {{"out", "comp.nc"}, {"rework", true}}}},
+       "\"rework\" takes a program of one tool"},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string out = dir + "/out" + std::to_string(k);
