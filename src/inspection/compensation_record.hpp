@@ -42,7 +42,7 @@ struct CompensationRecord {
     std::size_t moves = 0, moves_kept = 0, stretches = 0;
   };
   std::optional<Rework> rework;
-  CompensationExpectation expected;  // ExpectedPoint::index is not in the file: set by check_against
+  CompensationExpectation expected;  // ExpectedPoint::index is not in the file: set by check_record_against
 };
 
 // Parses a record; `name` stands for the source in messages.

@@ -106,7 +106,8 @@ TEST_CASE("compensate --tools: a program that changes tools moves each pass as i
   test::write_text(m.dir + "/table.json",
                    "{\"T1\": \"" + m.tool + "\", \"T2\": \"" + m.dir + "/ball4.json\"}\n");
 
-  const Toolpath two = compensated(m, "two", {"--tools", m.dir + "/table.json"});
+  const Toolpath two = compensated(m, "two", {"--tools", m.dir + "/table.json", "--predict-out",
+                                              m.dir + "/two_prediction.json", "--cell", "2"});
   const Toolpath alone1 = compensated(m, "first", {"--tool", m.tool});
   const Toolpath alone2 = compensated(m, "second", {"--tool", m.dir + "/ball4.json"});
 
@@ -132,6 +133,15 @@ TEST_CASE("compensate --tools: a program that changes tools moves each pass as i
   CHECK(text.find("T1 M6\n") == std::string(kHeader).size());
   CHECK(text.find("\nT2 M6\n") != std::string::npos);
   CHECK(test::lines_of(text).size() == test::lines_of(slurp(m.dir + "/two.nc")).size());
+
+  // --predict-out predicts the written program with its tools: what furrow
+  // predict --tools gives for the written file, byte for byte.
+  const auto predicted = run_furrow({"predict", m.part, "--tools", m.dir + "/table.json", "--toolpath",
+                                     m.dir + "/two_comp.nc", "--cell", "2", "--out", m.dir + "/two_again.json"});
+  INFO(predicted.err);
+  REQUIRE(predicted.status == 0);
+  CHECK(slurp(m.dir + "/two_prediction.json") == slurp(m.dir + "/two_again.json"));
+  CHECK(json::parse(slurp(m.dir + "/two_prediction.json"))["tools"].size() == 2);
 
   // Both tools' moves were moved (the halves each cross the bump), so the
   // equality above is not that of unmoved programs.
