@@ -40,7 +40,8 @@ std::string record_path(const std::string& program) {
 int run_compensate(Args& args) {
   const std::string comparison_path = args.required_option("comparison");
   const std::string toolpath_path = args.required_option("toolpath");
-  const std::string tool_path = args.required_option("tool");
+  const std::optional<std::string> tool_path = args.option("tool");
+  const std::optional<std::string> table_path = args.option("tools");
   const std::string out_path = args.required_option("out");
   const std::optional<std::string> prediction_path = args.option("prediction");
   const std::optional<std::string> predict_out = args.option("predict-out");
@@ -62,6 +63,10 @@ int run_compensate(Args& args) {
   read.units = args.option_or("units", "mm");
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  if (!tool_path && !table_path)
+    args.fail("--tool is required (or --tools, the tool table of a program that changes tools)");
+  if (table_path && lower_extension(*table_path) != ".json")
+    args.fail("--tools " + *table_path + ": expected a tool table (.json)");
   auto is_apt = [](const std::string& ext) { return ext == ".cl" || ext == ".apt" || ext == ".cls"; };
   const std::string ext = lower_extension(toolpath_path);
   if (ext == ".csv" || ext == ".txt")
@@ -85,7 +90,14 @@ int run_compensate(Args& args) {
   outputs.add_input(part_path, "part");
   outputs.add_input(comparison_path, "comparison");
   outputs.add_input(toolpath_path, "tool path");
-  outputs.add_input(tool_path, "tool");
+  if (tool_path) outputs.add_input(*tool_path, "tool");
+  std::optional<std::vector<ToolTableEntry>> table;
+  if (table_path) {
+    outputs.add_input(*table_path, "tool table");
+    table = read_tool_table(*table_path);
+    for (const ToolTableEntry& e : *table)
+      if (!e.file.empty()) outputs.add_input(e.file, "tool");
+  }
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out_path);
   outputs.will_write(record);
@@ -97,7 +109,11 @@ int run_compensate(Args& args) {
   if (prediction_path) prediction = read_prediction(*prediction_path);
   const std::string program = json_fields::read_text(toolpath_path);
   const Toolpath path = read_toolpath(toolpath_path, read);
-  const PathTools tools = tools_for_path(path, read_tool_file(tool_path), tool_path, std::nullopt, "");
+  std::optional<ToolSpec> tool;
+  if (tool_path) tool = read_tool_file(*tool_path);
+  // Each pass with the tool loaded when it is cut, as furrow predict --tools
+  // reads them (machining/cutter/path_tools.hpp).
+  const PathTools tools = tools_for_path(path, tool, tool_path.value_or(""), table, table_path.value_or(""));
   const CompensatedProgram done = naming_inputs(part_path + " with " + toolpath_path, [&] {
     return compensate_stage(part, tools, program, format, read, comparison, options,
                             {part_path, comparison_path, toolpath_path, out_path, prediction_path.value_or("")},
@@ -171,10 +187,9 @@ int run_compensate(Args& args) {
   }
   const std::string& written = done.rework ? done.rework->text : done.program.text;
   if (predict_out) {
-    const ToolSpec tool = read_tool_file(tool_path);
     const PredictedPath predicted = naming_inputs(part_path + " with " + out_path, [&] {
-      return predict_compensated(part, tool, tool_path, written, format, read, predict_options,
-                                 {part_path, out_path, ""});
+      return predict_compensated(part, tool, tool_path.value_or(""), table, table_path.value_or(""), written, format,
+                                 read, predict_options, {part_path, out_path, ""});
     });
     const PredictionSummary& s = predicted.record.summary;
     std::cout << "predicted (" << *predict_out << "): max undercut " << um(s.max_undercut.error) << ", max overcut "
@@ -200,7 +215,8 @@ std::string compensate_options_help() {
 const Command kCompensateCommand = {
     "compensate", "a G-code or APT CL program moved by the measured error field of the part it cut",
     "usage: furrow compensate PART --comparison COMPARISON.json --toolpath PATH.nc|PATH.apt\n"
-    "                         --tool TOOL.json --out COMP.nc|COMP.apt [--gain G] [--max-offset MM]\n"
+    "                         --tool TOOL.json|--tools TABLE.json --out COMP.nc|COMP.apt\n"
+    "                         [--gain G] [--max-offset MM]\n"
     "                         [--smoothing MM|auto] [--clip-back N] [--prediction P.json]\n"
     "                         [--rework [--rework-threshold MM]]\n"
     "                         [--predict-out PRED.json [prediction options]]\n"
@@ -230,7 +246,12 @@ const Command kCompensateCommand = {
     "  --comparison FILE     comparison.json of furrow compare for PART (required)\n"
     "  --toolpath FILE       the G-code program or APT CL file the part was cut\n"
     "                        with (required)\n"
-    "  --tool FILE           its tool JSON (required)\n"
+    "  --tool FILE           its tool JSON (required unless --tools is given)\n"
+    "  --tools FILE          tool table of a program that changes tools (T n M6),\n"
+    "                        as furrow predict reads it: each pass is located,\n"
+    "                        moved and checked with the tool loaded when it is\n"
+    "                        cut (--tool: the one in the spindle before the first\n"
+    "                        change); not with --rework\n"
     "  --out FILE            compensated program to write (required); its record\n"
     "                        goes beside it with the extension .json\n"
     "  --prediction FILE     prediction.json of furrow predict for this program:\n"

@@ -47,6 +47,7 @@ int run_report(Args& args) {
   const std::string out = args.required_option("out");
   const auto title = args.option("title");
   const auto record = args.option("record");
+  const auto compensation = args.option("compensation");
   const bool pdf = args.flag("pdf");
   const std::string paper = args.option("paper").value_or("a4");
   const ResultsStorageOptions storage = read_results_storage(args);
@@ -59,6 +60,12 @@ int run_report(Args& args) {
   if (record) {  // checked before any work; its digest goes with the other inputs
     context.record = read_inspection_record(*record);
     sources.inputs.push_back(digest_file("record", *record));
+  }
+  if (compensation) {  // the record of a compensated program: of this comparison, or refused before any work
+    context.compensation = read_compensation_record(*compensation);
+    check_record_against(*context.compensation, sources.doc, *compensation);
+    context.compensation_file = *compensation;
+    sources.inputs.push_back(digest_file("compensation", *compensation));
   }
   check_inputs_outside(out, sources.inputs);
   if (!storage.db.empty()) context.process = report_process(args, storage, comparison_path, sources, context);
@@ -98,7 +105,7 @@ std::string report_options_help() {
 const Command kReportCommand = {
     "report", "QA report of a comparison: self-contained HTML, JSON, CSV, figures",
     "usage: furrow report COMPARISON.json --out FOLDER [--title TEXT] [--record RECORD.json]\n"
-    "                     [--pdf [--paper a4|letter]] [--db PATH [--serial S]]\n"
+    "                     [--compensation COMP.json] [--pdf [--paper a4|letter]] [--db PATH [--serial S]]\n"
     "\n"
     "Writes the QA report of a comparison (furrow compare) into FOLDER, replaced\n"
     "as a whole: report.html (self-contained, opens offline), report.json (every\n"
@@ -122,6 +129,13 @@ const Command kReportCommand = {
     "                 temperature, program, notes, sign-off (docs/formats.md\n"
     "                 \"Inspection record\"); shown in the header, written to\n"
     "                 report.json and results.qif\n"
+    "  --compensation COMP.json\n"
+    "                 the record furrow compensate wrote beside a program\n"
+    "                 compensated from this comparison: adds a Compensation\n"
+    "                 section (measured deviation and expected residual per\n"
+    "                 region and overall, maps before and after on one colour\n"
+    "                 scale; docs/report.md \"Compensation\"). A record of another\n"
+    "                 comparison is refused (exit 2)\n"
     "  --pdf          also print report.pdf (needs Chromium)\n"
     "  --paper SIZE   a4 (default) or letter\n",
     run_report, report_options_help};

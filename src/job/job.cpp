@@ -246,15 +246,15 @@ void read_compensate(const JsonCursor& c, Job& job) {
   if (out.empty() || out.find('/') != std::string::npos || out.find('\\') != std::string::npos || out == "." ||
       out == "..")
     throw InputError(c.path("out") + ": expected a file name inside the output folder, got '" + out + "'");
-  if (!job.toolpath_file)
-    throw InputError(c.where() + ": compensation writes back the program the part was cut with: the job needs a "
-                     "\"toolpath\" file (G-code or APT CL), not a generated one");
-  const std::string ext = lower_extension(*job.toolpath_file);
+  // A generated path is compensated as the G-code program the job writes
+  // (toolpath.nc, docs/compensation.md "In a job").
+  const std::string ext = job.toolpath_file ? lower_extension(*job.toolpath_file) : ".nc";
   if (ext == ".csv" || ext == ".txt")
     throw InputError(c.where() + ": compensation writes the program back: the toolpath must be the G-code program or "
                      "the APT CL file, not a CSV path");
-  if (!job.tool_table.empty())
-    throw InputError(c.where() + ": the program changes tools (toolpath.tools); compensation takes one tool");
+  if (!job.tool_table.empty() && options.rework)
+    throw InputError(c.where() + ": the program changes tools (toolpath.tools); \"rework\" takes a program of one "
+                     "tool");
   if (!job.has_measurements())
     throw InputError(c.where() + ": compensation needs the measured comparison: the job has no \"measurements\"");
   const std::string out_ext = lower_extension(out);

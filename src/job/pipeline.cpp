@@ -242,31 +242,39 @@ ComparisonDocument compare_stage(Staged& s, const Part& part, const InspectionPl
 // The compensation stage of `furrow compensate`, on the comparison.json the
 // job wrote (read back, as the command reads it), the job's part, program
 // and tool. A program the z-map check still refuses marks the result
-// refused: nothing is written (docs/compensation.md "Safety").
-void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
+// refused: nothing is written (docs/compensation.md "Safety"). Returns the
+// record written (COMP.json's name), for the report's Compensation
+// section; none when nothing was written.
+std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, const PathTools& tools,
+                                                const std::optional<std::vector<ToolTableEntry>>& table) {
   const Job& job = s.job;
-  std::string comparison_text;
-  for (const FolderFile& f : s.result.files)
+  std::string comparison_text, generated_program;
+  for (const FolderFile& f : s.result.files) {
     if (f.path == "comparison.json") comparison_text = f.bytes;
+    if (f.path == "toolpath.nc") generated_program = f.bytes;
+  }
   const ComparisonDocument comparison = parse_comparison(comparison_text, "comparison.json");
-  const std::string ext = lower_extension(*job.toolpath_file);
+  // A generated path: the G-code program the job wrote, as it wrote it.
+  const std::string ext = job.toolpath_file ? lower_extension(*job.toolpath_file) : ".nc";
   const ProgramFormat format = ext == ".cl" || ext == ".apt" || ext == ".cls" ? ProgramFormat::apt : ProgramFormat::gcode;
-  const std::string program = json_fields::read_text(*job.toolpath_file);
+  const std::string program = job.toolpath_file ? json_fields::read_text(*job.toolpath_file) : generated_program;
+  const std::string program_name =
+      job.toolpath_file ? relative_to_folder(job.output, *job.toolpath_file) : std::string("toolpath.nc");
   const std::string out = job.compensate_out;
   const std::string record = std::filesystem::path(out).replace_extension(".json").string();
   // The prediction of the program written (docs/compensation.md "Predicted
   // before it is cut"), beside it: comp.nc -> comp_prediction.json.
   const std::string predicted_name = std::filesystem::path(out).stem().string() + "_prediction.json";
   auto predict_written = [&](const std::string& text, ProgramFormat written_format) {
-    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, text,
-                                                        written_format, job.toolpath_read, job.prediction,
-                                                        {s.part_name, out, ""});
+    const PredictedPath predicted = predict_compensated(part, read_tool_file(job.tool), job.tool, table,
+                                                        job.tool_table, text, written_format, job.toolpath_read,
+                                                        job.prediction, {s.part_name, out, ""});
     s.add(predicted_name, predicted.json);
   };
   const CompensateOptions& options = *job.compensate;
   const CompensatedProgram done =
       compensate_stage(part, tools, program, format, job.toolpath_read, comparison, options,
-                       {s.part_name, "comparison.json", relative_to_folder(job.output, *job.toolpath_file), out, ""});
+                       {s.part_name, "comparison.json", program_name, out, ""});
   if (!done.check.safe()) {
     const CompensationGougeCheck& c = done.check;
     s.result.compensation_refused = true;
@@ -275,7 +283,7 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
              "deeper than its offset allows at (%.3f, %.3f, %.3f), line %d (%zu z-map nodes at %.3f mm)",
              done.clip_back_rounds, done.clip_back_rounds == 1 ? "" : "s", c.worst_excess, c.worst.x(), c.worst.y(),
              c.worst.z(), c.worst_line, c.deeper, c.resolution);
-    return;
+    return std::nullopt;
   }
   if (done.rework) {
     // The rework program instead of the full one (docs/compensation.md
@@ -286,7 +294,7 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
       s.result.summary.push_back(line("compensate: no rework needed (largest material left %.2f um, threshold "
                                       "%.2f um); nothing written",
                                       r.selection.largest_field * 1000, r.threshold * 1000));
-      return;
+      return std::nullopt;
     }
     if (!r.check.safe()) {
       s.result.compensation_refused = true;
@@ -299,25 +307,26 @@ void compensate_job_stage(Staged& s, const Part& part, const PathTools& tools) {
                      "the part at (%.3f, %.3f, %.3f)",
                      r.check.worst_rapid_line, r.check.worst_rapid_depth, r.check.worst_rapid.x(),
                      r.check.worst_rapid.y(), r.check.worst_rapid.z());
-      return;
+      return std::nullopt;
     }
     s.add(out, r.text);
-    s.add(record, done.json);
+    s.add_input("compensation", record, done.json);
     predict_written(r.text, format);
     s.result.summary.push_back(line("compensate: rework %s, %zu stretches in %zu regions, %zu of %zu moves re-cut "
                                     "beyond %.2f um",
                                     out.c_str(), r.selection.stretches.size(), r.selection.regions.size(),
                                     r.selection.moves_kept, r.selection.moves, r.threshold * 1000));
-    return;
+    return record;
   }
   s.add(out, done.program.text);
-  s.add(record, done.json);
+  s.add_input("compensation", record, done.json);
   predict_written(done.program.text, format);
   s.result.summary.push_back(line("compensate: %s, %zu tips moved, largest offset %.2f um, %zu clipped at %.2f um, "
                                   "%zu clipped back in %d round%s",
                                   out.c_str(), done.offset.moved, done.offset.largest_offset * 1000,
                                   done.offset.clipped.size(), options.max_offset * 1000, done.clip_back.size(),
                                   done.clip_back_rounds, done.clip_back_rounds == 1 ? "" : "s"));
+  return record;
 }
 
 }  // namespace
@@ -381,6 +390,25 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     clock.done(job.simulate ? "simulate measurement" : "read measurements");
     const ComparisonDocument doc = compare_stage(s, part, plan, map, prediction, set);
     clock.done("compare");
+    // Compensated before the report, whose Compensation section shows what
+    // the program is expected to leave (docs/report.md "Compensation").
+    std::optional<CompensationRecord> compensation;
+    std::string compensation_file;
+    if (job.compensate) {
+      s.note("compensate");
+      if (const std::optional<std::string> name = compensate_job_stage(s, part, tools, table)) {
+        for (const FolderFile& f : result.files)
+          if (f.path == *name) compensation = parse_compensation_record(f.bytes, *name);
+        check_record_against(*compensation, doc, *name);
+        compensation_file = *name;
+      }
+      clock.done("compensate");
+      if (result.compensation_refused) {  // nothing is written: no report either
+        result.total_seconds = clock.total();
+        result.inputs = s.inputs;
+        return result;
+      }
+    }
 
     s.note("report");
     ReportContext context;
@@ -390,6 +418,8 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     context.inputs = s.inputs;
     context.job_options_json = job_options_json(job);
     context.record = job.record;
+    context.compensation = std::move(compensation);
+    context.compensation_file = compensation_file;
     if (process)
       for (const FolderFile& f : result.files)
         if (f.path == "comparison.json") context.process = process(f.bytes);
@@ -399,7 +429,8 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     check_comparison_faces(doc, part);
     context.face_surfaces = face_surfaces(part, doc);
     const std::vector<ReportFigure> figures =
-        make_report_figures(doc, part, &map, job.compare_with_prediction ? &prediction : nullptr);
+        make_report_figures(doc, part, &map, job.compare_with_prediction ? &prediction : nullptr,
+                            context.compensation ? &*context.compensation : nullptr);
     context.stages = result.stages;
     context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
     context.total_seconds = clock.total();
@@ -414,11 +445,6 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
                                   to_string(doc.summary.verdict), doc.summary.profile * 1000,
                                   doc.options.tolerance.width * 1000, doc.summary.out_of_tolerance,
                                   doc.summary.evaluated));
-    if (job.compensate) {
-      s.note("compensate");
-      compensate_job_stage(s, part, tools);
-      clock.done("compensate");
-    }
   } else {
     result.summary.push_back("no measurements in the job: stopped after the plan");
   }

@@ -91,7 +91,8 @@ void label_out_of_tolerance(Drawing& d, const ChartFrame& frame, const std::vect
 
 Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoint>& points,
                               const std::vector<Outline>& outlines, const ToleranceLimits& tolerance,
-                              const std::string& x_label, const std::string& y_label, bool equal_aspect) {
+                              const std::string& x_label, const std::string& y_label, bool equal_aspect,
+                              double range) {
   Drawing d = blank_with_title(title);
   Bounds b;
   for (const auto& o : outlines)
@@ -103,7 +104,7 @@ Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoi
                                         : ChartFrame(rect, b.x0, b.x1, b.y0, b.y1);
   frame.draw_axes(d, x_label, y_label, false);
   draw_outlines(d, frame, outlines);
-  const DeviationScale scale{scale_range(points, tolerance)};
+  const DeviationScale scale{range > 0 ? range : scale_range(points, tolerance)};
   // Larger |value| drawn last so extremes stay visible where points overlap.
   std::vector<const MapPoint*> order;
   for (const MapPoint& p : points) order.push_back(&p);

@@ -38,12 +38,15 @@ struct ToleranceLimits {
 };
 
 // Points coloured by value on a diverging scale with a colour bar in µm and
-// the tolerance limits marked. `equal_aspect` for geometric maps. Each
+// the tolerance limits marked. `equal_aspect` for geometric maps. The scale
+// runs over ±`range` [mm] when it is given (> 0), so that two maps compared
+// side by side share their colours; else over the largest |value| and limit. Each
 // out-of-tolerance label is an SVG <text class="oot-label" data-id=ID
 // data-value=UM> reading "ID +61.3 µm" (value in µm, one decimal).
 Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoint>& points,
                               const std::vector<Outline>& outlines, const ToleranceLimits& tolerance,
-                              const std::string& x_label, const std::string& y_label, bool equal_aspect);
+                              const std::string& x_label, const std::string& y_label, bool equal_aspect,
+                              double range = 0);
 
 // Histogram of deviations (µm) with the tolerance limits as vertical lines.
 Drawing histogram_drawing(const std::string& title, const std::vector<double>& values,

@@ -77,7 +77,10 @@ std::vector<FolderFile> make_report(const ComparisonDocument& doc, const Part& p
   check_comparison_faces(doc, part);
   ReportContext with_surfaces = context;
   if (with_surfaces.face_surfaces.empty()) with_surfaces.face_surfaces = face_surfaces(part, doc);
-  return render_report(doc, regions, make_report_figures(doc, part, regions, prediction), with_surfaces);
+  return render_report(doc, regions,
+                       make_report_figures(doc, part, regions, prediction,
+                                           context.compensation ? &*context.compensation : nullptr),
+                       with_surfaces);
 }
 
 std::vector<FolderFile> render_report(const ComparisonDocument& doc, const RegionMap* regions,

@@ -22,6 +22,7 @@
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
+#include "inspection/compensation_record.hpp"
 #include "partition/region_map.hpp"
 #include "report/inspection_record.hpp"
 #include "report/process_context.hpp"
@@ -30,7 +31,7 @@
 namespace furrow {
 
 struct InputDigest {
-  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, job
+  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, compensation, job
   std::string path;  // as used (a generated file: relative to the output folder)
   std::string sha256;
   std::uintmax_t bytes = 0;
@@ -61,6 +62,12 @@ struct ReportContext {
   // Where the part sits in its batch (process_context.hpp), when a results
   // database was given; none: the report has no Process section.
   std::optional<ProcessContext> process;
+  // What a compensated program is expected to leave (a COMP.json of furrow
+  // compensate, checked against the comparison: check_record_against), and
+  // its file as named; none: the report has no Compensation section. The
+  // file belongs in `inputs` too (role "compensation").
+  std::optional<CompensationRecord> compensation;
+  std::string compensation_file;
   // What each face of the part exactly is, indexed like Part::faces (from
   // face_surfaces below); unset for a free-form face. Empty: not known.
   std::vector<std::optional<AnalyticSurface>> face_surfaces;

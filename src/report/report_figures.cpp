@@ -143,11 +143,59 @@ void add_prediction_figures(const ComparisonDocument& doc, const Part& part, Fig
   });
 }
 
+// The measured deviations and the residual the compensated program is
+// expected to leave at the same points (docs/compensation.md "Predicted
+// before it is cut"), drawn as the top-view deviation map on one colour
+// scale: the largest |value| of either map and the zone's limits, so a
+// colour means the same micrometres in both.
+void add_compensation_maps(const ComparisonDocument& doc, const Part& part, const RegionMap* regions,
+                           const CompensationRecord& record, FigureJobs& out) {
+  const ToleranceLimits zone = limits(doc);
+  double range = std::max(std::fabs(zone.lower), std::fabs(zone.upper));
+  for (const ExpectedPoint& p : record.expected.points)
+    range = std::max({range, std::fabs(p.measured), std::fabs(p.residual)});
+  if (!(range > 0)) range = 1e-3;
+  auto map = [&doc, &part, regions, &record, zone, range](bool after) {
+    std::vector<MapPoint> points;
+    for (const ExpectedPoint& p : record.expected.points) {
+      const ComparisonDocument::Point& c = doc.points.at(p.index);
+      MapPoint m;
+      m.position = Eigen::Vector2d(c.foot.x(), c.foot.y());
+      m.value = after ? p.residual : p.measured;
+      m.out_of_tolerance = m.value < zone.lower || m.value > zone.upper;
+      m.flagged = m.out_of_tolerance;
+      m.label = p.id;
+      points.push_back(std::move(m));
+    }
+    std::vector<Outline> outlines = face_outlines_xy(part);
+    if (regions)
+      for (Outline& o : region_borders_xy(*regions)) outlines.push_back(std::move(o));
+    const bool vector = points.size() <= kVectorPointLimit;
+    if (!after)
+      return figure("figures/compensation_before.png", "compensation", "Before compensation: measured deviation",
+                    "The measured deviation at every point the compensation took (foot point, seen from above): "
+                    "red = material left, blue = overcut; a black ring marks a point outside the profile zone. "
+                    "The same colour scale as the map after compensation.",
+                    deviation_map_drawing("Measured deviation [\u00b5m], top view", points, outlines, zone, "x [mm]",
+                                          "y [mm]", true, range),
+                    vector);
+    return figure("figures/compensation_after.png", "compensation", "After compensation: expected residual",
+                  "The deviation the compensated program is expected to leave at the same points: the measured "
+                  "deviation plus the correction the program writes at its nearest contact (0 where it does not "
+                  "cut the point). The same colour scale as the map before.",
+                  deviation_map_drawing("Expected residual [\u00b5m], top view", points, outlines, zone, "x [mm]",
+                                        "y [mm]", true, range),
+                  vector);
+  };
+  out.push_back([map] { return map(false); });
+  out.push_back([map] { return map(true); });
+}
+
 }  // namespace
 
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
                                               const RegionMap* regions, const Prediction* prediction,
-                                              bool interactive) {
+                                              const CompensationRecord* compensation, bool interactive) {
   FigureJobs jobs;
   if (regions)
     jobs.push_back([&part, regions] {
@@ -160,6 +208,7 @@ std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, con
   add_deviation_maps(doc, part, regions, jobs);
   if (interactive) jobs.push_back([&] { return part_view_3d_figure(doc, part, prediction); });
   if (doc.prediction) add_prediction_figures(doc, part, jobs);
+  if (compensation) add_compensation_maps(doc, part, regions, *compensation, jobs);
   // The figures share nothing but the inputs they read, so they are drawn
   // at once, one per thread: at 100,000 points the figures are most of the
   // report's time (docs/report.md, "Speed"). Each lands in its own slot, so

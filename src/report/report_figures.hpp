@@ -14,6 +14,10 @@
 //   figures/predicted_vs_measured.png  scatter with 1-sigma bars (with a prediction)
 //   figures/gouge_sites.png         predicted sites by status and unexplained
 //                                   overcuts, top view (with a prediction)
+//   figures/compensation_before.png the measured deviations, top view, and
+//   figures/compensation_after.png  the residual a compensated program is
+//                                   expected to leave there (with a
+//                                   compensation record), on one colour scale
 // Deviation colours: colour_scale.hpp, bar in um with the zone's limits.
 // Points not evaluated (blunders, beyond an edge) are grey with a ring;
 // points out of tolerance get a black ring. Deterministic bytes.
@@ -22,6 +26,7 @@
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
+#include "inspection/compensation_record.hpp"
 #include "machining/prediction/prediction.hpp"
 #include "partition/region_map.hpp"
 
@@ -29,7 +34,7 @@ namespace furrow {
 
 struct ReportFigure {
   std::string file;     // relative to the report folder, e.g. "figures/histogram.png"
-  std::string section;  // "regions", "deviations", "prediction", "gouges"
+  std::string section;  // "regions", "deviations", "prediction", "gouges", "compensation"
   std::string title;
   std::string caption;
   std::vector<unsigned char> png;  // always: the raster back end
@@ -42,12 +47,14 @@ struct ReportFigure {
 // Maps of more points than this are raster only in the page.
 constexpr std::size_t kVectorPointLimit = 5000;
 
-// `regions` and `prediction` may be null. Precondition: doc's faces are
-// faces of `part` (the report checks the face names first). With
+// `regions`, `prediction` and `compensation` may be null. Preconditions:
+// doc's faces are faces of `part` (the report checks the face names first);
+// the compensation record is of `doc` (check_record_against). With
 // `interactive`, the last figure of the deviations is the 3D view
 // (part_view_3d.hpp; section "view3d"), which needs three.js installed.
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
                                               const RegionMap* regions, const Prediction* prediction = nullptr,
+                                              const CompensationRecord* compensation = nullptr,
                                               bool interactive = true);
 
 }  // namespace furrow

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "report/compensation_section.hpp"
 #include "report/face_summary.hpp"
 #include "report/merged_surfaces.hpp"
 #include "report/html.hpp"
@@ -421,7 +422,9 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a>" +
          std::string(context.process ? "<a href=\"#process\">Process</a>" : "") + "<a href=\"#deviations\">"
          "Deviations</a><a href=\"#view3d\">3D view</a><a href=\"#prediction\">Predicted vs measured</a><a "
-         "href=\"#gouges\">Gouges</a><a href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a "
+         "href=\"#gouges\">Gouges</a>" +
+         std::string(context.compensation ? "<a href=\"#compensation\">Compensation</a>" : "") +
+         "<a href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a "
          "href=\"#traceability\">Traceability</a></nav>\n";
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
@@ -430,6 +433,8 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += figures_of(figures, "view3d");  // part_view_3d.hpp: a whole section, when present
   out += prediction_section(doc, figures);
   out += gouges_section(doc, figures);
+  out += compensation_section_html(context.compensation, context.compensation_file,
+                                   figures_of(figures, "compensation"));
   out += face_summary_html(doc, context.face_surfaces) + point_table_html(doc);
   out += traceability_section(doc, context) + sign_off_html(context.record);
   return out + kImageCheck + "</body>\n</html>\n";

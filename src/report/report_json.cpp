@@ -7,6 +7,7 @@
 #include "base/json_fields.hpp"
 #include "base/json_text.hpp"
 #include "io/part_file.hpp"
+#include "report/compensation_section.hpp"
 #include "report/face_summary.hpp"
 #include "report/merged_surfaces.hpp"
 
@@ -313,6 +314,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   } else {
     d["gouges"] = nullptr;
   }
+  d["compensation"] = compensation_section_json(context.compensation, context.compensation_file);
   d["faces"] = faces_json(doc, context.face_surfaces);
   d["points"] = nullptr;  // streamed below, in its place among the members
   json figs = json::array();

@@ -187,8 +187,9 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
     throw InputError("compensate: --rework-threshold is given without --rework");
   if (options.rework_threshold && (!(*options.rework_threshold >= 0) || !std::isfinite(*options.rework_threshold)))
     throw InputError("compensate: --rework-threshold must be a length >= 0 in mm");
-  if (tools.changes_tools())
-    throw InputError(names.toolpath + ": the program changes tools; compensation takes one tool");
+  if (tools.changes_tools() && options.rework)
+    throw InputError(names.toolpath + ": the program changes tools; --rework takes a program of one tool "
+                     "(compensate it without --rework)");
   const bool apt = format == ProgramFormat::apt;
   auto parse = [&](const std::string& text, const std::string& name) {
     return apt ? parse_apt(text, name, read) : parse_gcode(text, name, read);
@@ -199,11 +200,16 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   field_options.smoothing_length = options.smoothing;
   if (prediction) check_prediction_against_part(*prediction, part, names.prediction, names.part);
   out.field = fit_error_field(comparison, part, field_options, names.comparison, prediction);
-  const Cutter& cutter = tools.cutters.front();
+  // Each pass with the cutter in the spindle when it is cut: its contacts,
+  // offsets and z-map check are that cutter's.
+  const Cutter& cutter = tools.cutters.front();  // the only one with --rework
+  auto cutter_of = [&](std::size_t pass) -> const Cutter& {
+    return tools.cutters[static_cast<std::size_t>(tools.of_pass[pass])];
+  };
   PathOffsetOptions offset_options;
   offset_options.gain = options.gain;
   offset_options.max_offset = options.max_offset;
-  const PathGeometry geometry = locate_path(part, cutter, path);
+  const PathGeometry geometry = locate_path(part, tools, path);
   out.offset = offset_path(part, tools, geometry, out.field.field, offset_options);
   // Write, read back (what is checked is what is written), check; where the
   // check blames moves, halve their ends' offsets and go again.
@@ -213,7 +219,7 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
                       : rewrite_gcode(program_text, names.toolpath, read, out.offset.tips);
     const Toolpath written = parse(out.program.text, names.out);
     const double half_unit = 0.5 * std::pow(10.0, -out.program.decimals) * out.program.unit_mm;
-    out.check = check_compensation_zmap(cutter, path, written, out.offset, half_unit);
+    out.check = check_compensation_zmap(tools, path, written, out.offset, half_unit);
     if (out.check.safe() || out.clip_back_rounds >= options.clip_back) break;
     bool changed = false;
     for (const auto& [pass, step] : out.check.blamed)
@@ -224,7 +230,7 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
         if (fresh) at->second = {pass, k, geometry.passes[pass][k].line, d, d, 0};
         // Halved once per round, however many of its moves are blamed.
         if (at->second.rounds > out.clip_back_rounds) continue;
-        reduce_offset(out.offset, cutter, geometry, pass, k, 0.5, offset_options.location);
+        reduce_offset(out.offset, cutter_of(pass), geometry, pass, k, 0.5, offset_options.location);
         at->second.applied = out.offset.offsets[pass][k];
         at->second.rounds = out.clip_back_rounds + 1;
         changed = true;
@@ -234,7 +240,12 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   }
   for (const auto& [where, point] : reduced) out.clip_back.push_back(point);
   // After the clip-back: the offsets the program carries.
-  out.expected = expect_compensation(comparison, out.field.field, geometry, out.offset, cutter.radius());
+  // A contact cuts the surface within its cutter's radius; with several
+  // cutters the largest stands for all (docs/compensation.md "Programs that
+  // change tools").
+  double reach = 0;
+  for (const Cutter& c : tools.cutters) reach = std::max(reach, c.radius());
+  out.expected = expect_compensation(comparison, out.field.field, geometry, out.offset, reach);
   if (options.rework && out.check.safe()) {
     ReworkProgram r;
     r.threshold_given = options.rework_threshold.has_value();
@@ -273,16 +284,19 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
   return out;
 }
 
-PredictedPath predict_compensated(const Part& part, const ToolSpec& tool, const std::string& tool_source,
-                                  const std::string& program_text, ProgramFormat format,
-                                  const ToolpathReadOptions& read, const PathPredictionOptions& options,
-                                  const PredictionSources& names, const StageProgress& progress) {
+PredictedPath predict_compensated(const Part& part, const std::optional<ToolSpec>& tool,
+                                  const std::string& tool_source,
+                                  const std::optional<std::vector<ToolTableEntry>>& table,
+                                  const std::string& table_source, const std::string& program_text,
+                                  ProgramFormat format, const ToolpathReadOptions& read,
+                                  const PathPredictionOptions& options, const PredictionSources& names,
+                                  const StageProgress& progress) {
   // read_toolpath's rules, on the text about to be written.
   if (program_text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(names.toolpath + ": the file is empty");
   const Toolpath path = format == ProgramFormat::apt ? parse_apt(program_text, names.toolpath, read)
                                                      : parse_gcode(program_text, names.toolpath, read);
-  const PathTools tools = tools_for_path(path, tool, tool_source, std::nullopt, "");
+  const PathTools tools = tools_for_path(path, tool, tool_source, table, table_source);
   return predict_stage(part, tools, path, options, names, nullptr, progress);
 }
 

@@ -81,9 +81,11 @@ struct CompensationSources {
 };
 
 // `program_text` is the program (G-code or APT CL, `format`) of `tools`'
-// path as read with `read`. Throws InputError for a program that changes
-// tools, a comparison of another part, or options out of range (naming
-// them). When the z-map check still fails after options.clip_back rounds,
+// path as read with `read`; a program that changes tools has each pass
+// located, offset, clipped back and checked with its own cutter
+// (docs/compensation.md "Programs that change tools"). Throws InputError
+// for --rework of a program that changes tools, a comparison of another
+// part, or options out of range (naming them). When the z-map check still fails after options.clip_back rounds,
 // the result's check is not safe: the caller writes nothing (exit 3).
 // `prediction` (may be null): a prediction given apart, whose error at each
 // measured point is taken off its deviation before the fit instead of the
@@ -100,10 +102,15 @@ CompensatedProgram compensate_stage(const Part& part, const PathTools& tools, co
 // exactly as `furrow predict` reads that file, with the tool `tool` (named
 // `tool_source`), and predicted with `options` - so the result is, byte for
 // byte, what `furrow predict PART --toolpath COMP --tool TOOL` writes for the
-// written file. Throws InputError as parsing and predict_stage do.
-PredictedPath predict_compensated(const Part& part, const ToolSpec& tool, const std::string& tool_source,
-                                  const std::string& program_text, ProgramFormat format,
-                                  const ToolpathReadOptions& read, const PathPredictionOptions& options,
-                                  const PredictionSources& names, const StageProgress& progress = {});
+// written file (with `table`, a program that changes tools: `furrow predict
+// --tools TABLE`). Throws InputError as parsing, tools_for_path and
+// predict_stage do.
+PredictedPath predict_compensated(const Part& part, const std::optional<ToolSpec>& tool,
+                                  const std::string& tool_source,
+                                  const std::optional<std::vector<ToolTableEntry>>& table,
+                                  const std::string& table_source, const std::string& program_text,
+                                  ProgramFormat format, const ToolpathReadOptions& read,
+                                  const PathPredictionOptions& options, const PredictionSources& names,
+                                  const StageProgress& progress = {});
 
 }  // namespace furrow

@@ -329,3 +329,168 @@ TEST_CASE("compensate --rework: a program in inches is refused with status 2, as
   CHECK(!fs::exists(out));
   CHECK(!fs::exists(l.dir + "/inch_rework.json"));
 }
+
+TEST_CASE("compensate --rework: a program whose rapids stay below the part fails the rework check, exit 3, nothing written") {
+  // The example program with every retract lowered to 24 mm, just above
+  // the highest pass start: a programmer's "safe" plane that the mould
+  // rises through inside the bump (its tips there reach about 27 mm). The
+  // full compensated program only moves the cutting tips and passes its
+  // own check; the rework must go up to the program's highest rapid
+  // between stretches, and at 24 mm its moves to and from each stretch
+  // run through the part.
+  const Setup& l = setup();
+  const std::string low = l.dir + "/low_rapids.nc";
+  std::string text = slurp(l.program);
+  std::size_t replaced = 0;
+  for (std::size_t at = text.find("Z34.6326"); at != std::string::npos; at = text.find("Z34.6326", at), ++replaced)
+    text.replace(at, 8, "Z24.0000");
+  REQUIRE(replaced > 100);
+  test::write_text(low, text);
+  const Toolpath path = parse_gcode(text, "low_rapids.nc");
+  const double clearance = highest_rapid(path);
+  REQUIRE(std::abs(clearance - 24.0) < 1e-9);
+  // The set-up's oracle: original tips inside the bump stand well above the
+  // clearance, so any move at the clearance there cuts the part.
+  double highest_in_bump = -1e300;
+  for (const ToolpathPass& pass : path.passes)
+    for (const ToolpathPoint& p : pass.points)
+      if ((p.position.head<2>() - l.centre.head<2>()).norm() < kRadius)
+        highest_in_bump = std::max(highest_in_bump, p.position.z());
+  REQUIRE(highest_in_bump > clearance + 1.0);
+
+  const std::string out = l.dir + "/low_rework.nc", predicted = l.dir + "/low_rework_prediction.json";
+  const auto r = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", low, "--tool", l.tool,
+                             "--out", out, "--rework", "--predict-out", predicted});
+  INFO(r.out << r.err);
+  CHECK(r.status == 3);
+  CHECK(r.err.find("nothing written") != std::string::npos);
+  CHECK(r.err.find("rework program") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(l.dir + "/low_rework.json"));
+  CHECK(!fs::exists(predicted));
+  // The place named: the compensated program's surface there (the
+  // rework's height plus the depth) stands above the clearance - the
+  // reason for the failure - and below the highest tip of the program
+  // plus a cutter radius, which bounds every height a ball leaves.
+  double depth = 0, x = 0, y = 0, z = 0;
+  const std::size_t at = r.err.find(" would cut ");
+  REQUIRE(at != std::string::npos);
+  REQUIRE(std::sscanf(r.err.c_str() + at, " would cut %lf mm", &depth) == 1);
+  const std::size_t open = r.err.find('(', at);
+  REQUIRE(open != std::string::npos);
+  REQUIRE(std::sscanf(r.err.c_str() + open, "(%lf, %lf, %lf)", &x, &y, &z) == 3);
+  double highest = -1e300;
+  for (const ToolpathPass& pass : path.passes)
+    for (const ToolpathPoint& p : pass.points) highest = std::max(highest, p.position.z());
+  MESSAGE("rework check: " << depth << " mm at (" << x << ", " << y << ", " << z << "), tips in the bump up to "
+                           << highest_in_bump << " mm, clearance " << clearance << " mm");
+  CHECK(depth > 0.5);
+  CHECK(depth + z > clearance);
+  CHECK(depth + z < highest + kBall);
+  CHECK((Eigen::Vector2d(x, y) - l.centre.head<2>()).norm() < kRadius + kBall);
+
+  // The control: the program as it was, rapids at 34.6 mm, is written.
+  const auto control = run_furrow({"compensate", l.part, "--comparison", l.comparison, "--toolpath", l.program,
+                                   "--tool", l.tool, "--out", l.dir + "/control_rework.nc", "--rework"});
+  INFO(control.err);
+  CHECK(control.status == 0);
+  CHECK(fs::exists(l.dir + "/control_rework.nc"));
+}
+
+TEST_CASE("compensate --rework: a rework rapid over the part between two bumps fails the check, exit 3, nothing written") {
+  // Two bumps of material left in the mould's low ground on either side of
+  // its dome (x 5 and x 70 mm, the dome's top at x 20-40 mm, 29.6 mm high),
+  // and the program's retracts lowered to 24 mm: the rework's stretches
+  // start and end below that clearance (their plunges come down through
+  // air), but its rapids from one bump to the other cross the dome.
+  // Oracle for the depth named: the original program's cut, a z-map of
+  // this test's, at the point named (the compensated program leaves the
+  // dome as the original does: no measured point is near it).
+  const std::string dir = test::scratch_dir("cli-rework-rapid");
+  const std::string part = test::source_path("examples/parts/mould.json");
+  const std::string tool = test::source_path("examples/tools/ball_d6.json");
+  REQUIRE(run_furrow({"partition", part, "--out", dir + "/regions.json", "--grid", "40x40"}).status == 0);
+  REQUIRE(run_furrow({"plan", part, "--regions", dir + "/regions.json", "--points", "600", "--out", dir + "/plan"})
+              .status == 0);
+  json plan = json::parse(slurp(dir + "/plan/plan.json"));
+  // Each bump centred on the plan point nearest to where it is wanted (a
+  // point of the surface), radius 8 and 5 mm.
+  const std::vector<std::pair<Eigen::Vector2d, double>> wanted = {{{72, 35}, 8.0}, {{4, 35}, 5.0}};
+  std::vector<Eigen::Vector3d> centres;
+  json kept = json::array();
+  for (const auto& [at, radius] : wanted) {
+    Eigen::Vector3d best(1e300, 1e300, 0);
+    for (const json& p : plan["points"]) {
+      const Eigen::Vector3d q(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
+      if ((q.head<2>() - at).norm() < (best.head<2>() - at).norm()) best = q;
+    }
+    centres.push_back(best);
+  }
+  for (const json& p : plan["points"]) {
+    const Eigen::Vector3d q(p["xyz"][0].get<double>(), p["xyz"][1].get<double>(), p["xyz"][2].get<double>());
+    if ((q - centres[0]).norm() < 12 || (q - centres[1]).norm() < 8) kept.push_back(p);
+  }
+  REQUIRE(kept.size() >= 30);
+  plan["points"] = kept;
+  test::write_text(dir + "/plan.json", plan.dump(1));
+  std::vector<std::string> sim = {"simulate-measurement", part, "--plan", dir + "/plan.json", "--noise", "0.001",
+                                  "--blunders", "0", "--seed", "3", "--misalign", "0,0,0,0,0,0", "--out",
+                                  dir + "/m.csv"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    char bump[160];
+    std::snprintf(bump, sizeof bump, "%.6f,%.6f,%.6f,%g,0.08", centres[k].x(), centres[k].y(), centres[k].z(),
+                  wanted[k].second);
+    sim.insert(sim.end(), {"--bump", bump});
+  }
+  REQUIRE(run_furrow(sim).status == 0);
+  const std::string comparison = dir + "/comparison.json";
+  run_furrow({"compare", part, "--measurements", dir + "/m.csv", "--plan", dir + "/plan.json", "--align", "cmm",
+              "--no-outlier-rejection", "--out", comparison});
+  REQUIRE(fs::exists(comparison));
+
+  std::string text = slurp(test::source_path("examples/toolpaths/mould_ball6.nc"));
+  for (std::size_t at = text.find("Z34.6326"); at != std::string::npos; at = text.find("Z34.6326", at))
+    text.replace(at, 8, "Z24.0000");
+  test::write_text(dir + "/low.nc", text);
+  const Toolpath low = parse_gcode(text, "low.nc");
+  const double clearance = highest_rapid(low);
+  REQUIRE(std::abs(clearance - 24.0) < 1e-9);
+
+  const std::string out = dir + "/rework.nc";
+  const auto r = run_furrow({"compensate", part, "--comparison", comparison, "--toolpath", dir + "/low.nc", "--tool",
+                             tool, "--out", out, "--rework"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 3);
+  CHECK(r.err.find("nothing written: a rapid of the rework program (line ") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(dir + "/rework.json"));
+  const std::size_t at = r.err.find(" would cut ");
+  REQUIRE(at != std::string::npos);
+  double depth = 0, x = 0, y = 0, z = 0;
+  REQUIRE(std::sscanf(r.err.c_str() + at, " would cut %lf mm into the part at (%lf, %lf, %lf)", &depth, &x, &y, &z) ==
+          4);
+  const Cutter ball("ball", kBall, kBall);
+  ZMap cut(Eigen::AlignedBox2d(Eigen::Vector2d(x - 5, y - 5), Eigen::Vector2d(x + 5, y + 5)), 0.1);
+  cut.cut(ball, moves_from_toolpath(low));
+  const double machined = cut.height_at(x, y);
+  MESSAGE("rework rapid: " << depth << " mm into the part at (" << x << ", " << y << ", " << z
+                           << "); the original's cut there " << machined << " mm");
+  CHECK(x > centres[1].x() + wanted[1].second);  // between the bumps: over the dome
+  CHECK(x < centres[0].x() - wanted[0].second);
+  CHECK(z >= clearance - 1e-3);                   // the rapid's ball, at the clearance
+  CHECK(depth > 1.0);
+  // The depth is reported beyond the check's tolerance: 1 um and the
+  // rounding of both programs (4 decimals, sqrt(3) half units each;
+  // docs/compensation.md "Rework"). The rest is the rounding of the
+  // printed place (half a micrometre in z, and in x, y times the dome's slope).
+  const double tolerance = 1e-3 + std::sqrt(3.0) * (0.5e-4 + 0.5e-4);
+  CHECK(std::abs(z + depth + tolerance - machined) < 0.001);  // the part as the original cut it
+
+  // The control: with its rapids as they were, the same rework is written.
+  const auto control = run_furrow({"compensate", part, "--comparison", comparison, "--toolpath",
+                                   test::source_path("examples/toolpaths/mould_ball6.nc"), "--tool", tool, "--out",
+                                   dir + "/control.nc", "--rework"});
+  INFO(control.out << control.err);
+  CHECK(control.status == 0);
+  CHECK(control.out.find("in 2 regions") != std::string::npos);
+}

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/machining/gcode_reader.hpp"
+#include "geometry/primitives.hpp"
 #include "io/part_file.hpp"
 #include "support/run_cli.hpp"
 
@@ -110,6 +111,25 @@ TEST_CASE("job compensate: furrow run writes the program furrow compensate write
   for (json* p : {&job_prediction, &hand_prediction})
     for (const char* key : {"part", "toolpath"}) p->erase(key);
   CHECK(job_prediction == hand_prediction);
+
+  // The job's report has the Compensation section of its record: what
+  // `furrow report --compensation` makes of the job's comparison and
+  // record (the second implementation), but for the record's name.
+  const json report = json::parse(slurp(out + "/report.json"));
+  REQUIRE(report["compensation"].is_object());
+  CHECK(report["compensation"]["record"] == "comp.json");
+  CHECK(slurp(out + "/report.html").find("<section id=\"compensation\">") != std::string::npos);
+  CHECK(fs::exists(out + "/figures/compensation_after.png"));
+  const auto reported = run_furrow({"report", out + "/comparison.json", "--compensation", out + "/comp.json",
+                                    "--out", dir + "/hand_report"});
+  INFO(reported.err);
+  REQUIRE(reported.status == 0);
+  json by_job = report["compensation"], by_command = json::parse(slurp(dir + "/hand_report/report.json"))["compensation"];
+  by_job.erase("record");
+  by_command.erase("record");
+  CHECK(by_job == by_command);
+  CHECK(by_job["overall"]["rms_after"] == record["expected"]["overall"]["rms_after"]);
+  CHECK(slurp(out + "/figures/compensation_after.png") == slurp(dir + "/hand_report/figures/compensation_after.png"));
 }
 
 TEST_CASE("job compensate: with rework, furrow run writes the rework program furrow compensate --rework writes") {
@@ -160,6 +180,13 @@ TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, 
        "compensate.rework_threshold"},
       {{{"compensate", {{"out", "comp.nc"}, {"rework_threshold", 0.01}}}}, "compensate.rework_threshold"},
       {{{"measurements", nullptr}}, "compensate"},
+      // A program with a tool table is compensated pass by pass, but its
+      // rework takes one tool.
+      {{{"toolpath",
+         {{"file", test::source_path("examples/toolpaths/mould_ball6.nc")},
+          {"tools", test::source_path("examples/tools/table.json")}}},
+        {"compensate", {{"out", "comp.nc"}, {"rework", true}}}},
+       "\"rework\" takes a program of one tool"},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string out = dir + "/out" + std::to_string(k);
@@ -173,21 +200,65 @@ TEST_CASE("job compensate: a bad member is status 2 naming it, before any work, 
   }
 }
 
-TEST_CASE("job compensate: a job whose tool path is generated or a CSV path is refused clearly") {
+TEST_CASE("job compensate: a job whose tool path is a CSV path is refused clearly") {
   const std::string dir = test::scratch_dir("job-compensate-no-program");
   const std::string csv = dir + "/path.csv";
   test::write_text(csv, "x,y,z\n0,0,10\n1,0,10\n");
-  const json generated = {{"generate", {{"scallop", 0.01}}}};
-  for (const json& toolpath : {generated, json(csv)}) {
-    const std::string out = dir + "/out";
-    test::write_text(dir + "/job.json", mould_job(out, {{"toolpath", toolpath}}).dump(1));
-    const auto r = run_furrow({"run", dir + "/job.json"});
-    INFO(r.err);
-    CHECK(r.status == 2);
-    CHECK(r.err.find("compensat") != std::string::npos);
-    CHECK(r.err.find("toolpath") != std::string::npos);
-    CHECK_FALSE(fs::exists(out));
-  }
+  const std::string out = dir + "/out";
+  test::write_text(dir + "/job.json", mould_job(out, {{"toolpath", csv}}).dump(1));
+  const auto r = run_furrow({"run", dir + "/job.json"});
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("compensat") != std::string::npos);
+  CHECK(r.err.find("toolpath") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("job compensate: a generated tool path is compensated as furrow compensate compensates the job's toolpath.nc") {
+  // A small warped plate (a bilinear patch, 40 x 30 mm, 0 to 4 mm high) so
+  // that the job generates its path in a moment; a +50 um bump planted in
+  // its middle; steps of at most 1 mm, so that tips stand on the bump
+  // (compensation moves tips). The second implementation: furrow compensate on the
+  // toolpath.nc and comparison.json the job wrote.
+  const std::string dir = test::scratch_dir("job-compensate-generated");
+  const std::string part = dir + "/plate.json", out = dir + "/out";
+  Part plate;
+  plate.faces.emplace_back("plate", make_bilinear({0, 0, 0}, {40, 0, 2}, {0, 30, 1}, {40, 30, 4}));
+  write_part_json(plate, part);
+  const Eigen::Vector3d c = read_part(part).faces[0].surface().point(0.5, 0.5);
+  const std::string tool = test::source_path("examples/tools/ball_d6.json");
+  const json job = {{"part", part},
+                    {"tool", tool},
+                    {"toolpath", {{"generate", {{"scallop", 0.01}, {"tolerance", 0.01}, {"max_step", 1.0}}}}},
+                    {"tolerance", {{"zone", 0.2}}},
+                    {"plan", {{"points", 150}}},
+                    {"measurements",
+                     {{"simulate",
+                       {{"noise", 0.001},
+                        {"seed", 4},
+                        {"bumps", json::array({{c.x(), c.y(), c.z(), 10.0, kBumpHeight}})}}}}},
+                    {"comparison", {{"align", "cmm"}, {"outlier_rejection", false}}},
+                    {"compensate", {{"out", "comp.nc"}, {"gain", 0.5}}},
+                    {"output", out}};
+  test::write_text(dir + "/job.json", job.dump(1));
+  const auto run = run_furrow({"run", dir + "/job.json"});
+  INFO(run.out << run.err);
+  REQUIRE(run.status == 0);
+  REQUIRE(fs::exists(out + "/toolpath.nc"));
+  REQUIRE(fs::exists(out + "/comp.nc"));
+  const auto by_hand = run_furrow({"compensate", part, "--comparison", out + "/comparison.json", "--toolpath",
+                                   out + "/toolpath.nc", "--tool", tool, "--out", dir + "/hand.nc", "--gain", "0.5"});
+  INFO(by_hand.err);
+  REQUIRE(by_hand.status == 0);
+  const std::string compensated = slurp(out + "/comp.nc");
+  CHECK(compensated == slurp(dir + "/hand.nc"));
+  CHECK(compensated != slurp(out + "/toolpath.nc"));  // the bump moved it
+  const json record = json::parse(slurp(out + "/comp.json"));
+  CHECK(record["toolpath"] == "toolpath.nc");
+  CHECK(without_names(record) == without_names(json::parse(slurp(dir + "/hand.json"))));
+  CHECK(record["moves_moved"].get<int>() > 0);
+  CHECK(std::abs(record["largest_offset"].get<double>() - 0.5 * kBumpHeight) < 0.2 * 0.5 * kBumpHeight);
+  CHECK(json::parse(slurp(out + "/report.json"))["compensation"].is_object());
 }
 
 TEST_CASE("job compensate: a program the z-map check still refuses is exit 3 and no folder is written") {

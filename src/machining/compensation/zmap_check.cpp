@@ -1,5 +1,7 @@
 #include "machining/compensation/zmap_check.hpp"
 
+#include <stdexcept>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -83,6 +85,46 @@ CompensationGougeCheck check_compensation_zmap(const Cutter& cutter, const Toolp
   std::sort(check.blamed.begin(), check.blamed.end());
   check.blamed.erase(std::unique(check.blamed.begin(), check.blamed.end()), check.blamed.end());
   return check;
+}
+
+CompensationGougeCheck check_compensation_zmap(const PathTools& tools, const Toolpath& original,
+                                               const Toolpath& written, const PathOffset& offset, double half_unit) {
+  if (tools.cutters.size() == 1) return check_compensation_zmap(tools.cutters[0], original, written, offset, half_unit);
+  if (written.passes.size() != original.passes.size() || tools.of_pass.size() < original.passes.size())
+    throw std::logic_error("check_compensation_zmap: the written program lost the original's passes");
+  CompensationGougeCheck all;
+  for (std::size_t c = 0; c < tools.cutters.size(); ++c) {
+    std::vector<std::size_t> passes;
+    Toolpath before, after;
+    before.kind = original.kind;
+    after.kind = written.kind;
+    PathOffset sub;
+    sub.largest_offset = offset.largest_offset;
+    for (std::size_t p = 0; p < original.passes.size(); ++p) {
+      if (static_cast<std::size_t>(tools.of_pass[p]) != c) continue;
+      passes.push_back(p);
+      before.passes.push_back(original.passes[p]);
+      after.passes.push_back(written.passes[p]);
+      sub.tips.push_back(offset.tips[p]);
+      sub.offsets.push_back(offset.offsets[p]);
+      sub.tilts.push_back(offset.tilts[p]);
+    }
+    if (passes.empty()) continue;
+    const CompensationGougeCheck one = check_compensation_zmap(tools.cutters[c], before, after, sub, half_unit);
+    if (one.resolution > 0) all.resolution = all.resolution > 0 ? std::min(all.resolution, one.resolution) : one.resolution;
+    all.tolerance = std::max(all.tolerance, one.tolerance);
+    all.nodes += one.nodes;
+    all.not_judged += one.not_judged;
+    all.deeper += one.deeper;
+    if (one.worst_excess > all.worst_excess) {
+      all.worst_excess = one.worst_excess;
+      all.worst = one.worst;
+      all.worst_line = one.worst_line;
+    }
+    for (const auto& [pass, step] : one.blamed) all.blamed.emplace_back(passes[pass], step);
+  }
+  std::sort(all.blamed.begin(), all.blamed.end());
+  return all;
 }
 
 }  // namespace furrow

@@ -29,6 +29,7 @@
 #include "io/machining/toolpath_file.hpp"
 #include "machining/compensation/path_offset.hpp"
 #include "machining/cutter/cutter.hpp"
+#include "machining/cutter/path_tools.hpp"
 
 namespace furrow {
 
@@ -51,6 +52,19 @@ struct CompensationGougeCheck {
 // tips were moved by, `half_unit` [mm] half a unit of the written
 // coordinates' last decimal.
 CompensationGougeCheck check_compensation_zmap(const Cutter& cutter, const Toolpath& original,
+                                               const Toolpath& written, const PathOffset& offset, double half_unit);
+
+// A program that changes tools: each tool's passes checked as above against
+// the same tool's passes of the original, with that tool (its own z-maps,
+// at a fifteenth of its radius), and the results summed (nodes, not judged,
+// deeper), the worst the deepest of all, the blamed moves named by their
+// pass in the whole path and `resolution` the finest used. Per tool rather
+// than the part as all tools leave it: a node one tool's compensation
+// lowers beyond its offset is refused even where another tool cut lower
+// (conservative, as a check before cutting should be). Precondition: the
+// written program has the original's passes (the rewriters keep them),
+// tools.of_pass covers them. One cutter: exactly the check above.
+CompensationGougeCheck check_compensation_zmap(const PathTools& tools, const Toolpath& original,
                                                const Toolpath& written, const PathOffset& offset, double half_unit);
 
 }  // namespace furrow

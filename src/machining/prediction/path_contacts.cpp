@@ -115,6 +115,34 @@ PathGeometry locate_path(const Part& part, const Cutter& cutter, const Toolpath&
   return geometry;
 }
 
+PathGeometry locate_path(const Part& part, const PathTools& tools, const Toolpath& path,
+                         const PathContactOptions& options,
+                         const std::function<void(std::size_t, std::size_t)>& progress) {
+  if (tools.cutters.size() == 1) return locate_path(part, tools.cutters[0], path, options, progress);
+  PathGeometry out;
+  out.passes.resize(path.passes.size());
+  for (std::size_t c = 0; c < tools.cutters.size(); ++c) {
+    std::vector<std::size_t> passes;  // of this cutter, in path order
+    Toolpath sub;
+    sub.kind = path.kind;
+    sub.source = path.source;
+    for (std::size_t p = 0; p < path.passes.size() && p < tools.of_pass.size(); ++p)
+      if (static_cast<std::size_t>(tools.of_pass[p]) == c) {
+        passes.push_back(p);
+        sub.passes.push_back(path.passes[p]);
+      }
+    if (passes.empty()) continue;
+    PathGeometry located = locate_path(part, tools.cutters[c], sub, options, progress);
+    for (std::size_t k = 0; k < passes.size(); ++k) out.passes[passes[k]] = std::move(located.passes[k]);
+    out.points += located.points;
+    out.without_contact += located.without_contact;
+    out.in_air += located.in_air;
+    out.below_surface += located.below_surface;
+    out.lowest_gap = std::min(out.lowest_gap, located.lowest_gap);
+  }
+  return out;
+}
+
 std::vector<std::vector<PathContact>> path_contacts(const PathGeometry& geometry) {
   std::vector<std::vector<PathContact>> passes;
   for (const auto& pass : geometry.passes) {

@@ -24,6 +24,7 @@
 #include "io/machining/toolpath_file.hpp"
 #include "geometry/closest_point.hpp"
 #include "machining/cutter/contact_from_tip.hpp"
+#include "machining/cutter/path_tools.hpp"
 #include "machining/prediction/pass_scallops.hpp"
 
 namespace furrow {
@@ -60,6 +61,14 @@ struct PathGeometry {
 // Contacts of every pass point. Parallel over points; deterministic.
 // `progress(done, total)` counts points.
 PathGeometry locate_path(const Part& part, const Cutter& cutter, const Toolpath& path,
+                         const PathContactOptions& options = {},
+                         const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+// The same for a program that changes tools: each pass located with the
+// cutter it is cut with (tools.of_pass, machining/cutter/path_tools.hpp),
+// the passes of one cutter together; the result is in path order. One
+// cutter: exactly locate_path above.
+PathGeometry locate_path(const Part& part, const PathTools& tools, const Toolpath& path,
                          const PathContactOptions& options = {},
                          const std::function<void(std::size_t, std::size_t)>& progress = {});
 

@@ -50,39 +50,15 @@ std::vector<ToolGroup> tool_groups(const PathTools& tools) {
   return groups;
 }
 
-Toolpath sub_path(const Toolpath& path, const ToolGroup& group) {
-  Toolpath sub;
-  sub.kind = path.kind;
-  sub.source = path.source;
-  for (int p : group.passes) sub.passes.push_back(path.passes[static_cast<std::size_t>(p)]);
-  return sub;
-}
-
 PathGeometry sub_geometry(const PathGeometry& geometry, const ToolGroup& group) {
   PathGeometry sub;
   for (int p : group.passes) sub.passes.push_back(geometry.passes[static_cast<std::size_t>(p)]);
   return sub;
 }
 
-void locate(const Part& part, const PathTools& tools, const Toolpath& path, const std::vector<ToolGroup>& groups,
-            const PathContactOptions& options, const StageProgress& progress, PathGeometry& out) {
-  if (groups.size() == 1) {
-    out = locate_path(part, tools.cutters[0], path, options, stage(progress, "locating path"));
-    return;
-  }
-  out.passes.resize(path.passes.size());
-  for (const ToolGroup& g : groups) {
-    if (g.passes.empty()) continue;
-    PathGeometry sub = locate_path(part, tools.cutters[static_cast<std::size_t>(g.cutter)], sub_path(path, g), options,
-                                   stage(progress, "locating path"));
-    for (std::size_t k = 0; k < g.passes.size(); ++k)
-      out.passes[static_cast<std::size_t>(g.passes[k])] = std::move(sub.passes[k]);
-    out.points += sub.points;
-    out.without_contact += sub.without_contact;
-    out.in_air += sub.in_air;
-    out.below_surface += sub.below_surface;
-    out.lowest_gap = std::min(out.lowest_gap, sub.lowest_gap);
-  }
+void locate(const Part& part, const PathTools& tools, const Toolpath& path, const PathContactOptions& options,
+            const StageProgress& progress, PathGeometry& out) {
+  out = locate_path(part, tools, path, options, stage(progress, "locating path"));
 }
 
 }  // namespace
@@ -119,7 +95,7 @@ PathPrediction predict_path(const Part& part, const PathTools& path_tools, const
   }
   r.gouge_threshold = options.gouge_threshold > 0 ? options.gouge_threshold : 2 * options.tolerance;
 
-  locate(part, tools, path, groups, options.contacts, progress, r.geometry);
+  locate(part, tools, path, options.contacts, progress, r.geometry);
   const VerticalProjector projector(part);
   for (const ToolGroup& g : groups) {
     if (g.passes.empty()) continue;
