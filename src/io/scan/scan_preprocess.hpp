@@ -1,0 +1,58 @@
+#pragma once
+// Pre-processing of a scan before it is compared with the part
+// (docs/scan.md "Pre-processing"), done with PCL in the scan module:
+//
+// 1. a local origin: the centroid of the cloud, in double. Every PCL type
+//    holds floats, whose step 200 mm from the origin is 15 um; relative to
+//    the centroid of a part-sized cloud it is below 0.01 um, so nothing
+//    below is lost to floats. The file's doubles stay in ScanCloud and are
+//    what the deviations are computed from.
+// 2. spray: statistical outlier removal (pcl::StatisticalOutlierRemoval):
+//    a point whose mean distance to its `outlier_neighbours` nearest
+//    neighbours exceeds the cloud's mean of that figure by more than
+//    `outlier_sigmas` standard deviations is spray. It is flagged, not
+//    dropped: the comparison counts it and writes it with its flag.
+// 3. the fit subset: a voxel grid of edge `voxel` mm (pcl::VoxelGrid) over
+//    the points that are not spray; each occupied voxel is stood for by the
+//    real point nearest its centroid, not by the centroid, because on a
+//    curved surface a centroid lies inside the curve (by about
+//    voxel^2 / (8 R)) and would bias the fit.
+// 4. normals at the fit points: the file's where it has them, else
+//    estimated by PCL's NormalEstimationOMP from the `normal_neighbours`
+//    nearest points of the whole cloud (spray excluded). Their sign is the
+//    file's, or arbitrary when estimated.
+//
+// Deterministic: the same cloud and options give the same result on any
+// thread count. Failures: InputError naming the scan for options out of
+// range, a voxel so fine the grid would have more cells than PCL indexes
+// (2^31), or fewer points than outlier_neighbours + 1; RuntimeModuleError
+// when the module cannot be loaded.
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "io/scan/scan_cloud.hpp"
+
+namespace furrow {
+
+struct ScanPreprocessOptions {
+  double voxel = 1.0;           // [mm] edge of the fit subset's voxels
+  int outlier_neighbours = 16;  // k of the statistical outlier removal
+  double outlier_sigmas = 3.0;  // standard deviations above the mean that make spray
+  bool remove_spray = true;     // false: no point is flagged as spray
+  int normal_neighbours = 16;   // k of the normal estimation
+};
+
+struct ScanPreprocessed {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // local origin: the cloud's centroid [mm, file frame]
+  std::vector<std::uint8_t> spray;                   // per point of the cloud: 1 = spray
+  std::size_t spray_count = 0;
+  std::vector<std::size_t> fit;              // indices of the fit subset's points, increasing
+  std::vector<Eigen::Vector3f> fit_normals;  // unit normal per fit point; zero where none could be had
+  bool normals_estimated = false;            // false: the file's normals
+};
+
+ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOptions& options);
+
+}  // namespace furrow
