@@ -23,7 +23,8 @@ ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOpt
     throw InputError(name + ": --voxel must be a positive number of mm, got " + general(options.voxel));
   if (options.outlier_neighbours < 2 || options.normal_neighbours < 3)
     throw InputError(name + ": the spray filter needs at least 2 neighbours and the normals 3");
-  if (!(std::isfinite(options.outlier_sigmas) && options.outlier_sigmas > 0))
+  if (!(std::isfinite(options.outlier_sigmas) && options.outlier_sigmas > 0 && std::isfinite(options.spray_sigmas) &&
+        options.spray_sigmas > 0))
     throw InputError(name + ": the spray threshold must be a positive number of standard deviations");
   if (cloud.points.size() <= static_cast<std::size_t>(std::max(options.outlier_neighbours,
                                                                options.normal_neighbours)))

@@ -1,6 +1,8 @@
 // Pre-processing a scan with PCL inside the scan module (contract in
 // io/scan/scan_preprocess.hpp): local origin, spray, voxel-grid subset,
 // normals.
+#include <pcl/common/centroid.h>
+#include <pcl/common/eigen.h>
 #include <pcl/exceptions.h>
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/filters/statistical_outlier_removal.h>
@@ -18,6 +20,45 @@
 #include "io/scan/scan_module.hpp"
 
 namespace furrow::scan {
+
+namespace {
+
+// Distance of point `i` from the plane of its k nearest neighbours (itself
+// left out), fitted twice: the second time without the neighbours more than
+// 3 times the median off the first plane (scan_preprocess.hpp, rule b).
+float off_local_plane(const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::KdTreeFLANN<pcl::PointXYZ>& tree,
+                      std::size_t i, int k) {
+  pcl::Indices found;
+  std::vector<float> squared;
+  if (tree.nearestKSearch(cloud[i], k + 1, found, squared) < 4) return 0;
+  pcl::Indices neighbours;
+  for (const auto j : found)
+    if (static_cast<std::size_t>(j) != i) neighbours.push_back(j);
+  const Eigen::Vector3f p = cloud[i].getVector3fMap();
+  Eigen::Vector3f normal = Eigen::Vector3f::UnitZ(), centre = p;
+  for (int pass = 0; pass < 2; ++pass) {
+    Eigen::Matrix3f covariance;
+    Eigen::Vector4f mean;
+    if (neighbours.size() < 3 || pcl::computeMeanAndCovarianceMatrix(cloud, neighbours, covariance, mean) < 3)
+      return 0;
+    float smallest = 0;
+    pcl::eigen33(covariance, smallest, normal);
+    centre = mean.head<3>();
+    if (pass == 1) break;
+    std::vector<float> off;
+    for (const auto j : neighbours) off.push_back(std::abs(normal.dot(cloud[j].getVector3fMap() - centre)));
+    std::vector<float> sorted = off;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const float limit = 3 * sorted[sorted.size() / 2];
+    pcl::Indices near;
+    for (std::size_t m = 0; m < neighbours.size(); ++m)
+      if (off[m] <= limit) near.push_back(neighbours[m]);
+    neighbours.swap(near);
+  }
+  return std::abs(normal.dot(p - centre));
+}
+
+}  // namespace
 
 ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreprocessOptions& options) {
   ScanPreprocessed result;
@@ -44,10 +85,37 @@ ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreproces
     filter.setStddevMulThresh(options.outlier_sigmas);
     filter.filter(*kept);
     for (const auto i : *filter.getRemovedIndices()) {
-      result.spray[static_cast<std::size_t>(i)] = 1;
-      ++result.spray_count;
+      result.spray[static_cast<std::size_t>(i)] = kSprayFar;
+      ++result.spray_far;
     }
     std::sort(kept->begin(), kept->end());
+    // Near spray, among the points the statistical rule kept.
+    if (kept->size() > static_cast<std::size_t>(options.normal_neighbours) + 1) {
+      pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+      tree.setInputCloud(local, kept);
+      std::vector<float> off(kept->size());
+      const long m = static_cast<long>(kept->size());
+#pragma omp parallel for schedule(static)
+      for (long q = 0; q < m; ++q)
+        off[static_cast<std::size_t>(q)] =
+            off_local_plane(*local, tree, static_cast<std::size_t>((*kept)[static_cast<std::size_t>(q)]),
+                            options.normal_neighbours);
+      std::vector<float> sorted = off;
+      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+      result.local_plane_sigma = 1.4826 * sorted[sorted.size() / 2];
+      const double limit = options.spray_sigmas * result.local_plane_sigma;
+      pcl::IndicesPtr still(new pcl::Indices);
+      for (std::size_t q = 0; q < kept->size(); ++q) {
+        if (off[q] > limit) {
+          result.spray[static_cast<std::size_t>((*kept)[q])] = kSprayNear;
+          ++result.spray_near;
+        } else {
+          still->push_back((*kept)[q]);
+        }
+      }
+      kept = still;
+    }
+    result.spray_count = result.spray_far + result.spray_near;
   } else {
     kept->resize(n);
     for (std::size_t i = 0; i < n; ++i) (*kept)[i] = static_cast<pcl::index_t>(i);
