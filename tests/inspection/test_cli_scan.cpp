@@ -8,8 +8,10 @@
 // its true deviation is exactly what was planted (dent + noise), and its
 // true part-frame position the surface point moved by it.
 #include <doctest/doctest.h>
+#include <sys/wait.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <random>
@@ -236,4 +238,54 @@ TEST_CASE("compare scan bad clouds and options exit 2 naming the file") {
                                        "--out", out});
   CHECK(voxel.status == 2);
   CHECK(voxel.err.find("--voxel") != std::string::npos);
+}
+
+namespace {
+
+// `env_assignment` is put in front of the CLI inside the shell command.
+test::CliResult run_with_env(const std::string& env_assignment, const std::string& args, const std::string& dir) {
+  const std::string cmd = "env " + env_assignment + " " + test::shell_quote(FURROW_CLI) + " " + args + " > " +
+                          test::shell_quote(dir + "/out") + " 2> " + test::shell_quote(dir + "/err") + " < /dev/null";
+  const int raw = std::system(cmd.c_str());
+  test::CliResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = test::slurp(dir + "/out");
+  r.err = test::slurp(dir + "/err");
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("furrow needs no PCL or VTK library to start") {
+  const std::string dir = test::scratch_dir("scan-module-start");
+  const test::CliResult trace = run_with_env("LD_TRACE_LOADED_OBJECTS=1", "", dir);
+  REQUIRE(trace.status == 0);
+  CHECK(trace.out.find("libstdc++") != std::string::npos);  // the loader's list is really there
+  CHECK(trace.out.find("libpcl") == std::string::npos);
+  CHECK(trace.out.find("libvtk") == std::string::npos);
+}
+
+TEST_CASE("compare scan without its scan module: exit 3, the place looked at named, nothing written") {
+  const std::string dir = test::scratch_dir("scan-module-missing");
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 100; ++i) points.emplace_back(i, 0.5 * i, 20);
+  test::write_bytes(dir + "/s.ply", test::ply_text(points, test::PlyOptions{}));
+  const std::string out = dir + "/c.json";
+  const test::CliResult missing =
+      run_with_env("FURROW_SCAN_MODULE=/nonexistent/furrow_scan.so",
+                   "compare " + test::shell_quote(kMould) + " --scan " + test::shell_quote(dir + "/s.ply") +
+                       " --out " + test::shell_quote(out),
+                   dir);
+  CHECK(missing.status == 3);
+  CHECK(missing.err.find("/nonexistent/furrow_scan.so: no such file") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+  // A file that is no PLY is refused before the module is looked for.
+  test::write_bytes(dir + "/t.ply", "solid ascii stl\n");
+  const test::CliResult plain =
+      run_with_env("FURROW_SCAN_MODULE=/nonexistent/furrow_scan.so",
+                   "compare " + test::shell_quote(kMould) + " --scan " + test::shell_quote(dir + "/t.ply") +
+                       " --out " + test::shell_quote(out),
+                   dir);
+  CHECK(plain.status == 2);
+  CHECK(plain.err.find("furrow_scan.so") == std::string::npos);
 }
