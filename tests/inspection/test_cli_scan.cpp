@@ -15,11 +15,14 @@
 #include <cstring>
 #include <filesystem>
 #include <random>
+#include <map>
+#include <optional>
 #include <set>
 
 #include "base/json_fields.hpp"
 #include "base/numbers.hpp"
 #include "io/part_file.hpp"
+#include "partition/regions_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/scan_files.hpp"
 
@@ -32,6 +35,7 @@ const std::string kMould = test::source_path("examples/parts/mould.json");
 struct SyntheticScan {
   std::vector<Eigen::Vector3d> surface;  // part frame, on the surface
   std::vector<Eigen::Vector3d> normal;   // part frame
+  std::vector<Eigen::Vector2d> uv;       // of the surface point on the mould's one face
   std::vector<double> planted;           // true deviation (dent + noise) [mm]; spray: its offset
   std::set<std::size_t> spray;
   Eigen::Isometry3d to_scanner = Eigen::Isometry3d::Identity();  // part -> scanner frame
@@ -67,6 +71,7 @@ SyntheticScan make_scan(int nu, int nv) {
       const std::size_t k = s.surface.size();
       s.surface.push_back(g.point);
       s.normal.push_back(g.normal);
+      s.uv.emplace_back(u, v);
       if (k % 200 == 17) {
         s.spray.insert(k);
         s.planted.push_back((k % 400 == 17 ? 1 : -1) * off(rng));
@@ -79,10 +84,11 @@ SyntheticScan make_scan(int nu, int nv) {
   return s;
 }
 
-std::vector<Eigen::Vector3d> scanner_points(const SyntheticScan& s) {
+// In the scanner frame, in mm, or in inches with `scale` 1 / 25.4.
+std::vector<Eigen::Vector3d> scanner_points(const SyntheticScan& s, double scale = 1.0) {
   std::vector<Eigen::Vector3d> out;
   for (std::size_t k = 0; k < s.surface.size(); ++k)
-    out.push_back(s.to_scanner * (s.surface[k] + s.planted[k] * s.normal[k]));
+    out.push_back(scale * (s.to_scanner * (s.surface[k] + s.planted[k] * s.normal[k])));
   return out;
 }
 
@@ -288,4 +294,59 @@ TEST_CASE("compare scan without its scan module: exit 3, the place looked at nam
                    dir);
   CHECK(plain.status == 2);
   CHECK(plain.err.find("furrow_scan.so") == std::string::npos);
+}
+
+TEST_CASE("compare scan in inches with a partition gives per-region statistics of the planted deviations") {
+  const std::string dir = test::scratch_dir("cli-scan-regions");
+  const SyntheticScan s = make_scan(160, 130);  // 20,800 points
+  const std::string scan = dir + "/scan_inch.ply";
+  test::PlyOptions o;
+  o.format = "binary_big_endian";
+  test::write_bytes(scan, test::ply_text(scanner_points(s, 1 / 25.4), o));
+  REQUIRE(test::run_furrow({"partition", kMould, "--out", dir + "/regions.json"}).status == 0);
+  const auto r = test::run_furrow({"compare", kMould, "--scan", scan, "--units", "inch", "--regions",
+                                   dir + "/regions.json", "--tolerance", "0.2", "--out", dir + "/c.json",
+                                   "--deviations", dir + "/d.ply"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 0);  // the 50 um dent lies inside +-100 um
+  CHECK(r.out.find("PASS") != std::string::npos);
+  const std::vector<DeviationPoint> cloud = parse_deviation_ply(test::slurp(dir + "/d.ply"));
+  REQUIRE(cloud.size() == s.surface.size());
+  // The oracle: each compared point's region is the partition's region at
+  // the (u, v) the test sampled, and its deviation the planted one.
+  const RegionMap regions = read_regions(dir + "/regions.json");
+  std::map<int, std::vector<double>> planted_by_region;
+  double worst = 0;
+  std::size_t compared = 0;
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    if (cloud[k].outlier != 0) continue;
+    ++compared;
+    worst = std::max(worst, std::abs(cloud[k].deviation - s.planted[k]));
+    if (const std::optional<int> id = regions.region_at(0, s.uv[k].x(), s.uv[k].y()))
+      planted_by_region[*id].push_back(s.planted[k]);
+  }
+  // Half the noise: the sparser cloud fixes the slide along the mould a
+  // little less well than the one above (measured 1.4 um at the worst point).
+  CHECK(worst < kNoise / 2);
+  const json_fields::json c = json_fields::json::parse(test::slurp(dir + "/c.json"));
+  CHECK(c["sources"]["scan_units"] == "inch");
+  const auto& listed = c["summary"]["regions"];
+  REQUIRE(listed.size() == planted_by_region.size());
+  std::size_t counted = 0;
+  for (const auto& g : listed) {
+    const int id = g["region"].get<int>();
+    CAPTURE(id);
+    REQUIRE(planted_by_region.count(id) == 1);
+    const std::vector<double>& values = planted_by_region[id];
+    double sum = 0;
+    for (const double v : values) sum += v;
+    const std::size_t count = g["deviations"]["count"].get<std::size_t>();
+    counted += count;
+    // A point within a micrometre of a region's border may fall on the
+    // other side of it after the fit: counts agree within 1 %.
+    CHECK(std::abs(static_cast<double>(count) - static_cast<double>(values.size())) <=
+          0.01 * static_cast<double>(values.size()) + 1);
+    CHECK(std::abs(g["deviations"]["mean"].get<double>() - sum / static_cast<double>(values.size())) < 0.001);
+  }
+  CHECK(counted == compared);
 }
