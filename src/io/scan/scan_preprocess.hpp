@@ -9,10 +9,12 @@
 //    what the deviations are computed from.
 // 2. spray, by two rules, flagged and never dropped (the comparison counts
 //    each point and writes it with its flag):
-//    a. far spray: statistical outlier removal (pcl::StatisticalOutlierRemoval):
-//       a point whose mean distance to its `outlier_neighbours` nearest
-//       neighbours exceeds the cloud's mean of that figure by more than
-//       `outlier_sigmas` standard deviations;
+//    a. far spray: the rule of pcl::StatisticalOutlierRemoval, a point
+//       whose mean distance to its `outlier_neighbours` nearest neighbours
+//       exceeds the cloud's mean of that figure by more than
+//       `outlier_sigmas` standard deviations (computed as the class computes
+//       it, with PCL's search, in one parallel pass with rule b: the class
+//       itself searches serially);
 //    b. near spray: the statistical rule cannot see a point 0.3 mm off a
 //       surface sampled 0.3 mm apart (its neighbours are nearly as near as
 //       a good point's: measured, a third of such spray passes at any
