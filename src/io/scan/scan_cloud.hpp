@@ -13,6 +13,11 @@
 
 namespace furrow {
 
+// Points in one scan file (docs/formats.md "Limits"): checked from the
+// file's header before PCL reads the data (a 50 M-point cloud takes some
+// 3 GB through the comparison).
+inline constexpr long long kMaxScanPoints = 50'000'000;
+
 struct ScanCloud {
   std::string file;    // as given, for messages and reports
   std::string format;  // "ply ascii", "ply binary_little_endian", "ply binary_big_endian", "pcd"

@@ -172,6 +172,10 @@ TEST_CASE("scan bad files are refused naming the file") {
       {"garbage.pcd", "this is no point cloud\n", "not a PCD"},
       {"truncated.pcd", pcd.substr(0, pcd.size() - 24 * 50), ""},
       {"cloud.xyz", text, "PLY (.ply) or PCD"},
+      {"huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 50000001\nproperty double x\n"
+                   "property double y\nproperty double z\nend_header\n", "more than 50000000"},
+      {"huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 60000000\nHEIGHT 1\n"
+                   "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 60000000\nDATA binary\n", "more than 50000000"},
   };
   for (const Bad& b : cases) {
     CAPTURE(b.name);

@@ -138,6 +138,9 @@ ScanCloud read_with_pcl(const std::string& path) {
     if (header.format.empty()) throw InputError(path + ": not a PLY file (no format line in its header)");
     scan.format = "ply " + header.format;
     declared = header.vertices;
+    if (declared > kMaxScanPoints)
+      throw InputError(path + ": the header declares " + std::to_string(declared) + " vertices, more than " +
+                       std::to_string(kMaxScanPoints) + " (docs/formats.md \"Limits\")");
     pcl::PLYReader reader;
     if (reader.read(path, cloud, origin, orientation, version) < 0)
       throw InputError(path + ": PCL cannot read it as PLY (a malformed header, a property of unknown type, or "
@@ -145,6 +148,17 @@ ScanCloud read_with_pcl(const std::string& path) {
   } else {
     scan.format = "pcd";
     pcl::PCDReader reader;
+    {
+      pcl::PCLPointCloud2 header;
+      int data_type = 0;
+      unsigned int data_index = 0;
+      if (reader.readHeader(path, header, origin, orientation, version, data_type, data_index) < 0)
+        throw InputError(path + ": PCL cannot read it as PCD (a malformed header)");
+      const long long points = static_cast<long long>(header.width) * header.height;
+      if (points > kMaxScanPoints)
+        throw InputError(path + ": the header declares " + std::to_string(points) + " points, more than " +
+                         std::to_string(kMaxScanPoints) + " (docs/formats.md \"Limits\")");
+    }
     if (reader.read(path, cloud, origin, orientation, version) < 0)
       throw InputError(path + ": PCL cannot read it as PCD (a malformed header, or fewer data than its POINTS "
                               "says)");
