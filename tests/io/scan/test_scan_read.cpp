@@ -26,6 +26,12 @@ std::vector<Eigen::Vector3d> awkward_points() {
           {0, -0, 42}};
 }
 
+void check_exact_points(const ScanCloud& c, const std::vector<Eigen::Vector3d>& expected) {
+  REQUIRE(c.points.size() == expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    for (int k = 0; k < 3; ++k) CHECK(c.points[i][k] == expected[i][k]);
+}
+
 void check_exact(const ScanCloud& c, const std::vector<Eigen::Vector3d>& expected) {
   REQUIRE(c.points.size() == expected.size());
   CHECK(c.read == expected.size());
@@ -186,4 +192,19 @@ TEST_CASE("scan bad files are refused naming the file") {
     CHECK(error.find(b.says) != std::string::npos);
   }
   CHECK(input_error_of([&] { read_scan(dir + "/missing.ply"); }).find("missing.ply") != std::string::npos);
+}
+
+TEST_CASE("scan non-finite points of an organised PCD are counted and left out") {
+  // An organised scan (WIDTH x HEIGHT) marks the pixels without a return
+  // with NaN; they are counted, the others read exactly.
+  const std::string dir = scratch_dir("scan-read-nan");
+  const std::string text =
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA ascii\n"
+      "1.25 2.5 3.125\nnan nan nan\n-7.0000000000000009 8 9\n10 11 12\nnan 1 2\n0.1 0.2 0.30000000000000004\n";
+  write_bytes(dir + "/organised.pcd", text);
+  const ScanCloud c = read_scan(dir + "/organised.pcd");
+  CHECK(c.read == 6);
+  CHECK(c.not_finite == 2);
+  check_exact_points(c, {{1.25, 2.5, 3.125}, {-7.0000000000000009, 8, 9}, {10, 11, 12}, {0.1, 0.2, 0.30000000000000004}});
 }
