@@ -350,3 +350,51 @@ TEST_CASE("compare scan in inches with a partition gives per-region statistics o
   }
   CHECK(counted == compared);
 }
+
+TEST_CASE("compare scan flags the table around the part as off the part and still fits the part") {
+  const std::string dir = test::scratch_dir("cli-scan-table");
+  const SyntheticScan s = make_scan(120, 100);  // 12,000 points on the mould (100 x 80 mm)
+  std::vector<Eigen::Vector3d> points = scanner_points(s);
+  // The table the part lies on, scanned around it: a 5 to 15 mm wide frame
+  // 3 mm below the mould's lowest point, beyond its edges.
+  std::vector<Eigen::Vector3d> table;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> x(-15, 115), y(-15, 95);
+  std::normal_distribution<double> noise(0, kNoise);
+  while (table.size() < 3000) {
+    const Eigen::Vector3d p(x(rng), y(rng), 15 + noise(rng));
+    if (p.x() > -5 && p.x() < 105 && p.y() > -5 && p.y() < 85) continue;
+    table.push_back(p);
+    points.push_back(s.to_scanner * p);
+  }
+  const std::string scan = dir + "/scan.ply";
+  test::write_bytes(scan, test::ply_text(points, test::PlyOptions{}));
+  const auto r = test::run_furrow({"compare", kMould, "--scan", scan, "--tolerance", "0.2", "--out", dir + "/c.json",
+                                   "--deviations", dir + "/d.ply"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 0);
+  const std::vector<DeviationPoint> cloud = parse_deviation_ply(test::slurp(dir + "/d.ply"));
+  REQUIRE(cloud.size() == s.surface.size() + table.size());
+  std::size_t table_off = 0, table_compared = 0, part_off = 0;
+  double worst = 0;
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    if (k >= s.surface.size()) {
+      table_off += cloud[k].outlier == 3;
+      table_compared += cloud[k].outlier == 0;
+      continue;
+    }
+    part_off += cloud[k].outlier == 3;
+    if (cloud[k].outlier == 0) worst = std::max(worst, std::abs(cloud[k].deviation - s.planted[k]));
+  }
+  MESSAGE("table: " << table_off << " of " << table.size() << " off the part; part points off: " << part_off
+                    << "; worst deviation error " << worst * 1e3 << " um");
+  // No table point is compared: each is off the part or, where the table
+  // is scanned more sparsely than the part, flagged by the far-spray rule
+  // (a density rule; measured: 353 of 3000).
+  CHECK(table_compared == 0);
+  CHECK(table_off > table.size() * 3 / 4);
+  CHECK(part_off == 0);
+  CHECK(worst < kNoise / 2);
+  const json_fields::json c = json_fields::json::parse(test::slurp(dir + "/c.json"));
+  CHECK(c["points"]["removed"]["off_part"].get<std::size_t>() == table_off);
+}
