@@ -137,7 +137,7 @@ void run(const ClosestPointFinder& finder, const Prediction& prediction, int nu,
       wall[stage].push_back(seconds_since(t0));
       cpu[stage].push_back(cpu_seconds() - c0);
     };
-    timed(figures2d_stage, [&] { figures2d = make_report_figures(doc, part, nullptr, &prediction, false); });
+    timed(figures2d_stage, [&] { figures2d = make_report_figures(doc, part, nullptr, &prediction, nullptr, false); });
     timed(view_stage, [&] { view_bytes = part_view_3d_figure(doc, part, &prediction).html.size(); });
     // The whole report as `furrow report` renders it (make_report: the 3D
     // view beside the 2D figures, then the files two at a time), then each

@@ -7,7 +7,7 @@ import os, re, sys
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 # Lowest first. A sub-folder is a layer of its own inside its module.
 LAYERS = [
-    "base", "geometry", "io/cad", "io", "io/machining", "io/qif", "io/cmm", "render", "partition",
+    "base", "geometry", "io/cad", "io/scan", "io", "io/machining", "io/qif", "io/cmm", "render", "partition",
     "machining/cutter", "machining/gouge", "machining/prediction", "machining/toolpath",
     "machining/compensation", "planning", "inspection", "results", "report", "stage", "job", "cli",
 ]
@@ -18,7 +18,8 @@ SIBLINGS = [({"partition"}, MACHINING), ({"planning"}, {"inspection"})]
 # Third-party headers and the only places allowed to include them.
 OWNERS = {
     r"<(Standard|TopoDS|TopExp|TopAbs|BRep|Geom|GeomAbs|GeomAPI|GeomConvert|gp|STEP|IGES|XSControl|Interface|ShapeFix|ShapeAnalysis|ShapeUpgrade|TColgp|TColStd|Precision|BRepAdaptor|BRepTools|BRepBuilderAPI|BRepGProp|GProp|Message|Extrema|Adaptor)[A-Za-z0-9_]*\.hxx>": ("src/io/cad/occt/",),
-    r"<pcl/|<nanoflann": ("src/geometry/point_search.",),
+    r"<nanoflann": ("src/geometry/point_search.",),
+    r"<pcl/|<flann/|<vtk": ("src/io/scan/pcl/",),
     r"<ceres/": ("src/inspection/",),
     r"<png\.h>|<opencv2/imgcodecs": ("src/render/png.",),
     r"<pugixml": ("src/io/qif/",),

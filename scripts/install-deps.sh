@@ -8,6 +8,8 @@ packages=(
   libeigen3-dev libceres-dev libnanoflann-dev libopencv-dev libpng-dev nlohmann-json3-dev doctest-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libssl-dev
   libpugixml-dev
+  # dense scans (PLY, PCD): PCL, in the scan module furrow_scan.so only
+  libpcl-dev
   # the results database: SQLite (src/results/sqlite_*) and PostgreSQL's
   # client library (src/results/postgres_*)
   libsqlite3-dev libpq-dev

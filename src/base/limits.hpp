@@ -10,6 +10,11 @@ namespace furrow::limits {
 // Part, measurement, contact-point and tool-path coordinates, in mm after unit
 // conversion: |x|, |y|, |z| at most this (a 2 km part is not machined).
 constexpr double kMaxCoordinateMm = 1e6;
+// A scan's coordinates as its file holds them, in mm: a scanner's or a
+// site's frame may lie far from the part (docs/scan.md "Precision"); the
+// registration brings the points into the part frame, where the limit above
+// holds again.
+constexpr double kMaxScanCoordinateMm = 1e8;
 // NURBS weights: each in [kMinWeight, kMaxWeight], the largest of a face at
 // most kMaxWeightRatio times its smallest.
 constexpr double kMinWeight = 1e-6;

@@ -21,15 +21,97 @@
 #include "report/report_qif.hpp"
 #include "stage/compare_options.hpp"
 #include "stage/compare_stage.hpp"
+#include "io/scan/scan_read.hpp"
+#include "inspection/scan_comparison_file.hpp"
+#include "inspection/scan_deviation_cloud.hpp"
+#include "stage/scan_compare_stage.hpp"
+#include "stage/scan_options.hpp"
 
 namespace furrow::cli {
 
 namespace {
 
+// furrow compare PART --scan FILE: a dense scan instead of probe points
+// (docs/scan.md). The probe-point options that have no meaning for a cloud
+// are refused by name rather than ignored.
+int run_compare_scan(Args& args, const std::string& scan_path) {
+  for (const char* other : {"measurements", "plan", "prediction", "qif", "rps", "points", "probe-diameter",
+                            "dialect", "delimiter", "columns", "ipp-program", "db", "serial"})
+    if (args.option(other)) args.fail(std::string("--") + other + " does not apply to --scan");
+  if (args.flag("decimal-comma")) args.fail("--decimal-comma does not apply to --scan");
+  const auto regions_path = args.option("regions");
+  const auto deviations_path = args.option("deviations");
+  const std::string out = args.required_option("out");
+  const double tolerance = args.positive_or("tolerance", 0.05);
+  const auto outside = args.number("outside");
+  const std::string units = args.option_or("units", "mm");
+  CompareOptions options;
+  read_option_flags(args, compare_option_table(), options);
+  ScanPreprocessOptions preprocessing;
+  read_option_flags(args, scan_option_table(), preprocessing);
+  const std::string part_path = args.positional("PART (a part file)");
+  args.finish();
+  if (options.align != AlignMethod::bestfit) args.fail("--scan is registered by a best fit (--align bestfit)");
+  const double mm_per_unit = units_to_mm(units, "--units");
+  options.tolerance = ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
+  scale_registration_to_tolerance(options);
+  if (isatty(STDERR_FILENO))
+    options.registration.progress = [](const std::string& what) {
+      std::fprintf(stderr, "\rcompare: %-24s", what.c_str());
+    };
+
+  OutputSet outputs;
+  outputs.add_input(part_path, "part");
+  outputs.add_input(scan_path, "scan");
+  if (regions_path) outputs.add_input(*regions_path, "regions");
+  outputs.will_write(out);
+  if (deviations_path) outputs.will_write(*deviations_path);
+
+  const Part part = read_part(part_path);
+  std::optional<RegionMap> regions;
+  if (regions_path) {
+    regions = read_regions(*regions_path);
+    regions->check_belongs_to(part, *regions_path, part_path);
+  }
+  const ScanCloud cloud = read_scan(scan_path, mm_per_unit);
+  const ScanComparison c = naming_inputs(part_path + " with " + scan_path, [&] {
+    return compare_scan_stage(part, cloud, regions ? &*regions : nullptr, options, preprocessing);
+  });
+  if (options.registration.progress) std::fprintf(stderr, "\r%-34s\r", "");
+  ScanComparisonSources sources;
+  sources.part = part_path;
+  sources.scan = scan_path;
+  sources.regions = regions_path.value_or("");
+  sources.deviations = deviations_path.value_or("");
+  sources.units = units;
+  if (deviations_path) outputs.file(*deviations_path, scan_deviation_ply(c, cloud));
+  outputs.file(out, scan_comparison_json(c, sources));
+  outputs.publish(out);
+
+  const ComparisonSummary& s = c.summary;
+  const RegistrationResult& r = c.registration;
+  std::printf("scan: %zu points read (%s, %s), %zu not finite; %zu spray far, %zu spray near, %zu off the part; "
+              "%zu compared\n",
+              c.read, cloud.format.c_str(), cloud.coordinate_type.c_str(), c.not_finite, c.pre.spray_far,
+              c.pre.spray_near, c.off_part, c.evaluated);
+  std::printf("registration: %s (%s start), %zu voxel points (%g mm), rms %.4f -> %.4f mm, %zu in the fit\n",
+              r.status.c_str(), to_string(r.coarse.method), c.pre.fit.size(), preprocessing.voxel, r.rms_before,
+              r.rms_after, r.in_fit_count());
+  std::printf("deviation: min %.4f  max %.4f  mean %.4f  sigma %.4f mm; profile %.4f mm\n", s.deviations.min,
+              s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
+  std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out\n", c.tolerance.width, c.tolerance.lower(),
+              c.tolerance.upper(), s.in_tolerance, s.out_of_tolerance);
+  std::printf("%s\n", to_string(s.verdict));
+  for (const InconclusiveReason& why : s.inconclusive) std::printf("  %s\n", why.text.c_str());
+  return exit_status(s.verdict, s.alignment);
+}
+
 int run_compare(Args& args) {
+  if (const auto scan = args.option("scan")) return run_compare_scan(args, *scan);
+  if (args.option("deviations")) args.fail("--deviations is the deviation cloud of --scan");
   // Several files: merged by id in the order given (measurement_merge.hpp).
   const std::vector<std::string> measurement_files = args.repeated_option("measurements");
-  if (measurement_files.empty()) args.fail("--measurements is required");
+  if (measurement_files.empty()) args.fail("--measurements or --scan is required");
   const auto plan_path = args.option("plan");
   const auto regions_path = args.option("regions");
   const auto prediction_path = args.option("prediction");
@@ -211,6 +293,7 @@ int run_compare(Args& args) {
 
 std::string compare_options_help() {
   return option_help_lines(describe(compare_option_table())) +
+         "\nScan pre-processing (--scan only; docs/scan.md):\n" + option_help_lines(describe(scan_option_table())) +
          "\nResults database (docs/results_database.md, docs/options.md), after comparison.json is\n"
          "written; the same comparison again is not stored twice:\n" +
          option_help_lines(describe(results_storage_option_table()));
@@ -221,6 +304,7 @@ std::string compare_options_help() {
 const Command kCompareCommand = {
     "compare", "register CMM points to the part, deviations against a profile tolerance",
     "usage: furrow compare PART --measurements FILE --out comparison.json [options]\n"
+    "       furrow compare PART --scan CLOUD.ply --out comparison.json [--deviations OUT.ply] [options]\n"
     "\n"
     "Registers measured points (CSV, XYZ text, DMIS results or an I++ DME\n"
     "response log; docs/formats.md \"Measurements\")\n"
@@ -268,6 +352,12 @@ const Command kCompareCommand = {
     "  --ipp-program FILE   the .prg (any client's) an I++ DME session answers:\n"
     "                       its PtMeas targets become the points' nominals, a\n"
     "                       PtMeas without an answer a point not measured\n"
+    "  --scan FILE          a dense scan instead (PLY or PCD, docs/scan.md): spray\n"
+    "                       flagged, a voxel subset registered, every point's\n"
+    "                       deviation by exact projection; not with --measurements,\n"
+    "                       --plan, --prediction, --qif or a database\n"
+    "  --deviations FILE    with --scan: every point in the part frame with its\n"
+    "                       deviation and status, binary PLY (docs/formats.md)\n"
     "  --out FILE           comparison.json to write\n"
     "  --qif FILE           also write the results as a QIF 3.0 Results document\n"
     "                       (ISO 23952): points, surface profile, per-point\n"

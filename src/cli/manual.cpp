@@ -7,6 +7,7 @@
 #include "base/option_table.hpp"
 #include "io/cad/cad_module.hpp"
 #include "stage/compare_options.hpp"
+#include "stage/scan_options.hpp"
 #include "stage/compensate_options.hpp"
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
@@ -115,6 +116,9 @@ void write_options_reference(std::ostream& out) {
           "scan_simulation.md.",
           describe(scan_simulation_option_table()));
   section("Comparison", "`furrow compare`; the job file's `comparison` section.", describe(compare_option_table()));
+  section("Scan pre-processing",
+          "`furrow compare --scan`, on the command line (no job-file stage yet); see scan.md.",
+          describe(scan_option_table()));
   section("Compensation", "`furrow compensate`, on the command line (no job-file stage yet).",
           describe(compensate_option_table()));
   section("Results database",

@@ -21,6 +21,7 @@
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
 #include "stage/results_options.hpp"
+#include "stage/scan_options.hpp"
 #include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
@@ -251,5 +252,6 @@ TEST_CASE("every table option is in its command's help, in the man page and in d
   check("remeasure", describe(only_options(plan_option_table(), kProbeMotionKeys)));
   check("compensate", describe(compensate_option_table()));
   check("compare", describe(results_storage_option_table()));
+  check("compare", describe(scan_option_table()));
   check("run", describe(results_storage_option_table()));
 }

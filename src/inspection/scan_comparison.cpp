@@ -1,0 +1,149 @@
+// A scan compared with the part (contract in scan_comparison.hpp).
+#include "inspection/scan_comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace furrow {
+
+const char* to_string(ScanPointStatus status) {
+  switch (status) {
+    case ScanPointStatus::evaluated: return "evaluated";
+    case ScanPointStatus::spray_far: return "spray_far";
+    case ScanPointStatus::spray_near: return "spray_near";
+    case ScanPointStatus::off_part: return "off_part";
+  }
+  return "?";
+}
+
+namespace {
+
+// Points projected per task: each task hints its searches along the
+// cloud's order (ClosestPointFinder::project_in_order); the split is fixed,
+// so the answer does not depend on the thread count.
+constexpr std::size_t kProjectionChunk = 4096;
+
+// The alignment's state, as comparison.hpp rules it for probe points; a
+// scan has no plan ids and no few-point ambiguity.
+std::string alignment_status(const RegistrationResult& r) {
+  if (r.outcome == FitOutcome::too_few_points) return "too_few_points";
+  if (!r.converged) return "not_converged";
+  for (const WeakDirection& d : r.observability.weak)
+    if (d.from_points) return "weakly_constrained";
+  return "ok";
+}
+
+}  // namespace
+
+ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& cloud, const ScanPreprocessed& pre,
+                            const RegionMap* regions, const CompareOptions& options) {
+  ScanComparison c;
+  c.scan = cloud.file;
+  c.pre = pre;
+  c.read = cloud.read;
+  c.not_finite = cloud.not_finite;
+  c.points = cloud.points.size();
+  c.normals = pre.normals_estimated ? "estimated" : "file";
+  c.tolerance = options.tolerance;
+
+  // The fit subset, relative to the local origin, as contact points.
+  MeasurementSet fit;
+  fit.source = cloud.file;
+  fit.kind = ProbePointKind::contact;
+  fit.probe_radius = 0;
+  fit.points.reserve(pre.fit.size());
+  for (const std::size_t i : pre.fit) {
+    MeasuredPoint p;
+    p.id = "S" + std::to_string(i);
+    p.xyz = cloud.points[i] - pre.origin;
+    fit.points.push_back(std::move(p));
+  }
+  c.registration = register_measurements(finder, fit, nullptr, options.registration);
+  c.transform = c.registration.transform * Eigen::Translation3d(-pre.origin);
+
+  // Every point that is not spray, projected exactly.
+  const std::size_t n = cloud.points.size();
+  c.status.assign(n, ScanPointStatus::evaluated);
+  c.deviation.assign(n, 0.0f);
+  c.region.assign(n, -1);
+  std::vector<std::size_t> todo;
+  todo.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pre.spray[i] == kSprayFar) c.status[i] = ScanPointStatus::spray_far;
+    else if (pre.spray[i] == kSprayNear) c.status[i] = ScanPointStatus::spray_near;
+    else todo.push_back(i);
+  }
+  std::vector<double> value(n, 0.0);
+  const long chunks = static_cast<long>((todo.size() + kProjectionChunk - 1) / kProjectionChunk);
+  const double edge = options.registration.edge_tolerance;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long k = 0; k < chunks; ++k) {
+    const std::size_t begin = static_cast<std::size_t>(k) * kProjectionChunk;
+    const std::size_t end = std::min(todo.size(), begin + kProjectionChunk);
+    std::vector<Eigen::Vector3d> xs;
+    xs.reserve(end - begin);
+    for (std::size_t m = begin; m < end; ++m)
+      xs.push_back(c.registration.transform * (cloud.points[todo[m]] - pre.origin));
+    const std::vector<ClosestPoint> feet = finder.project_in_order(xs);
+    for (std::size_t m = begin; m < end; ++m) {
+      const std::size_t i = todo[m];
+      const ClosestPoint& f = feet[m - begin];
+      const Eigen::Vector3d r = xs[m - begin] - f.point;
+      const double along = r.dot(f.normal);
+      const bool boundary = f.location != FootLocation::interior;
+      if (!f.converged || (boundary && (r - along * f.normal).norm() > edge)) {
+        c.status[i] = ScanPointStatus::off_part;
+        continue;
+      }
+      // On a boundary the bounded surface's signed distance, as for a probe
+      // point (registration.hpp).
+      value[i] = boundary ? f.signed_distance : along;
+      c.deviation[i] = static_cast<float>(value[i]);
+      if (regions)
+        if (const std::optional<int> id = regions->region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y()))
+          c.region[i] = *id;
+    }
+  }
+
+  // Statistics in index order (deterministic), overall and per region.
+  ComparisonSummary& s = c.summary;
+  std::vector<double> evaluated;
+  std::map<int, std::vector<double>> by_region;
+  std::map<int, std::size_t> region_out;
+  double max_abs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (c.status[i] == ScanPointStatus::off_part) ++c.off_part;
+    if (c.status[i] != ScanPointStatus::evaluated) continue;
+    evaluated.push_back(value[i]);
+    max_abs = std::max(max_abs, std::abs(value[i]));
+    const bool in = c.tolerance.contains(value[i]);
+    (in ? s.in_tolerance : s.out_of_tolerance)++;
+    if (c.region[i] >= 0) {
+      by_region[c.region[i]].push_back(value[i]);
+      region_out[c.region[i]] += !in;
+    }
+  }
+  c.evaluated = evaluated.size();
+  s.points = c.evaluated + c.off_part;
+  s.evaluated = c.evaluated;
+  s.outliers = c.off_part;
+  s.in_fit = c.registration.in_fit_count();
+  s.deviations = deviation_statistics(evaluated);
+  s.profile = 2 * max_abs;
+  for (const auto& [region, values] : by_region)
+    s.regions.push_back({region, deviation_statistics(values), region_out[region]});
+  s.alignment = alignment_status(c.registration);
+  if (s.alignment != "ok") {
+    s.verdict = Verdict::inconclusive;
+    s.inconclusive = {{"alignment_failed", "",
+                       "the scan's registration did not succeed (" + s.alignment + ": " + c.registration.status +
+                           "); nothing is certified"}};
+  } else {
+    s.verdict = s.evaluated == 0 || s.out_of_tolerance > 0 ? Verdict::fail : Verdict::pass;
+  }
+  s.pass = s.verdict == Verdict::pass;
+  return c;
+}
+
+}  // namespace furrow

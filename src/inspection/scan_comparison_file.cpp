@@ -1,0 +1,70 @@
+// comparison.json of a scan (contract in scan_comparison_file.hpp).
+#include "inspection/scan_comparison_file.hpp"
+
+#include "inspection/comparison_json.hpp"
+
+namespace furrow {
+
+namespace jf = json_fields;
+using nlohmann::json;
+
+std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSources& sources) {
+  const ComparisonSummary& s = c.summary;
+  const RegistrationResult& r = c.registration;
+  json doc;
+  doc["kind"] = "scan";
+  doc["furrow_version"] = FURROW_VERSION;
+  doc["sources"] = {{"part", sources.part},
+                    {"scan", sources.scan},
+                    {"regions", sources.regions},
+                    {"deviations", sources.deviations},
+                    {"scan_units", sources.units}};
+  const ScanPreprocessOptions& o = c.preprocessing;
+  doc["preprocessing"] = {{"voxel", o.voxel},
+                          {"spray_neighbours", o.outlier_neighbours},
+                          {"spray_far_sigmas", o.outlier_sigmas},
+                          {"spray_near_sigmas", o.spray_sigmas},
+                          {"spray_removal", o.remove_spray},
+                          {"normal_neighbours", o.normal_neighbours},
+                          {"local_origin", jf::vector_json(c.pre.origin)},
+                          {"local_plane_sigma", jf::finite(c.pre.local_plane_sigma, "local_plane_sigma")},
+                          {"normals", c.normals}};
+  doc["points"] = {{"read", c.read},
+                   {"not_finite", c.not_finite},
+                   {"kept", c.evaluated},
+                   {"removed", {{"spray_far", c.pre.spray_far},
+                                {"spray_near", c.pre.spray_near},
+                                {"off_part", c.off_part}}},
+                   {"fit", c.pre.fit.size()},
+                   {"in_fit", r.in_fit_count()}};
+  doc["registration"] = {{"status", r.status},
+                         {"converged", r.converged},
+                         {"coarse", to_string(r.coarse.method)},
+                         {"coarse_median", jf::finite(r.coarse.median_distance, "coarse median")},
+                         {"rms_before", jf::finite(r.rms_before, "rms_before")},
+                         {"rms_after", jf::finite(r.rms_after, "rms_after")},
+                         {"sigma", jf::finite(r.sigma, "sigma")},
+                         {"outer_iterations", r.outer_iterations},
+                         {"transform", comparison_json::matrix_json(c.transform.matrix(), "transform")}};
+  doc["tolerance"] = {{"width", c.tolerance.width}, {"outside", c.tolerance.outside}};
+  json regions = json::array();
+  for (const RegionStatistics& g : s.regions)
+    regions.push_back({{"region", g.region},
+                       {"deviations", comparison_json::statistics_json(g.deviations)},
+                       {"out_of_tolerance", g.out_of_tolerance}});
+  json inconclusive = json::array();
+  for (const InconclusiveReason& why : s.inconclusive)
+    inconclusive.push_back({{"kind", why.kind}, {"text", why.text}});
+  doc["summary"] = {{"evaluated", s.evaluated},
+                    {"in_tolerance", s.in_tolerance},
+                    {"out_of_tolerance", s.out_of_tolerance},
+                    {"deviations", comparison_json::statistics_json(s.deviations)},
+                    {"profile", jf::finite(s.profile, "profile")},
+                    {"regions", regions},
+                    {"alignment", s.alignment},
+                    {"verdict", to_string(s.verdict)},
+                    {"inconclusive", inconclusive}};
+  return jf::to_text(doc);
+}
+
+}  // namespace furrow

@@ -1,0 +1,219 @@
+// Pre-processing a scan with PCL inside the scan module (contract in
+// io/scan/scan_preprocess.hpp): local origin, spray, voxel-grid subset,
+// normals.
+#include <pcl/common/centroid.h>
+#include <pcl/common/eigen.h>
+#include <pcl/exceptions.h>
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/search/kdtree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <string>
+
+#include "base/error.hpp"
+#include "io/scan/scan_module.hpp"
+
+namespace furrow::scan {
+
+namespace {
+
+// Distance of point `i` from the plane of `neighbours` (its nearest points,
+// itself left out), fitted twice: the second time without the neighbours
+// more than 3 times the median off the first plane (scan_preprocess.hpp,
+// rule b).
+float off_local_plane(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::size_t i, pcl::Indices neighbours) {
+  const Eigen::Vector3f p = cloud[i].getVector3fMap();
+  Eigen::Vector3f normal = Eigen::Vector3f::UnitZ(), centre = p;
+  for (int pass = 0; pass < 2; ++pass) {
+    Eigen::Matrix3f covariance;
+    Eigen::Vector4f mean;
+    if (neighbours.size() < 3 || pcl::computeMeanAndCovarianceMatrix(cloud, neighbours, covariance, mean) < 3)
+      return 0;
+    float smallest = 0;
+    pcl::eigen33(covariance, smallest, normal);
+    centre = mean.head<3>();
+    if (pass == 1) break;
+    std::vector<float> off;
+    for (const auto j : neighbours) off.push_back(std::abs(normal.dot(cloud[j].getVector3fMap() - centre)));
+    std::vector<float> sorted = off;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const float limit = 3 * sorted[sorted.size() / 2];
+    pcl::Indices near;
+    for (std::size_t m = 0; m < neighbours.size(); ++m)
+      if (off[m] <= limit) near.push_back(neighbours[m]);
+    neighbours.swap(near);
+  }
+  return std::abs(normal.dot(p - centre));
+}
+
+// Both spray rules over the whole cloud in one parallel pass of neighbour
+// searches. The far rule is pcl::StatisticalOutlierRemoval's, computed as
+// it computes it (the same search class, unsorted; the mean distance to
+// the k results after the first; the threshold from the sums in double),
+// so it flags the same points (tests/io/scan/test_scan_preprocess.cpp
+// checks that against the class itself): the class searches serially,
+// 8 s of a million-point scan's 19 on two cores.
+void flag_spray(const pcl::PointCloud<pcl::PointXYZ>::Ptr& local, const ScanPreprocessOptions& options,
+                ScanPreprocessed& result) {
+  const std::size_t n = local->size();
+  pcl::search::KdTree<pcl::PointXYZ> search(false);
+  search.setInputCloud(local);
+  const int k_far = options.outlier_neighbours, k_near = options.normal_neighbours;
+  std::vector<float> mean_distance(n, 0.0f), off(n, 0.0f);
+  const long count = static_cast<long>(n);
+#pragma omp parallel
+  {
+    pcl::Indices found, neighbours;
+    std::vector<float> squared;
+#pragma omp for schedule(static)
+    for (long q = 0; q < count; ++q) {
+      const std::size_t i = static_cast<std::size_t>(q);
+      if (search.nearestKSearch((*local)[i], k_far + 1, found, squared) == 0) continue;
+      double sum = 0;
+      for (int k = 1; k < k_far + 1 && k < static_cast<int>(squared.size()); ++k) sum += std::sqrt(squared[k]);
+      mean_distance[i] = static_cast<float>(sum / k_far);
+      if (k_near != k_far && search.nearestKSearch((*local)[i], k_near + 1, found, squared) == 0) continue;
+      neighbours.clear();
+      for (const auto j : found)
+        if (static_cast<std::size_t>(j) != i) neighbours.push_back(j);
+      off[i] = off_local_plane(*local, i, neighbours);
+    }
+  }
+  double sum = 0, sq_sum = 0;
+  for (const float d : mean_distance) {
+    sum += d;
+    sq_sum += d * d;  // a float product, as the class sums it
+  }
+  const double mean = sum / static_cast<double>(n);
+  const double variance = (sq_sum - sum * sum / static_cast<double>(n)) / (static_cast<double>(n) - 1);
+  const double far_limit = mean + options.outlier_sigmas * std::sqrt(variance);
+  std::vector<float> kept_off;
+  kept_off.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (mean_distance[i] > far_limit) {
+      result.spray[i] = kSprayFar;
+      ++result.spray_far;
+    } else {
+      kept_off.push_back(off[i]);
+    }
+  }
+  if (kept_off.empty()) return;
+  std::nth_element(kept_off.begin(), kept_off.begin() + kept_off.size() / 2, kept_off.end());
+  result.local_plane_sigma = 1.4826 * kept_off[kept_off.size() / 2];
+  const double near_limit = options.spray_sigmas * result.local_plane_sigma;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!result.spray[i] && off[i] > near_limit) {
+      result.spray[i] = kSprayNear;
+      ++result.spray_near;
+    }
+}
+
+}  // namespace
+
+ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreprocessOptions& options) {
+  ScanPreprocessed result;
+  const std::size_t n = cloud.points.size();
+  // The centroid in double, summed in index order (deterministic); every
+  // float below is relative to it.
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : cloud.points) sum += p;
+  result.origin = sum / static_cast<double>(n);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr local(new pcl::PointCloud<pcl::PointXYZ>);
+  local->resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = cloud.points[i] - result.origin;
+    (*local)[i] = pcl::PointXYZ(static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z()));
+  }
+
+  // Spray: flagged by the statistical filter, never dropped from the cloud.
+  result.spray.assign(n, 0);
+  pcl::IndicesPtr kept(new pcl::Indices);
+  if (options.remove_spray) {
+    flag_spray(local, options, result);
+    result.spray_count = result.spray_far + result.spray_near;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!result.spray[i]) kept->push_back(static_cast<pcl::index_t>(i));
+  } else {
+    kept->resize(n);
+    for (std::size_t i = 0; i < n; ++i) (*kept)[i] = static_cast<pcl::index_t>(i);
+  }
+  if (kept->size() <= static_cast<std::size_t>(options.normal_neighbours))
+    throw InputError(cloud.file + ": only " + std::to_string(kept->size()) + " of " + std::to_string(n) +
+                     " points are not spray, too few to compare");
+
+  // The fit subset: per occupied voxel, the real point nearest its centroid.
+  pcl::VoxelGrid<pcl::PointXYZ> grid;
+  grid.setInputCloud(local);
+  grid.setIndices(kept);
+  const float leaf = static_cast<float>(options.voxel);
+  grid.setLeafSize(leaf, leaf, leaf);
+  pcl::PointCloud<pcl::PointXYZ> centroids;
+  grid.filter(centroids);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(local, kept);
+  pcl::Indices nearest(1);
+  std::vector<float> distance(1);
+  result.fit.reserve(centroids.size());
+  for (const pcl::PointXYZ& c : centroids)
+    if (tree.nearestKSearch(c, 1, nearest, distance) == 1) result.fit.push_back(static_cast<std::size_t>(nearest[0]));
+  std::sort(result.fit.begin(), result.fit.end());
+  result.fit.erase(std::unique(result.fit.begin(), result.fit.end()), result.fit.end());
+
+  // Normals at the fit points: the file's, or estimated from the points
+  // that are not spray around them.
+  if (!cloud.normals.empty()) {
+    for (const std::size_t i : result.fit) result.fit_normals.push_back(cloud.normals[i]);
+    return result;
+  }
+  result.normals_estimated = true;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr surface(new pcl::PointCloud<pcl::PointXYZ>);
+  surface->reserve(kept->size());
+  for (const auto i : *kept) surface->push_back((*local)[static_cast<std::size_t>(i)]);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr at(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const std::size_t i : result.fit) at->push_back((*local)[i]);
+  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud(at);
+  estimation.setSearchSurface(surface);
+  estimation.setKSearch(options.normal_neighbours);
+  pcl::PointCloud<pcl::Normal> normals;
+  estimation.compute(normals);
+  result.fit_normals.reserve(result.fit.size());
+  for (const pcl::Normal& m : normals) {
+    const Eigen::Vector3f v(m.normal_x, m.normal_y, m.normal_z);
+    result.fit_normals.push_back(v.allFinite() && v.norm() > 0 ? Eigen::Vector3f(v.normalized())
+                                                               : Eigen::Vector3f::Zero());
+  }
+  return result;
+}
+
+}  // namespace furrow::scan
+
+extern "C" __attribute__((visibility("default"))) int furrow_scan_preprocess(
+    const furrow::ScanCloud* cloud, const furrow::ScanPreprocessOptions* options, furrow::ScanPreprocessed* result,
+    std::string* message) {
+  using furrow::scan::ScanModuleOutcome;
+  try {
+    *result = furrow::scan::preprocess_with_pcl(*cloud, *options);
+    return static_cast<int>(ScanModuleOutcome::ok);
+  } catch (const furrow::InputError& e) {
+    *message = e.what();
+    return static_cast<int>(ScanModuleOutcome::input_error);
+  } catch (const std::bad_alloc&) {
+    return static_cast<int>(ScanModuleOutcome::out_of_memory);
+  } catch (const pcl::PCLException& e) {
+    *message = cloud->file + ": PCL failed on the scan: " + e.detailedMessage();
+    return static_cast<int>(ScanModuleOutcome::failure);
+  } catch (const std::exception& e) {
+    *message = cloud->file + ": the scan pre-processing failed: " + e.what();
+    return static_cast<int>(ScanModuleOutcome::failure);
+  } catch (...) {
+    *message = cloud->file + ": the scan pre-processing failed with an unknown exception";
+    return static_cast<int>(ScanModuleOutcome::failure);
+  }
+}

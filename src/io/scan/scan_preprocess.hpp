@@ -1,0 +1,81 @@
+#pragma once
+// Pre-processing of a scan before it is compared with the part
+// (docs/scan.md "Pre-processing"), done with PCL in the scan module:
+//
+// 1. a local origin: the centroid of the cloud, in double. Every PCL type
+//    holds floats, whose step 200 mm from the origin is 15 um; relative to
+//    the centroid of a part-sized cloud it is below 0.01 um, so nothing
+//    below is lost to floats. The file's doubles stay in ScanCloud and are
+//    what the deviations are computed from.
+// 2. spray, by two rules, flagged and never dropped (the comparison counts
+//    each point and writes it with its flag):
+//    a. far spray: the rule of pcl::StatisticalOutlierRemoval, a point
+//       whose mean distance to its `outlier_neighbours` nearest neighbours
+//       exceeds the cloud's mean of that figure by more than
+//       `outlier_sigmas` standard deviations (computed as the class computes
+//       it, with PCL's search, in one parallel pass with rule b: the class
+//       itself searches serially);
+//    b. near spray: the statistical rule cannot see a point 0.3 mm off a
+//       surface sampled 0.3 mm apart (its neighbours are nearly as near as
+//       a good point's: measured, a third of such spray passes at any
+//       setting that keeps 99 % of the good points), so every remaining
+//       point is also compared with the plane of its `normal_neighbours`
+//       nearest neighbours (PCL's covariance and eigen solver; neighbours
+//       more than 3 times the median off that plane dropped and the plane
+//       fitted again, so a spray point among them does not tilt it): a
+//       point farther from it than `spray_sigmas` robust standard deviations
+//       (1.4826 x the median of that distance over the cloud) is spray.
+//    Real form errors wider than a neighbourhood (a dent, a step of the
+//    surface along a line) lie on their neighbours' plane and are kept.
+// 3. the fit subset: a voxel grid of edge `voxel` mm (pcl::VoxelGrid) over
+//    the points that are not spray; each occupied voxel is stood for by the
+//    real point nearest its centroid, not by the centroid, because on a
+//    curved surface a centroid lies inside the curve (by about
+//    voxel^2 / (8 R)) and would bias the fit.
+// 4. normals at the fit points: the file's where it has them, else
+//    estimated by PCL's NormalEstimationOMP from the `normal_neighbours`
+//    nearest points of the whole cloud (spray excluded). Their sign is the
+//    file's, or arbitrary when estimated.
+//
+// Deterministic: the same cloud and options give the same result on any
+// thread count. Failures: InputError naming the scan for options out of
+// range, a voxel so fine the grid would have more cells than PCL indexes
+// (2^31), or fewer points than outlier_neighbours + 1; RuntimeModuleError
+// when the module cannot be loaded.
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "io/scan/scan_cloud.hpp"
+
+namespace furrow {
+
+inline constexpr std::uint8_t kSprayFar = 1;
+inline constexpr std::uint8_t kSprayNear = 2;
+
+struct ScanPreprocessOptions {
+  double voxel = 1.0;           // [mm] edge of the fit subset's voxels
+  int outlier_neighbours = 16;  // k of the statistical outlier removal
+  double outlier_sigmas = 3.0;  // standard deviations above the mean that make spray
+  double spray_sigmas = 6.0;    // robust standard deviations off the local plane that make near spray
+  bool remove_spray = true;     // false: no point is flagged as spray
+  int normal_neighbours = 16;   // k of the normal estimation
+};
+
+struct ScanPreprocessed {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // local origin: the cloud's centroid [mm, file frame]
+  // Per point of the cloud: 0 not spray, kSprayFar (statistical rule) or
+  // kSprayNear (off its neighbours' plane).
+  std::vector<std::uint8_t> spray;
+  std::size_t spray_count = 0;  // both rules
+  std::size_t spray_far = 0, spray_near = 0;
+  double local_plane_sigma = 0;  // [mm] the robust sigma of the near-spray rule (the scan's noise, about)
+  std::vector<std::size_t> fit;              // indices of the fit subset's points, increasing
+  std::vector<Eigen::Vector3f> fit_normals;  // unit normal per fit point; zero where none could be had
+  bool normals_estimated = false;            // false: the file's normals
+};
+
+ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOptions& options);
+
+}  // namespace furrow

@@ -1,0 +1,16 @@
+#include "stage/scan_compare_stage.hpp"
+
+#include "geometry/closest_point.hpp"
+
+namespace furrow {
+
+ScanComparison compare_scan_stage(const Part& part, const ScanCloud& cloud, const RegionMap* regions,
+                                  const CompareOptions& options, const ScanPreprocessOptions& preprocessing) {
+  const ScanPreprocessed pre = preprocess_scan(cloud, preprocessing);
+  const ClosestPointFinder finder(part);
+  ScanComparison c = compare_scan(finder, cloud, pre, regions, options);
+  c.preprocessing = preprocessing;
+  return c;
+}
+
+}  // namespace furrow
