@@ -170,8 +170,13 @@ void measure_regions(PlanState& s) {
   RegionDomainOptions domain_options = options.domain;
   domain_options.border = result.border;
   const std::size_t region_count = map.regions.size();
+  // A region measured in another setup is never sampled: its domain only
+  // holds its place, on the coarsest grid.
+  RegionDomainOptions elsewhere_options = domain_options;
+  elsewhere_options.min_cells = elsewhere_options.max_cells = 1;
   for (std::size_t r = 0; r < region_count; ++r) {
-    domains.emplace_back(part, map, static_cast<int>(r), domain_options, risk);
+    const bool elsewhere = r < options.planned_elsewhere.size() && options.planned_elsewhere[r];
+    domains.emplace_back(part, map, static_cast<int>(r), elsewhere ? elsewhere_options : domain_options, risk);
     s.report("regions", r + 1, region_count);
   }
   demands.assign(region_count, RegionDemand{});

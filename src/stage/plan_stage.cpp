@@ -1,6 +1,7 @@
 #include "stage/plan_stage.hpp"
 
 #include <cctype>
+#include <chrono>
 
 #include "io/cmm/dmis_writer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
@@ -112,6 +113,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   for (int k = 1; k <= count; ++k) {
     PartSetup setup;
     double estimate = 0;
+    const auto chosen_from = std::chrono::steady_clock::now();
     // With several setups the part of setup 1 stands on the table too: its
     // lowest point (of the control box, which contains it) is the fixture
     // plane, so nothing is planned from below it.
@@ -139,6 +141,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
       }
       used.push_back(*setup.resting_face);
     }
+    const double choice_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - chosen_from).count();
     const Part moved = k == 1 ? Part{} : moved_part(part, setup.to_setup);
     const RegionMap moved_map = k == 1 ? RegionMap{} : moved_regions(map, setup.to_setup);
     PlannerOptions o = options;
@@ -163,7 +166,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
     mark_short_for_access(one.coverage, wanted);
     coverages.push_back(one.coverage);
     for (FolderFile& f : one.files) out.files.push_back({folder + "/" + f.path, std::move(f.bytes)});
-    SetupPlan plan{setup, folder, std::move(one.result), std::move(one.coverage), std::move(one.plan_json), estimate};
+    SetupPlan plan{setup, folder, std::move(one.result), std::move(one.coverage), std::move(one.plan_json), estimate, choice_seconds};
     out.setups.push_back(std::move(plan));
   }
   for (const SetupPlan& p : out.setups) {

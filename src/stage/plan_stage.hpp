@@ -21,6 +21,7 @@ struct SetupPlan {
   PlanCoverage coverage;          // of the regions this setup planned
   std::string plan_json;
   double estimated_area = 0;      // further setups: reachable short area by the choice's estimate [mm^2]
+  double choice_seconds = 0;      // wall clock of choosing the face (not in any file)
 };
 
 struct PlanStage {

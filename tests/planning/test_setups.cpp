@@ -38,17 +38,7 @@ namespace {
 
 constexpr double kX = 40, kY = 30, kZ = 10;
 
-// Faces: 0 top (+z), 1 bottom (-z), 2 front (-y), 3 back (+y), 4 left (-x), 5 right (+x).
-Part box_part() {
-  Part part;
-  part.faces.emplace_back("top", make_plane({0, 0, kZ}, {kX, 0, 0}, {0, kY, 0}));
-  part.faces.emplace_back("bottom", make_plane({0, 0, 0}, {0, kY, 0}, {kX, 0, 0}));
-  part.faces.emplace_back("front", make_plane({0, 0, 0}, {kX, 0, 0}, {0, 0, kZ}));
-  part.faces.emplace_back("back", make_plane({0, kY, 0}, {0, 0, kZ}, {kX, 0, 0}));
-  part.faces.emplace_back("left", make_plane({0, 0, 0}, {0, 0, kZ}, {0, kY, 0}));
-  part.faces.emplace_back("right", make_plane({kX, 0, 0}, {0, kY, 0}, {0, 0, kZ}));
-  return part;
-}
+Part box_part() { return test::box_part(kX, kY, kZ); }
 
 // Every face of the box every h mm, in the part frame.
 std::vector<Eigen::Vector3d> box_samples(double h) {

@@ -1,0 +1,120 @@
+// furrow plan --setups (docs/cmm.md "Setups") on the 40 x 30 x 10 mm box of
+// tests/planning/test_setups.cpp with the vertical stylus: one folder per
+// setup with plan.json (recording the setup and its part-to-setup
+// transform), both programs - which NIST's I++ DME checker accepts - and
+// report.json; the top-level report.json holds the coverage per setup and
+// combined (top + bottom = 2400 mm^2 of 2 x (1200 + 400 + 300) = 3800);
+// two runs give the same bytes; --setup-faces naming no face of the part,
+// or a bad list, exits 2 with one message naming it; a job refuses setups.
+#include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "io/cmm/nist_checker.hpp"
+#include "io/part_file.hpp"
+#include "planning/plan_fixtures.hpp"
+#include "support/run_cli.hpp"
+
+using namespace furrow;
+using namespace furrow::test;
+
+namespace {
+
+struct Inputs {
+  std::string dir, part, regions;
+};
+
+const Inputs& inputs() {
+  static const Inputs in = [] {
+    Inputs i;
+    i.dir = scratch_dir("cli-plan-setups");
+    i.part = i.dir + "/box.json";
+    i.regions = i.dir + "/regions.json";
+    write_part_json(box_part(40, 30, 10), i.part);
+    const CliResult r = run_furrow({"partition", i.part, "--out", i.regions, "--grid", "24x24"});
+    REQUIRE(r.status == 0);
+    return i;
+  }();
+  return in;
+}
+
+std::vector<std::string> plan_args(const std::string& out) {
+  const Inputs& in = inputs();
+  return {"plan", in.part, "--regions", in.regions, "--out", out, "--points", "60", "--min-per-region", "4",
+          "--allow-uncovered", "--program-date", "2026-11-29"};
+}
+
+}  // namespace
+
+TEST_CASE("furrow plan --setups 2: a folder per setup, programs the NIST checker accepts, the same bytes twice") {
+  const Inputs& in = inputs();
+  std::vector<std::string> args = plan_args(in.dir + "/two");
+  args.insert(args.end(), {"--setups", "2"});
+  const CliResult r = run_furrow(args);
+  CAPTURE(r.err);
+  CAPTURE(r.out);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("setup 2: the part resting on face 0 (\"top\")") != std::string::npos);
+  CHECK(r.out.find("combined over 2 setups:") != std::string::npos);
+
+  const nlohmann::json top = nlohmann::json::parse(slurp(in.dir + "/two/report.json"));
+  CHECK(top["format"] == "furrow-plan-setups-report");
+  REQUIRE(top["setups"].size() == 2);
+  CHECK(top["setups"][1]["resting_face"] == 0);
+  CHECK(top["setups"][1]["folder"] == "setup2");
+  const double covered = top["combined"]["area"]["covered"].get<double>();
+  const double total = top["combined"]["area"]["total"].get<double>();
+  CHECK(std::abs(covered - 2400) < 1e-6 * 2400);
+  CHECK(std::abs(total - 3800) < 1e-6 * 3800);
+  CHECK(std::abs(top["setups"][0]["coverage"]["area"]["covered"].get<double>() - 1200) < 1e-6 * 1200);
+  CHECK(std::abs(top["setups"][1]["coverage"]["area"]["covered"].get<double>() - 1200) < 1e-6 * 1200);
+  // The sides stay short for the tilt, named with their setup.
+  for (const auto& u : top["combined"]["uncovered_regions"]) CHECK(u["state"] == "unreachable_access");
+
+  for (const char* setup : {"setup1", "setup2"}) {
+    CAPTURE(setup);
+    const std::string folder = in.dir + "/two/" + setup;
+    const nlohmann::json plan = nlohmann::json::parse(slurp(folder + "/plan.json"));
+    REQUIRE(plan.contains("setup"));
+    CHECK(plan["setup"]["index"] == (std::string(setup) == "setup1" ? 1 : 2));
+    CHECK(plan["setup"]["part_to_setup"]["rotation"].size() == 3);
+    const std::string name = std::string("two_S") + setup[5];
+    const std::string prg = slurp(folder + "/" + name + ".prg");
+    CHECK(!slurp(folder + "/" + name + ".dmi").empty());
+    CHECK(nist_checker_findings(prg, std::string("setups_") + setup + ".prg").empty());
+    for (const char* f : {"plan.png", "coverage.png", "report.json", "plan.csv", "plan.qif"})
+      CHECK(!slurp(folder + "/" + f).empty());
+  }
+  CHECK(!slurp(in.dir + "/two/coverage.png").empty());
+
+  // Bytes do not depend on the run (the program names come from the folder's name).
+  std::vector<std::string> again = plan_args(in.dir + "/again/two");
+  again.insert(again.end(), {"--setups", "2"});
+  REQUIRE(run_furrow(again).status == 0);
+  for (const char* f : {"report.json", "coverage.png", "setup1/plan.json", "setup2/plan.json", "setup2/two_S2.prg",
+                        "setup2/two_S2.dmi", "setup2/report.json", "setup2/coverage.png"}) {
+    CAPTURE(f);
+    CHECK(slurp(in.dir + "/again/two/" + f) == slurp(in.dir + "/two/" + f));
+  }
+}
+
+TEST_CASE("furrow plan --setup-faces: a face the part does not have, or not a list of faces, exits 2") {
+  const Inputs& in = inputs();
+  std::vector<std::string> args = plan_args(in.dir + "/bad");
+  args.insert(args.end(), {"--setup-faces", "17"});
+  const CliResult r = run_furrow(args);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("--setup-faces: face 17 is not a face of the part (it has 6 faces") != std::string::npos);
+  args = plan_args(in.dir + "/bad2");
+  args.insert(args.end(), {"--setup-faces", "3,top"});
+  const CliResult b = run_furrow(args);
+  CHECK(b.status == 2);
+  CHECK(b.err.find("\"top\" is not a face index") != std::string::npos);
+  args = plan_args(in.dir + "/bad3");
+  args.insert(args.end(), {"--setup-faces", "3,2", "--setups", "2"});
+  const CliResult c = run_furrow(args);
+  CHECK(c.status == 2);
+  CHECK(c.err.find("raise --setups") != std::string::npos);
+  // Nothing half-written.
+  CHECK(!std::filesystem::exists(in.dir + "/bad"));
+}
