@@ -68,7 +68,16 @@ std::vector<RestingFace> resting_candidates(const Part& part, const RegionMap& m
   for (std::size_t f = 0; f < part.faces.size(); ++f)
     if (const auto r = planar_face(part, map, static_cast<int>(f)); r && r->stable) out.push_back(*r);
   std::stable_sort(out.begin(), out.end(), [](const RestingFace& a, const RestingFace& b) { return a.area > b.area; });
-  return out;
+  // Coplanar faces (the tops of bosses of one height) give one and the same
+  // setup: the largest of them stands for all.
+  std::vector<RestingFace> distinct;
+  for (const RestingFace& f : out) {
+    bool same = false;
+    for (const RestingFace& d : distinct)
+      same = same || (f.normal.dot(d.normal) > 1 - 1e-9 && std::abs(f.normal.dot(f.point - d.point)) <= kStableTolerance);
+    if (!same) distinct.push_back(f);
+  }
+  return distinct;
 }
 
 PartSetup resting_setup(const RestingFace& face, int index, bool named) {

@@ -54,7 +54,10 @@ struct RestingFace {
 // region. Precondition: `map` belongs to `part`.
 std::optional<RestingFace> planar_face(const Part& part, const RegionMap& map, int face);
 
-// Every stable planar face, largest area first (ties: lower index).
+// Every stable planar face, largest area first (ties: lower index), one per
+// plane: coplanar faces (bosses of one height) are one support, named by
+// the largest of them. Only the side the part lies on is checked, not that
+// its centre of mass stands over the support.
 std::vector<RestingFace> resting_candidates(const Part& part, const RegionMap& map);
 
 // The setup resting on `face` (index >= 2).

@@ -115,7 +115,7 @@ OptionTable<PlannerOptions> make_table() {
   t.push_back(integer_option<O>(
       "setups", "N",
       "setups: what the part as imported leaves unmeasured is planned with the part resting on another stable "
-      "face, one folder per setup (docs/cmm.md \"Setups\")",
+      "face, one folder per setup (docs/cmm.md \"Setups\"); furrow plan only, a job refuses more than one",
       [](auto& o) -> auto& { return o.setups; }, 1));
   OptionSpec<O> faces = written_as(
       parsed_option<O>("setup_faces", "F1,F2",
