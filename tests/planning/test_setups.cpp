@@ -24,6 +24,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "io/cmm/probe_head.hpp"
 #include "io/plan_file.hpp"
 #include "plan_fixtures.hpp"
 #include "planning/part_setup.hpp"
@@ -122,7 +123,102 @@ Clearance brute_clearance(const SetupPlan& s, const PlannerOptions& o) {
   return c;
 }
 
+// The indexable head of test_auto_tips.cpp, nothing qualified, and the
+// same numbers for the oracle.
+const char* kHead = R"({
+  "head": {"type": "test", "a": {"min": 0, "max": 90, "step": 45}, "b": {"min": -90, "max": 180, "step": 90},
+           "length": 30, "diameter": 24},
+  "stylus": {"length": 20, "ball_diameter": 2, "stem_diameter": 1},
+  "probe_body": {"length": 25, "diameter": 13.2},
+  "qualified": []
+})";
+const OracleHead kOracleHead{1, 0.5, 20, 25, 6.6, 30, 12};
+
+// With the head: the assembly of each point's tip (the oracle's capsules)
+// along the touch and both vertical legs, against the box samples in the
+// setup frame; and the lowest point any capsule reaches over those moves.
+Clearance brute_head_clearance(const SetupPlan& s) {
+  REQUIRE(s.result.plan.setup);
+  const PlanSetupRecord& rec = *s.result.plan.setup;
+  std::vector<Eigen::Vector3d> samples = box_samples(0.25);
+  for (Eigen::Vector3d& q : samples) q = rec.rotation * q + rec.translation;
+  Clearance c;
+  for (const PlannedPoint& p : s.result.plan.points) {
+    REQUIRE(p.tip);
+    const std::vector<OracleCapsule> all = oracle_capsules(kOracleHead, p.tip->a, p.tip->b);
+    const std::vector<OracleCapsule> rest(all.begin() + 1, all.end());
+    const Eigen::Vector3d centre = p.xyz + p.ijk;
+    const Eigen::Vector3d out = p.xyz + (1 + std::max(s.result.approach, s.result.retract)) * p.ijk;
+    c.part = std::min(c.part, swept_clearance(samples, rest, centre, out));
+    for (const Eigen::Vector3d& q : {p.approach, p.retract}) {
+      const Eigen::Vector3d top(q.x(), q.y(), std::max(q.z(), s.result.clearance_z));
+      c.part = std::min(c.part, swept_clearance(samples, all, q, top));
+    }
+    // The motions are straight and the legs rise: the lowest points are at
+    // the contact, approach and retract positions.
+    for (const Eigen::Vector3d& at : {centre, p.approach, p.retract})
+      for (const OracleCapsule& k : all) c.lowest = std::min({c.lowest, (at + k.a).z() - k.radius, (at + k.b).z() - k.radius});
+  }
+  return c;
+}
+
 }  // namespace
+
+TEST_CASE("setups with an indexable head: every point of both setups clear of the part and above the fixture plane") {
+  const Fixture& f = fixture();
+  PlannerOptions o;
+  use_head(o, parse_probe_head(kHead, "head.json"));
+  o.tips = TipChoice::automatic;
+  // Sides only within 20 degrees of a tip's axis: A90, whose probe body
+  // (radius 6.6 mm) lies level with the ball, so a side point below 6.6 mm
+  // above the fixture plane is out of reach (the fixture check bites).
+  o.max_tilt_degrees = 20;
+  o.points = 60;
+  o.min_per_region = 4;
+  o.setups = 2;
+  const PlanStage stage = plan_stage(f.part, f.map, o, nullptr, "box", "regions.json", "");
+  REQUIRE(stage.setups.size() == 2);
+  // Setup 1 measures the top only: a side point needs A90 and 6.6 mm above
+  // the table, and the 2 mm border leaves a band of 1.4 mm below the top.
+  for (const PlannedPoint& p : stage.setups[0].result.plan.points) CHECK(p.face_index == 0);
+  // The estimate per resting face, by the sides' interior points at
+  // mid-height: on the top only the bottom comes up (1200; the sides are
+  // 10 mm high, their middle 5 mm < 6.6 mm up); on the front (or back) the
+  // back (400) faces up and the bottom and both ends stand 30 mm high
+  // (1200 + 2 x 300): 2200; on the left (or right) the right (300) faces up
+  // and bottom, front and back stand 40 mm high (1200 + 2 x 400): 2300,
+  // the most; the left comes first of the two.
+  REQUIRE(stage.setups[1].setup.resting_face);
+  CHECK(*stage.setups[1].setup.resting_face == 4);
+  CHECK(std::abs(stage.setups[1].estimated_area - 2300) < 1e-6 * 2300);
+  double covered_faces = 0;
+  for (const RegionCoverage& r : stage.coverage.regions) {
+    CAPTURE(r.region);
+    CAPTURE(r.reason);
+    if (r.face == 0) CHECK(r.setup == 1);
+    if (r.face == 1 || r.face == 5) {
+      CHECK(r.covered);
+      CHECK(r.setup == 2);
+    }
+    if (r.face == 4) CHECK(!r.covered);  // it carries the part in setup 2
+    if (r.covered) covered_faces += face_area(r.face);
+  }
+  // One planar region per face: the covered area is the sum of the covered faces' areas.
+  CHECK(stage.coverage.regions.size() == 6);
+  CHECK(std::abs(stage.coverage.area.covered - covered_faces) < 1e-6 * covered_faces);
+  CHECK(covered_faces >= face_area(0) + face_area(1));
+  for (const SetupPlan& s : stage.setups) {
+    CAPTURE(s.setup.index);
+    const Clearance c = brute_head_clearance(s);
+    const double h = 0.25;
+    CHECK(c.part >= -(h * h / 2 + 1e-6));
+    // Setup 1 stands on the box's lowest point (z = 0), setup 2 on its top, moved to z = 0.
+    CHECK(c.lowest >= -1e-9);
+    MESSAGE("head, setup " << s.setup.index << ": " << s.result.plan.points.size() << " points, "
+                           << s.result.plan.tips.size() << " tips, smallest sampled clearance " << c.part
+                           << " mm, lowest point of the assembly z = " << c.lowest << " mm");
+  }
+}
 
 TEST_CASE("setups: the bottom, reachable only from below, is planned in setup 2 resting on the top") {
   const Fixture& f = fixture();
