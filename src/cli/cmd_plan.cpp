@@ -61,7 +61,9 @@ void print_coverage(const PlanCoverage& c, bool allowed) {
 }
 
 void print_summary(std::ostream& out, const PlanResult& r, const std::string& folder) {
-  out << "plan: " << r.plan.points.size() << " points in " << r.regions.size() << " regions, border "
+  std::size_t planned_here = 0;  // regions left to another setup are not this plan's
+  for (const RegionPlanSummary& s : r.regions) planned_here += !s.elsewhere;
+  out << "plan: " << r.plan.points.size() << " points in " << planned_here << " regions, border "
       << fixed(r.border, 2) << " mm, probe " << r.plan.probe.name << " diameter " << fixed(r.plan.probe.diameter, 3)
       << " mm\n";
   for (const RegionPlanSummary& s : r.regions) {

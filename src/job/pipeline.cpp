@@ -7,7 +7,6 @@
 #include <optional>
 
 #include "base/atomic_file.hpp"
-#include "base/error.hpp"
 #include "base/json_fields.hpp"
 #include "base/text_fields.hpp"
 #include "inspection/comparison_file.hpp"
@@ -140,10 +139,6 @@ InspectionPlan plan_stage(Staged& s, const Part& part, const RegionMap& map, con
   const Job& job = s.job;
   PlannerOptions o = job.plan;
   o.part_name = s.part_name;
-  // A job compares one plan folder's measurements (docs/cmm.md "Setups").
-  if (setup_count(o) > 1)
-    throw InputError("plan.setups / plan.setup_faces: a job plans and compares one setup; plan several with "
-                     "furrow plan --setups");
   // The programs state the job's profile zone per point (TOL/PROFP).
   o.program.tolerance = PointProfileTolerance{job.compare.tolerance.lower(), job.compare.tolerance.upper()};
   std::optional<PredictionRiskMap> risk;

@@ -8,6 +8,7 @@
 // or a bad list, exits 2 with one message naming it; a job refuses setups.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "io/cmm/nist_checker.hpp"
@@ -117,4 +118,18 @@ TEST_CASE("furrow plan --setup-faces: a face the part does not have, or not a li
   CHECK(c.err.find("raise --setups") != std::string::npos);
   // Nothing half-written.
   CHECK(!std::filesystem::exists(in.dir + "/bad"));
+}
+
+TEST_CASE("furrow run: a job with plan.setups above 1 is refused before any work, naming the member") {
+  nlohmann::json job = nlohmann::json::parse(slurp(source_path("examples/jobs/demo.json")));
+  job["part"] = source_path("examples/parts/mould.json");
+  job["tool"] = source_path("examples/tools/ball_d24.json");
+  job["output"] = "out";
+  job["plan"]["setups"] = 2;
+  const std::string dir = scratch_dir("cli-plan-setups-job");
+  write_text(dir + "/job.json", job.dump(2));
+  const CliResult r = run_furrow({"run", dir + "/job.json", "--out", dir + "/out"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("plan.setups: a job plans and compares one setup") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir + "/out"));
 }
