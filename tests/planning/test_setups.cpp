@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "base/error.hpp"
@@ -344,4 +345,45 @@ TEST_CASE("setups: resting on a face turns its outward normal to -z and puts it 
         for (double z : {0.0, kZ}) lowest = std::min(lowest, (s.to_setup * Eigen::Vector3d(x, y, z)).z());
     CHECK(std::abs(lowest) < 1e-12);
   }
+}
+
+TEST_CASE("plan.json setup: written and read back bit for bit, a matrix that is not a rotation refused by field") {
+  InspectionPlan plan;
+  plan.probe = {"Probe1", 2};
+  PlannedPoint p;
+  p.id = "S2_P0001";
+  p.order = 1;
+  p.face = "bottom";
+  p.face_index = 1;
+  p.xyz = {1, 2, 10};
+  p.ijk = {0, 0, 1};
+  p.approach = p.retract = {1, 2, 14};
+  plan.points.push_back(p);
+  PlanSetupRecord rec;
+  rec.index = 2;
+  rec.resting_face = 0;
+  rec.rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  rec.translation = {0.1, -2, 10};
+  plan.setup = rec;
+  const InspectionPlan back = parse_plan(plan_to_json_text(plan), "plan.json");
+  REQUIRE(back.setup);
+  CHECK(back.setup->index == 2);
+  CHECK(back.setup->resting_face == std::optional<std::size_t>(0));
+  CHECK(back.setup->rotation == rec.rotation);
+  CHECK(back.setup->translation == rec.translation);
+  // to_part inverts x_setup = R x_part + t.
+  const Eigen::Vector3d x(3, -4, 5);
+  CHECK((back.setup->to_part(rec.rotation * x + rec.translation) - x).norm() < 1e-12);
+
+  std::string text = plan_to_json_text(plan);
+  nlohmann::json doc = nlohmann::json::parse(text);
+  doc["setup"]["part_to_setup"]["rotation"][0] = {2, 0, 0};
+  CHECK_THROWS_WITH_AS(parse_plan(doc.dump(), "plan.json"), doctest::Contains("setup.part_to_setup.rotation: not a rotation"),
+                       InputError);
+  doc = nlohmann::json::parse(text);
+  doc["setup"]["part_to_setup"]["rotation"] = {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // a mirror
+  CHECK_THROWS_WITH_AS(parse_plan(doc.dump(), "plan.json"), doctest::Contains("not a rotation"), InputError);
+  doc = nlohmann::json::parse(text);
+  doc["setup"]["index"] = 0;
+  CHECK_THROWS_AS(parse_plan(doc.dump(), "plan.json"), InputError);
 }
