@@ -15,7 +15,9 @@ SetupScore score_setup(const Part& part, const RegionMap& map, const PlannerOpti
   const Part moved = moved_part(part, setup.to_setup);
   PlannerOptions o = options;
   o.access.fixture_z = setup.fixture_z;
-  // The planner's own start: clearance plane, access options, tips.
+  // The planner's own start: clearance plane, access options, tips (it
+  // reads the part and options only; the map is the caller's, whose uv the
+  // interior points below are in).
   PlanState s(moved, map, o, nullptr, {});
   start_plan(s);
   std::vector<ProbeGeometry> probes = s.tips;

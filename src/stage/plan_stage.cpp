@@ -3,6 +3,7 @@
 #include <cctype>
 #include <chrono>
 
+#include "base/error.hpp"
 #include "io/cmm/dmis_writer.hpp"
 #include "io/cmm/ippdme_writer.hpp"
 #include "io/plan_csv.hpp"
@@ -11,7 +12,6 @@
 #include "planning/plan_image.hpp"
 #include "planning/plan_report.hpp"
 #include "planning/setup_choice.hpp"
-#include "base/error.hpp"
 
 namespace furrow {
 
@@ -73,7 +73,6 @@ PlanStage plan_one_setup(const Part& part, const RegionMap& map, const PlannerOp
   };
   return out;
 }
-
 
 PlanSetupRecord setup_record(const PartSetup& s) {
   PlanSetupRecord r;
