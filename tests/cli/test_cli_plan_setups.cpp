@@ -133,3 +133,49 @@ TEST_CASE("furrow run: a job with plan.setups above 1 is refused before any work
   CHECK(r.err.find("plan.setups: a job plans and compares one setup") != std::string::npos);
   CHECK(!std::filesystem::exists(dir + "/out"));
 }
+
+TEST_CASE("furrow compare over setups: each setup's file in its frame, one comparison of the whole box, one verdict") {
+  // The two setups' plans of the first test, measured by the simulator in
+  // their own frames (each program measures its setup's alignment, so a
+  // CMM reports setup-frame points), exactly on the nominal surface (no
+  // noise): taken back to the part frame they must all fall on the box.
+  // Setup 2 is the box upside down, so a file left in its own frame would
+  // put the bottom's points 10 mm above the top, far out of tolerance.
+  const Inputs& in = inputs();
+  std::vector<std::string> args = plan_args(in.dir + "/cmp");
+  args.insert(args.end(), {"--setups", "2"});
+  REQUIRE(run_furrow(args).status == 0);
+  const std::string p1 = in.dir + "/cmp/setup1/plan.json", p2 = in.dir + "/cmp/setup2/plan.json";
+  for (const auto& [plan, out] : {std::pair{p1, in.dir + "/m1.csv"}, std::pair{p2, in.dir + "/m2.csv"}}) {
+    const CliResult s = run_furrow({"simulate-measurement", in.part, "--plan", plan, "--out", out, "--noise", "0"});
+    CAPTURE(s.err);
+    REQUIRE(s.status == 0);
+  }
+  const std::string cmp = in.dir + "/comparison.json";
+  const CliResult r = run_furrow({"compare", in.part, "--measurements", in.dir + "/m1.csv", "--measurements",
+                                  in.dir + "/m2.csv", "--plan", p1, "--plan", p2, "--out", cmp});
+  CAPTURE(r.err);
+  CAPTURE(r.out);
+  const nlohmann::json plan1 = nlohmann::json::parse(slurp(p1)), plan2 = nlohmann::json::parse(slurp(p2));
+  const std::size_t want = plan1["points"].size() + plan2["points"].size();
+  const nlohmann::json c = nlohmann::json::parse(slurp(cmp));
+  // The sides were never measured: the verdict cannot be PASS (they are
+  // named); no point is out of tolerance.
+  CHECK(r.status != 2);
+  CHECK(r.status != 1);
+  std::size_t points = 0;
+  double worst = 0;
+  for (const auto& p : c["points"]) {
+    ++points;
+    if (p.contains("deviation") && p["deviation"].is_number()) worst = std::max(worst, std::abs(p["deviation"].get<double>()));
+  }
+  CHECK(points == want);
+  CHECK(worst < 1e-4);
+  MESSAGE("compare over 2 setups: " << points << " points, largest |deviation| " << worst << " mm, exit " << r.status);
+
+  // One plan per file, in the same order.
+  const CliResult bad = run_furrow({"compare", in.part, "--measurements", in.dir + "/m1.csv", "--plan", p1, "--plan", p2,
+                                    "--out", in.dir + "/bad.json"});
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("2 plans (--plan) but 1 measurement files") != std::string::npos);
+}
