@@ -8,6 +8,8 @@
 // or a bad list, exits 2 with one message naming it; a job refuses setups.
 #include <doctest/doctest.h>
 
+#include <Eigen/Core>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -172,6 +174,52 @@ TEST_CASE("furrow compare over setups: each setup's file in its frame, one compa
   CHECK(points == want);
   CHECK(worst < 1e-4);
   MESSAGE("compare over 2 setups: " << points << " points, largest |deviation| " << worst << " mm, exit " << r.status);
+
+  // P0001 (setup 1, on the top) measured again in setup 2, in setup 2's
+  // frame, 0.01 mm proud of the surface: reported once, with that later
+  // reading's deviation, the earlier reading listed as replaced.
+  const nlohmann::json& first = plan1["points"][0];
+  REQUIRE(first["id"] == "P0001");
+  const nlohmann::json& motion = plan2["setup"]["part_to_setup"];
+  Eigen::Matrix3d R;
+  Eigen::Vector3d t, xyz, ijk;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R(i, j) = motion["rotation"][i][j].get<double>();
+    t[i] = motion["translation"][i].get<double>();
+    xyz[i] = first["xyz"][i].get<double>();
+    ijk[i] = first["ijk"][i].get<double>();
+  }
+  const Eigen::Vector3d centre = R * (xyz + (1 + 0.01) * ijk) + t, normal = R * ijk;
+  char row[256];
+  std::snprintf(row, sizeof row, "P0001,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", centre.x(), centre.y(), centre.z(),
+                normal.x(), normal.y(), normal.z());
+  write_text(in.dir + "/m2again.csv", slurp(in.dir + "/m2.csv") + row);
+  const CliResult again = run_furrow({"compare", in.part, "--measurements", in.dir + "/m1.csv", "--measurements",
+                                      in.dir + "/m2again.csv", "--plan", p1, "--plan", p2, "--out", in.dir + "/again.json"});
+  CAPTURE(again.err);
+  CHECK(again.status != 2);
+  const nlohmann::json a = nlohmann::json::parse(slurp(in.dir + "/again.json"));
+  std::size_t count = 0, p0001 = 0;
+  double deviation = 1e9;
+  for (const auto& p : a["points"]) {
+    ++count;
+    if (p["id"] == "P0001") {
+      ++p0001;
+      deviation = p["deviation"].get<double>();
+    }
+  }
+  CHECK(count == want);
+  CHECK(p0001 == 1);
+  // Best fit over 47 points moves the part by a small share of the 0.01 mm.
+  CHECK(std::abs(deviation - 0.01) < 2e-3);
+  REQUIRE(a["replaced"].size() == 1);
+  CHECK(a["replaced"][0]["id"] == "P0001");
+  CHECK(a["replaced"][0]["file"] == 0);
+  CHECK(a["replaced"][0]["by_file"] == 1);
+  // The earlier reading, in the part frame: the setup-1 centre on the surface.
+  Eigen::Vector3d was;
+  for (int i = 0; i < 3; ++i) was[i] = a["replaced"][0]["was"][i].get<double>();
+  CHECK((was - (xyz + ijk)).norm() < 1e-9);
 
   // One plan per file, in the same order.
   const CliResult bad = run_furrow({"compare", in.part, "--measurements", in.dir + "/m1.csv", "--plan", p1, "--plan", p2,
