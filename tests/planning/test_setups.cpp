@@ -25,6 +25,7 @@
 #include <set>
 
 #include "base/error.hpp"
+#include "io/cmm/nist_checker.hpp"
 #include "io/cmm/probe_head.hpp"
 #include "io/plan_file.hpp"
 #include "plan_fixtures.hpp"
@@ -215,6 +216,11 @@ TEST_CASE("setups with an indexable head: every point of both setups clear of th
     CHECK(c.part >= -(h * h / 2 + 1e-6));
     // Setup 1 stands on the box's lowest point (z = 0), setup 2 on its top, moved to z = 0.
     CHECK(c.lowest >= -1e-9);
+    // Its program, with a tool per tip, passes NIST's I++ DME checker.
+    const std::string prg = s.folder + "/box_S" + std::to_string(s.setup.index) + ".prg";
+    const auto file = std::find_if(stage.files.begin(), stage.files.end(), [&](const FolderFile& x) { return x.path == prg; });
+    REQUIRE(file != stage.files.end());
+    CHECK(nist_checker_findings(file->bytes, "setups_head_" + std::to_string(s.setup.index) + ".prg").empty());
     MESSAGE("head, setup " << s.setup.index << ": " << s.result.plan.points.size() << " points, "
                            << s.result.plan.tips.size() << " tips, smallest sampled clearance " << c.part
                            << " mm, lowest point of the assembly z = " << c.lowest << " mm");
