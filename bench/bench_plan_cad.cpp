@@ -19,7 +19,10 @@
 // wall time of each stage, the points allocated and placed, the regions and
 // area covered, the tips chosen and the peak resident memory. Prints
 // figures; it does not pass or fail.
-//   usage: bench_plan_cad [stylus|head|auto] [fixed]    (default: all three)
+// Then, with `setups`, the same head with `--tips auto --setups 2` on the
+// whole part (docs/cmm.md "Setups"): time, memory, tips per setup and the
+// combined covered share.
+//   usage: bench_plan_cad [stylus|head|auto|setups] [fixed]    (default: all four)
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -211,6 +214,62 @@ void run(const std::string& step, bool head, bool fixed, bool automatic = false)
               bytes / 1024.0, peak_rss_mb());
 }
 
+// `--tips auto --setups 2` on the whole part, the faces it stands on
+// included: setup 2 rests on the stable planar face that brings the most
+// unreachable area within reach (docs/cmm.md "Setups"). The covered share
+// is the combined coverage's, as report.json states it.
+void run_setups(const std::string& step) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Part part = import_cad(step).part;
+  const RegionMap map = partition_part(part, {}).map;
+  const double t_prepare = seconds_since(t0);
+  PlannerOptions options;
+  options.part_name = "fixture";
+  use_head(options, parse_probe_head(kHead, "head.json"));
+  options.head->qualified = {TipAngles{0, 0}};
+  options.tips = TipChoice::automatic;
+  options.setups = 2;
+  const auto t1 = std::chrono::steady_clock::now();
+  const PlanStage stage = plan_stage(part, map, options, nullptr, "fixture", "regions.json", "");
+  const double t_plan = seconds_since(t1);
+  std::printf("\nindexable head, --tips auto --setups 2, all %zu faces (the table side included), %zu regions, %d "
+              "OpenMP threads\n",
+              part.faces.size(), map.regions.size(), omp_get_max_threads());
+  std::printf("  import and partition %.2f s; plan of the setups and their files %.2f s (target < 30 s)\n", t_prepare,
+              t_plan);
+  for (const SetupPlan& s : stage.setups) {
+    std::string tips;
+    for (const PlanTip& t : s.result.plan.tips) tips += " " + tip_name(t.angles) + (t.qualified ? "" : "*");
+    const CoverageArea& a = s.coverage.area;
+    std::printf("  setup %d%s: %zu points, %zu tips (new marked *):%s; covers %.0f of the %.0f mm^2 it plans "
+                "(%d of %zu regions)\n",
+                s.setup.index,
+                s.setup.resting_face ? (" resting on face " + std::to_string(*s.setup.resting_face) + " (" +
+                                        part.faces[static_cast<std::size_t>(*s.setup.resting_face)].name() + ")")
+                                           .c_str()
+                                     : " (as imported)",
+                s.result.plan.points.size(), s.result.plan.tips.size(), tips.c_str(), a.covered, a.total,
+                s.coverage.regions_covered, s.coverage.regions.size());
+    const PlanTiming& t = s.result.timing;
+    std::printf("    face chosen in %.2f s; plan: regions %.2f s, sampling %.2f s, collision checks and tips %.2f s, "
+                "ordering %.2f s, moves %.2f s\n",
+                s.choice_seconds, t.regions_seconds, t.sampling_seconds, t.access_seconds, t.tour_seconds,
+                t.moves_seconds);
+  }
+  if (!stage.note.empty()) std::printf("  note: %s\n", stage.note.c_str());
+  const CoverageArea& a = stage.coverage.area;
+  std::printf("  combined: %.1f %% of %.0f mm^2 covered (goal >= 90 %%); reachable not planned %.0f, too narrow %.0f, "
+              "out of reach %.0f mm^2; %d of %zu regions\n",
+              100 * a.share_covered(), a.total, a.reachable_unplanned, a.unreachable_narrow, a.unreachable_access,
+              stage.coverage.regions_covered, stage.coverage.regions.size());
+  for (const auto& [problem, area] : a.by_access_problem)
+    std::printf("    out of reach, %s: %.0f mm^2\n", to_string(problem), area);
+  if (!stage.coverage.complete())
+    std::printf("  uncovered: %s\n", stage.coverage.describe_uncovered(getenv("BENCH_ALL") ? 1000 : 6).c_str());
+  std::printf("  total %.2f s; peak resident memory so far %.0f MB (target < 500 MB)\n", seconds_since(t0),
+              peak_rss_mb());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -229,10 +288,11 @@ int main(int argc, char** argv) {
   std::printf("part: %d faces in %d solids (plate with 20 filleted bosses, 20 bores, 20 dimples; B-spline block, "
               "ball, ring, cone), STEP %.1f MB\n",
               faces.Extent(), solids.Extent(), std::filesystem::file_size(step) / 1e6);
-  // bench_plan_cad [stylus|head|auto] [fixed]
+  // bench_plan_cad [stylus|head|auto|setups] [fixed]
   const bool fixed = argc > 2 && std::string(argv[2]) == "fixed";
   if (only.empty() || only == "stylus") run(step, false, fixed);
   if (only.empty() || only == "head") run(step, true, fixed);
   if (only.empty() || only == "auto") run(step, true, fixed, true);
+  if (only.empty() || only == "setups") run_setups(step);
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "cli/results_storage.hpp"
 #include "inspection/comparison_file.hpp"
 #include "inspection/measurement_merge.hpp"
+#include "inspection/setup_merge.hpp"
 #include "base/output_set.hpp"
 #include "io/cmm/csv_dialect.hpp"
 #include "io/part_file.hpp"
@@ -112,7 +113,11 @@ int run_compare(Args& args) {
   // Several files: merged by id in the order given (measurement_merge.hpp).
   const std::vector<std::string> measurement_files = args.repeated_option("measurements");
   if (measurement_files.empty()) args.fail("--measurements or --scan is required");
-  const auto plan_path = args.option("plan");
+  // Several plans: one per setup, the measurement files in the same order
+  // (inspection/setup_merge.hpp).
+  const std::vector<std::string> plan_paths = args.repeated_option("plan");
+  const std::optional<std::string> plan_path =
+      plan_paths.empty() ? std::nullopt : std::optional<std::string>(plan_paths.front());
   const auto regions_path = args.option("regions");
   const auto prediction_path = args.option("prediction");
   const std::string out = args.required_option("out");
@@ -157,6 +162,12 @@ int run_compare(Args& args) {
   read.units = units_option.value_or(dialect.units.value_or("mm"));
   units_to_mm(read.units, "--units");
   if (ipp_program) read.ippdme_program = *ipp_program;
+  if (plan_paths.size() > 1 && plan_paths.size() != measurement_files.size())
+    args.fail(std::to_string(plan_paths.size()) + " plans (--plan) but " + std::to_string(measurement_files.size()) +
+              " measurement files: with several setups give one plan per file, in the same order");
+  if (plan_paths.size() > 1 && options.align != AlignMethod::bestfit)
+    args.fail(std::string("--align ") + to_string(options.align) +
+              ": the setups' points are fitted together best-fit; each setup's datums are in its own frame");
   if ((options.align == AlignMethod::rps) != rps_path.has_value())
     args.fail(rps_path ? "--rps is for --align rps" : "--align rps needs the reference point system (--rps FILE)");
 
@@ -166,7 +177,7 @@ int run_compare(Args& args) {
   if (dialect_path) outputs.add_input(*dialect_path, "dialect");
   if (rps_path) outputs.add_input(*rps_path, "rps");
   if (ipp_program) outputs.add_input(*ipp_program, "I++ DME program");
-  if (plan_path) outputs.add_input(*plan_path, "plan");
+  for (const std::string& p : plan_paths) outputs.add_input(p, "plan");
   if (regions_path) outputs.add_input(*regions_path, "regions");
   if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out);
@@ -175,10 +186,18 @@ int run_compare(Args& args) {
   if (rps_path) options.rps = read_reference_points(*rps_path);
   const Part part = read_part(part_path);
   std::optional<InspectionPlan> plan;
-  if (plan_path) {
-    plan = read_plan(*plan_path);
-    check_plan_against_part(*plan, part, *plan_path);
+  std::vector<InspectionPlan> setup_plans;
+  for (const std::string& p : plan_paths) {
+    setup_plans.push_back(read_plan(p));
+    check_plan_against_part(setup_plans.back(), part, p);
   }
+  // A plan of a further setup, or several: one plan in the part frame.
+  const bool setups = plan_paths.size() > 1 || (!setup_plans.empty() && setup_plans.front().setup &&
+                                                setup_plans.front().setup->index > 1);
+  if (setups)
+    plan = merge_setup_plans(setup_plans, plan_paths);
+  else if (!setup_plans.empty())
+    plan = setup_plans.front();
   std::optional<RegionMap> regions;
   if (regions_path) {
     regions = read_regions(*regions_path);
@@ -192,7 +211,14 @@ int run_compare(Args& args) {
   if (points) read.kind = parse_probe_point_kind(*points, "--points");
   read.probe_diameter = probe_diameter ? *probe_diameter : plan ? plan->probe.diameter : 0.0;
   std::vector<MeasurementSet> sets;
-  for (const std::string& m : measurement_files) sets.push_back(read_measurements(m, read));
+  for (std::size_t k = 0; k < measurement_files.size(); ++k) {
+    sets.push_back(read_measurements(measurement_files[k], read));
+    // Measured in setup k's frame (its program's alignment): to the part frame.
+    if (setups) {
+      const InspectionPlan& own = setup_plans[plan_paths.size() > 1 ? k : 0];
+      sets.back() = measurements_in_part_frame(std::move(sets.back()), own.setup);
+    }
+  }
   MergedMeasurements merged = merge_measurements(sets);
   if (measurement_files.size() > 1)  // recorded with several files only (comparison_file.hpp)
     for (const std::string& m : measurement_files) merged.sha256.push_back(digest_file("measurements", m).sha256);
@@ -215,7 +241,7 @@ int run_compare(Args& args) {
   ComparisonSources sources;
   sources.part = part_path;
   sources.measurements = measurements;
-  sources.plan = plan_path.value_or("");
+  for (const std::string& p : plan_paths) sources.plan += (sources.plan.empty() ? "" : " + ") + p;
   sources.regions = regions_path.value_or("");
   sources.prediction = prediction_path.value_or("");
   sources.measurement_units = read.units;
@@ -224,7 +250,7 @@ int run_compare(Args& args) {
   if (qif_path) {  // from comparison.json's own content, so the two files say the same
     std::vector<InputDigest> inputs = {digest_file("part", part_path)};
     for (const std::string& m : measurement_files) inputs.push_back(digest_file("measurements", m));
-    if (plan_path) inputs.push_back(digest_file("plan", *plan_path));
+    for (const std::string& p : plan_paths) inputs.push_back(digest_file("plan", p));
     if (regions_path) inputs.push_back(digest_file("regions", *regions_path));
     if (prediction_path) inputs.push_back(digest_file("prediction", *prediction_path));
     outputs.file(*qif_path, comparison_to_qif(parse_comparison(json, out), inputs, std::nullopt));
@@ -327,6 +353,8 @@ const Command kCompareCommand = {
     "                       the order given, a later point replaces an earlier one\n"
     "                       with the same id (each file must carry ids)\n"
     "  --plan FILE          plan.json: ids give the coarse start, its probe the diameter\n"
+    "                       (repeated, one per --measurements file in the same order:\n"
+    "                       the setups of furrow plan --setups, compared as one part)\n"
     "  --rps FILE           reference point system for --align rps (docs/formats.md\n"
     "                       \"RPS file\"): named points, each fixing the part along\n"
     "                       the axes it declares\n"

@@ -61,10 +61,13 @@ void print_coverage(const PlanCoverage& c, bool allowed) {
 }
 
 void print_summary(std::ostream& out, const PlanResult& r, const std::string& folder) {
-  out << "plan: " << r.plan.points.size() << " points in " << r.regions.size() << " regions, border "
+  std::size_t planned_here = 0;  // regions left to another setup are not this plan's
+  for (const RegionPlanSummary& s : r.regions) planned_here += !s.elsewhere;
+  out << "plan: " << r.plan.points.size() << " points in " << planned_here << " regions, border "
       << fixed(r.border, 2) << " mm, probe " << r.plan.probe.name << " diameter " << fixed(r.plan.probe.diameter, 3)
       << " mm\n";
   for (const RegionPlanSummary& s : r.regions) {
+    if (s.elsewhere) continue;
     char line[200];
     std::snprintf(line, sizeof line, "  region %3d  %-8s %10.1f mm^2  allocated %5d  planned %5d  moved %4d  dropped %4d%s\n",
                   s.region, to_string(s.curvature_class), s.area, s.allocated, s.planned, s.moved, s.dropped,
@@ -172,14 +175,47 @@ int run_plan(Args& args) {
   if (show && shown) std::cerr << "\n";
 
   const std::string staging = outputs.folder(out);
-  for (const FolderFile& f : stage.files) write_file_atomically(staging + "/" + f.path, f.bytes);
-  write_file_atomically(staging + "/plan.qif", plan_to_qif(parse_plan(stage.plan_json, out + "/plan.json"),
-                                                           part_path, zone.width, zone.outside));
+  for (const FolderFile& f : stage.files) {
+    std::filesystem::create_directories(std::filesystem::path(staging + "/" + f.path).parent_path());
+    write_file_atomically(staging + "/" + f.path, f.bytes);
+  }
+  if (stage.setups.empty()) {
+    write_file_atomically(staging + "/plan.qif", plan_to_qif(parse_plan(stage.plan_json, out + "/plan.json"),
+                                                             part_path, zone.width, zone.outside));
+  } else {
+    for (const SetupPlan& s : stage.setups)
+      write_file_atomically(staging + "/" + s.folder + "/plan.qif",
+                            plan_to_qif(parse_plan(s.plan_json, out + "/" + s.folder + "/plan.json"), part_path,
+                                        zone.width, zone.outside));
+  }
   outputs.publish();
-  const PlanResult& result = stage.result;
-  print_summary(std::cout, result, out);
-  print_coverage(stage.coverage, allow_uncovered);
-  std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, coverage.png, report.json, plan.qif}\n";
+  if (stage.setups.empty()) {
+    print_summary(std::cout, stage.result, out);
+    print_coverage(stage.coverage, allow_uncovered);
+    std::cout << "wrote " << out << "/{plan.json, plan.csv, " << name << ".dmi, " << name << ".prg, plan.png, coverage.png, report.json, plan.qif}\n";
+  } else {
+    for (const SetupPlan& s : stage.setups) {
+      std::cout << "setup " << s.setup.index << ": ";
+      if (s.setup.resting_face)
+        std::cout << "the part resting on face " << *s.setup.resting_face << " (\""
+                  << part.faces[static_cast<std::size_t>(*s.setup.resting_face)].name() << "\")"
+                  << (s.setup.named ? ", named" : ", chosen for " + fixed(s.estimated_area, 0) + " mm^2 it reaches")
+                  << "; plans the regions still short\n";
+      else
+        std::cout << "the part as imported\n";
+      print_summary(std::cout, s.result, out + "/" + s.folder);
+      const CoverageArea& a = s.coverage.area;
+      std::cout << "setup " << s.setup.index << " coverage: " << s.coverage.regions_covered << " of "
+                << s.coverage.regions.size() << " regions planned here hold their minimum; "
+                << fixed(a.covered, 0) << " of " << fixed(a.total, 0) << " mm^2 covered\n";
+    }
+    if (!stage.note.empty()) std::cout << "note: " << stage.note << "\n";
+    std::cout << "combined over " << stage.setups.size() << " setups:\n";
+    print_coverage(stage.coverage, allow_uncovered);
+    std::cout << "wrote " << out << "/{report.json, coverage.png";
+    for (const SetupPlan& s : stage.setups) std::cout << ", " << s.folder << "/";
+    std::cout << "} (each setup: plan.json, plan.csv, " << name << "_S<k>.dmi, .prg, plan.png, coverage.png, report.json, plan.qif)\n";
+  }
   return stage.coverage.complete() || allow_uncovered ? kExitOk : kExitFail;
 }
 

@@ -26,7 +26,7 @@ struct MeasurementReplacement {
   std::string id;
   std::size_t file = 0;      // index of the file whose point was replaced
   std::size_t by_file = 0;   // index of the later file that replaced it
-  Eigen::Vector3d was = Eigen::Vector3d::Zero();  // the replaced coordinates [mm], CMM frame
+  Eigen::Vector3d was = Eigen::Vector3d::Zero();  // the replaced coordinates [mm], the sets' frame (CMM; part frame for setups)
 };
 
 struct MergedMeasurements {

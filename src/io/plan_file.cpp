@@ -250,6 +250,25 @@ InspectionPlan parse_plan(const std::string& text, const std::string& name) {
       plan.tips.push_back(tip);
     }
   }
+  if (root.has("setup")) {
+    const JsonCursor st = root.at("setup");
+    st.only({"index", "resting_face", "part_to_setup"}, "docs/formats.md \"Plan\"");
+    PlanSetupRecord r;
+    r.index = st.integer("index", 1);
+    if (st.has("resting_face")) r.resting_face = static_cast<std::size_t>(st.integer("resting_face", 0));
+    const JsonCursor motion = st.at("part_to_setup");
+    motion.only({"rotation", "translation"}, "docs/formats.md \"Plan\"");
+    const json& rows = motion.array("rotation");
+    if (rows.size() != 3) throw InputError(motion.path("rotation") + ": needs 3 rows of 3 numbers");
+    for (std::size_t i = 0; i < 3; ++i)
+      r.rotation.row(static_cast<Eigen::Index>(i)) =
+          jf::vector3(rows[i], jf::child(motion.path("rotation"), i)).transpose();
+    if (!((r.rotation.transpose() * r.rotation - Eigen::Matrix3d::Identity()).norm() < 1e-9) ||
+        !(r.rotation.determinant() > 0))
+      throw InputError(motion.path("rotation") + ": not a rotation (orthonormal rows, determinant +1)");
+    r.translation = scale * motion.vector3("translation");
+    plan.setup = r;
+  }
   if (root.has("alignment")) {
     const JsonCursor alignment = root.at("alignment");
     plan.alignment = parse_alignment(alignment, scale);
@@ -278,6 +297,15 @@ std::string plan_to_json_text(const InspectionPlan& plan) {
       list.push_back({{"a", jf::finite(t.angles.a, "tip a")}, {"b", jf::finite(t.angles.b, "tip b")},
                       {"qualified", t.qualified}});
     doc["tips"] = std::move(list);
+  }
+  if (plan.setup) {
+    json st;
+    st["index"] = plan.setup->index;
+    if (plan.setup->resting_face) st["resting_face"] = *plan.setup->resting_face;
+    json rows = json::array();
+    for (Eigen::Index i = 0; i < 3; ++i) rows.push_back(jf::vector_json(Eigen::Vector3d(plan.setup->rotation.row(i).transpose())));
+    st["part_to_setup"] = {{"rotation", std::move(rows)}, {"translation", jf::vector_json(plan.setup->translation)}};
+    doc["setup"] = std::move(st);
   }
   if (!plan.uncovered_regions.empty()) {
     json list = json::array();
@@ -337,7 +365,8 @@ void check_plan_against_part(const InspectionPlan& plan, const Part& part, const
     if (face.name() != p.face)
       throw InputError(where + ": face " + quote_field(p.face) + " but face " +
                        std::to_string(p.face_index) + " of the part is " + quote_field(face.name()));
-    const double off = (face.surface().point(p.uv.x(), p.uv.y()) - p.xyz).norm();
+    const Eigen::Vector3d xyz = plan.setup ? plan.setup->to_part(p.xyz) : p.xyz;
+    const double off = (face.surface().point(p.uv.x(), p.uv.y()) - xyz).norm();
     if (!(off <= tolerance))
       throw InputError(where + ": xyz is " + std::to_string(off) +
                        " mm from the face point at its (u, v); the plan was made for another part");

@@ -40,6 +40,19 @@ struct UncoveredRegion {
   std::string reason;
 };
 
+// The setup a plan is for (docs/cmm.md "Setups"): setup 1 is the part as
+// imported; in a further one the part rests on `resting_face`, and every
+// position in the plan (points, approach, retract, alignment) and in its
+// CMM programs is in the setup frame: x_setup = rotation x_part + translation.
+struct PlanSetupRecord {
+  int index = 1;                           // >= 1
+  std::optional<std::size_t> resting_face;  // face index; none in setup 1
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // proper rotation
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();   // [mm]
+  // A part-frame position of a setup-frame one.
+  Eigen::Vector3d to_part(const Eigen::Vector3d& x) const { return rotation.transpose() * (x - translation); }
+};
+
 struct InspectionPlan {
   std::string part;  // part file the plan was made for (informative, may be empty)
   ProbeDefinition probe;
@@ -52,6 +65,8 @@ struct InspectionPlan {
   // With an indexable head: the tips in the order the program selects them
   // (optional in plan.json; empty for the vertical stylus).
   std::vector<PlanTip> tips;
+  // Plans of `furrow plan --setups`: which setup (optional in plan.json).
+  std::optional<PlanSetupRecord> setup;
 
   // Index of the point with that id, or nullopt (linear search).
   std::optional<std::size_t> find(const std::string& id) const;
@@ -68,7 +83,8 @@ void write_plan(const InspectionPlan& plan, const std::string& path);
 // Throws InputError (naming `name` and the point) when a point's face index
 // is out of range or its face name differs from the part's face, or when its
 // xyz is farther than `tolerance` [mm] from the face point at (u,v): a plan
-// made for another part, or an edited one.
+// made for another part, or an edited one. A plan of a further setup is
+// checked with its positions taken back to the part frame.
 void check_plan_against_part(const InspectionPlan& plan, const Part& part, const std::string& name,
                              double tolerance = 1e-6);
 

@@ -121,6 +121,10 @@ void read_plan(const JsonCursor& p, Job& job, const std::string& folder) {
   with_context(p.where(), [&] { validate(o); });
   if (needs_risk(o.strategy) && !job.plan_with_prediction)
     throw InputError(p.path("strategy") + ": the risk strategy needs the prediction (\"prediction\": true)");
+  // A job compares one plan folder's measurements (docs/cmm.md "Setups").
+  if (setup_count(o) > 1)
+    throw InputError(p.path(p.find("setups") ? "setups" : "setup_faces") +
+                     ": a job plans and compares one setup; plan several with furrow plan --setups");
 }
 
 void read_simulation(const JsonCursor& s, Job& job) {

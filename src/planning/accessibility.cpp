@@ -15,6 +15,7 @@ const char* to_string(AccessProblem problem) {
     case AccessProblem::vertical_access: return "no vertical access from the clearance plane";
     case AccessProblem::probe_body: return "probe body or extension would hit the part";
     case AccessProblem::head: return "probe head would hit the part";
+    case AccessProblem::fixture: return "probe would go below the fixture plane the part rests on";
   }
   return "?";
 }
@@ -173,6 +174,35 @@ AccessResult assembly_check(const ClosestPointFinder& finder, const Eigen::Vecto
   return result;
 }
 
+// Check 6, the ball: at the contact, approach and retract points its lowest
+// point stays above the fixture plane.
+AccessResult fixture_ball_check(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe,
+                                const AccessOptions& options, AccessResult result) {
+  if (!options.fixture_z) return result;
+  const double floor = *options.fixture_z - options.contact_tolerance;
+  for (const Eigen::Vector3d& q :
+       {probe_centre(p, n, probe), approach_point(p, n, probe, options), retract_point(p, n, probe, options)})
+    if (q.z() - probe.ball_radius < floor)
+      return failure(result, AccessProblem::fixture, {0, q, q.z() - *options.fixture_z, false});
+  return result;
+}
+
+// Check 6, the assembly: the head's capsules at the same three places
+// (the vertical stylus's shaft rises from the ball: the ball is its lowest part).
+AccessResult fixture_assembly_check(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe,
+                                    const AccessOptions& options, AccessResult result) {
+  if (!options.fixture_z) return result;
+  const double floor = *options.fixture_z - options.contact_tolerance;
+  for (const Eigen::Vector3d& q :
+       {probe_centre(p, n, probe), approach_point(p, n, probe, options), retract_point(p, n, probe, options)})
+    for (const ProbeCapsule& k : probe_capsules(q, probe)) {
+      const Eigen::Vector3d& low = k.a.z() < k.b.z() ? k.a : k.b;
+      if (low.z() - k.radius < floor)
+        return failure(result, AccessProblem::fixture, {0, low, low.z() - *options.fixture_z, false});
+    }
+  return result;
+}
+
 AccessResult tilt_check(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe,
                         const AccessOptions& options) {
   AccessResult result;
@@ -193,12 +223,15 @@ AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3
   if (result = ball_checks(finder, p, n, probe, options, result); !result.ok()) return result;
   if (result = shaft_check(finder, p, n, probe, options, result); !result.ok()) return result;
   if (result = vertical_check(finder, p, n, probe, options, result); !result.ok()) return result;
+  if (result = fixture_ball_check(p, n, probe, options, result); !result.ok()) return result;
+  if (result = fixture_assembly_check(p, n, probe, options, result); !result.ok()) return result;
   return assembly_check(finder, p, n, probe, options, result);
 }
 
 AccessResult check_point_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                                 const ProbeGeometry& probe, const AccessOptions& options) {
   AccessResult result;
+  if (result = fixture_ball_check(p, n, probe, options, result); !result.ok()) return result;
   if (result = ball_checks(finder, p, n, probe, options, result); !result.ok()) return result;
   return vertical_check(finder, p, n, probe, options, result);
 }
@@ -207,6 +240,7 @@ AccessResult check_axis_access(const ClosestPointFinder& finder, const Eigen::Ve
                                const ProbeGeometry& probe, const AccessOptions& options) {
   AccessResult result = tilt_check(p, n, probe, options);
   if (!result.ok()) return result;
+  if (result = fixture_assembly_check(p, n, probe, options, result); !result.ok()) return result;
   if (result = shaft_check(finder, p, n, probe, options, result); !result.ok()) return result;
   return assembly_check(finder, p, n, probe, options, result);
 }

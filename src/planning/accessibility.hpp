@@ -21,7 +21,13 @@
 //   5. vertical access: the ball can come straight down from the clearance
 //      plane to the approach point and go straight up from the retract point
 //      (how the moves reach and leave every point, moves.hpp);
-//   6. with an indexable head only (`sections` not empty): the whole
+//   6. fixture (only when `fixture_z` is set: a further setup, the part
+//      resting on one of its faces on a fixture plane, docs/cmm.md
+//      "Setups"): the ball, at the contact and at the approach and retract
+//      points, and every capsule of a head's assembly there, stay above the
+//      plane. The touch is a straight move between those points and the
+//      vertical legs only rise, so their lowest points are these ends;
+//   7. with an indexable head only (`sections` not empty): the whole
 //      assembly - shaft, extension and probe body along the axis, the head's
 //      vertical housing above the centre of rotation, each a capsule (a
 //      cylinder with round ends, which contains the cylinder) - stays clear
@@ -81,9 +87,12 @@ struct AccessOptions {
   double contact_tolerance = 1e-6;
   double min_step = 0.01;  // smallest sphere-tracing step [mm]
   int max_steps = 20000;   // per segment; beyond it the segment counts as blocked
+  // The fixture plane the part rests on in a further setup [mm, z in the
+  // setup frame]; unset: none (the first setup, the part as imported).
+  std::optional<double> fixture_z;
 };
 
-enum class AccessProblem { none, tilt, ball, approach_path, stylus, vertical_access, probe_body, head };
+enum class AccessProblem { none, tilt, ball, approach_path, stylus, vertical_access, probe_body, head, fixture };
 const char* to_string(AccessProblem problem);
 
 struct AccessResult {
@@ -141,7 +150,7 @@ Eigen::Vector3d approach_point(const Eigen::Vector3d& p, const Eigen::Vector3d& 
 Eigen::Vector3d retract_point(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const ProbeGeometry& probe,
                               const AccessOptions& options);
 
-// Checks 1-6 in that order and returns the first failure.
+// Checks 1-7 in that order and returns the first failure.
 AccessResult check_access(const ClosestPointFinder& finder, const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                           const ProbeGeometry& probe, const AccessOptions& options);
 

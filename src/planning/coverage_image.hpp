@@ -27,4 +27,15 @@ Rgb coverage_colour(CoverageState state);
 std::vector<unsigned char> coverage_image_png(const Part& part, const RegionMap& map, const PlanResult& result,
                                               const PlanCoverage& coverage);
 
+// The colour of the regions covered in setup k (1, 2, ...).
+Rgb setup_colour(int setup);
+
+// The top-level coverage.png of a plan over several setups (docs/cmm.md
+// "Setups"): the part as imported, each covered region in the colour of the
+// setup that covers it (combine_coverage's `setup`), the others by state;
+// `points` are every setup's points taken back to the part frame.
+std::vector<unsigned char> setups_coverage_image_png(const Part& part, const RegionMap& map,
+                                                     const PlanCoverage& combined,
+                                                     const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace furrow

@@ -63,6 +63,23 @@ CoverageState shortfall_state(const RegionPlanSummary& s, int required, const st
   return CoverageState::reachable_unplanned;
 }
 
+void add_area(CoverageArea& a, const RegionCoverage& r) {
+  a.total += r.area;
+  switch (r.state) {
+    case CoverageState::covered: a.covered += r.area; break;
+    case CoverageState::reachable_unplanned: a.reachable_unplanned += r.area; break;
+    case CoverageState::unreachable_narrow: a.unreachable_narrow += r.area; break;
+    case CoverageState::unreachable_access: {
+      a.unreachable_access += r.area;
+      auto& list = a.by_access_problem;
+      auto it = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.first == r.access; });
+      if (it == list.end()) list.emplace_back(r.access, r.area);
+      else it->second += r.area;
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 const char* to_string(CoverageState state) {
@@ -79,6 +96,7 @@ PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
   PlanCoverage c;
   std::map<int, FaceCoverage> faces;
   for (const RegionPlanSummary& s : result.regions) {
+    if (s.elsewhere) continue;  // measured in another setup: counted there
     RegionCoverage r;
     r.region = s.region;
     r.face = s.face;
@@ -92,20 +110,7 @@ PlanCoverage plan_coverage(const PlanResult& result, int min_per_region) {
       r.reason = shortfall_reason(s, result.issues);
       r.state = shortfall_state(s, r.required, result.issues, r.access);
     }
-    c.area.total += s.area;
-    switch (r.state) {
-      case CoverageState::covered: c.area.covered += s.area; break;
-      case CoverageState::reachable_unplanned: c.area.reachable_unplanned += s.area; break;
-      case CoverageState::unreachable_narrow: c.area.unreachable_narrow += s.area; break;
-      case CoverageState::unreachable_access: {
-        c.area.unreachable_access += s.area;
-        auto& list = c.area.by_access_problem;
-        auto it = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.first == r.access; });
-        if (it == list.end()) list.emplace_back(r.access, s.area);
-        else it->second += s.area;
-        break;
-      }
-    }
+    add_area(c.area, r);
     FaceCoverage& f = faces[s.face];
     f.face = s.face;
     ++f.regions;
@@ -142,6 +147,42 @@ std::string PlanCoverage::describe_uncovered(std::size_t max_lines) const {
   if (short_regions.size() > max_lines)
     out += "  ... and " + std::to_string(short_regions.size() - max_lines) + " more (report.json \"coverage\")\n";
   return out;
+}
+
+PlanCoverage combine_coverage(const std::vector<PlanCoverage>& setups) {
+  PlanCoverage c;
+  std::map<int, RegionCoverage> latest;
+  for (std::size_t k = 0; k < setups.size(); ++k) {
+    for (RegionCoverage r : setups[k].regions) {
+      r.setup = static_cast<int>(k) + 1;
+      if (!r.reason.empty() && setups.size() > 1) r.reason = "setup " + std::to_string(k + 1) + ": " + r.reason;
+      latest[r.region] = std::move(r);
+    }
+    c.allocated += setups[k].allocated;
+    c.planned += setups[k].planned;
+    c.dropped += setups[k].dropped;
+  }
+  std::map<int, FaceCoverage> faces;
+  for (auto& [id, r] : latest) {
+    add_area(c.area, r);
+    c.regions_covered += r.covered;
+    FaceCoverage& f = faces[r.face];
+    f.face = r.face;
+    ++f.regions;
+    f.regions_covered += r.covered;
+    c.regions.push_back(std::move(r));
+  }
+  // Points per face over every setup.
+  for (const PlanCoverage& s : setups)
+    for (const FaceCoverage& g : s.faces) {
+      FaceCoverage& f = faces[g.face];
+      f.allocated += g.allocated;
+      f.planned += g.planned;
+      f.dropped += g.dropped;
+    }
+  for (auto& [face, f] : faces) c.faces.push_back(f);
+  std::sort(c.area.by_access_problem.begin(), c.area.by_access_problem.end());
+  return c;
 }
 
 }  // namespace furrow

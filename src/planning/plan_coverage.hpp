@@ -47,6 +47,7 @@ struct RegionCoverage {
   int dropped = 0;    // not reachable by the probe
   bool covered = true;
   std::string reason;  // why it is short, for people; "" when covered
+  int setup = 0;       // combine_coverage: the setup this state comes from (1, 2, ...); 0 otherwise
 };
 
 struct FaceCoverage {
@@ -77,7 +78,16 @@ struct PlanCoverage {
   std::string describe_uncovered(std::size_t max_lines = 10) const;
 };
 
-// `min_per_region` >= 0: the minimum the plan was made with.
+// `min_per_region` >= 0: the minimum the plan was made with. Regions the
+// plan leaves to another setup (RegionPlanSummary::elsewhere) are not in it.
 PlanCoverage plan_coverage(const PlanResult& result, int min_per_region);
+
+// The part's coverage over several setups (docs/cmm.md "Setups"), setup 1
+// first: each region with its state in the last setup that planned it (a
+// later setup plans only what the earlier ones left short), `setup` set
+// and, with more than one setup, its reason prefixed "setup k: "; areas
+// from those states, so each region's area counts once; point counts
+// summed over the setups.
+PlanCoverage combine_coverage(const std::vector<PlanCoverage>& setups);
 
 }  // namespace furrow

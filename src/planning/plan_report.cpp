@@ -7,6 +7,49 @@ namespace furrow {
 namespace jf = json_fields;
 using jf::json;
 
+json coverage_json(const PlanCoverage& coverage) {
+  json cov;
+  cov["complete"] = coverage.complete();
+  cov["regions"] = coverage.regions.size();
+  cov["regions_covered"] = coverage.regions_covered;
+  cov["allocated"] = coverage.allocated;
+  cov["planned"] = coverage.planned;
+  cov["dropped"] = coverage.dropped;
+  const CoverageArea& a = coverage.area;
+  json by_problem = json::object();
+  for (const auto& [problem, area] : a.by_access_problem) by_problem[to_string(problem)] = area;
+  cov["area"] = {{"total", a.total},
+                 {"covered", a.covered},
+                 {"reachable_unplanned", a.reachable_unplanned},
+                 {"unreachable_narrow", a.unreachable_narrow},
+                 {"unreachable_access", a.unreachable_access},
+                 {"unreachable_by_access_problem", std::move(by_problem)}};
+  json faces = json::array();
+  for (const FaceCoverage& f : coverage.faces)
+    faces.push_back({{"face", f.face},
+                     {"regions", f.regions},
+                     {"regions_covered", f.regions_covered},
+                     {"allocated", f.allocated},
+                     {"planned", f.planned},
+                     {"dropped", f.dropped}});
+  cov["faces"] = std::move(faces);
+  json short_regions = json::array();
+  for (const RegionCoverage& c : coverage.uncovered()) {
+    short_regions.push_back({{"region", c.region},
+                             {"face", c.face},
+                             {"required", c.required},
+                             {"allocated", c.allocated},
+                             {"planned", c.planned},
+                             {"dropped", c.dropped},
+                             {"area", c.area},
+                             {"state", to_string(c.state)},
+                             {"reason", c.reason}});
+    if (c.setup > 0) short_regions.back()["setup"] = c.setup;
+  }
+  cov["uncovered_regions"] = std::move(short_regions);
+  return cov;
+}
+
 std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, const PlannerOptions& o, const std::string& part_path,
                              const std::string& regions_path, const std::string& prediction_path) {
   json doc;
@@ -90,6 +133,7 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
   doc["allocation"] = std::move(alloc);
   json regions = json::array();
   for (const RegionPlanSummary& s : r.regions) {
+    if (s.elsewhere) continue;  // measured in another setup, reported there
     regions.push_back({{"region", s.region},
                        {"face", s.face},
                        {"class", to_string(s.curvature_class)},
@@ -107,44 +151,7 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
                        {"planned", s.planned}});
   }
   doc["regions"] = std::move(regions);
-  json cov;
-  cov["complete"] = coverage.complete();
-  cov["regions"] = coverage.regions.size();
-  cov["regions_covered"] = coverage.regions_covered;
-  cov["allocated"] = coverage.allocated;
-  cov["planned"] = coverage.planned;
-  cov["dropped"] = coverage.dropped;
-  const CoverageArea& a = coverage.area;
-  json by_problem = json::object();
-  for (const auto& [problem, area] : a.by_access_problem) by_problem[to_string(problem)] = area;
-  cov["area"] = {{"total", a.total},
-                 {"covered", a.covered},
-                 {"reachable_unplanned", a.reachable_unplanned},
-                 {"unreachable_narrow", a.unreachable_narrow},
-                 {"unreachable_access", a.unreachable_access},
-                 {"unreachable_by_access_problem", std::move(by_problem)}};
-  json faces = json::array();
-  for (const FaceCoverage& f : coverage.faces)
-    faces.push_back({{"face", f.face},
-                     {"regions", f.regions},
-                     {"regions_covered", f.regions_covered},
-                     {"allocated", f.allocated},
-                     {"planned", f.planned},
-                     {"dropped", f.dropped}});
-  cov["faces"] = std::move(faces);
-  json short_regions = json::array();
-  for (const RegionCoverage& c : coverage.uncovered())
-    short_regions.push_back({{"region", c.region},
-                             {"face", c.face},
-                             {"required", c.required},
-                             {"allocated", c.allocated},
-                             {"planned", c.planned},
-                             {"dropped", c.dropped},
-                             {"area", c.area},
-                             {"state", to_string(c.state)},
-                             {"reason", c.reason}});
-  cov["uncovered_regions"] = std::move(short_regions);
-  doc["coverage"] = std::move(cov);
+  doc["coverage"] = coverage_json(coverage);
   json issues = json::array();
   for (const PlanIssue& i : r.issues) {
     json ji;
@@ -198,6 +205,46 @@ std::string plan_report_json(const PlanResult& r, const PlanCoverage& coverage, 
                   {"straight_moves", r.cycle.straight_moves},
                   {"clearance_plane_moves", r.cycle.plane_moves},
                   {"seconds", jf::finite(r.cycle.seconds, "cycle time")}};
+  return jf::to_text(doc);
+}
+
+std::string setups_report_json(const std::vector<SetupSummary>& setups, const PlanCoverage& combined,
+                               const std::string& part_path, const std::string& regions_path, const std::string& note) {
+  json doc;
+  doc["format"] = "furrow-plan-setups-report";
+  doc["version"] = 1;
+  doc["units"] = "mm";
+  doc["part"] = part_path;
+  doc["regions_file"] = regions_path;
+  json list = json::array();
+  for (const SetupSummary& s : setups) {
+    json js;
+    js["index"] = s.index;
+    js["folder"] = s.folder;
+    if (s.resting_face) {
+      js["resting_face"] = *s.resting_face;
+      js["resting_face_name"] = s.resting_face_name;
+      js["resting_face_named"] = s.named;
+      js["estimated_reachable_area_mm2"] = jf::finite(s.estimated_area, "estimated area");
+    }
+    json rows = json::array();
+    for (Eigen::Index i = 0; i < 3; ++i) rows.push_back(jf::vector_json(Eigen::Vector3d(s.to_setup.linear().row(i).transpose())));
+    js["part_to_setup"] = {{"rotation", std::move(rows)}, {"translation", jf::vector_json(Eigen::Vector3d(s.to_setup.translation()))}};
+    js["points"] = s.points;
+    json tips = json::array();
+    for (const PlanTip& t : s.tips) tips.push_back(tip_name(t.angles));
+    js["tips"] = std::move(tips);
+    js["coverage"] = coverage_json(*s.coverage);
+    list.push_back(std::move(js));
+  }
+  doc["setups"] = std::move(list);
+  json c = coverage_json(combined);
+  json covered_by = json::array();
+  for (const RegionCoverage& r : combined.regions)
+    covered_by.push_back({{"region", r.region}, {"setup", r.setup}, {"state", to_string(r.state)}});
+  c["region_setups"] = std::move(covered_by);
+  doc["combined"] = std::move(c);
+  if (!note.empty()) doc["note"] = note;
   return jf::to_text(doc);
 }
 

@@ -27,6 +27,8 @@ std::string at_text(const Eigen::Vector3d& p) { return "(" + mm(p.x()) + ", " + 
 std::string problem_text(const AccessResult& a, const ProbeGeometry& probe) {
   std::string s = to_string(a.problem);
   if (a.problem == AccessProblem::tilt) return s + " (" + mm(degrees(a.tilt)) + " degrees)";
+  if (a.problem == AccessProblem::fixture)
+    return s + " (at " + at_text(a.where) + ", " + mm(a.distance) + " mm above the plane)";
   const double allowed = a.problem == AccessProblem::stylus ? probe.stylus_radius : probe.ball_radius;
   if (a.step_cap) return s + " (the clearance march hit its step cap near " + at_text(a.where) + ")";
   // The head's assembly: capsules of several radii, swept (accessibility.hpp).
@@ -168,8 +170,13 @@ void measure_regions(PlanState& s) {
   RegionDomainOptions domain_options = options.domain;
   domain_options.border = result.border;
   const std::size_t region_count = map.regions.size();
+  // A region measured in another setup is never sampled: its domain only
+  // holds its place, on the coarsest grid.
+  RegionDomainOptions elsewhere_options = domain_options;
+  elsewhere_options.min_cells = elsewhere_options.max_cells = 1;
   for (std::size_t r = 0; r < region_count; ++r) {
-    domains.emplace_back(part, map, static_cast<int>(r), domain_options, risk);
+    const bool elsewhere = r < options.planned_elsewhere.size() && options.planned_elsewhere[r];
+    domains.emplace_back(part, map, static_cast<int>(r), elsewhere ? elsewhere_options : domain_options, risk);
     s.report("regions", r + 1, region_count);
   }
   demands.assign(region_count, RegionDemand{});
@@ -184,12 +191,14 @@ void measure_regions(PlanState& s) {
     summary.area = region.area;
     summary.curvature_spread = s.curvature_spread;
     summary.mean_risk = s.mean_risk;
-    summary.samplable = region.area > 0 && samplable(domains[r]);
+    // Measured in another setup (docs/cmm.md "Setups"): no points here, no issue.
+    summary.elsewhere = r < options.planned_elsewhere.size() && options.planned_elsewhere[r];
+    summary.samplable = !summary.elsewhere && region.area > 0 && samplable(domains[r]);
     PlanIssue issue;
     issue.kind = PlanIssue::Kind::region_skipped;
     issue.region = region.id;
     issue.reason = "no point of the region is " + mm(result.border) + " mm from its edges (border clearance)";
-    if (!summary.samplable && region.area > 0 && !options.border) {
+    if (!summary.samplable && !summary.elsewhere && region.area > 0 && !options.border) {
       // Too narrow for the default border: the ball-contact rule
       // (docs/cmm.md "Narrow regions").
       const double radius = result.probe.ball_radius;
@@ -211,7 +220,7 @@ void measure_regions(PlanState& s) {
     demands[r] = {region.area, s.curvature_spread, s.mean_risk, 0, summary.samplable};
     kappa_area += s.mean_kappa * s.area;
     area_all += s.area;
-    if (!summary.samplable) result.issues.push_back(issue);
+    if (!summary.samplable && !summary.elsewhere) result.issues.push_back(issue);
   }
   s.kappa_ref = area_all > 0 ? kappa_area / area_all : 0;
 

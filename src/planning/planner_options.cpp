@@ -2,6 +2,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <algorithm>
 
 #include "base/number_text.hpp"
 #include "base/error.hpp"
@@ -121,6 +124,47 @@ void validate(const PlannerOptions& o) {
   if (o.tip_cover.exact_max_pairs < 0 || o.tip_cover.exact_max_nodes < 0)
     throw InputError("tip cover limits must not be negative");
   if (o.relocation_rings < 1 || o.relocation_directions < 1) throw InputError("relocation rings and directions must be >= 1");
+  if (o.setups < 1 || o.setups > kMaxSetups)
+    throw InputError("--setups must be from 1 to " + std::to_string(kMaxSetups) + ", got " + std::to_string(o.setups));
+  if (!o.setup_faces.empty() && o.setups != 1 && o.setups < 1 + static_cast<int>(o.setup_faces.size()))
+    throw InputError("--setup-faces names " + std::to_string(o.setup_faces.size()) + " faces for setups 2 on, but --setups is " +
+                     std::to_string(o.setups) + ": raise --setups or leave it out");
+  if (static_cast<int>(o.setup_faces.size()) >= kMaxSetups)
+    throw InputError("--setup-faces: at most " + std::to_string(kMaxSetups - 1) + " faces (setups 2 to " +
+                     std::to_string(kMaxSetups) + ")");
+}
+
+int setup_count(const PlannerOptions& o) {
+  return std::max(o.setups, 1 + static_cast<int>(o.setup_faces.size()));
+}
+
+std::vector<int> parse_face_list(const std::string& text, const std::string& where) {
+  std::vector<int> out;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    std::size_t used = 0;
+    long value = -1;
+    try {
+      value = std::stol(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size() || value < 0 || value > std::numeric_limits<int>::max())
+      throw InputError(where + ": \"" + item + "\" is not a face index (face indices from 0, comma-separated: 3,7)");
+    for (int f : out)
+      if (f == value) throw InputError(where + ": face " + item + " is named twice");
+    out.push_back(static_cast<int>(value));
+    at = comma + 1;
+  }
+  return out;
+}
+
+std::string face_list_text(const std::vector<int>& faces) {
+  std::string out;
+  for (int f : faces) out += (out.empty() ? "" : ",") + std::to_string(f);
+  return out;
 }
 
 }  // namespace furrow

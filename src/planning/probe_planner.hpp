@@ -110,6 +110,15 @@ struct PlannerOptions {
   // orientations (then the head file's qualified list may be empty).
   TipChoice tips = TipChoice::qualified;
   TipCoverOptions tip_cover;       // limits of the exact tip choice
+  // Setups (stage/plan_setups.hpp, docs/cmm.md "Setups"): how many, and the
+  // faces (part face indices) the part rests on in setups 2, 3, ...; empty:
+  // chosen among the largest stable planar faces. Read by the plan stage;
+  // plan_probe_points plans one setup.
+  int setups = 1;
+  std::vector<int> setup_faces;
+  // Per region id: measured in another setup, so left out of this one (no
+  // points, not in its coverage). Empty: every region is planned.
+  std::vector<char> planned_elsewhere;
 };
 
 // Plans with `head`: also sets the ball, stem and stylus length from it.
@@ -121,6 +130,15 @@ ProbeGeometry planner_probe(const PlannerOptions& options);
 
 // Throws InputError naming the option for an invalid value.
 void validate(const PlannerOptions& options);
+
+// Setups: at most this many (the six faces of a box).
+constexpr int kMaxSetups = 6;
+// The setups a plan makes: --setups, raised to hold the named faces.
+int setup_count(const PlannerOptions& options);
+// "3,7" -> {3, 7}; throws InputError naming `where` for anything else (a
+// negative or repeated index, an empty item).
+std::vector<int> parse_face_list(const std::string& text, const std::string& where);
+std::string face_list_text(const std::vector<int>& faces);
 
 // Resolved defaults.
 double border_clearance(const PlannerOptions& options);
@@ -136,6 +154,7 @@ struct RegionPlanSummary {
   double weight = 0;
   bool samplable = true;
   bool contact_rule = false;     // too narrow for the border: points by the ball-contact rule
+  bool elsewhere = false;        // measured in another setup (PlannerOptions::planned_elsewhere): not planned
   int allocated = 0;             // by the allocation rule
   int gouge_points = 0;          // of which reserved for gouge sites
   int sampled = 0;               // admissible points found

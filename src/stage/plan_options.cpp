@@ -112,6 +112,20 @@ OptionTable<PlannerOptions> make_table() {
       [](const DatumChoice& d) { return to_string(d); });
   datums.example = "top,left,front";
   t.push_back(datums);
+  t.push_back(integer_option<O>(
+      "setups", "N",
+      "setups: what the part as imported leaves unmeasured is planned with the part resting on another stable "
+      "face, one folder per setup (docs/cmm.md \"Setups\"); furrow plan only, a job refuses more than one",
+      [](auto& o) -> auto& { return o.setups; }, 1));
+  OptionSpec<O> faces = written_as(
+      parsed_option<O>("setup_faces", "F1,F2",
+                       "face indices the part rests on in setups 2, 3, ... (planar faces); unnamed setups take the "
+                       "stable planar face that reaches the most unmeasured area",
+                       [](auto& o) -> auto& { return o.setup_faces; }, parse_face_list, face_list_text),
+      [](const O& o) { return o.setup_faces.empty() ? json(nullptr) : json(face_list_text(o.setup_faces)); },
+      "chosen by the planner");
+  faces.example = "3,7";
+  t.push_back(faces);
   return t;
 }
 

@@ -57,6 +57,20 @@ inline Part undercut_part(double height, double width, double top_to, double lea
   return part;
 }
 
+// A box [0, x] x [0, y] x [0, z] of six planes, normals outward. Faces:
+// 0 top (+z), 1 bottom (-z), 2 front (-y), 3 back (+y), 4 left (-x),
+// 5 right (+x) (test_setups.cpp, tests/cli/test_cli_plan_setups.cpp).
+inline Part box_part(double x, double y, double z) {
+  Part part;
+  part.faces.emplace_back("top", make_plane({0, 0, z}, {x, 0, 0}, {0, y, 0}));
+  part.faces.emplace_back("bottom", make_plane({0, 0, 0}, {0, y, 0}, {x, 0, 0}));
+  part.faces.emplace_back("front", make_plane({0, 0, 0}, {x, 0, 0}, {0, 0, z}));
+  part.faces.emplace_back("back", make_plane({0, y, 0}, {0, 0, z}, {x, 0, 0}));
+  part.faces.emplace_back("left", make_plane({0, 0, 0}, {0, 0, z}, {0, y, 0}));
+  part.faces.emplace_back("right", make_plane({x, 0, 0}, {0, y, 0}, {0, 0, z}));
+  return part;
+}
+
 inline Part mould() { return read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json"); }
 
 // A flat floor z = 0 over x in [-10, 10], y in [0, 20], cut by a groove of
