@@ -210,12 +210,15 @@ SimulatedScan simulate_scan(const Part& part, const ScannerModel& m) {
                           k01 = k00 + n.nu + 1, k11 = k01 + 1;
         const Eigen::Vector2d uv00(n.u[i], n.v[j]), uv10(n.u[i + 1], n.v[j]), uv01(n.u[i], n.v[j + 1]),
             uv11(n.u[i + 1], n.v[j + 1]);
-        if (n.kept[k00] && n.kept[k10] && n.kept[k11]) {
+        // A triangle with any corner on the face occludes: dropping the
+        // cells the trim cuts would open gaps along every trimmed edge that
+        // rays slip through to the faces behind.
+        if (n.kept[k00] || n.kept[k10] || n.kept[k11]) {
           const Eigen::Vector3d p[3] = {n.p[k00], n.p[k10], n.p[k11]};
           const Eigen::Vector2d uv[3] = {uv00, uv10, uv11};
           rasterize(r, static_cast<int>(f), p, uv, hits);
         }
-        if (n.kept[k00] && n.kept[k11] && n.kept[k01]) {
+        if (n.kept[k00] || n.kept[k11] || n.kept[k01]) {
           const Eigen::Vector3d p[3] = {n.p[k00], n.p[k11], n.p[k01]};
           const Eigen::Vector2d uv[3] = {uv00, uv11, uv01};
           rasterize(r, static_cast<int>(f), p, uv, hits);

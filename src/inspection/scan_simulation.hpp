@@ -15,7 +15,8 @@
 // - Exact points: each ray's point is solved on the NURBS face itself
 //   (Newton on S(u, v) = ray, at most `max_newton` steps to `newton_tolerance`
 //   mm), from the face and (u, v) of the nearest triangle of a tessellation,
-//   which only decides what the ray sees first. Rays whose solution does not
+//   which only decides what the ray sees first (a cell the trim cuts is
+//   kept whole, so no ray slips between the faces along a trimmed edge). Rays whose solution does not
 //   converge, falls outside the face's trim, lands where the face's
 //   parametrisation has no normal (a pole: a ray exactly through it), or
 //   meets the surface from behind are counted and give no point.
