@@ -28,6 +28,7 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                           {"normal_neighbours", o.normal_neighbours},
                           {"local_origin", jf::vector_json(c.pre.origin)},
                           {"local_plane_sigma", jf::finite(c.pre.local_plane_sigma, "local_plane_sigma")},
+                          {"statistical_rule", c.pre.statistical_count},
                           {"normals", c.normals}};
   doc["points"] = {{"read", c.read},
                    {"not_finite", c.not_finite},

@@ -16,14 +16,14 @@ OptionTable<ScanPreprocessOptions> make_table() {
   t.push_back(integer_option<O>("spray_neighbours", "K", "neighbours of the statistical spray rule",
                                 [](auto& o) -> auto& { return o.outlier_neighbours; }, 2));
   t.push_back(number_option<O>("spray_far_sigmas", "K",
-                               "standard deviations of the mean neighbour distance above its mean that make a "
-                               "point spray",
+                               "standard deviations of the mean neighbour distance above its mean at which the "
+                               "statistical rule fires (it names spray far; alone it flags nothing)",
                                [](auto& o) -> auto& { return o.outlier_sigmas; }));
   t.push_back(number_option<O>("spray_near_sigmas", "K",
-                               "robust standard deviations off the plane of its neighbours that make a point spray",
+                               "robust standard deviations off the quadric surface of its neighbours that make a point spray",
                                [](auto& o) -> auto& { return o.spray_sigmas; }));
   t.push_back(integer_option<O>("normal_neighbours", "K",
-                                "neighbours of a point's local plane (normals and the near-spray rule)",
+                                "neighbours of a point's local surface (normals and the spray rule)",
                                 [](auto& o) -> auto& { return o.normal_neighbours; }, 3));
   return t;
 }

@@ -7,26 +7,35 @@
 //    the centroid of a part-sized cloud it is below 0.01 um, so nothing
 //    below is lost to floats. The file's doubles stay in ScanCloud and are
 //    what the deviations are computed from.
-// 2. spray, by two rules, flagged and never dropped (the comparison counts
-//    each point and writes it with its flag):
-//    a. far spray: the rule of pcl::StatisticalOutlierRemoval, a point
-//       whose mean distance to its `outlier_neighbours` nearest neighbours
-//       exceeds the cloud's mean of that figure by more than
-//       `outlier_sigmas` standard deviations (computed as the class computes
-//       it, with PCL's search, in one parallel pass with rule b: the class
-//       itself searches serially);
-//    b. near spray: the statistical rule cannot see a point 0.3 mm off a
-//       surface sampled 0.3 mm apart (its neighbours are nearly as near as
-//       a good point's: measured, a third of such spray passes at any
-//       setting that keeps 99 % of the good points), so every remaining
-//       point is also compared with the plane of its `normal_neighbours`
-//       nearest neighbours (PCL's covariance and eigen solver; neighbours
-//       more than 3 times the median off that plane dropped and the plane
-//       fitted again, so a spray point among them does not tilt it): a
-//       point farther from it than `spray_sigmas` robust standard deviations
-//       (1.4826 x the median of that distance over the cloud) is spray.
+// 2. spray, flagged and never dropped (the comparison counts each point and
+//    writes it with its flag). A point is spray when it lies off the
+//    surface its neighbours describe and stands out from them:
+//    a. off their surface: farther than `spray_sigmas` robust standard
+//       deviations (1.4826 x the median of that distance over the cloud:
+//       the scan's noise) from the quadric height surface fitted to its
+//       `normal_neighbours` nearest neighbours, itself left out, in the
+//       frame of their plane (PCL's covariance and eigen solver; neighbours
+//       more than 3 times the median off that plane dropped first, so a
+//       spray point among them does not tilt it). A quadric, not the plane:
+//       on a 5 mm fillet sampled 0.4 mm apart the plane lies 0.08 mm off
+//       the surface, far above the noise, and flagged most of the fillet;
+//    b. standing out: farther than 3 times the median of the same distance
+//       over those neighbours. At a sharp edge no smooth surface fits, so
+//       every neighbour near it is as far off as the point; a point thrown
+//       off the surface has neighbours that fit theirs.
+//    The statistical rule of pcl::StatisticalOutlierRemoval (a point whose
+//    mean distance to its `outlier_neighbours` nearest neighbours exceeds
+//    the cloud's mean of that figure by more than `outlier_sigmas` standard
+//    deviations; computed as the class computes it, with PCL's search, in
+//    one parallel pass: the class itself searches serially) is recorded
+//    per point in `statistical` and names the kind: spray it flags is far
+//    spray, the rest near spray. It does not flag on its own: it cannot see
+//    a point 0.3 mm off a surface sampled 0.3 mm apart (a third of such
+//    spray passes at any setting that keeps 99 % of the good points), and
+//    it fires on good points where the neighbours are one-sided - the
+//    scan's borders and silhouettes.
 //    Real form errors wider than a neighbourhood (a dent, a step of the
-//    surface along a line) lie on their neighbours' plane and are kept.
+//    surface along a line) lie on their neighbours' surface and are kept.
 // 3. the fit subset: a voxel grid of edge `voxel` mm (pcl::VoxelGrid) over
 //    the points that are not spray; each occupied voxel is stood for by the
 //    real point nearest its centroid, not by the centroid, because on a
@@ -65,11 +74,15 @@ struct ScanPreprocessOptions {
 
 struct ScanPreprocessed {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // local origin: the cloud's centroid [mm, file frame]
-  // Per point of the cloud: 0 not spray, kSprayFar (statistical rule) or
-  // kSprayNear (off its neighbours' plane).
+  // Per point of the cloud: 0 not spray, kSprayFar (spray the statistical
+  // rule also flags) or kSprayNear (spray it does not).
   std::vector<std::uint8_t> spray;
   std::size_t spray_count = 0;  // both rules
   std::size_t spray_far = 0, spray_near = 0;
+  // Per point: pcl::StatisticalOutlierRemoval's rule fired (rule 2's kind,
+  // not a flag on its own), and how many.
+  std::vector<bool> statistical;
+  std::size_t statistical_count = 0;
   double local_plane_sigma = 0;  // [mm] the robust sigma of the near-spray rule (the scan's noise, about)
   std::vector<std::size_t> fit;              // indices of the fit subset's points, increasing
   std::vector<Eigen::Vector3f> fit_normals;  // unit normal per fit point; zero where none could be had

@@ -1,7 +1,7 @@
 // The far-spray rule of the scan module against PCL's own
 // pcl::StatisticalOutlierRemoval, the second implementation: the module
 // computes the class's rule in its parallel pass (scan_preprocess.hpp), and
-// must flag exactly the points the class removes.
+// must fire on exactly the points the class removes.
 #include <doctest/doctest.h>
 #include <pcl/filters/statistical_outlier_removal.h>
 #include <pcl/point_types.h>
@@ -46,11 +46,15 @@ TEST_CASE("scan far-spray rule flags what pcl StatisticalOutlierRemoval removes"
     std::set<std::size_t> removed;
     for (const auto i : *filter.getRemovedIndices()) removed.insert(static_cast<std::size_t>(i));
     std::set<std::size_t> flagged;
-    for (std::size_t i = 0; i < s.spray.size(); ++i)
-      if (s.spray[i] == kSprayFar) flagged.insert(i);
-    MESSAGE("k " << k << ": PCL removes " << removed.size() << ", the module flags " << flagged.size() << " far, "
-                 << s.spray_near << " near");
+    for (std::size_t i = 0; i < s.statistical.size(); ++i)
+      if (s.statistical[i]) flagged.insert(i);
+    MESSAGE("k " << k << ": PCL removes " << removed.size() << ", the module's statistical rule fires on "
+                 << flagged.size() << "; spray " << s.spray_far << " far, " << s.spray_near << " near");
     CHECK(removed.size() > 150);
     CHECK(flagged == removed);
+    CHECK(s.statistical_count == flagged.size());
+    // Far spray is spray the statistical rule also fires on.
+    for (std::size_t i = 0; i < s.spray.size(); ++i)
+      if (s.spray[i] == kSprayFar) CHECK(s.statistical[i]);
   }
 }
