@@ -11,7 +11,7 @@
 #include <pcl/point_types.h>
 #include <pcl/search/kdtree.h>
 
-#include <Eigen/QR>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <new>
@@ -40,24 +40,28 @@ std::optional<double> off_local_quadric(const pcl::PointCloud<pcl::PointXYZ>& cl
   n.cwiseAbs().minCoeff(&axis);
   const Eigen::Vector3d e1 = n.cross(Eigen::Vector3d::Unit(axis)).normalized(), e2 = n.cross(e1);
   const Eigen::Vector3d p = cloud[i].getVector3fMap().cast<double>();
-  Eigen::MatrixXd a(static_cast<Eigen::Index>(neighbours.size()), 6);
-  Eigen::VectorXd h(static_cast<Eigen::Index>(neighbours.size()));
   double spread = 0;
-  for (std::size_t m = 0; m < neighbours.size(); ++m) {
-    const Eigen::Vector3d q = cloud[neighbours[m]].getVector3fMap().cast<double>() - p;
-    const double u = e1.dot(q), v = e2.dot(q);
-    spread = std::max(spread, std::abs(u) + std::abs(v));
-    a.row(static_cast<Eigen::Index>(m)) << u * u, u * v, v * v, u, v, 1;
-    h(static_cast<Eigen::Index>(m)) = n.dot(q);
+  for (const auto j : neighbours) {
+    const Eigen::Vector3d q = cloud[j].getVector3fMap().cast<double>() - p;
+    spread = std::max(spread, std::abs(e1.dot(q)) + std::abs(e2.dot(q)));
   }
   if (!(spread > 0)) return std::nullopt;
-  // Columns scaled by the spread so the normal equations are well posed.
-  const double s = 1 / spread;
-  const Eigen::Vector<double, 6> scale(s * s, s * s, s * s, s, s, 1);
-  const Eigen::MatrixXd scaled = a * scale.asDiagonal();
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(scaled);
-  if (qr.rank() < 6) return std::nullopt;
-  const Eigen::VectorXd coefficients = qr.solve(h);
+  // Normal equations of the least-squares fit, fixed size (no allocation
+  // per point), with u and v scaled by the spread so they are well posed.
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Vector6 right = Vector6::Zero();
+  for (const auto j : neighbours) {
+    const Eigen::Vector3d q = cloud[j].getVector3fMap().cast<double>() - p;
+    const double u = e1.dot(q) / spread, v = e2.dot(q) / spread;
+    Vector6 row;
+    row << u * u, u * v, v * v, u, v, 1;
+    normal_matrix.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    right += row * n.dot(q);
+  }
+  const Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(normal_matrix.selfadjointView<Eigen::Lower>().toDenseMatrix());
+  if (lu.rank() < 6) return std::nullopt;
+  const Vector6 coefficients = lu.solve(right);
   return std::abs(coefficients(5));  // the quadric's height at the point (u = v = 0)
 }
 
@@ -65,7 +69,7 @@ std::optional<double> off_local_quadric(const pcl::PointCloud<pcl::PointXYZ>& cl
 // (its nearest points, itself left out); the plane is fitted twice, the
 // second time without the neighbours more than 3 times the median off the
 // first, and the quadric over the ones kept (scan_preprocess.hpp, rule b).
-float off_local_plane(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::size_t i, pcl::Indices neighbours) {
+float off_local_surface(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::size_t i, pcl::Indices neighbours) {
   const Eigen::Vector3f p = cloud[i].getVector3fMap();
   Eigen::Vector3f normal = Eigen::Vector3f::UnitZ(), centre = p;
   for (int pass = 0; pass < 2; ++pass) {
@@ -125,7 +129,7 @@ void flag_spray(const pcl::PointCloud<pcl::PointXYZ>::Ptr& local, const ScanPrep
       neighbours.clear();
       for (const auto j : found)
         if (static_cast<std::size_t>(j) != i) neighbours.push_back(j);
-      off[i] = off_local_plane(*local, i, neighbours);
+      off[i] = off_local_surface(*local, i, neighbours);
     }
   }
   double sum = 0, sq_sum = 0;
