@@ -20,7 +20,9 @@ constexpr double kMaxRays = 50e6;
 
 void check_model(const ScannerModel& m) {
   auto fail = [](const std::string& what) { throw InputError("scan simulation: " + what); };
-  if (!m.view.allFinite() || !(m.view.norm() > 0)) fail("the view direction must be a non-zero vector");
+  // stableNorm: the plain norm of (1e308, 1e308, 0) overflows, and the
+  // direction it normalises to would be zero.
+  if (!m.view.allFinite() || !(m.view.stableNorm() > 0)) fail("the view direction must be a non-zero vector");
   if (!(m.stripe_pitch > 0) || !std::isfinite(m.stripe_pitch)) fail("the stripe pitch must be positive");
   if (!(m.point_pitch > 0) || !std::isfinite(m.point_pitch)) fail("the point pitch must be positive");
   if (!(m.max_incidence_deg > 0 && m.max_incidence_deg < 90))
@@ -165,7 +167,7 @@ RayResult solve_ray(const Face& face, const Eigen::Vector3d& o, const Eigen::Vec
 
 Raster make_raster(const Part& part, const ScannerModel& m, const std::vector<FaceNodes>& nodes) {
   Raster r;
-  r.d = m.view.normalized();
+  r.d = m.view / m.view.stableNorm();
   // e1 from the axis least aligned with the view, so the frame is fixed by
   // the view alone.
   Eigen::Index axis = 0;

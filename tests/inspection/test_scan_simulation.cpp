@@ -200,6 +200,18 @@ TEST_CASE("scan simulation: spray is the asked share, thrown as far as asked, an
   bool same = true;
   for (std::size_t k = 0; k < scan.points.size(); ++k) same = same && again.points[k] == scan.points[k];
   CHECK(same);
+  // A view direction of any length is a direction: one near the largest
+  // double (whose plain norm overflows) looks where its unit vector does.
+  ScannerModel huge = m, unit = m;
+  huge.view = {1e308, 0, -1e308};
+  unit.view = {1, 0, -1};
+  const SimulatedScan seen_huge = simulate_scan(part, huge), seen_unit = simulate_scan(part, unit);
+  REQUIRE(seen_unit.points.size() > 1000);
+  REQUIRE(seen_huge.points.size() == seen_unit.points.size());
+  double apart = 0;  // the two unit vectors may differ in their last bit
+  for (std::size_t k = 0; k < seen_unit.points.size(); ++k)
+    apart = std::max(apart, (seen_huge.points[k] - seen_unit.points[k]).norm());
+  CHECK(apart < 1e-9);
   m.seed = 2;
   const SimulatedScan other = simulate_scan(part, m);
   bool differs = false;
