@@ -199,6 +199,18 @@ SimulatedScan simulate_scan(const Part& part, const ScannerModel& m) {
   // The tessellation only chooses the face a ray meets first; a node spacing
   // of twice the finer pitch keeps its chords' sag far below a pitch.
   const double spacing = 2 * std::min(m.stripe_pitch, m.point_pitch);
+  // A pitch far too fine is refused before the fine tessellation, whose
+  // cost grows with it: the nodes of a coarse one lie on the surface too,
+  // so the raster over their extent has at most as many rays as the real
+  // one; when even it is over the limit, make_raster refuses here.
+  constexpr double kCoarseSpacing = 0.5;  // [mm]
+  if (spacing < kCoarseSpacing) {
+    std::vector<FaceNodes> coarse;
+    for (const Face& face : part.faces) coarse.push_back(tessellate(face, kCoarseSpacing));
+    bool any_kept = false;
+    for (const FaceNodes& n : coarse) any_kept |= std::find(n.kept.begin(), n.kept.end(), 1) != n.kept.end();
+    if (any_kept) make_raster(part, m, coarse);
+  }
   std::vector<FaceNodes> nodes;
   for (const Face& face : part.faces) nodes.push_back(tessellate(face, spacing));
   const Raster r = make_raster(part, m, nodes);
