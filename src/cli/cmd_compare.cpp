@@ -121,12 +121,21 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
     for (const ScanGougeSite& site : c.verification->sites) ++by_status[static_cast<int>(site.check.status)];
     std::printf("gouge sites: %zu confirmed, %zu not confirmed, %zu not measured\n", by_status[0], by_status[1],
                 by_status[2]);
-    for (const ScanGougeSite& site : c.verification->sites)
-      if (site.check.measured_depth)
-        std::printf("  %s %s: read %.4f mm deep over %zu points (predicted %s)\n", site.check.id.c_str(),
-                    to_string(site.check.status), *site.check.measured_depth, site.read_points,
-                    site.check.predicted_depth ? (std::to_string(*site.check.predicted_depth) + " mm").c_str()
-                                               : "no depth");
+    // The sites that decide the verdict, the first ten (all in comparison.json).
+    std::size_t listed = 0, more = 0;
+    for (const ScanGougeSite& site : c.verification->sites) {
+      const GougeSiteCheck& g = site.check;
+      if (g.status == GougeSiteStatus::not_confirmed) continue;
+      if (++listed > 10) {
+        ++more;
+        continue;
+      }
+      std::printf("  %s %s:", g.id.c_str(), to_string(g.status));
+      if (g.measured_depth) std::printf(" read %.4f mm deep over %zu points;", *g.measured_depth, site.read_points);
+      if (g.predicted_depth) std::printf(" predicted %.4f mm", *g.predicted_depth);
+      std::printf("\n");
+    }
+    if (more) std::printf("  ... and %zu more\n", more);
   }
   std::printf("%s\n", to_string(s.verdict));
   for (const InconclusiveReason& why : s.inconclusive) std::printf("  %s\n", why.text.c_str());

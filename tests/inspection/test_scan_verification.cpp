@@ -9,7 +9,9 @@
 
 #include <cmath>
 
+#include "base/json_fields.hpp"
 #include "inspection/scan_simulation.hpp"
+#include "machining/prediction/prediction_file.hpp"
 #include "stage/scan_compare_stage.hpp"
 #include "verification_fixture.hpp"
 
@@ -165,4 +167,41 @@ TEST_CASE("scan gouge confirmation: the predicted dent cut, not cut, and not see
     CHECK(c.summary.inconclusive[0].kind == "gouge_not_measured");
     CHECK(c.summary.inconclusive[0].subject == "G1");
   }
+}
+
+TEST_CASE("compare --scan --prediction: a confirmed gouge exits 1 and is written with its reading") {
+  // As a user runs it: the scan simulated by the command (a 30 um dent of
+  // radius 6 mm planted at the predicted site with --bump), the prediction
+  // as prediction.json.
+  const std::string dir = scratch_dir("cli-scan-prediction");
+  const Fixture f;
+  write_prediction(f.prediction, dir + "/prediction.json");
+  const Eigen::Vector3d& at = f.bump.centre;
+  const std::string bump =
+      std::to_string(at.x()) + "," + std::to_string(at.y()) + "," + std::to_string(at.z()) + ",6,-0.03";
+  const std::string mould = source_path("examples/parts/mould.json");
+  REQUIRE(run_furrow({"simulate-measurement", mould, "--scan", "--out", dir + "/scan.ply", "--stripe-pitch", "0.3",
+                      "--point-pitch", "0.3", "--scan-noise", "0.004", "--bump", bump, "--misalign",
+                      "5,-10,150,300,-120,80", "--seed", "7"})
+              .status == 0);
+  const auto r = run_furrow({"compare", mould, "--scan", dir + "/scan.ply", "--prediction", dir + "/prediction.json",
+                             "--tolerance", "0.1", "--voxel", "2", "--out", dir + "/c.json"});
+  INFO(r.out << r.err);
+  CHECK(r.status == 1);
+  CHECK(r.out.find("gouge sites: 1 confirmed, 0 not confirmed, 0 not measured") != std::string::npos);
+  CHECK(r.out.find("0 out") != std::string::npos);  // failed by the gouge alone
+  const json_fields::json c = json_fields::json::parse(slurp(dir + "/c.json"));
+  CHECK(c["sources"]["prediction"] == dir + "/prediction.json");
+  CHECK(c["summary"]["confirmed_gouges"] == 1);
+  CHECK(c["summary"]["verdict"] == "FAIL");
+  REQUIRE(c["gouge_sites"].size() == 1);
+  const auto& g = c["gouge_sites"][0];
+  CHECK(g["id"] == "G1");
+  CHECK(g["status"] == "CONFIRMED");
+  CHECK(g["anchors_seen"] == 1);
+  const double depth = g["measured_depth"].get<double>(), u = g["uncertainty"].get<double>();
+  MESSAGE("command line: read " << depth * 1e3 << " um over " << g["read_points"] << " points, u " << u * 1e3 << " um");
+  CHECK(std::abs(depth - kDepth) < 4 * u + 0.001);
+  CHECK(g["depth_consistent"] == true);
+  CHECK(c["prediction_comparison"]["overall"]["verdict"] == "explained");
 }
