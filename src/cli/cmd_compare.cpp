@@ -36,11 +36,12 @@ namespace {
 // (docs/scan.md). The probe-point options that have no meaning for a cloud
 // are refused by name rather than ignored.
 int run_compare_scan(Args& args, const std::string& scan_path) {
-  for (const char* other : {"measurements", "plan", "prediction", "qif", "rps", "points", "probe-diameter",
+  for (const char* other : {"measurements", "plan", "qif", "rps", "points", "probe-diameter",
                             "dialect", "delimiter", "columns", "ipp-program", "db", "serial"})
     if (args.option(other)) args.fail(std::string("--") + other + " does not apply to --scan");
   if (args.flag("decimal-comma")) args.fail("--decimal-comma does not apply to --scan");
   const auto regions_path = args.option("regions");
+  const auto prediction_path = args.option("prediction");
   const auto deviations_path = args.option("deviations");
   const std::string out = args.required_option("out");
   const double tolerance = args.positive_or("tolerance", 0.05);
@@ -65,6 +66,7 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
   outputs.add_input(part_path, "part");
   outputs.add_input(scan_path, "scan");
   if (regions_path) outputs.add_input(*regions_path, "regions");
+  if (prediction_path) outputs.add_input(*prediction_path, "prediction");
   outputs.will_write(out);
   if (deviations_path) outputs.will_write(*deviations_path);
 
@@ -74,9 +76,15 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
     regions = read_regions(*regions_path);
     regions->check_belongs_to(part, *regions_path, part_path);
   }
+  std::optional<Prediction> prediction;
+  if (prediction_path) {
+    prediction = read_prediction(*prediction_path);
+    check_prediction_against_part(*prediction, part, *prediction_path, part_path);
+  }
   const ScanCloud cloud = read_scan(scan_path, mm_per_unit);
   const ScanComparison c = naming_inputs(part_path + " with " + scan_path, [&] {
-    return compare_scan_stage(part, cloud, regions ? &*regions : nullptr, options, preprocessing);
+    return compare_scan_stage(part, cloud, regions ? &*regions : nullptr, prediction ? &*prediction : nullptr,
+                              options, preprocessing);
   });
   if (options.registration.progress) std::fprintf(stderr, "\r%-34s\r", "");
   ScanComparisonSources sources;
@@ -84,6 +92,7 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
   sources.scan = scan_path;
   sources.regions = regions_path.value_or("");
   sources.deviations = deviations_path.value_or("");
+  sources.prediction = prediction_path.value_or("");
   sources.units = units;
   if (deviations_path) outputs.file(*deviations_path, scan_deviation_ply(c, cloud));
   outputs.file(out, scan_comparison_json(c, sources));
@@ -102,6 +111,32 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
               s.deviations.max, s.deviations.mean, s.deviations.sigma, s.profile);
   std::printf("tolerance %.4f mm [%.4f, %.4f]: %zu in, %zu out\n", c.tolerance.width, c.tolerance.lower(),
               c.tolerance.upper(), s.in_tolerance, s.out_of_tolerance);
+  if (c.verification) {
+    const ResidualStatistics& o = c.verification->compared.overall;
+    std::printf("prediction: %zu points compared, residual rms %.4f mm, normalised rms %.2f, "
+                "%.1f %% within %g sigma -> %s\n",
+                o.count, o.rms, o.normalised_rms, 100 * o.within_share, options.prediction.within_sigmas,
+                to_string(o.verdict));
+    std::size_t by_status[3] = {0, 0, 0};
+    for (const ScanGougeSite& site : c.verification->sites) ++by_status[static_cast<int>(site.check.status)];
+    std::printf("gouge sites: %zu confirmed, %zu not confirmed, %zu not measured\n", by_status[0], by_status[1],
+                by_status[2]);
+    // The sites that decide the verdict, the first ten (all in comparison.json).
+    std::size_t listed = 0, more = 0;
+    for (const ScanGougeSite& site : c.verification->sites) {
+      const GougeSiteCheck& g = site.check;
+      if (g.status == GougeSiteStatus::not_confirmed) continue;
+      if (++listed > 10) {
+        ++more;
+        continue;
+      }
+      std::printf("  %s %s:", g.id.c_str(), to_string(g.status));
+      if (g.measured_depth) std::printf(" read %.4f mm deep over %zu points;", *g.measured_depth, site.read_points);
+      if (g.predicted_depth) std::printf(" predicted %.4f mm", *g.predicted_depth);
+      std::printf("\n");
+    }
+    if (more) std::printf("  ... and %zu more\n", more);
+  }
   std::printf("%s\n", to_string(s.verdict));
   for (const InconclusiveReason& why : s.inconclusive) std::printf("  %s\n", why.text.c_str());
   return exit_status(s.verdict, s.alignment);
@@ -330,7 +365,8 @@ std::string compare_options_help() {
 const Command kCompareCommand = {
     "compare", "register CMM points to the part, deviations against a profile tolerance",
     "usage: furrow compare PART --measurements FILE --out comparison.json [options]\n"
-    "       furrow compare PART --scan CLOUD.ply --out comparison.json [--deviations OUT.ply] [options]\n"
+    "       furrow compare PART --scan CLOUD.ply --out comparison.json [--deviations OUT.ply]\n"
+    "                      [--regions REGIONS.json] [--prediction PREDICTION.json] [options]\n"
     "\n"
     "Registers measured points (CSV, XYZ text, DMIS results or an I++ DME\n"
     "response log; docs/formats.md \"Measurements\")\n"
@@ -383,7 +419,7 @@ const Command kCompareCommand = {
     "  --scan FILE          a dense scan instead (PLY or PCD, docs/scan.md): spray\n"
     "                       flagged, a voxel subset registered, every point's\n"
     "                       deviation by exact projection; not with --measurements,\n"
-    "                       --plan, --prediction, --qif or a database\n"
+    "                       --plan, --qif or a database\n"
     "  --deviations FILE    with --scan: every point in the part frame with its\n"
     "                       deviation and status, binary PLY (docs/formats.md)\n"
     "  --out FILE           comparison.json to write\n"
@@ -392,7 +428,8 @@ const Command kCompareCommand = {
     "                       status, verdict, inputs with SHA-256 (docs/qif.md)\n"
     "  --prediction FILE    prediction.json of PART (furrow predict): predicted vs\n"
     "                       measured and gouge confirmation (docs/verification.md);\n"
-    "                       a CONFIRMED gouge fails the part\n"
+    "                       a CONFIRMED gouge fails the part (with --scan too:\n"
+    "                       docs/scan.md \"With a prediction\")\n"
     "\n"
     "Comparison options (a job file's \"comparison\" members, docs/options.md); the\n"
     "last eight apply to the verification against a prediction:\n",

@@ -110,8 +110,11 @@ int face_index(const Part& part, const std::string& face, const std::string& wha
   return static_cast<int>(*f);
 }
 
-std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& prediction,
-                                            const GougeConfirmationOptions& o) {
+}  // namespace
+
+std::vector<GougeSiteCheck> predicted_gouge_sites(const Part& part, const Prediction& prediction,
+                                                  const GougeConfirmationOptions& o) {
+  check_options(o);
   std::vector<GougeSiteCheck> sites;
   for (const GougeSiteRecord& r : prediction.gouge_sites) {
     GougeSiteCheck s;
@@ -122,6 +125,7 @@ std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& 
     s.uv_box = r.uv_box;
     s.uv_box.extend(r.deepest.uv);
     s.centroid = r.centroid.xyz;
+    s.anchors = {r.deepest.xyz};
     s.predicted_depth = r.depth;
     sites.push_back(s);
   }
@@ -162,6 +166,7 @@ std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& 
     for (std::size_t m : clusters[c].members) {
       s.uv_box.extend(prediction.local_gouges[m].at.uv);
       s.centroid += prediction.local_gouges[m].at.xyz;
+      s.anchors.push_back(prediction.local_gouges[m].at.xyz);
     }
     s.contacts = clusters[c].members.size();
     s.centroid /= static_cast<double>(s.contacts);
@@ -174,6 +179,8 @@ std::vector<GougeSiteCheck> predicted_sites(const Part& part, const Prediction& 
   }
   return sites;
 }
+
+namespace {
 
 bool on_site(const GougeSiteCheck& s, const RegisteredPoint& p) {
   return p.evaluated && static_cast<int>(p.foot.face) == s.face_index && s.search_box.contains(p.foot.uv);
@@ -198,7 +205,7 @@ GougeConfirmation confirm_gouges(const RegistrationResult& r, const Part& part, 
   };
 
   GougeConfirmation g;
-  g.sites = predicted_sites(part, prediction, o);
+  g.sites = predicted_gouge_sites(part, prediction, o);
   std::vector<bool> on_any(n, false);
   for (GougeSiteCheck& s : g.sites) {
     for (std::size_t i = 0; i < n; ++i)

@@ -87,6 +87,10 @@ struct GougeSiteCheck {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // zmap: area-weighted; local: mean contact
   std::optional<double> predicted_depth;  // [mm] > 0
   std::size_t contacts = 0;               // local: contact points in the cluster
+  // Where the prediction puts the gouge, on the nominal surface (part
+  // frame): zmap, its deepest point; local, every contact of the cluster.
+  // A scan must see these to refute a site (scan_verification.hpp).
+  std::vector<Eigen::Vector3d> anchors;
   GougeSiteStatus status = GougeSiteStatus::not_measured;
   std::vector<std::size_t> points;  // evaluated points on the site (indices)
   // With points on the site:
@@ -121,6 +125,13 @@ struct GougeConfirmation {
 // The overcut threshold of a point with registration uncertainty `u` [mm].
 double overcut_threshold(double u, double probe_sigma, const ToleranceZone& zone,
                          const GougeConfirmationOptions& options);
+
+// The sites a prediction names, with their search boxes and predicted
+// depths, before any measurement (the first step of confirm_gouges, shared
+// with the scan's confirmation). Throws InputError for an option out of
+// range or a site on a face the part does not have.
+std::vector<GougeSiteCheck> predicted_gouge_sites(const Part& part, const Prediction& prediction,
+                                                  const GougeConfirmationOptions& options);
 
 // `compared` is the prediction comparison of the same registration (its
 // residuals and sigma_total decide depth agreement and what the prediction

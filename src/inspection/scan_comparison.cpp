@@ -62,17 +62,21 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   c.registration = register_measurements(finder, fit, nullptr, options.registration);
   c.transform = c.registration.transform * Eigen::Translation3d(-pre.origin);
 
-  // Every point that is not spray, projected exactly.
+  // Every point that is not spray, projected exactly; with a partition the
+  // spray too, for the region it was removed from (never compared).
   const std::size_t n = cloud.points.size();
   c.status.assign(n, ScanPointStatus::evaluated);
   c.deviation.assign(n, 0.0f);
   c.region.assign(n, -1);
+  c.foot_face.assign(n, -1);
+  c.foot_uv.assign(n, Eigen::Vector2d::Zero());
+  c.foot_normal.assign(n, Eigen::Vector3f::Zero());
   std::vector<std::size_t> todo;
   todo.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (pre.spray[i] == kSprayFar) c.status[i] = ScanPointStatus::spray_far;
     else if (pre.spray[i] == kSprayNear) c.status[i] = ScanPointStatus::spray_near;
-    else todo.push_back(i);
+    if (c.status[i] == ScanPointStatus::evaluated || regions) todo.push_back(i);
   }
   std::vector<double> value(n, 0.0);
   const long chunks = static_cast<long>((todo.size() + kProjectionChunk - 1) / kProjectionChunk);
@@ -89,6 +93,10 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
     for (std::size_t m = begin; m < end; ++m) {
       const std::size_t i = todo[m];
       const ClosestPoint& f = feet[m - begin];
+      if (regions && f.converged)
+        if (const std::optional<int> id = regions->region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y()))
+          c.region[i] = *id;
+      if (c.status[i] != ScanPointStatus::evaluated) continue;  // spray: its region only
       const Eigen::Vector3d r = xs[m - begin] - f.point;
       const double along = r.dot(f.normal);
       const bool boundary = f.location != FootLocation::interior;
@@ -100,9 +108,9 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
       // point (registration.hpp).
       value[i] = boundary ? f.signed_distance : along;
       c.deviation[i] = static_cast<float>(value[i]);
-      if (regions)
-        if (const std::optional<int> id = regions->region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y()))
-          c.region[i] = *id;
+      c.foot_face[i] = static_cast<std::int32_t>(f.face);
+      c.foot_uv[i] = f.uv;
+      c.foot_normal[i] = f.normal.cast<float>();
     }
   }
 
@@ -112,9 +120,18 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   std::map<int, std::vector<double>> by_region;
   std::map<int, std::size_t> region_out;
   double max_abs = 0;
+  std::map<int, ScanRemovedInRegion> removed;
   for (std::size_t i = 0; i < n; ++i) {
     if (c.status[i] == ScanPointStatus::off_part) ++c.off_part;
-    if (c.status[i] != ScanPointStatus::evaluated) continue;
+    if (c.status[i] != ScanPointStatus::evaluated) {
+      if (!regions) continue;
+      ScanRemovedInRegion& r = removed[c.region[i]];
+      r.region = c.region[i];
+      ++(c.status[i] == ScanPointStatus::spray_far ? r.spray_far
+         : c.status[i] == ScanPointStatus::spray_near ? r.spray_near
+                                                     : r.off_part);
+      continue;
+    }
     evaluated.push_back(value[i]);
     max_abs = std::max(max_abs, std::abs(value[i]));
     const bool in = c.tolerance.contains(value[i]);
@@ -133,17 +150,33 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   s.profile = 2 * max_abs;
   for (const auto& [region, values] : by_region)
     s.regions.push_back({region, deviation_statistics(values), region_out[region]});
+  for (const auto& [region, r] : removed) c.removed_by_region.push_back(r);
   s.alignment = alignment_status(c.registration);
+  decide_scan_verdict(c);
+  return c;
+}
+
+void decide_scan_verdict(ScanComparison& c) {
+  ComparisonSummary& s = c.summary;
+  s.inconclusive.clear();
+  s.confirmed_gouges = c.verification ? c.verification->confirmed() : 0;
   if (s.alignment != "ok") {
     s.verdict = Verdict::inconclusive;
     s.inconclusive = {{"alignment_failed", "",
                        "the scan's registration did not succeed (" + s.alignment + ": " + c.registration.status +
                            "); nothing is certified"}};
+  } else if (s.evaluated == 0 || s.out_of_tolerance > 0 || s.confirmed_gouges > 0) {
+    s.verdict = Verdict::fail;
   } else {
-    s.verdict = s.evaluated == 0 || s.out_of_tolerance > 0 ? Verdict::fail : Verdict::pass;
+    if (c.verification)
+      for (const ScanGougeSite& site : c.verification->sites)
+        if (site.check.status == GougeSiteStatus::not_measured)
+          s.inconclusive.push_back({"gouge_not_measured", site.check.id,
+                                    "predicted gouge " + site.check.id + " on face " + site.check.face +
+                                        " was not seen by the scan: scan its site"});
+    s.verdict = s.inconclusive.empty() ? Verdict::pass : Verdict::inconclusive;
   }
   s.pass = s.verdict == Verdict::pass;
-  return c;
 }
 
 }  // namespace furrow

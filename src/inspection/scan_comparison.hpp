@@ -25,15 +25,19 @@
 // no probe radius).
 //
 // Verdict: FAIL when an evaluated point lies outside the zone or none was
-// evaluated; INCONCLUSIVE with alignment != "ok" when the registration did
-// not succeed (exit 3); PASS otherwise. Spray is reported, never a reason
+// evaluated, or (with a prediction) a predicted gouge is confirmed;
+// INCONCLUSIVE with alignment != "ok" when the registration did not
+// succeed (exit 3), or when a predicted gouge site was not seen; PASS
+// otherwise. Spray is reported, never a reason
 // to fail or pass.
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "inspection/comparison.hpp"
+#include "inspection/scan_verification.hpp"
 #include "io/scan/scan_cloud.hpp"
 #include "io/scan/scan_preprocess.hpp"
 
@@ -42,6 +46,14 @@ namespace furrow {
 // Per point status, as written in the deviation cloud's `outlier` property.
 enum class ScanPointStatus : std::uint8_t { evaluated = 0, spray_far = 1, spray_near = 2, off_part = 3 };
 const char* to_string(ScanPointStatus status);  // "evaluated", "spray_far", "spray_near", "off_part"
+
+// Points removed from the comparison in one region of the partition: the
+// region holding the foot of their projection (region -1: in none, or the
+// projection did not converge).
+struct ScanRemovedInRegion {
+  int region = -1;
+  std::size_t spray_far = 0, spray_near = 0, off_part = 0;
+};
 
 struct ScanComparison {
   std::string scan;  // the file
@@ -55,8 +67,19 @@ struct ScanComparison {
   ToleranceZone tolerance;
   std::vector<ScanPointStatus> status;  // per point
   std::vector<float> deviation;         // per point [mm]; 0 where not evaluated
-  std::vector<int> region;              // per point; -1 none (no partition, or not evaluated)
+  // Per point: the region of the partition holding its foot; -1 none (no
+  // partition, outside every region, or the projection did not converge).
+  // With a partition spray is projected too, for this alone.
+  std::vector<int> region;
+  std::vector<ScanRemovedInRegion> removed_by_region;  // with a partition; by increasing region
+  // The foot of every evaluated point (what a prediction is looked up at):
+  // face index (-1 where not evaluated), (u, v) and the unit normal there.
+  std::vector<std::int32_t> foot_face;
+  std::vector<Eigen::Vector2d> foot_uv;
+  std::vector<Eigen::Vector3f> foot_normal;
   ComparisonSummary summary;            // over the evaluated points; points = evaluated + off_part
+  // With a machining prediction (scan_verification.hpp).
+  std::optional<ScanVerification> verification;
 };
 
 // `cloud` and `pre` as read and pre-processed; `regions` may be null (else
@@ -66,5 +89,12 @@ struct ScanComparison {
 // the result (summary.alignment), never thrown.
 ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& cloud, const ScanPreprocessed& pre,
                             const RegionMap* regions, const CompareOptions& options);
+
+// The verdict from the statistics, the alignment and, with a prediction,
+// the gouge sites (the rules above; with a prediction as for probe points,
+// docs/verification.md "Verdict": a confirmed gouge fails the part, a site
+// the scan did not see leaves it INCONCLUSIVE). compare_scan() and
+// verify_scan_prediction() call it.
+void decide_scan_verdict(ScanComparison& comparison);
 
 }  // namespace furrow

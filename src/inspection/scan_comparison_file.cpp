@@ -1,12 +1,75 @@
 // comparison.json of a scan (contract in scan_comparison_file.hpp).
 #include "inspection/scan_comparison_file.hpp"
 
+#include <stdexcept>
+
 #include "inspection/comparison_json.hpp"
+#include "inspection/verification_json.hpp"
 
 namespace furrow {
 
 namespace jf = json_fields;
 using nlohmann::json;
+
+namespace {
+
+json optional_number(const std::optional<double>& x, const char* what) {
+  return x ? jf::finite(*x, what) : json(nullptr);
+}
+
+json box_json(const Eigen::AlignedBox2d& b) {
+  return {{"min", jf::vector_json(Eigen::Vector2d(b.min()))}, {"max", jf::vector_json(Eigen::Vector2d(b.max()))}};
+}
+
+// The sites as the probe points' gouge_sites writes them, except that
+// `points` is a count and `deepest` the index of the point (in the scan's
+// finite points, the deviation cloud's order) whose local mean is deepest.
+json scan_sites_json(const ScanVerification& v) {
+  json sites = json::array();
+  for (const ScanGougeSite& g : v.sites) {
+    const GougeSiteCheck& s = g.check;
+    json anchors = json::array();
+    for (const Eigen::Vector3d& a : s.anchors) anchors.push_back(jf::vector_json(a));
+    json j;
+    j["id"] = s.id;
+    j["source"] = to_string(s.source);
+    j["face"] = s.face;
+    j["face_index"] = s.face_index;
+    j["uv_box"] = box_json(s.uv_box);
+    j["search_box"] = box_json(s.search_box);
+    j["centroid"] = jf::vector_json(s.centroid);
+    j["anchors"] = anchors;
+    j["anchors_seen"] = g.anchors_seen;
+    j["predicted_depth"] = optional_number(s.predicted_depth, "predicted depth");
+    j["contacts"] = s.contacts;
+    j["status"] = to_string(s.status);
+    j["points"] = s.points.size();
+    j["deepest"] = s.deepest ? json(*s.deepest) : json(nullptr);
+    j["read_points"] = g.read_points;
+    j["measured_depth"] = optional_number(s.measured_depth, "measured depth");
+    j["uncertainty"] = optional_number(s.uncertainty, "uncertainty");
+    j["threshold"] = optional_number(s.threshold, "threshold");
+    j["predicted_error"] = optional_number(s.predicted_error, "predicted error");
+    j["depth_consistent"] = s.depth_consistent ? json(*s.depth_consistent) : json(nullptr);
+    sites.push_back(std::move(j));
+  }
+  return sites;
+}
+
+// Per region of the partition (null without one); region null: the
+// removed points whose foot lies in no region.
+json removed_by_region_json(const ScanComparison& c, bool partition) {
+  if (!partition) return nullptr;
+  json out = json::array();
+  for (const ScanRemovedInRegion& r : c.removed_by_region)
+    out.push_back({{"region", r.region >= 0 ? json(r.region) : json(nullptr)},
+                   {"spray_far", r.spray_far},
+                   {"spray_near", r.spray_near},
+                   {"off_part", r.off_part}});
+  return out;
+}
+
+}  // namespace
 
 std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSources& sources) {
   const ComparisonSummary& s = c.summary;
@@ -18,6 +81,7 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                     {"scan", sources.scan},
                     {"regions", sources.regions},
                     {"deviations", sources.deviations},
+                    {"prediction", sources.prediction},
                     {"scan_units", sources.units}};
   const ScanPreprocessOptions& o = c.preprocessing;
   doc["preprocessing"] = {{"voxel", o.voxel},
@@ -36,6 +100,7 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                    {"removed", {{"spray_far", c.pre.spray_far},
                                 {"spray_near", c.pre.spray_near},
                                 {"off_part", c.off_part}}},
+                   {"removed_by_region", removed_by_region_json(c, !sources.regions.empty())},
                    {"fit", c.pre.fit.size()},
                    {"in_fit", r.in_fit_count()}};
   doc["registration"] = {{"status", r.status},
@@ -48,6 +113,22 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                          {"outer_iterations", r.outer_iterations},
                          {"transform", comparison_json::matrix_json(c.transform.matrix(), "transform")}};
   doc["tolerance"] = {{"width", c.tolerance.width}, {"outside", c.tolerance.outside}};
+  if (c.verification.has_value() == sources.prediction.empty())
+    throw std::logic_error("scan_comparison_json: the prediction file and its results go together");
+  if (c.verification) {
+    const ScanVerification& v = *c.verification;
+    doc["verification"] = {{"noise", jf::finite(v.noise, "scan noise")},
+                           {"read_radius", jf::finite(v.read_radius, "read radius")},
+                           {"read_points", kScanReadPoints},
+                           {"prediction", verification_json::options_json(v.options)},
+                           {"gouges", verification_json::options_json(v.gouge_options)}};
+    doc["prediction_comparison"] = verification_json::prediction_comparison_json(v.compared);
+    doc["gouge_sites"] = scan_sites_json(v);
+  } else {
+    doc["verification"] = nullptr;
+    doc["prediction_comparison"] = nullptr;
+    doc["gouge_sites"] = nullptr;
+  }
   json regions = json::array();
   for (const RegionStatistics& g : s.regions)
     regions.push_back({{"region", g.region},
@@ -55,12 +136,13 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                        {"out_of_tolerance", g.out_of_tolerance}});
   json inconclusive = json::array();
   for (const InconclusiveReason& why : s.inconclusive)
-    inconclusive.push_back({{"kind", why.kind}, {"text", why.text}});
+    inconclusive.push_back({{"kind", why.kind}, {"subject", why.subject}, {"text", why.text}});
   doc["summary"] = {{"evaluated", s.evaluated},
                     {"in_tolerance", s.in_tolerance},
                     {"out_of_tolerance", s.out_of_tolerance},
                     {"deviations", comparison_json::statistics_json(s.deviations)},
                     {"profile", jf::finite(s.profile, "profile")},
+                    {"confirmed_gouges", s.confirmed_gouges},
                     {"regions", regions},
                     {"alignment", s.alignment},
                     {"verdict", to_string(s.verdict)},

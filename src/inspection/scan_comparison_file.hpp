@@ -11,7 +11,7 @@
 namespace furrow {
 
 struct ScanComparisonSources {
-  std::string part, scan, regions, deviations;  // file names; empty when not given
+  std::string part, scan, regions, deviations, prediction;  // file names; empty when not given
   std::string units = "mm";                     // of the scan file
 };
 

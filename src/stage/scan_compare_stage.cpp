@@ -5,11 +5,13 @@
 namespace furrow {
 
 ScanComparison compare_scan_stage(const Part& part, const ScanCloud& cloud, const RegionMap* regions,
-                                  const CompareOptions& options, const ScanPreprocessOptions& preprocessing) {
+                                  const Prediction* prediction, const CompareOptions& options,
+                                  const ScanPreprocessOptions& preprocessing) {
   const ScanPreprocessed pre = preprocess_scan(cloud, preprocessing);
   const ClosestPointFinder finder(part);
   ScanComparison c = compare_scan(finder, cloud, pre, regions, options);
   c.preprocessing = preprocessing;
+  if (prediction) verify_scan_prediction(c, cloud, part, *prediction, options);
   return c;
 }
 

@@ -6,10 +6,13 @@
 
 namespace furrow {
 
-// `regions` may be null; it must belong to `part`. options.tolerance must
-// be set and the registration scaled to it (scale_registration_to_tolerance).
-// InputError for a cloud the pre-processing refuses (scan_preprocess.hpp).
+// `regions` and `prediction` may be null; they must belong to `part`
+// (with a prediction: predicted versus measured and gouge confirmation,
+// inspection/scan_verification.hpp). options.tolerance must be set and the
+// registration scaled to it (scale_registration_to_tolerance). InputError
+// for a cloud the pre-processing refuses (scan_preprocess.hpp).
 ScanComparison compare_scan_stage(const Part& part, const ScanCloud& cloud, const RegionMap* regions,
-                                  const CompareOptions& options, const ScanPreprocessOptions& preprocessing);
+                                  const Prediction* prediction, const CompareOptions& options,
+                                  const ScanPreprocessOptions& preprocessing);
 
 }  // namespace furrow

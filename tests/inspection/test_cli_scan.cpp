@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 #include <sys/wait.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -321,6 +322,34 @@ TEST_CASE("compare scan in inches with a partition gives per-region statistics o
     CHECK(std::abs(g["deviations"]["mean"].get<double>() - sum / static_cast<double>(values.size())) < 0.001);
   }
   CHECK(counted == compared);
+
+  // The removed points per region: recounted from the (u, v) each point
+  // was planted at. A spray point lies along the normal of that surface
+  // point, so its projection's foot is that point (its offset is far below
+  // the mould's radius of curvature); so does a good point's.
+  std::map<int, std::array<std::size_t, 3>> recount;  // region (-1 none) -> far, near, off part
+  std::size_t removed = 0;
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    if (cloud[k].outlier == 0) continue;
+    ++removed;
+    const std::optional<int> id = regions.region_at(0, s.uv[k].x(), s.uv[k].y());
+    ++recount[id.value_or(-1)][cloud[k].outlier - 1];
+  }
+  REQUIRE(removed >= s.spray.size());
+  const auto& by_region = c["points"]["removed_by_region"];
+  REQUIRE(by_region.is_array());
+  std::size_t listed_removed = 0;
+  for (const auto& g : by_region) {
+    const int id = g["region"].is_null() ? -1 : g["region"].get<int>();
+    CAPTURE(id);
+    const std::array<std::size_t, 3> got = {g["spray_far"].get<std::size_t>(), g["spray_near"].get<std::size_t>(),
+                                            g["off_part"].get<std::size_t>()};
+    listed_removed += got[0] + got[1] + got[2];
+    REQUIRE(recount.count(id) == 1);
+    for (int k = 0; k < 3; ++k) CHECK(got[k] == recount[id][k]);
+  }
+  CHECK(by_region.size() == recount.size());
+  CHECK(listed_removed == removed);
 }
 
 TEST_CASE("compare scan flags the table around the part as off the part and still fits the part") {

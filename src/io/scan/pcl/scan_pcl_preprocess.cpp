@@ -19,6 +19,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "io/scan/pcl/scan_pcl_entry.hpp"
 #include "io/scan/scan_module.hpp"
 
 namespace furrow::scan {
@@ -277,22 +278,7 @@ extern "C" __attribute__((visibility("default"))) int furrow_scan_preprocess(
     const furrow::ScanCloud* cloud, const furrow::ScanPreprocessOptions* options, furrow::ScanPreprocessed* result,
     std::string* message) {
   using furrow::scan::ScanModuleOutcome;
-  try {
-    *result = furrow::scan::preprocess_with_pcl(*cloud, *options);
-    return static_cast<int>(ScanModuleOutcome::ok);
-  } catch (const furrow::InputError& e) {
-    *message = e.what();
-    return static_cast<int>(ScanModuleOutcome::input_error);
-  } catch (const std::bad_alloc&) {
-    return static_cast<int>(ScanModuleOutcome::out_of_memory);
-  } catch (const pcl::PCLException& e) {
-    *message = cloud->file + ": PCL failed on the scan: " + e.detailedMessage();
-    return static_cast<int>(ScanModuleOutcome::failure);
-  } catch (const std::exception& e) {
-    *message = cloud->file + ": the scan pre-processing failed: " + e.what();
-    return static_cast<int>(ScanModuleOutcome::failure);
-  } catch (...) {
-    *message = cloud->file + ": the scan pre-processing failed with an unknown exception";
-    return static_cast<int>(ScanModuleOutcome::failure);
-  }
+  return furrow::scan::guarded_entry(cloud->file, "the scan pre-processing", ScanModuleOutcome::failure,
+                                     "PCL failed on the scan", message,
+                                     [&] { *result = furrow::scan::preprocess_with_pcl(*cloud, *options); });
 }

@@ -21,6 +21,7 @@
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
+#include "io/scan/pcl/scan_pcl_entry.hpp"
 #include "io/scan/scan_module.hpp"
 
 namespace furrow::scan {
@@ -234,24 +235,7 @@ extern "C" __attribute__((visibility("default"))) const char* furrow_module_vers
 extern "C" __attribute__((visibility("default"))) int furrow_scan_read(const std::string* path,
                                                                      furrow::ScanCloud* cloud, std::string* message) {
   using furrow::scan::ScanModuleOutcome;
-  try {
-    *cloud = furrow::scan::read_with_pcl(*path);
-    return static_cast<int>(ScanModuleOutcome::ok);
-  } catch (const furrow::InputError& e) {
-    *message = e.what();
-    return static_cast<int>(ScanModuleOutcome::input_error);
-  } catch (const std::bad_alloc&) {
-    return static_cast<int>(ScanModuleOutcome::out_of_memory);
-  } catch (const pcl::PCLException& e) {
-    // PCL's parsers throw their own exceptions (pcl::IOException, ...) for
-    // files they reject outright: the file's fault.
-    *message = *path + ": PCL cannot read the scan: " + e.detailedMessage();
-    return static_cast<int>(ScanModuleOutcome::input_error);
-  } catch (const std::exception& e) {
-    *message = *path + ": the scan reader failed: " + e.what();
-    return static_cast<int>(ScanModuleOutcome::failure);
-  } catch (...) {
-    *message = *path + ": the scan reader failed with an unknown exception";
-    return static_cast<int>(ScanModuleOutcome::failure);
-  }
+  return furrow::scan::guarded_entry(*path, "the scan reader", ScanModuleOutcome::input_error,
+                                     "PCL cannot read the scan", message,
+                                     [&] { *cloud = furrow::scan::read_with_pcl(*path); });
 }
