@@ -13,12 +13,21 @@
 //     every move stays clear of the block sampled every 0.25 mm and above
 //     the fixture plane (the brute-force sweep of support/setup_clearance.hpp,
 //     independent of the planner's sphere tracing).
+// And stability on an L-shaped part (analytic centre of mass): its centre
+// of mass by the divergence theorem against the analytic value and
+// OpenCASCADE's GProp; the end of its foot and the top of its leg are on
+// its convex hull but would let it tip over, so they are not candidates and
+// are refused by name when named with --setup-faces.
 #include <doctest/doctest.h>
+
+#include <BRepBuilderAPI_MakePolygon.hxx>
 
 #include <cmath>
 #include <set>
 
+#include "base/error.hpp"
 #include "cad_reference.hpp"
+#include "geometry/solid_mass.hpp"
 #include "io/cad/cad_import.hpp"
 #include "partition/partition.hpp"
 #include "planning/part_setup.hpp"
@@ -164,3 +173,116 @@ TEST_CASE("setups on an OpenCASCADE block: the underside with its pocket is plan
   }
 }
 
+namespace {
+
+// An L-shaped part: the profile in (x, z) - a foot 60 x 10 along x and a leg
+// 10 x 50 standing on its left end - extruded 20 mm along y. Its centre of
+// mass, from the two rectangles (areas 600 and 500, centres (30, 5) and
+// (5, 35)): x = z = (600 * 30 + 500 * 5) / 1100 = 18.6364, y = 10; volume
+// 1100 x 20 mm^3.
+constexpr double kLFoot = 60, kLThick = 10, kLHeight = 60, kLWidth = 20;
+const double kLCentre = (600.0 * 30 + 500.0 * 5) / 1100;
+
+TopoDS_Shape l_part() {
+  BRepBuilderAPI_MakePolygon profile;
+  for (const auto& [x, z] : std::vector<std::pair<double, double>>{
+           {0, 0}, {kLFoot, 0}, {kLFoot, kLThick}, {kLThick, kLThick}, {kLThick, kLHeight}, {0, kLHeight}})
+    profile.Add(gp_Pnt(x, 0, z));
+  profile.Close();
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(profile.Wire(), true).Face();
+  return BRepPrimAPI_MakePrism(face, gp_Vec(0, kLWidth, 0)).Shape();
+}
+
+// The planar face of the imported part with that outward normal through that point.
+int face_at(const Part& part, const RegionMap& map, const Eigen::Vector3d& normal, const Eigen::Vector3d& point) {
+  for (std::size_t f = 0; f < part.faces.size(); ++f) {
+    const std::optional<RestingFace> r = planar_face(part, map, static_cast<int>(f));
+    if (r && (r->normal - normal).norm() < 1e-9 && std::abs(normal.dot(r->point - point)) < 1e-6)
+      return static_cast<int>(f);
+  }
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("stability: the L part's centre of mass by the divergence theorem, analytic and as OpenCASCADE's GProp") {
+  silence_occt();
+  const std::string path = scratch_dir("cad-l-part") + "/l_part.step";
+  const TopoDS_Shape shape = l_part();
+  write_step(shape, path);
+  const Part part = import_cad(path).part;
+  const SolidMass m = solid_mass(part);
+  CHECK(m.closed);
+  const double volume = 1100 * kLWidth;
+  CHECK(std::abs(m.volume - volume) < 1e-6 * volume);
+  CHECK((m.centroid - Eigen::Vector3d(kLCentre, kLWidth / 2, kLCentre)).norm() < 1e-6);
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(shape, props);
+  CHECK((m.centroid - eig(props.CentreOfMass())).norm() < 1e-6);
+  // A face missing: an open shell has no centre of mass.
+  Part open = part;
+  open.faces.pop_back();
+  CHECK(!solid_mass(open).closed);
+}
+
+TEST_CASE("stability: the L part's small foot end and leg top cannot carry it, refused by name with the overhang") {
+  silence_occt();
+  const std::string path = scratch_dir("cad-l-part-rest") + "/l_part.step";
+  write_step(l_part(), path);
+  const Part part = import_cad(path).part;
+  PartitionOptions po;
+  po.grid = GridSize{30, 30};
+  const RegionMap map = partition_part(part, po).map;
+  const int bottom = face_at(part, map, -Eigen::Vector3d::UnitZ(), {0, 0, 0});
+  const int left = face_at(part, map, -Eigen::Vector3d::UnitX(), {0, 0, 0});
+  const int front = face_at(part, map, -Eigen::Vector3d::UnitY(), {0, 0, 0});
+  const int foot_end = face_at(part, map, Eigen::Vector3d::UnitX(), {kLFoot, 0, 0});
+  const int leg_top = face_at(part, map, Eigen::Vector3d::UnitZ(), {0, 0, kLHeight});
+  const int inner = face_at(part, map, Eigen::Vector3d::UnitZ(), {0, 0, kLThick});
+  for (int f : {bottom, left, front, foot_end, leg_top, inner}) REQUIRE(f >= 0);
+  // The margin is the distance from the centre's projection to the nearest
+  // edge of the support rectangle (or the L's hull), analytic.
+  struct Want {
+    int face;
+    bool on_hull;
+    double margin;
+  };
+  const Want wants[] = {
+      {bottom, true, kLWidth / 2},          // [0, 60] x [0, 20]: the y edges are nearest
+      {left, true, kLWidth / 2},            // [0, 20] x [0, 60] in (y, z)
+      {front, true, kLCentre},              // the L's hull: x = 0 and z = 0 at 18.64 (the slant at 23.1)
+      {foot_end, true, kLThick - kLCentre}, // z in [0, 10]: the centre 8.64 mm above it
+      {leg_top, true, kLThick - kLCentre},  // x in [0, 10]
+  };
+  for (const Want& w : wants) {
+    CAPTURE(w.face);
+    const std::optional<RestingFace> r = planar_face(part, map, w.face);
+    REQUIRE(r);
+    CHECK(r->on_hull == w.on_hull);
+    CHECK(std::abs(r->balance_margin - w.margin) < 1e-4);
+    CHECK(r->stable == (w.margin >= 0));
+  }
+  const std::optional<RestingFace> in = planar_face(part, map, inner);
+  REQUIRE(in);
+  CHECK(!in->on_hull);
+  CHECK(!in->stable);
+  // The candidates for a setup: neither the foot's end nor the leg's top.
+  for (const RestingFace& c : resting_candidates(part, map)) {
+    CHECK(c.face != foot_end);
+    CHECK(c.face != leg_top);
+    CHECK(c.stable);
+  }
+  const std::string refused = "cannot rest on face " + std::to_string(foot_end);
+  const std::string refused_by_stage = "--setup-faces: the part " + refused;
+  CHECK_THROWS_WITH_AS(named_resting_face(part, map, foot_end, "--setup-faces"),
+                       doctest::Contains(refused.c_str()), InputError);
+  CHECK_THROWS_WITH_AS(named_resting_face(part, map, foot_end, "--setup-faces"),
+                       doctest::Contains("it would tip over, its centre of mass lies 8.636 mm outside"), InputError);
+  CHECK_NOTHROW(named_resting_face(part, map, bottom, "--setup-faces"));
+  // Through the plan stage: a named unstable face is refused before anything is planned.
+  PlannerOptions o;
+  o.points = 30;
+  o.setup_faces = {foot_end};
+  CHECK_THROWS_WITH_AS(plan_stage(part, map, o, nullptr, "l_part", "regions.json", ""),
+                       doctest::Contains(refused_by_stage.c_str()), InputError);
+}
