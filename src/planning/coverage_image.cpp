@@ -33,7 +33,7 @@ namespace {
 
 // The part's views with each region filled by `colour` of its coverage,
 // the points drawn on top.
-std::vector<unsigned char> draw_coverage(const Part& part, const RegionMap& map, const PlanCoverage& coverage,
+std::vector<unsigned char> draw_coverage(PartViewPanels views, const RegionMap& map, const PlanCoverage& coverage,
                                          const std::function<Rgb(const RegionCoverage&)>& colour,
                                          std::vector<LegendEntry> legend, const std::string& title,
                                          const std::vector<Eigen::Vector3d>& points) {
@@ -48,7 +48,7 @@ std::vector<unsigned char> draw_coverage(const Part& part, const RegionMap& map,
     return SurfacePaint{colour(*of_region[static_cast<std::size_t>(*id)]), *id};
   };
   legend.push_back({Rgb{35, 35, 35}, "planned point"});
-  PartViewsFigure fig = draw_part_views(title, part, paint, legend);
+  PartViewsFigure fig = draw_part_views(title, std::move(views), paint, legend);
   cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());
   for (const ViewPanel& panel : fig.panels) {
     // Drawn within the panel, as plan.png draws its marks.
@@ -78,6 +78,11 @@ Rgb setup_colour(int setup) {
 
 std::vector<unsigned char> coverage_image_png(const Part& part, const RegionMap& map, const PlanResult& result,
                                               const PlanCoverage& coverage) {
+  return coverage_image_png(map, result, coverage, part_view_panels(part));
+}
+
+std::vector<unsigned char> coverage_image_png(const RegionMap& map, const PlanResult& result,
+                                              const PlanCoverage& coverage, PartViewPanels views) {
   bool present[4] = {false, false, false, false};
   for (const RegionCoverage& r : coverage.regions) present[static_cast<int>(r.state)] = true;
   std::vector<LegendEntry> legend;
@@ -89,13 +94,19 @@ std::vector<unsigned char> coverage_image_png(const Part& part, const RegionMap&
                 coverage.regions.size());
   std::vector<Eigen::Vector3d> points;
   for (const PlannedPoint& p : result.plan.points) points.push_back(p.xyz);
-  return draw_coverage(part, map, coverage, [](const RegionCoverage& r) { return coverage_colour(r.state); }, legend,
+  return draw_coverage(std::move(views), map, coverage, [](const RegionCoverage& r) { return coverage_colour(r.state); }, legend,
                        title, points);
 }
 
 std::vector<unsigned char> setups_coverage_image_png(const Part& part, const RegionMap& map,
                                                      const PlanCoverage& combined,
                                                      const std::vector<Eigen::Vector3d>& points) {
+  return setups_coverage_image_png(map, combined, points, part_view_panels(part));
+}
+
+std::vector<unsigned char> setups_coverage_image_png(const RegionMap& map, const PlanCoverage& combined,
+                                                     const std::vector<Eigen::Vector3d>& points,
+                                                     PartViewPanels views) {
   int setups = 0;
   bool present[4] = {false, false, false, false};
   for (const RegionCoverage& r : combined.regions) {
@@ -115,7 +126,7 @@ std::vector<unsigned char> setups_coverage_image_png(const Part& part, const Reg
                 100 * combined.area.share_covered(), combined.area.total, combined.regions_covered,
                 combined.regions.size());
   return draw_coverage(
-      part, map, combined,
+      std::move(views), map, combined,
       [](const RegionCoverage& r) { return r.covered ? setup_colour(r.setup) : coverage_colour(r.state); }, legend,
       title, points);
 }

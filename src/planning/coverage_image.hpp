@@ -16,6 +16,7 @@
 #include "planning/plan_coverage.hpp"
 #include "planning/probe_planner.hpp"
 #include "render/colour_scale.hpp"
+#include "render/part_views.hpp"
 
 namespace furrow {
 
@@ -26,6 +27,10 @@ Rgb coverage_colour(CoverageState state);
 // coverage.regions by RegionCoverage::region).
 std::vector<unsigned char> coverage_image_png(const Part& part, const RegionMap& map, const PlanResult& result,
                                               const PlanCoverage& coverage);
+// The same on the part's panels made beforehand (render/part_views.hpp
+// part_view_panels of the part the plan was made on): the same bytes.
+std::vector<unsigned char> coverage_image_png(const RegionMap& map, const PlanResult& result,
+                                              const PlanCoverage& coverage, PartViewPanels views);
 
 // The colour of the regions covered in setup k (1, 2, ...).
 Rgb setup_colour(int setup);
@@ -37,5 +42,9 @@ Rgb setup_colour(int setup);
 std::vector<unsigned char> setups_coverage_image_png(const Part& part, const RegionMap& map,
                                                      const PlanCoverage& combined,
                                                      const std::vector<Eigen::Vector3d>& points);
+// The same on the part's panels made beforehand: the same bytes.
+std::vector<unsigned char> setups_coverage_image_png(const RegionMap& map, const PlanCoverage& combined,
+                                                     const std::vector<Eigen::Vector3d>& points,
+                                                     PartViewPanels views);
 
 }  // namespace furrow

@@ -13,7 +13,13 @@
 // A face can carry the part only when the part lies wholly on its inner
 // side (a face on the convex hull): every region border vertex and region
 // interior point of the partition is at most kStableTolerance above its
-// plane. Faces that are not planar or not stable are refused by name.
+// plane; and when the part's centre of mass (geometry/solid_mass.hpp)
+// projects along the normal inside the convex hull of what touches the
+// table (every border vertex and interior point within kStableTolerance
+// of the plane: the face and any face coplanar with it), so the part does
+// not tip over. When the faces do not bound a solid (an open shell) there
+// is no centre of mass and only the first condition is checked. Faces that
+// are not planar or not stable are refused by name.
 //
 // Units: mm. Pure functions; no geometry is changed in place.
 #include <Eigen/Geometry>
@@ -22,6 +28,7 @@
 #include <vector>
 
 #include "geometry/part.hpp"
+#include "geometry/solid_mass.hpp"
 #include "partition/region_map.hpp"
 
 namespace furrow {
@@ -46,25 +53,33 @@ struct RestingFace {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, outward
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // on the face
   double area = 0;                                    // of its regions [mm^2]
-  bool stable = false;                                // the part lies on its inner side
+  bool on_hull = false;                               // the part lies on its inner side
+  // How far the centre of mass's projection lies inside the support's
+  // convex hull [mm] (negative: outside, the part tips over); +infinity
+  // when the part has no centre of mass (not a closed solid).
+  double balance_margin = 0;
+  bool stable = false;                                // on_hull and balance_margin >= 0
 };
 
 // The face as a resting candidate; nullopt when it is not planar (neither
 // recognised as a plane at import nor by recognise_analytic) or holds no
 // region. Precondition: `map` belongs to `part`.
 std::optional<RestingFace> planar_face(const Part& part, const RegionMap& map, int face);
+// The same with the part's mass computed beforehand (solid_mass(part)).
+std::optional<RestingFace> planar_face(const Part& part, const RegionMap& map, int face, const SolidMass& mass);
 
 // Every stable planar face, largest area first (ties: lower index), one per
 // plane: coplanar faces (bosses of one height) are one support, named by
-// the largest of them. Only the side the part lies on is checked, not that
-// its centre of mass stands over the support.
+// the largest of them.
 std::vector<RestingFace> resting_candidates(const Part& part, const RegionMap& map);
 
 // The setup resting on `face` (index >= 2).
 PartSetup resting_setup(const RestingFace& face, int index, bool named);
 
 // Throws InputError naming `where` and the face when it is not a face of
-// the part, not planar, or not stable.
+// the part, not planar, or not stable (saying which condition fails: the
+// part stands out beyond the plane, or its centre of mass lies outside the
+// support and by how much).
 RestingFace named_resting_face(const Part& part, const RegionMap& map, int face, const std::string& where);
 
 // The part and its partition moved rigidly (control points, region border

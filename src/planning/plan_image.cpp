@@ -64,6 +64,10 @@ void draw_marks(cv::Mat& img, const ViewPanel& panel, const PlanResult& result) 
 }  // namespace
 
 std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map, const PlanResult& result) {
+  return plan_image_png(map, result, part_view_panels(part));
+}
+
+std::vector<unsigned char> plan_image_png(const RegionMap& map, const PlanResult& result, PartViewPanels views) {
   std::vector<LegendEntry> legend = class_legend(map);
   const LegendEntry marks[] = {{kStraight, "straight move"},    {kOver, "over clearance plane"},
                                {Rgb{35, 35, 35}, "point"},      {kHidden, "point hidden in view"},
@@ -71,7 +75,7 @@ std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map
                                {kFirst, "first point"},         {kDropped, "dropped / last"}};
   legend.insert(legend.end(), std::begin(marks), std::end(marks));
   const std::string title = "Probe plan: " + std::to_string(result.plan.points.size()) + " points";
-  PartViewsFigure fig = draw_part_views(title, part, region_map_painter(map), legend);
+  PartViewsFigure fig = draw_part_views(title, std::move(views), region_map_painter(map), legend);
   cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());
   for (const ViewPanel& panel : fig.panels) draw_marks(img, panel, result);
   return part_views_png(fig);

@@ -17,9 +17,13 @@
 #include "geometry/part.hpp"
 #include "partition/region_map.hpp"
 #include "planning/probe_planner.hpp"
+#include "render/part_views.hpp"
 
 namespace furrow {
 
 std::vector<unsigned char> plan_image_png(const Part& part, const RegionMap& map, const PlanResult& result);
+// The same on the part's panels made beforehand (render/part_views.hpp
+// part_view_panels of the part the plan was made on): the same bytes.
+std::vector<unsigned char> plan_image_png(const RegionMap& map, const PlanResult& result, PartViewPanels views);
 
 }  // namespace furrow

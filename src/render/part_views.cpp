@@ -124,8 +124,7 @@ Rgb PartViewsFigure::shaded(const Rgb& base, float light) {
   return out;
 }
 
-PartViewsFigure draw_part_views(const std::string& title, const Part& part, const SurfacePainter& paint,
-                                const std::vector<LegendEntry>& legend, const std::vector<ViewLabel>& labels) {
+PartViewPanels part_view_panels(const Part& part) {
   if (part.faces.empty()) throw std::invalid_argument("part views: the part has no faces");
   Eigen::AlignedBox3d box = drawn_box(part);
   if (box.isEmpty()) box = part.control_box();  // every sample trimmed away: show the nets' extent
@@ -134,13 +133,7 @@ PartViewsFigure draw_part_views(const std::string& title, const Part& part, cons
   double scale = std::numeric_limits<double>::infinity();
   for (ViewDirection d : directions)
     scale = std::min(scale, fitting_scale(d, box, kPanelWidth, kPanelHeight, kPanelMargin));
-
-  PartViewsFigure fig;
-  fig.width = 2 * kPanelWidth + kLegendWidth;
-  fig.height = kTitle + 2 * (kCaption + kPanelHeight);
-  fig.bgr.assign(static_cast<std::size_t>(fig.width) * fig.height * 3, 255);
-  cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());
-  plot::text(img, title, {16, 26}, 0.6);
+  PartViewPanels views;
   for (int k = 0; k < 4; ++k) {
     ViewPanel panel;
     panel.direction = directions[k];
@@ -148,12 +141,32 @@ PartViewsFigure draw_part_views(const std::string& title, const Part& part, cons
     panel.top = kTitle + (k / 2) * (kCaption + kPanelHeight) + kCaption;
     panel.raster = rasterize_part(part, centred_camera(directions[k], box, kPanelWidth, kPanelHeight, scale),
                                   kPanelWidth, kPanelHeight);
+    views.panels.push_back(std::move(panel));
+  }
+  return views;
+}
+
+PartViewsFigure draw_part_views(const std::string& title, const Part& part, const SurfacePainter& paint,
+                                const std::vector<LegendEntry>& legend, const std::vector<ViewLabel>& labels) {
+  return draw_part_views(title, part_view_panels(part), paint, legend, labels);
+}
+
+PartViewsFigure draw_part_views(const std::string& title, PartViewPanels views, const SurfacePainter& paint,
+                                const std::vector<LegendEntry>& legend, const std::vector<ViewLabel>& labels) {
+  if (views.panels.size() != 4) throw std::invalid_argument("part views: four panels expected");
+  PartViewsFigure fig;
+  fig.width = 2 * kPanelWidth + kLegendWidth;
+  fig.height = kTitle + 2 * (kCaption + kPanelHeight);
+  fig.bgr.assign(static_cast<std::size_t>(fig.width) * fig.height * 3, 255);
+  cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());
+  plot::text(img, title, {16, 26}, 0.6);
+  for (ViewPanel& panel : views.panels) {
     std::map<std::int64_t, int> key_pixels;
     paint_panel(img, panel, paint, key_pixels);
     cv::rectangle(img, cv::Rect(panel.left + 2, panel.top, kPanelWidth - 4, kPanelHeight), plot::kGrid, 1);
-    plot::text(img, view_caption(directions[k]), {panel.left + 8, panel.top - 6}, 0.45);
+    plot::text(img, view_caption(panel.direction), {panel.left + 8, panel.top - 6}, 0.45);
     draw_scale_bar(img, panel);
-    const double tolerance = 1.5 / scale;
+    const double tolerance = 1.5 / panel.raster.camera.scale;
     // In the given order, each where it overlaps no label already placed
     // in this view (dense views would otherwise print one over another).
     std::vector<cv::Rect> placed;
@@ -172,8 +185,8 @@ PartViewsFigure draw_part_views(const std::string& title, const Part& part, cons
       plot::text_centred(img, label.text, p, 0.4, plot::kPaper, 4);
       plot::text_centred(img, label.text, p, 0.4, plot::kInk, 1);
     }
-    fig.panels.push_back(std::move(panel));
   }
+  fig.panels = std::move(views.panels);
   // Legend: the caller's entries, then what the lines mean.
   int y = kTitle + kCaption + 10;
   const int x = 2 * kPanelWidth + 14;

@@ -79,8 +79,26 @@ struct PartViewsFigure {
   static Rgb shaded(const Rgb& base, float light);
 };
 
+// The four panels (top, front, side, iso) of a part at one common scale,
+// placed in the figure and rasterized, before anything is painted on them.
+// Rasterizing is most of a figure's cost (every face tessellated and cut by
+// its trim, once per view) and does not depend on the paint, so a caller
+// that draws several figures of one part (plan.png and coverage.png)
+// computes the panels once and draws each figure from a copy: the figures
+// are the same bytes as when each rasterizes the part itself.
+struct PartViewPanels {
+  std::vector<ViewPanel> panels;  // top, front, side, iso
+};
+
+// Throws std::invalid_argument for a part without faces.
+PartViewPanels part_view_panels(const Part& part);
+
 // Throws std::invalid_argument for a part without faces.
 PartViewsFigure draw_part_views(const std::string& title, const Part& part, const SurfacePainter& paint,
+                                const std::vector<LegendEntry>& legend, const std::vector<ViewLabel>& labels = {});
+// The same figure on panels already made (taken by value: pass a copy to
+// draw another figure from them, or move them into the last one).
+PartViewsFigure draw_part_views(const std::string& title, PartViewPanels views, const SurfacePainter& paint,
                                 const std::vector<LegendEntry>& legend, const std::vector<ViewLabel>& labels = {});
 
 // PNG bytes of the figure (render/png.hpp).

@@ -26,11 +26,14 @@ namespace {
 
 // One setup's plan and files (names relative to its folder). `setup`: the
 // record plan.json states (none for a plan of one setup); `prefix` goes
-// before every point id.
+// before every point id. The part's views are rasterized once for both
+// figures (the most of their cost); `keep_views`, when given, gets them
+// for a further figure of the same part.
 PlanStage plan_one_setup(const Part& part, const RegionMap& map, const PlannerOptions& options, const RiskMap* risk,
                          const std::string& program, const std::string& regions_name,
                          const std::string& prediction_name, const PlanProgress& progress,
-                         const std::optional<PlanSetupRecord>& setup, const std::string& prefix) {
+                         const std::optional<PlanSetupRecord>& setup, const std::string& prefix,
+                         PartViewPanels* keep_views = nullptr) {
   PlanStage out;
   out.result = plan_probe_points(part, map, options, risk, progress);
   out.result.plan.setup = setup;
@@ -60,8 +63,12 @@ PlanStage plan_one_setup(const Part& part, const RegionMap& map, const PlannerOp
   out.program = program;
   const ProbeProgram cmm = make_probe_program(out.result, program, options);
   out.plan_json = plan_to_json_text(out.result.plan);
-  const std::vector<unsigned char> png = plan_image_png(part, map, out.result);
-  const std::vector<unsigned char> coverage_png = coverage_image_png(part, map, out.result, out.coverage);
+  PartViewPanels views = part_view_panels(part);
+  const std::vector<unsigned char> png = plan_image_png(map, out.result, views);
+  const std::vector<unsigned char> coverage_png =
+      keep_views ? coverage_image_png(map, out.result, out.coverage, views)
+                 : coverage_image_png(map, out.result, out.coverage, std::move(views));
+  if (keep_views) *keep_views = std::move(views);
   out.files = {
       {"plan.json", out.plan_json},
       {"plan.csv", plan_to_csv_text(out.result.plan)},
@@ -109,6 +116,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   std::vector<int> used;
   std::vector<PlanCoverage> coverages;
   std::vector<SetupSummary> summaries;
+  PartViewPanels part_views;  // setup 1's, of the part as imported: for the combined figure
   for (int k = 1; k <= count; ++k) {
     PartSetup setup;
     double estimate = 0;
@@ -154,7 +162,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
     try {
       one = plan_one_setup(k == 1 ? part : moved, k == 1 ? map : moved_map, o, risk, program + "_S" + std::to_string(k),
                            regions_name, prediction_name, progress, setup_record(setup),
-                           k == 1 ? "" : "S" + std::to_string(k) + "_");
+                           k == 1 ? "" : "S" + std::to_string(k) + "_", k == 1 ? &part_views : nullptr);
     } catch (const InputError& e) {
       if (k == 1) throw;
       // Nothing the probe can take in this setup (all of it blocked).
@@ -187,7 +195,7 @@ PlanStage plan_stage(const Part& part, const RegionMap& map, const PlannerOption
   for (const SetupPlan& p : out.setups)
     for (const PlannedPoint& q : p.result.plan.points)
       points.push_back(p.result.plan.setup ? p.result.plan.setup->to_part(q.xyz) : q.xyz);
-  const std::vector<unsigned char> png = setups_coverage_image_png(part, map, out.coverage, points);
+  const std::vector<unsigned char> png = setups_coverage_image_png(map, out.coverage, points, std::move(part_views));
   out.files.push_back({"report.json", setups_report_json(summaries, out.coverage, options.part_name, regions_name, out.note)});
   out.files.push_back({"coverage.png", std::string(png.begin(), png.end())});
   out.result = out.setups.front().result;

@@ -33,6 +33,7 @@
 #include "planning/plan_coverage.hpp"
 #include "stage/plan_stage.hpp"
 #include "support/capsule_oracle.hpp"
+#include "support/setup_clearance.hpp"
 
 using namespace furrow;
 using namespace furrow::test;
@@ -88,41 +89,10 @@ double face_area(int face) {
   return areas[face];
 }
 
-// Smallest sampled clearance of the vertical stylus (ball and shaft, built
-// here from the options) of every point of `plan`, along its touch and both
-// vertical legs, from the box moved into the plan's setup frame; and the
-// lowest point of the ball over those moves.
-struct Clearance {
-  double part = std::numeric_limits<double>::infinity();
-  double lowest = std::numeric_limits<double>::infinity();
-};
-Clearance brute_clearance(const SetupPlan& s, const PlannerOptions& o) {
-  REQUIRE(s.result.plan.setup);
-  const PlanSetupRecord& rec = *s.result.plan.setup;
-  std::vector<Eigen::Vector3d> samples = box_samples(0.25);
-  for (Eigen::Vector3d& q : samples) q = rec.rotation * q + rec.translation;
-  const double r = o.probe_diameter / 2, rs = o.stylus_diameter / 2;
-  const double leave = std::sqrt(r * r - rs * rs);
-  const std::vector<OracleCapsule> stylus = {{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), r},
-                                             {Eigen::Vector3d(0, 0, leave), Eigen::Vector3d(0, 0, o.stylus_length), rs}};
-  const std::vector<OracleCapsule> ball_only(stylus.begin(), stylus.begin() + 1);
-  const std::vector<OracleCapsule> shaft(stylus.begin() + 1, stylus.end());
-  const double clearance_z = s.result.clearance_z;
-  Clearance c;
-  for (const PlannedPoint& p : s.result.plan.points) {
-    const Eigen::Vector3d centre = p.xyz + r * p.ijk;
-    // The ball touches at p: along the touch the ball is checked from
-    // 0.01 mm off the contact, the shaft all the way.
-    const Eigen::Vector3d out = p.xyz + (r + std::max(s.result.approach, s.result.retract)) * p.ijk;
-    c.part = std::min(c.part, swept_clearance(samples, ball_only, centre + 0.01 * p.ijk, out));
-    c.part = std::min(c.part, swept_clearance(samples, shaft, centre, out));
-    for (const Eigen::Vector3d& q : {p.approach, p.retract}) {
-      const Eigen::Vector3d top(q.x(), q.y(), std::max(q.z(), clearance_z));
-      c.part = std::min(c.part, swept_clearance(samples, stylus, q, top));
-      c.lowest = std::min({c.lowest, q.z() - r, centre.z() - r});
-    }
-  }
-  return c;
+// The vertical stylus's clearance over every point of a setup, against the
+// box sampled every 0.25 mm (support/setup_clearance.hpp).
+SetupClearance brute_clearance(const SetupPlan& s, const PlannerOptions& o) {
+  return vertical_stylus_clearance(s, o, box_samples(0.25));
 }
 
 // The indexable head of test_auto_tips.cpp, nothing qualified, and the
@@ -139,12 +109,12 @@ const OracleHead kOracleHead{1, 0.5, 20, 25, 6.6, 30, 12};
 // With the head: the assembly of each point's tip (the oracle's capsules)
 // along the touch and both vertical legs, against the box samples in the
 // setup frame; and the lowest point any capsule reaches over those moves.
-Clearance brute_head_clearance(const SetupPlan& s) {
+SetupClearance brute_head_clearance(const SetupPlan& s) {
   REQUIRE(s.result.plan.setup);
   const PlanSetupRecord& rec = *s.result.plan.setup;
   std::vector<Eigen::Vector3d> samples = box_samples(0.25);
   for (Eigen::Vector3d& q : samples) q = rec.rotation * q + rec.translation;
-  Clearance c;
+  SetupClearance c;
   for (const PlannedPoint& p : s.result.plan.points) {
     REQUIRE(p.tip);
     const std::vector<OracleCapsule> all = oracle_capsules(kOracleHead, p.tip->a, p.tip->b);
@@ -211,7 +181,7 @@ TEST_CASE("setups with an indexable head: every point of both setups clear of th
   CHECK(covered_faces >= face_area(0) + face_area(1));
   for (const SetupPlan& s : stage.setups) {
     CAPTURE(s.setup.index);
-    const Clearance c = brute_head_clearance(s);
+    const SetupClearance c = brute_head_clearance(s);
     const double h = 0.25;
     CHECK(c.part >= -(h * h / 2 + 1e-6));
     // Setup 1 stands on the box's lowest point (z = 0), setup 2 on its top, moved to z = 0.
@@ -271,7 +241,7 @@ TEST_CASE("setups: the bottom, reachable only from below, is planned in setup 2 
   // Brute force in each setup's frame: clear of the part, above the fixture plane.
   for (const SetupPlan& s : stage.setups) {
     CAPTURE(s.setup.index);
-    const Clearance c = brute_clearance(s, o);
+    const SetupClearance c = brute_clearance(s, o);
     CHECK(c.part >= -(0.25 * 0.25 / 2 + 1e-6));
     // Both setups stand on z = 0: setup 1 on the box's lowest point, setup 2 on the top.
     CHECK(c.lowest >= -1e-9);
