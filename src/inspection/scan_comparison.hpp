@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "inspection/comparison.hpp"
+#include "inspection/scan_display.hpp"
 #include "io/scan/scan_cloud.hpp"
 #include "io/scan/scan_preprocess.hpp"
 
@@ -57,6 +58,11 @@ struct ScanComparison {
   std::vector<float> deviation;         // per point [mm]; 0 where not evaluated
   std::vector<int> region;              // per point; -1 none (no partition, or not evaluated)
   ComparisonSummary summary;            // over the evaluated points; points = evaluated + off_part
+  // What the report shows (scan_display.hpp), filled by the comparison
+  // stage (compare_scan_stage) after compare_scan.
+  ScanDisplay display;
+  ScanHistogram histogram;
+  RegistrationOptions fit_options;  // what the fit ran with (comparison.json "fit_options")
 };
 
 // `cloud` and `pre` as read and pre-processed; `regions` may be null (else

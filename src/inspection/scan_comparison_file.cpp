@@ -2,6 +2,8 @@
 #include "inspection/scan_comparison_file.hpp"
 
 #include "inspection/comparison_json.hpp"
+#include "inspection/scan_display_json.hpp"
+#include "inspection/scan_fit_options_json.hpp"
 
 namespace furrow {
 
@@ -65,6 +67,9 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                     {"alignment", s.alignment},
                     {"verdict", to_string(s.verdict)},
                     {"inconclusive", inconclusive}};
+  doc["fit_options"] = scan_fit_options_json(c.fit_options);
+  doc["histogram"] = scan_histogram_json(c.histogram);
+  doc["display"] = scan_display_json(c.display);
   return jf::to_text(doc);
 }
 
