@@ -34,7 +34,8 @@
 namespace furrow {
 
 struct InputDigest {
-  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, compensation, job
+  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, compensation, job,
+                    // scan, deviation cloud
   std::string path;  // as used (a generated file: relative to the output folder)
   std::string sha256;
   std::uintmax_t bytes = 0;

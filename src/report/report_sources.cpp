@@ -34,7 +34,7 @@ ScanReportSources read_scan_report_sources(const std::string& comparison_path) {
   const std::string part_path = locate(comparison_path, "part", src.part);
   s.inputs.push_back(digest_file("part", part_path));
   for (const auto& [role, path] : {std::pair<const char*, const std::string*>{"scan", &src.scan},
-                                   {"deviations", &src.deviations}}) {
+                                   {"deviation cloud", &src.deviations}}) {
     std::error_code ec;
     if (path->empty()) continue;
     if (fs::is_regular_file(*path, ec)) s.inputs.push_back(digest_file(role, *path));
