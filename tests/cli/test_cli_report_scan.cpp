@@ -217,3 +217,32 @@ TEST_CASE("report of a scan renders in headless Chromium: images load, the 3D vi
   REQUIRE(std::regex_search(r.out, m, std::regex("<section id=\"view3d\"[^>]*\\bdata-view3d-spheres=\"([^\"]*)\"")));
   CHECK(m[1].str() == std::to_string(f.c["display"]["points"].size()));
 }
+
+TEST_CASE("report of a scan: an older comparison without its sample, --compensation or --db is exit 2, nothing written") {
+  const ScanReportFixture& f = fixture();
+  json old = f.c;
+  old.erase("display");
+  test::write_text(f.dir + "/old.json", old.dump());
+  const auto r = run_furrow({"report", f.dir + "/old.json", "--out", f.dir + "/old"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("old.json") != std::string::npos);
+  CHECK(r.err.find("compare the scan again") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(f.dir + "/old"));
+  json tampered = f.c;
+  tampered["histogram"]["counts"][20] = tampered["histogram"]["counts"][20].get<std::size_t>() + 1;
+  test::write_text(f.dir + "/tampered.json", tampered.dump());
+  const auto t = run_furrow({"report", f.dir + "/tampered.json", "--out", f.dir + "/tampered"});
+  CHECK(t.status == 2);
+  CHECK(t.err.find("summary.evaluated") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(f.dir + "/tampered"));
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"--compensation", f.dir + "/comp.json"}, {"--db", f.dir + "/results.sqlite"}}) {
+    std::vector<std::string> args = {"report", f.comparison, "--out", f.dir + "/refused"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto refused = run_furrow(args);
+    INFO(refused.err);
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find(extra[0]) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(f.dir + "/refused"));
+  }
+}
