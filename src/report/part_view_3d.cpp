@@ -278,7 +278,7 @@ std::string part_view_3d_json(const PartView3d& v) {
 }
 
 ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction,
-                                 const std::string& points_text) {
+                                 const std::string& points_text, const std::string& static_title) {
   const std::string dir = three_js_directory();
   const std::string three = read_file_or_throw(dir + "/build/three.min.js");
   const std::string orbit = read_file_or_throw(dir + "/examples/js/controls/OrbitControls.js");
@@ -290,7 +290,7 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
   fig.section = "view3d";
   fig.title = "3D view";
   fig.caption = "";
-  fig.png = deviation_views_png(doc, part, view.range);
+  fig.png = deviation_views_png(doc, part, view.range, static_title);
   const std::string static_view =
       html::embedded_png(fig.png, "The measured points on the part in four views", "fig-part_views") + "\n";
 

@@ -132,8 +132,9 @@ std::vector<ReportFigure> make_scan_report_figures(const ScanComparisonDocument&
       p.in_tolerance = s.tolerance.contains(p.deviation);
       view.points.push_back(std::move(p));
     }
-    return part_view_3d_figure(view, part, nullptr, "the scan's deviation surface: " + sample_text(s) +
-                                                         ", each at its place in the part frame");
+    return part_view_3d_figure(view, part, nullptr,
+                               "the scan's deviation surface: " + sample_text(s) + ", each at its place in the part frame",
+                               "Scan deviation surface, " + std::to_string(view.points.size()) + " points shown");
   });
   // As the probe-point figures: one job per thread, each in its own slot.
   std::vector<ReportFigure> out(jobs.size());
