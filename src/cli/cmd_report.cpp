@@ -1,6 +1,7 @@
 // furrow report comparison.json --out reports/NAME: the QA report folder
 // (report.html, report.json, points.csv, figures) of a comparison.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include <ctime>
@@ -15,6 +16,7 @@
 #include "report/print_style.hpp"
 #include "report/process_context.hpp"
 #include "report/report_sources.hpp"
+#include "report/scan_report.hpp"
 #include "report/verdict.hpp"
 
 namespace furrow::cli {
@@ -55,6 +57,37 @@ int run_report(Args& args) {
   args.finish();
   paper_size_css(paper, "--paper");  // a4 or letter, before any work
 
+  if (is_scan_comparison_text(json_fields::read_text(comparison_path))) {
+    if (compensation) args.fail("--compensation: a compensation record is made from probe points, not from a scan");
+    // FURROW_DB names the shop's database for probe points: a scan's report
+    // is made without it; an explicit --db or --serial is refused.
+    const char* env_db = std::getenv("FURROW_DB");
+    if (!storage.serial.empty() || (!storage.db.empty() && (!env_db || storage.db != env_db)))
+      args.fail("--db: a scan comparison is not stored in a results database (docs/scan.md \"Limits\")");
+    ScanReportSources sources = read_scan_report_sources(comparison_path);
+    ReportContext context;
+    if (record) {
+      context.record = read_inspection_record(*record);
+      sources.inputs.push_back(digest_file("record", *record));
+    }
+    check_inputs_outside(out, sources.inputs);
+    context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
+    if (context.title.empty() || context.title == ".") context.title = "comparison";
+    context.generated = utc_timestamp();
+    context.inputs = sources.inputs;
+    const std::vector<FolderFile> files =
+        make_scan_report(sources.doc, sources.part, sources.regions ? &*sources.regions : nullptr, context);
+    write_folder_atomically(out, [&](const std::string& staging) {
+      write_folder_files(staging, files);
+      if (pdf) print_pdf(staging + "/report.html", staging + "/report.pdf", PdfOptions{paper});
+    });
+    const ReportVerdict v = report_verdict(scan_as_comparison(sources.doc));
+    std::printf("verdict: %s (scan: profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance)\n"
+                "wrote %s/report.html (and report.json, points.csv, %zu figure files%s)\n",
+                v.result(), v.profile * 1000, v.zone.width * 1000, v.out_of_tolerance, v.evaluated, out.c_str(),
+                files.size() - 3, pdf ? ", report.pdf" : "");
+    return exit_status(v.verdict, v.alignment);
+  }
   ReportSources sources = read_report_sources(comparison_path);
   ReportContext context;
   if (record) {  // checked before any work; its digest goes with the other inputs
@@ -118,7 +151,10 @@ const Command kReportCommand = {
     "With --pdf also report.pdf, the page printed by headless Chromium\n"
     "(/usr/bin/chromium; A4 or Letter, header and page number on every page).\n"
     "The part, plan, regions and prediction the comparison names are looked up\n"
-    "relative to the current directory, then next to COMPARISON.\n"
+    "relative to the current directory, then next to COMPARISON.\n"    "A comparison of a scan (furrow compare --scan) gets a Scan section, the\n"
+    "histogram of every evaluated point and its deviation surface (the sample\n"
+    "the comparison recorded) in the maps and the 3D view; the raw scan is not\n"
+    "needed, and there is no results.qif (docs/report.md \"A scan\").\n"
     "Exit status 0 when the comparison passed, 1 when it failed, 4 when it was\n"
     "inconclusive.\n"
     "\n"

@@ -38,6 +38,7 @@
 
 #include "inspection/comparison.hpp"
 #include "inspection/scan_verification.hpp"
+#include "inspection/scan_display.hpp"
 #include "io/scan/scan_cloud.hpp"
 #include "io/scan/scan_preprocess.hpp"
 
@@ -80,6 +81,11 @@ struct ScanComparison {
   ComparisonSummary summary;            // over the evaluated points; points = evaluated + off_part
   // With a machining prediction (scan_verification.hpp).
   std::optional<ScanVerification> verification;
+  // What the report shows (scan_display.hpp), filled by the comparison
+  // stage (compare_scan_stage) after compare_scan.
+  ScanDisplay display;
+  ScanHistogram histogram;
+  RegistrationOptions fit_options;  // what the fit ran with (comparison.json "fit_options")
 };
 
 // `cloud` and `pre` as read and pre-processed; `regions` may be null (else

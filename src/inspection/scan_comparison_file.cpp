@@ -5,6 +5,8 @@
 
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
+#include "inspection/scan_display_json.hpp"
+#include "inspection/scan_fit_options_json.hpp"
 
 namespace furrow {
 
@@ -147,6 +149,9 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                     {"alignment", s.alignment},
                     {"verdict", to_string(s.verdict)},
                     {"inconclusive", inconclusive}};
+  doc["fit_options"] = scan_fit_options_json(c.fit_options);
+  doc["histogram"] = scan_histogram_json(c.histogram);
+  doc["display"] = scan_display_json(c.display);
   return jf::to_text(doc);
 }
 

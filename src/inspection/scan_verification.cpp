@@ -154,7 +154,6 @@ void verify_scan_prediction(ScanComparison& c, const ScanCloud& cloud, const Par
       v.sites.push_back(std::move(g));
       continue;
     }
-    const std::size_t j = *s.deepest;
     s.measured_depth = -deepest;
     s.uncertainty = v.noise / std::sqrt(static_cast<double>(g.read_points));
     s.threshold = overcut_threshold(*s.uncertainty, 0.0, c.tolerance, options.gouges);

@@ -15,6 +15,7 @@
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
+#include "stage/scan_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -211,6 +212,16 @@ void read_measurements(const JsonCursor& root, Job& job, const std::string& fold
   JsonCursor m(*value, where);
   if (auto sim = m.optional_at("simulate")) {
     read_simulation(*sim, job);
+  } else if (auto scan = m.optional_at("scan")) {
+    ScanJob sj;
+    sj.file = path_member(*scan, "file", folder);
+    if (const auto units = scan->optional_string("units")) {
+      if (*units != "mm" && *units != "inch") throw InputError(scan->path("units") + ": expected mm or inch");
+      sj.units = *units;
+    }
+    read_option_members(*scan, scan_option_table(), sj.preprocessing);
+    scan->finish("docs/formats.md \"Job file\"");
+    job.scan = sj;
   } else if (const json* files = m.find("file")) {
     job.measurement_files = measurement_paths(*files, m.path("file"), folder);
     if (const auto kind = m.optional_string("points")) job.measurement_read.kind = parse_probe_point_kind(*kind, m.path("points"));
@@ -218,7 +229,8 @@ void read_measurements(const JsonCursor& root, Job& job, const std::string& fold
     if (const auto units = m.optional_string("units")) job.measurement_read.units = *units;
     read_measurement_dialect(m, job, folder);
   } else {
-    throw InputError(where + ": expected a file name, a list of them, {\"file\": ...} or {\"simulate\": {...}}");
+    throw InputError(where + ": expected a file name, a list of them, {\"file\": ...}, {\"simulate\": {...}} or "
+                             "{\"scan\": {...}}");
   }
   m.finish("docs/formats.md \"Job file\"");
 }
@@ -261,6 +273,7 @@ void read_compensate(const JsonCursor& c, Job& job) {
                      "tool");
   if (!job.has_measurements())
     throw InputError(c.where() + ": compensation needs the measured comparison: the job has no \"measurements\"");
+  if (job.scan) throw InputError(c.where() + ": compensation is made from probe points, not from a scan");
   const std::string out_ext = lower_extension(out);
   if (out_ext == ".json")
     throw InputError(c.path("out") + ": expected a program file name (its record is written beside it as .json)");

@@ -29,6 +29,7 @@
 #include "report/inspection_record.hpp"
 #include "stage/compensate_options.hpp"
 #include "stage/toolpath_stage.hpp"
+#include "io/scan/scan_preprocess.hpp"
 
 namespace furrow {
 
@@ -40,6 +41,15 @@ constexpr int kJobFormatVersion = 1;
 struct MeasurementSimulationJob {
   bool from_prediction = true;
   SimulationOptions options;  // surface_offset is set by the pipeline
+};
+
+// A dense scan compared instead of probe points ("measurements": {"scan":
+// {...}}; docs/scan.md "In a job"): the cloud file, its units and the
+// pre-processing options of furrow compare --scan.
+struct ScanJob {
+  std::string file;  // resolved path
+  std::string units = "mm";
+  ScanPreprocessOptions preprocessing;
 };
 
 struct Job {
@@ -73,6 +83,7 @@ struct Job {
   std::string measurement_dialect_file;  // a saved CSV dialect (measurement_read.dialect comes from it); empty: none
   MeasurementReadOptions measurement_read;  // probe diameter 0: the plan's probe
   std::optional<MeasurementSimulationJob> simulate;
+  std::optional<ScanJob> scan;  // a scan instead (then no probe-point measurements)
 
   CompareOptions compare;              // tolerance zone, registration, verification rules
   bool compare_with_prediction = true;  // predicted vs measured, gouge confirmation
@@ -95,7 +106,7 @@ struct Job {
   std::optional<InspectionRecord> record;
   std::string record_file;
 
-  bool has_measurements() const { return !measurement_files.empty() || simulate.has_value(); }
+  bool has_measurements() const { return !measurement_files.empty() || simulate.has_value() || scan.has_value(); }
 };
 
 // Reads and checks a job file; relative paths become relative to its folder

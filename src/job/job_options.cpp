@@ -6,6 +6,7 @@
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
+#include "stage/scan_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -53,6 +54,11 @@ std::string job_options_json(const Job& job) {
     simulate["prediction"] = job.simulate->from_prediction;
     simulate["bumps"] = std::move(bumps);
     j["measurements"] = {{"simulate", std::move(simulate)}};
+  } else if (job.scan) {
+    json scan = option_members(scan_option_table(), job.scan->preprocessing);
+    scan["file"] = job.scan->file;
+    scan["units"] = job.scan->units;
+    j["measurements"] = {{"scan", std::move(scan)}};
   } else if (!job.measurement_files.empty()) {
     const MeasurementReadOptions& r = job.measurement_read;
     const json files = job.measurement_files.size() == 1 ? json(job.measurement_files[0]) : json(job.measurement_files);

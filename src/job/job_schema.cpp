@@ -8,6 +8,7 @@
 #include "stage/partition_options.hpp"
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
+#include "stage/scan_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -73,8 +74,13 @@ json measurements_schema() {
       describe(simulation_option_table()),
       {{"prediction", typed("boolean", "the machined surface is nominal + predicted error")},
        {"bumps", {{"type", "array"}, {"items", bump}, {"description", "[[x, y, z, radius, height], ...] in mm"}}}});
+  json scan = section_schema(describe(scan_option_table()),
+                             {{"file", path("the scan (PLY or PCD), compared as furrow compare --scan does")},
+                              {"units", {{"enum", {"mm", "inch"}}}}});
+  scan["required"] = {"file"};
   // null, as absent: the job stops after the plan (what a run without measurements echoes).
-  return one_of({files, read, object({{"simulate", simulate}}, {"simulate"}), {{"type", "null"}}});
+  return one_of({files, read, object({{"simulate", simulate}}, {"simulate"}), object({{"scan", scan}}, {"scan"}),
+                 {{"type", "null"}}});
 }
 
 json compensate_schema() {

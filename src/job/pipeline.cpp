@@ -10,6 +10,9 @@
 #include "base/json_fields.hpp"
 #include "base/text_fields.hpp"
 #include "inspection/comparison_file.hpp"
+#include "inspection/scan_comparison_file.hpp"
+#include "inspection/scan_deviation_cloud.hpp"
+#include "io/scan/scan_read.hpp"
 #include "inspection/measurement_merge.hpp"
 #include "io/machining/apt_reader.hpp"
 #include "io/cmm/measurement_csv.hpp"
@@ -27,6 +30,8 @@
 #include "io/qif/plan_qif.hpp"
 #include "stage/plan_stage.hpp"
 #include "report/pdf_print.hpp"
+#include "report/scan_report.hpp"
+#include "stage/scan_compare_stage.hpp"
 #include "stage/predict_stage.hpp"
 #include "stage/toolpath_stage.hpp"
 
@@ -329,6 +334,68 @@ std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, con
   return record;
 }
 
+// A scan instead of probe points (docs/scan.md "In a job"): the cloud
+// compared as `furrow compare --scan --regions regions.json --deviations
+// deviations.ply` does, then the report of the scan as `furrow report`
+// makes it from that comparison (read back from its text).
+void scan_job_stages(Staged& s, const Part& part, const RegionMap& map, const Prediction& prediction,
+                     StageClock& clock) {
+  const Job& job = s.job;
+  s.note("read scan");
+  ScanCloud cloud = read_scan(job.scan->file, units_to_mm(job.scan->units, "measurements.scan.units"));
+  // Named as the folder's files name it (relative to the folder), as the
+  // deviation cloud of furrow compare run there names it.
+  cloud.file = relative_to_folder(job.output, job.scan->file);
+  clock.done("read scan");
+  s.note("compare");
+  CompareOptions options = job.compare;
+  options.registration.progress = [&](const std::string& what) { s.note("compare: " + what); };
+  const ScanComparison c = compare_scan_stage(part, cloud, &map, job.compare_with_prediction ? &prediction : nullptr,
+                                              options, job.scan->preprocessing);
+  ScanComparisonSources sources;
+  sources.part = s.part_name;
+  sources.scan = cloud.file;
+  sources.regions = "regions.json";
+  sources.deviations = "deviations.ply";
+  sources.units = job.scan->units;
+  sources.prediction = job.compare_with_prediction ? "prediction.json" : "";
+  s.add("deviations.ply", scan_deviation_ply(c, cloud));
+  std::string text = scan_comparison_json(c, sources);
+  const ScanComparisonDocument doc = parse_scan_comparison(text, "comparison.json");
+  s.add_input("comparison", "comparison.json", std::move(text));
+  clock.done("compare");
+
+  s.note("report");
+  PipelineResult& result = s.result;
+  ReportContext context;
+  context.title = job.name;
+  context.description = job.description;
+  context.generated = utc_timestamp();
+  context.inputs = s.inputs;
+  context.job_options_json = job_options_json(job);
+  context.record = job.record;
+  const Clock::time_point report_start = Clock::now();
+  const std::vector<ReportFigure> figures = make_scan_report_figures(doc, part, &map);
+  context.stages = result.stages;
+  context.stages.push_back({"report", std::chrono::duration<double>(Clock::now() - report_start).count()});
+  context.total_seconds = clock.total();
+  context.scan = std::make_shared<const ScanComparisonDocument>(doc);
+  std::vector<FolderFile> report = render_report(scan_as_comparison(doc), &map, figures, context);
+  clock.done("report");
+  for (FolderFile& f : report) result.files.push_back(std::move(f));
+  const ComparisonSummary& sum = doc.summary;
+  result.measured = true;
+  result.pass = sum.pass;
+  result.verdict = sum.verdict;
+  result.alignment = sum.alignment;
+  result.summary.push_back(line("scan: %zu points read, %zu spray far, %zu spray near, %zu off the part; %zu compared",
+                                doc.points.read, doc.points.spray_far, doc.points.spray_near, doc.points.off_part,
+                                doc.points.kept));
+  result.summary.push_back(line("verdict: %s (profile %.1f um, zone %.1f um, %zu of %zu points out of tolerance)",
+                                to_string(sum.verdict), sum.profile * 1000, doc.tolerance.width * 1000,
+                                sum.out_of_tolerance, sum.evaluated));
+}
+
 }  // namespace
 
 PipelineResult run_job(const Job& job, const PipelineProgress& progress, const ProcessLookup& process) {
@@ -356,6 +423,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
   if (!job.measurement_read.ippdme_program.empty())
     s.inputs.push_back(digest_file("I++ DME program", job.measurement_read.ippdme_program));
+  if (job.scan) s.inputs.push_back(digest_file("scan", job.scan->file));
   if (!job.record_file.empty()) s.inputs.push_back(digest_file("record", job.record_file));
   if (!job.rps_file.empty()) s.inputs.push_back(digest_file("rps", job.rps_file));
   if (!job.head_file.empty()) s.inputs.push_back(digest_file("head", job.head_file));
@@ -385,7 +453,9 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
   const InspectionPlan plan = plan_stage(s, part, map, prediction);
   clock.done("plan");
 
-  if (job.has_measurements()) {
+  if (job.scan) {
+    scan_job_stages(s, part, map, prediction, clock);
+  } else if (job.has_measurements()) {
     const MeasurementSet set = measurement_stage(s, plan, prediction);
     clock.done(job.simulate ? "simulate measurement" : "read measurements");
     const ComparisonDocument doc = compare_stage(s, part, plan, map, prediction, set);

@@ -7,10 +7,12 @@
 
 namespace furrow {
 
-std::vector<unsigned char> deviation_views_png(const ComparisonDocument& doc, const Part& part, double range) {
+std::vector<unsigned char> deviation_views_png(const ComparisonDocument& doc, const Part& part, double range,
+                                               const std::string& named) {
   const Rgb surface{205, 205, 205}, not_evaluated{150, 150, 150};
   const SurfacePainter grey = [surface](std::size_t, const Eigen::Vector2d&) { return SurfacePaint{surface, -1}; };
-  const std::string title = "Measured points, " + std::to_string(doc.points.size()) + " at their foot points";
+  const std::string title =
+      named.empty() ? "Measured points, " + std::to_string(doc.points.size()) + " at their foot points" : named;
   PartViewsFigure fig = draw_part_views(title, part, grey,
                                         {{surface, "part surface"}, {not_evaluated, "not evaluated"}});
   cv::Mat img(fig.height, fig.width, CV_8UC3, fig.bgr.data());

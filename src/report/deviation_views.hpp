@@ -9,6 +9,7 @@
 //
 // The 3D view's static figure (part_view_3d.hpp): what a printed report or
 // a browser without WebGL shows of the part in 3D. Deterministic PNG bytes.
+#include <string>
 #include <vector>
 
 #include "geometry/part.hpp"
@@ -16,7 +17,9 @@
 
 namespace furrow {
 
-// `range` [mm] of the colour scale (> 0).
-std::vector<unsigned char> deviation_views_png(const ComparisonDocument& doc, const Part& part, double range);
+// `range` [mm] of the colour scale (> 0). `title` names the points (default:
+// "Measured points, N at their foot points").
+std::vector<unsigned char> deviation_views_png(const ComparisonDocument& doc, const Part& part, double range,
+                                               const std::string& title = "");
 
 }  // namespace furrow

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <cstdio>
 #include <map>
 
@@ -162,6 +163,35 @@ Drawing histogram_drawing(const std::string& title, const std::vector<double>& v
   }
   for (double tol : {tolerance.lower, tolerance.upper}) {
     const Eigen::Vector2d top = frame.to_pixel(tol * 1000.0, peak * 1.1), bottom = frame.to_pixel(tol * 1000.0, 0);
+    d.line(top, bottom, Drawing::kInk, 2);
+    d.text(tol >= 0 ? "+tol" : "\u2212tol", {top.x(), top.y() - 6}, 14, TextAnchor::middle);
+  }
+  return d;
+}
+
+Drawing histogram_bins_drawing(const std::string& title, const std::vector<double>& edges,
+                               const std::vector<std::size_t>& counts, const ToleranceLimits& tolerance) {
+  Drawing d = blank_with_title(title);
+  if (edges.size() < 2 || counts.size() + 1 != edges.size())
+    throw std::logic_error("histogram_bins_drawing: one count per bin expected");
+  const double lo = std::min(edges.front(), std::min(tolerance.lower, 0.0)) * 1000.0;
+  const double hi = std::max(edges.back(), std::max(tolerance.upper, 0.0)) * 1000.0;
+  const std::size_t peak = std::max<std::size_t>(1, *std::max_element(counts.begin(), counts.end()));
+  const ChartFrame frame({90, 60, kWidth - 130, kHeight - 60 - 70}, lo, hi, 0, static_cast<double>(peak) * 1.1);
+  frame.draw_axes(d, "deviation [\u00b5m]  (+ material left, \u2212 overcut)", "points");
+  const DeviationScale scale{std::max(std::fabs(lo), std::fabs(hi)) / 1000.0};
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    const std::size_t n = counts[k];
+    if (n == 0) continue;
+    const double a = edges[k] * 1000.0, b = edges[k + 1] * 1000.0;
+    DrawItem& bar = d.rect(frame.to_pixel(a, 0), frame.to_pixel(b, static_cast<double>(n)),
+                           scale.colour(0.5 * (a + b) / 1000.0), kRim);
+    bar.css_class = "bin";
+    bar.data = {{"count", std::to_string(n)}};
+  }
+  for (double tol : {tolerance.lower, tolerance.upper}) {
+    const Eigen::Vector2d top = frame.to_pixel(tol * 1000.0, static_cast<double>(peak) * 1.1);
+    const Eigen::Vector2d bottom = frame.to_pixel(tol * 1000.0, 0);
     d.line(top, bottom, Drawing::kInk, 2);
     d.text(tol >= 0 ? "+tol" : "\u2212tol", {top.x(), top.y() - 6}, 14, TextAnchor::middle);
   }

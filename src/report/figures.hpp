@@ -52,6 +52,13 @@ Drawing deviation_map_drawing(const std::string& title, const std::vector<MapPoi
 Drawing histogram_drawing(const std::string& title, const std::vector<double>& values,
                                          const ToleranceLimits& tolerance);
 
+// The same from bins counted elsewhere (a scan's histogram, counted over
+// every point when it was compared): `edges` [mm] increasing, one count per
+// bin; the axis spans the bins and the limits. Each bar carries its count
+// (class "bin", data-count).
+Drawing histogram_bins_drawing(const std::string& title, const std::vector<double>& edges,
+                               const std::vector<std::size_t>& counts, const ToleranceLimits& tolerance);
+
 // Scatter of measured (y) against predicted (x) values in µm, with the line
 // y = x and, when `sigma` is given per point, vertical 1-sigma bars.
 Drawing scatter_drawing(const std::string& title, const std::vector<double>& predicted,

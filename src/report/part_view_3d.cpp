@@ -277,7 +277,8 @@ std::string part_view_3d_json(const PartView3d& v) {
   return out + "}}";
 }
 
-ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction) {
+ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction,
+                                 const std::string& points_text, const std::string& static_title) {
   const std::string dir = three_js_directory();
   const std::string three = read_file_or_throw(dir + "/build/three.min.js");
   const std::string orbit = read_file_or_throw(dir + "/examples/js/controls/OrbitControls.js");
@@ -289,7 +290,7 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
   fig.section = "view3d";
   fig.title = "3D view";
   fig.caption = "";
-  fig.png = deviation_views_png(doc, part, view.range);
+  fig.png = deviation_views_png(doc, part, view.range, static_title);
   const std::string static_view =
       html::embedded_png(fig.png, "The measured points on the part in four views", "fig-part_views") + "\n";
 
@@ -309,8 +310,9 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
   html += "<p class=\"view3d-legend\"><span>&minus;" + std::string(range_um) +
           " &micro;m</span> <span class=\"bar\" style=\"background:" + legend_gradient(view.range) +
           "\"></span> <span>+" + std::string(range_um) +
-          " &micro;m</span></p>\n<p class=\"caption\">The part's faces with every measured point as a sphere at its foot "
-          "point, coloured by deviation on the scale of the 2D maps (blue overcut, red material left, grey not "
+          " &micro;m</span></p>\n<p class=\"caption\">The part's faces with " +
+          (points_text.empty() ? std::string("every measured point as a sphere at its foot point") : points_text) +
+          ", coloured by deviation on the scale of the 2D maps (blue overcut, red material left, grey not "
           "evaluated)" +
           std::string(view.has_prediction ? "; the check box colours the surface with the predicted machining error "
                                             "(z-map error map) on the same scale"

@@ -60,7 +60,11 @@ std::string part_view_3d_json(const PartView3d& view);
 // The report figure: `html` is the whole section (viewer, data, static
 // fallback), `png`/`svg` the static front view. Throws std::runtime_error
 // naming the missing file when three.js is not installed.
-ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction);
+// `points_text` says in the caption what the points are (default: "every
+// measured point as a sphere at its foot point"; a scan's display sample
+// says so), `static_title` titles the static views (deviation_views.hpp).
+ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction,
+                                 const std::string& points_text = "", const std::string& static_title = "");
 
 // Where three.js is read from (FURROW_THREE_DIR, set by CMake).
 std::string three_js_directory();

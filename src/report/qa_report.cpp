@@ -95,10 +95,12 @@ std::vector<FolderFile> render_report(const ComparisonDocument& doc, const Regio
   std::vector<FolderFile> files;
   files.push_back({"report.html", report_html(doc, verdict, regions, context, figures)});
   std::string csv = points_csv_text(doc);
-  std::string qif = comparison_to_qif(doc, context.inputs, context.generated, context.record);  // docs/qif.md
   files.push_back({"report.json", json.get()});
   files.push_back({"points.csv", std::move(csv)});
-  files.push_back({"results.qif", std::move(qif)});
+  // QIF Results hold measured points; a scan's are in its deviation cloud
+  // (docs/report.md "A scan"), so a scan's report has no results.qif.
+  if (!context.scan)
+    files.push_back({"results.qif", comparison_to_qif(doc, context.inputs, context.generated, context.record)});  // docs/qif.md
   for (const ReportFigure& f : figures) {
     files.push_back({f.file, std::string(f.png.begin(), f.png.end())});
     if (!f.svg.empty()) files.push_back({f.svg_file(), f.svg});  // the same text as inline in the HTML

@@ -4,7 +4,8 @@
 //                 offline, in a mail client, from an archive
 //   report.json   every number (docs/report.schema.json)
 //   points.csv    one row per measured point
-//   results.qif   the same as QIF 3.0 Results, timed like report.json (report_qif.hpp)
+//   results.qif   the same as QIF 3.0 Results, timed like report.json (report_qif.hpp);
+//                 not for a scan, whose points are in its deviation cloud
 //   figures/*.png the figures of the HTML as files
 // built from a comparison document (read_comparison) and the part it was
 // made on, plus what the document cannot know: where it came from (input
@@ -16,6 +17,7 @@
 // "generated" (the timestamp) and "timing" (stage times), which is why the
 // context carries them explicitly.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
 #include "inspection/compensation_record.hpp"
+#include "inspection/scan_comparison_document.hpp"
 #include "partition/region_map.hpp"
 #include "report/inspection_record.hpp"
 #include "report/process_context.hpp"
@@ -31,7 +34,8 @@
 namespace furrow {
 
 struct InputDigest {
-  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, compensation, job
+  std::string role;  // part, tool, toolpath, measurements, plan, regions, prediction, comparison, compensation, job,
+                    // scan, deviation cloud
   std::string path;  // as used (a generated file: relative to the output folder)
   std::string sha256;
   std::uintmax_t bytes = 0;
@@ -71,6 +75,9 @@ struct ReportContext {
   // What each face of the part exactly is, indexed like Part::faces (from
   // face_surfaces below); unset for a free-form face. Empty: not known.
   std::vector<std::optional<AnalyticSurface>> face_surfaces;
+  // The report of a scan (scan_report.hpp): what it read, kept and removed,
+  // its registration, display sample and histogram; null for probe points.
+  std::shared_ptr<const ScanComparisonDocument> scan;
 };
 
 // The elementary surface (plane, cylinder, cone, sphere, torus) of every

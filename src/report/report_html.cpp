@@ -11,6 +11,7 @@
 #include "report/point_table_html.hpp"
 #include "report/process_html.hpp"
 #include "report/print_style.hpp"
+#include "report/scan_report.hpp"
 #include "base/number_text.hpp"
 #include "base/numbers.hpp"
 
@@ -419,13 +420,14 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
          (context.description.empty() ? "" : "<p>" + escape(context.description) + "</p>\n") +
          "</header>\n";
   out += verdict_section(verdict);
-  out += "<nav><a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a>" +
+  out += "<nav>" + std::string(context.scan ? "<a href=\"#scan\">Scan</a>" : "") + "<a href=\"#alignment\">Alignment</a><a href=\"#regions\">Regions</a>" +
          std::string(context.process ? "<a href=\"#process\">Process</a>" : "") + "<a href=\"#deviations\">"
          "Deviations</a><a href=\"#view3d\">3D view</a><a href=\"#prediction\">Predicted vs measured</a><a "
          "href=\"#gouges\">Gouges</a>" +
          std::string(context.compensation ? "<a href=\"#compensation\">Compensation</a>" : "") +
          "<a href=\"#faces\">Faces</a><a href=\"#points\">Points</a><a "
          "href=\"#traceability\">Traceability</a></nav>\n";
+  out += scan_section_html(context.scan.get(), figures_of(figures, "scan"));
   out += alignment_section(doc);
   out += regions_section(doc, regions, figures);
   out += process_section_html(context.process);
@@ -435,7 +437,15 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += gouges_section(doc, figures);
   out += compensation_section_html(context.compensation, context.compensation_file,
                                    figures_of(figures, "compensation"));
-  out += face_summary_html(doc, context.face_surfaces) + point_table_html(doc);
+  if (context.scan)  // a scan's points are in its deviation cloud, not listed here
+    out += "<section id=\"points\"><h2>Points</h2>\n<p>The deviation of every point of the scan, and its flag, is in "
+           "the comparison's deviation cloud" +
+           (context.scan->sources.deviations.empty()
+                ? std::string(" (not written: compare with --deviations FILE)")
+                : " <code>" + escape(context.scan->sources.deviations) + "</code>") +
+           "; the sections above count and draw them.</p></section>\n";
+  else
+    out += face_summary_html(doc, context.face_surfaces) + point_table_html(doc);
   out += traceability_section(doc, context) + sign_off_html(context.record);
   return out + kImageCheck + "</body>\n</html>\n";
 }

@@ -10,6 +10,7 @@
 #include "report/compensation_section.hpp"
 #include "report/face_summary.hpp"
 #include "report/merged_surfaces.hpp"
+#include "report/scan_report.hpp"
 
 namespace furrow {
 
@@ -315,6 +316,7 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
     d["gouges"] = nullptr;
   }
   d["compensation"] = compensation_section_json(context.compensation, context.compensation_file);
+  d["scan"] = scan_section_json(context.scan.get());
   d["faces"] = faces_json(doc, context.face_surfaces);
   d["points"] = nullptr;  // streamed below, in its place among the members
   json figs = json::array();

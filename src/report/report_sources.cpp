@@ -25,6 +25,33 @@ std::string locate(const std::string& comparison_path, const std::string& role, 
 
 }  // namespace
 
+ScanReportSources read_scan_report_sources(const std::string& comparison_path) {
+  ScanReportSources s;
+  s.doc = read_scan_comparison(comparison_path);
+  s.inputs.push_back(digest_file("comparison", comparison_path));
+  const auto& src = s.doc.sources;
+  if (src.part.empty()) throw InputError(comparison_path + ": names no part file");
+  const std::string part_path = locate(comparison_path, "part", src.part);
+  s.inputs.push_back(digest_file("part", part_path));
+  for (const auto& [role, path] : {std::pair<const char*, const std::string*>{"scan", &src.scan},
+                                   {"deviation cloud", &src.deviations}}) {
+    std::error_code ec;
+    if (path->empty()) continue;
+    if (fs::is_regular_file(*path, ec)) s.inputs.push_back(digest_file(role, *path));
+    else if (const fs::path beside = fs::path(comparison_path).parent_path() / *path;
+             !fs::path(*path).is_absolute() && fs::is_regular_file(beside, ec))
+      s.inputs.push_back(digest_file(role, beside.lexically_normal().string()));
+  }
+  s.part = read_part(part_path);
+  if (!src.regions.empty()) {
+    const std::string regions_path = locate(comparison_path, "regions", src.regions);
+    s.inputs.push_back(digest_file("regions", regions_path));
+    s.regions = read_regions(regions_path);
+    s.regions->check_belongs_to(s.part, regions_path, part_path);
+  }
+  return s;
+}
+
 ReportSources read_report_sources(const std::string& comparison_path) {
   ReportSources s;
   s.doc = read_comparison(comparison_path);

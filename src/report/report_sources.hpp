@@ -17,6 +17,7 @@
 
 #include "geometry/part.hpp"
 #include "inspection/comparison_document.hpp"
+#include "inspection/scan_comparison_document.hpp"
 #include "machining/prediction/prediction.hpp"
 #include "partition/region_map.hpp"
 #include "report/qa_report.hpp"
@@ -32,5 +33,17 @@ struct ReportSources {
 };
 
 ReportSources read_report_sources(const std::string& comparison_path);
+
+// The same for a comparison of a scan (kind "scan"): the part and the
+// partition are needed and found by the same rules; the scan and its
+// deviation cloud are digested when found (the report does not need them:
+// what it shows is in the comparison) and left out of the inputs when not.
+struct ScanReportSources {
+  ScanComparisonDocument doc;
+  Part part;
+  std::optional<RegionMap> regions;
+  std::vector<InputDigest> inputs;  // comparison first, then its sources
+};
+ScanReportSources read_scan_report_sources(const std::string& comparison_path);
 
 }  // namespace furrow

@@ -12,6 +12,10 @@ ScanComparison compare_scan_stage(const Part& part, const ScanCloud& cloud, cons
   ScanComparison c = compare_scan(finder, cloud, pre, regions, options);
   c.preprocessing = preprocessing;
   if (prediction) verify_scan_prediction(c, cloud, part, *prediction, options);
+  c.fit_options = options.registration;
+  // Recorded now: the report of the comparison must not need the raw scan.
+  c.display = scan_display(c, cloud);
+  c.histogram = scan_histogram(c);
   return c;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The scan pre-processing options of `furrow compare --scan` (docs/scan.md),
 // described once (base/option_table.hpp): the command line, help, the man
-// page and docs/options.md are made from this table. Scans are not a job
-// stage yet, so the table has no job-file section.
+// page and docs/options.md are made from this table; in a job they are
+// members of "measurements": {"scan": {...}} (docs/formats.md "Job file").
 #include "base/option_table.hpp"
 #include "io/scan/scan_preprocess.hpp"
 

@@ -81,7 +81,7 @@ TEST_CASE("the job schema names every option of every stage table in its section
 
 TEST_CASE("the schema and the reader agree on the example jobs, the echoed options and on broken members") {
   const std::string dir = scratch_dir("job-schema");
-  for (const std::string name : {"demo.json", "mould.json"}) {
+  for (const std::string name : {"demo.json", "mould.json", "mould-scan.json"}) {
     CAPTURE(name);
     const json job = json::parse(text_of(source_path("examples/jobs/" + name)));
     CHECK(reader_takes(job));
