@@ -267,6 +267,7 @@ LoadedFile read_file(const std::string& path, Format format) {
 
   // Faces OpenCASCADE split that are put back together (merge_pieces()).
   const Handle(BRepTools_ReShape) merges = new BRepTools_ReShape;
+  bool merged_any = false;
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const Handle(Standard_Transient) entity = model->Value(i);
     std::string name;
@@ -300,6 +301,7 @@ LoadedFile read_file(const std::string& path, Format format) {
             merges->Remove(f.Current());
         result = merged;
         boundary.merged = true;
+        merged_any = true;
       }
     }
     if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
@@ -309,7 +311,7 @@ LoadedFile read_file(const std::string& path, Format format) {
                                    entity_problems(model, process, entity)});
     }
   }
-  file.shape = merges->Apply(file.shape);
+  if (merged_any) file.shape = merges->Apply(file.shape);
   if (format == Format::step) add_unreadable_entities(model, file.untranslated);
   if (format == Format::iges) {
     // IGES faces are roots (trimmed/bounded surfaces, MSBO solids): a root
