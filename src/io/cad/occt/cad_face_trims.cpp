@@ -200,7 +200,9 @@ std::vector<TopoDS_Edge> file_curves_as_walked(const TopoDS_Wire& curves, const 
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const TopoDS_Edge& a = edges[k];
     const TopoDS_Edge& b = edges[(k + 1) % edges.size()];
-    const gp_Pnt end = BRep_Tool::Pnt(TopExp::LastVertex(a, true)), start = BRep_Tool::Pnt(TopExp::FirstVertex(b, true));
+    const TopoDS_Vertex last = TopExp::LastVertex(a, true), first = TopExp::FirstVertex(b, true);
+    if (last.IsNull() || first.IsNull()) return {};
+    const gp_Pnt end = BRep_Tool::Pnt(last), start = BRep_Tool::Pnt(first);
     const double tolerance = std::max({BRep_Tool::Tolerance(a), BRep_Tool::Tolerance(b), 1e-4});
     if (end.Distance(start) > 10 * tolerance) return {};
   }
@@ -209,7 +211,9 @@ std::vector<TopoDS_Edge> file_curves_as_walked(const TopoDS_Wire& curves, const 
   // against (-1) each other there.
   int agree = 0;
   for (const TopoDS_Edge& w : walked) {
+    double w0 = 0, w1 = 0;
     if (BRep_Tool::Degenerated(w)) continue;
+    if (BRep_Tool::Curve(w, w0, w1).IsNull()) return {};
     const BRepAdaptor_Curve wc(w);
     gp_Pnt p;
     gp_Vec tangent;
