@@ -41,10 +41,8 @@ using namespace furrow::test;
 
 namespace {
 
-// The solids, each on its own place along x; `pole_cut`: with the ball cut
-// through its pole (which the import does not yet read right from the file
-// written inside out: it keeps the cut-off cap).
-std::vector<TopoDS_Shape> model_space_solids(bool pole_cut) {
+// The solids, each on its own place along x.
+std::vector<TopoDS_Shape> model_space_solids() {
   std::vector<TopoDS_Shape> solids;
   // A tube (radii 10 and 6, 30 high, seams on +x) with a radial hole of
   // radius 3 along x through both walls.
@@ -65,12 +63,14 @@ std::vector<TopoDS_Shape> model_space_solids(bool pole_cut) {
                        .Shape());
   // A ball cut by a plane through its north pole tilted 0.5 rad toward +x:
   // the cut circle passes the pole between its ends and crosses the seam.
+  // Written inside out, OpenCASCADE's healing drops the seam from the
+  // sphere face's boundary and keeps the cut-off cap: the importer builds
+  // the loop from the file's curves and corrects the shell's volume for it.
   const gp_Pnt pole(400, 0, 15);
   const gp_Dir tilted(std::sin(0.5), 0, std::cos(0.5));
   const TopoDS_Face plane = BRepBuilderAPI_MakeFace(gp_Pln(pole, tilted), -100, 100, -100, 100).Face();
   const TopoDS_Shape below = BRepPrimAPI_MakeHalfSpace(plane, gp_Pnt(400, 0, 0)).Solid();
-  if (pole_cut)
-    solids.push_back(BRepAlgoAPI_Common(BRepPrimAPI_MakeSphere(gp_Pnt(400, 0, 0), 15).Shape(), below).Shape());
+  solids.push_back(BRepAlgoAPI_Common(BRepPrimAPI_MakeSphere(gp_Pnt(400, 0, 0), 15).Shape(), below).Shape());
   // Half balls cut by the plane x = centre: a great circle through both
   // poles; the +x half holds the seam, the -x half does not.
   solids.push_back(BRepAlgoAPI_Common(BRepPrimAPI_MakeSphere(gp_Pnt(500, 0, 0), 15).Shape(),
@@ -113,7 +113,7 @@ std::vector<Measured> measure(const CadImportResult& result) {
 TEST_CASE("CAD import: solids as IGES with model-space boundaries only, every CRTN and PREF, agree with STEP face by face") {
   const std::string dir = scratch_dir("iges-model-space-solids-" + std::to_string(getpid()));
   for (const bool inside_out : {false, true}) {
-    const std::vector<TopoDS_Shape> solids = model_space_solids(!inside_out);
+    const std::vector<TopoDS_Shape> solids = model_space_solids();
     const TopoDS_Compound compound = compound_of(solids);
     write_step(compound, dir + "/part.step");
     const CadImportResult step_import = import_cad(dir + "/part.step");

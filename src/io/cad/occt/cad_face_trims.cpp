@@ -2,15 +2,20 @@
 // cad_face_trims.hpp).
 #include "io/cad/occt/cad_face_trims.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_Curve.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 #include <BndLib_Add2dCurve.hxx>
 #include <Bnd_Box2d.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
@@ -172,6 +177,74 @@ double period_slack(const std::vector<WireUse>& wires, const Handle(Geom_Surface
   return speed > 0 ? std::max(rounding, std::min(tolerance / speed, 1e-6 * period)) : rounding;
 }
 
+// The file's model-space curves of a face's outer boundary
+// (FileBoundary::curves) in the order and direction `walked`, the face's
+// outer wire as walked on the face, runs (by the tangents of the walked
+// edges against the file curves they lie on). None when the curves do not
+// form a chain, or a walked edge lies on none of them (the face's outer wire
+// is not the file's outer boundary: OpenCASCADE's writer may give a hole as
+// the outer boundary of a face on a cylinder); the caller then builds the
+// loop from the walked edges.
+std::vector<TopoDS_Edge> file_curves_as_walked(const TopoDS_Wire& curves, const std::vector<TopoDS_Edge>& walked) {
+  std::vector<TopoDS_Edge> edges;
+  if (curves.IsNull()) return edges;
+  for (TopoDS_Iterator it(curves); it.More(); it.Next()) {
+    if (it.Value().ShapeType() != TopAbs_EDGE) return {};
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Value());
+    double c0 = 0, c1 = 0;
+    if (!BRep_Tool::Degenerated(edge) && BRep_Tool::Curve(edge, c0, c1).IsNull()) return {};
+    edges.push_back(edge);
+  }
+  if (edges.empty()) return {};
+  // A chain, each curve starting where the one before ends (the loop closes).
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const TopoDS_Edge& a = edges[k];
+    const TopoDS_Edge& b = edges[(k + 1) % edges.size()];
+    const TopoDS_Vertex last = TopExp::LastVertex(a, true), first = TopExp::FirstVertex(b, true);
+    if (last.IsNull() || first.IsNull()) return {};
+    const gp_Pnt end = BRep_Tool::Pnt(last), start = BRep_Tool::Pnt(first);
+    const double tolerance = std::max({BRep_Tool::Tolerance(a), BRep_Tool::Tolerance(b), 1e-4});
+    if (end.Distance(start) > 10 * tolerance) return {};
+  }
+  // Every walked edge must lie on one of the file's curves (the face's
+  // outer wire is the file's outer boundary), and they run along (+1) or
+  // against (-1) each other there.
+  int agree = 0;
+  for (const TopoDS_Edge& w : walked) {
+    double w0 = 0, w1 = 0;
+    if (BRep_Tool::Degenerated(w)) continue;
+    if (BRep_Tool::Curve(w, w0, w1).IsNull()) return {};
+    const BRepAdaptor_Curve wc(w);
+    gp_Pnt p;
+    gp_Vec tangent;
+    wc.D1(0.5 * (wc.FirstParameter() + wc.LastParameter()), p, tangent);
+    if (w.Orientation() == TopAbs_REVERSED) tangent.Reverse();
+    bool on_file = false;
+    for (const TopoDS_Edge& e : edges) {
+      if (BRep_Tool::Degenerated(e)) continue;
+      double c0 = 0, c1 = 0;
+      const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, c0, c1);
+      GeomAPI_ProjectPointOnCurve on(p, curve, std::min(c0, c1), std::max(c0, c1));
+      const double tolerance = std::max({10 * BRep_Tool::Tolerance(e), 10 * BRep_Tool::Tolerance(w), 1e-4});
+      if (on.NbPoints() == 0 || on.LowerDistance() > tolerance) continue;
+      gp_Pnt q;
+      gp_Vec along;
+      curve->D1(on.LowerDistanceParameter(), q, along);
+      if (e.Orientation() == TopAbs_REVERSED) along.Reverse();
+      agree += along.Dot(tangent) > 0 ? 1 : -1;
+      on_file = true;
+      break;
+    }
+    if (!on_file) return {};
+  }
+  if (agree == 0) return {};
+  if (agree < 0) {
+    std::reverse(edges.begin(), edges.end());
+    for (TopoDS_Edge& e : edges) e.Reverse();
+  }
+  return edges;
+}
+
 // The face's wires as chains of pcurves, unwrapped so that each chain is
 // continuous in (u,v) even where it crosses a periodic surface's seam.
 // `file` is what the file says about the outer boundary (cad_iges_boundary.hpp).
@@ -188,7 +261,22 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     const TopAbs_Orientation o = it.Value().Orientation();
     face_wire_count += it.Value().ShapeType() == TopAbs_WIRE && o != TopAbs_INTERNAL && o != TopAbs_EXTERNAL;
   }
-  const TopoDS_Wire outer = BRepTools::OuterWire(face);
+  // The outer wire: on a face whose split pieces the reader merged, the one
+  // OpenCASCADE made of the file's outer boundary (the pieces' wires lie
+  // apart, which OuterWire's box test cannot order).
+  TopoDS_Wire outer = BRepTools::OuterWire(face);
+  if (from_model_space && file.merged && !file.wire.IsNull())
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+      if (it.Value().ShapeType() != TopAbs_WIRE) continue;
+      bool shares = false;
+      for (TopExp_Explorer e(it.Value(), TopAbs_EDGE); e.More() && !shares; e.Next())
+        for (TopExp_Explorer o(file.wire, TopAbs_EDGE); o.More() && !shares; o.Next())
+          shares = e.Current().IsSame(o.Current()) && !BRep_Tool::Degenerated(TopoDS::Edge(o.Current()));
+      if (shares) {
+        outer = TopoDS::Wire(it.Value());
+        break;
+      }
+    }
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
     // Internal and external wires (imprinted lines, construction curves) do
     // not bound the face.
@@ -202,48 +290,65 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     std::vector<EdgeUse>& chain = use.edges;
     const bool rebuild = from_model_space && (use.outer || face_wire_count == 1);
     const Eigen::Vector2d period(periods.u ? periods.du : 0.0, periods.v ? periods.dv : 0.0);
-    // The wire rebuilt from the edges' 3-D curves, each cut where it passes
-    // through a pole (cad_projected_curve.hpp pole_passages()); `chain`
-    // keeps the pcurves to fall back on.
-    std::vector<EdgeUse> model_chain;
-    bool model_curves = rebuild;  // every edge has what the rebuilt wire needs
+    std::vector<TopoDS_Edge> walked;  // the wire's edges as walked on the face
     for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) {
       const TopoDS_Edge& edge = we.Current();
+      walked.push_back(edge);
       const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-      const bool degenerate = BRep_Tool::Degenerated(edge) == Standard_True;
       double first = 0, last = 0;
       const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
       EdgeUse use_of_edge;
       use_of_edge.pcurve = pcurve;
       use_of_edge.from = reversed ? last : first;
       use_of_edge.to = reversed ? first : last;
-      use_of_edge.degenerate = degenerate;
+      use_of_edge.degenerate = BRep_Tool::Degenerated(edge) == Standard_True;
       use_of_edge.tolerance = BRep_Tool::Tolerance(edge);
       if (pcurve.IsNull() && !rebuild)
         throw FaceFailure("an edge has no curve in the surface's parameter plane (pcurve)");
-      if (model_curves && degenerate) model_chain.push_back(use_of_edge);
-      if (model_curves && !degenerate) {
+      chain.push_back(std::move(use_of_edge));
+    }
+    // The wire rebuilt from the edges' 3-D curves, each cut where it passes
+    // through a pole (cad_projected_curve.hpp pole_passages()): the file's
+    // own curves where the reader has them (the face's healing may have
+    // dropped some), else the face's; `chain` keeps the pcurves to fall back on.
+    std::vector<EdgeUse> model_chain;
+    bool model_curves = rebuild;  // every edge has what the rebuilt wire needs
+    if (rebuild) {
+      const std::vector<TopoDS_Edge> from_file = file_curves_as_walked(file.curves, walked);
+      for (const TopoDS_Edge& edge : from_file.empty() ? walked : from_file) {
+        const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+        if (BRep_Tool::Degenerated(edge)) {
+          if (!from_file.empty()) continue;  // a pole: the curves' ends say where
+          double first = 0, last = 0;
+          EdgeUse pole;
+          pole.pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+          pole.from = reversed ? last : first;
+          pole.to = reversed ? first : last;
+          pole.degenerate = true;
+          pole.tolerance = BRep_Tool::Tolerance(edge);
+          model_chain.push_back(std::move(pole));
+          continue;
+        }
         double c0 = 0, c1 = 0;
         const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, c0, c1);
         if (curve.IsNull()) {
           model_curves = false;
-        } else {
-          const double from = reversed ? c1 : c0, to = reversed ? c0 : c1;
-          std::vector<double> cuts{from};
-          for (const double t : pole_passages(curve, projector, from, to, period)) cuts.push_back(t);
-          cuts.push_back(to);
-          for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-            EdgeUse piece = use_of_edge;
-            piece.pcurve.Nullify();
-            piece.from = cuts[k];
-            piece.to = cuts[k + 1];
-            piece.projected = std::make_shared<const ProjectedCurve>(curve, projector, piece.from, piece.to, period,
-                                                                     k > 0, k + 2 < cuts.size());
-            model_chain.push_back(std::move(piece));
-          }
+          break;
+        }
+        const double from = reversed ? c1 : c0, to = reversed ? c0 : c1;
+        std::vector<double> cuts{from};
+        for (const double t : pole_passages(curve, projector, from, to, period)) cuts.push_back(t);
+        cuts.push_back(to);
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+          EdgeUse piece;
+          piece.tolerance = BRep_Tool::Tolerance(edge);
+          piece.from = cuts[k];
+          piece.to = cuts[k + 1];
+          piece.projected = std::make_shared<const ProjectedCurve>(curve, projector, piece.from, piece.to, period,
+                                                                   k > 0, k + 2 < cuts.size());
+          model_chain.push_back(std::move(piece));
         }
       }
-      chain.push_back(std::move(use_of_edge));
     }
     if (chain.empty()) continue;
     if (static_cast<int>(chain.size()) < edges_in_wire)

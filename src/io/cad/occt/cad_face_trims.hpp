@@ -12,9 +12,12 @@
 //   file's own boundary does (cad_iges_boundary.hpp): OpenCASCADE may route
 //   its pole edges around the other side of the surface;
 // - the outer wire of an IGES boundary given in model space only is built
-//   from its edges' 3-D curves instead of OpenCASCADE's projected pcurves
-//   (cad_model_space_loop.hpp), and FaceWires::turned says when its region
-//   lies on the other side of the wire than OpenCASCADE's face has it;
+//   from its 3-D curves instead of OpenCASCADE's projected pcurves
+//   (cad_model_space_loop.hpp): the file's own curves as translated
+//   (FileBoundary::curves), when the face's outer wire lies on them, so a
+//   curve the face's healing dropped still counts, else the wire's edges;
+//   FaceWires::turned says when its region lies on the other side of the
+//   wire than OpenCASCADE's face has it;
 // - the face's rectangle is the exact box of its outer wire, at most one
 //   period wide, snapped onto whole periods within rounding or the edges' own
 //   tolerance.

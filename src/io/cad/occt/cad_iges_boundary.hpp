@@ -29,6 +29,7 @@
 // angles in radians). Never fails: what cannot be read gives the "not given"
 // values below.
 #include <IGESGeom_TrimmedSurface.hxx>
+#include <TopoDS_Wire.hxx>
 
 namespace furrow::cad {
 
@@ -41,6 +42,19 @@ struct FileBoundary {
   // (PPTR 0): only its model-space curve says where it runs.
   bool model_space_only = false;
   double surface_rotation = -1;  // terminate minus start angle of a type 120 [rad], -1 if not one
+  // For a model-space-only outer boundary, set by the reader
+  // (cad_reader.hpp) from OpenCASCADE's translation, null where it has none:
+  // `curves`, the boundary's model-space curves as translated, every curve
+  // of the file in its order and direction, before the face's healing,
+  // which may drop some (the two copies of a seam that a face written
+  // inside out runs down and up: the face then came in as the region on
+  // the other side of its other curves); `wire`, the wire the face's
+  // healing made of them, which tells the outer wire among a face's wires.
+  TopoDS_Wire curves;
+  TopoDS_Wire wire;
+  // OpenCASCADE split the face into pieces, which the reader merged back
+  // into one face (cad_reader.cpp merge_pieces()).
+  bool merged = false;
 };
 
 // The outer boundary of a type 144 entity; "not given" for a null handle

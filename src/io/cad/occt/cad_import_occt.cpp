@@ -23,9 +23,11 @@
 #include <cstddef>
 #include <exception>
 #include <new>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
@@ -67,20 +69,35 @@ struct ConvertedFace {
   CadFaceReport report;
 };
 
-// One face, in the order the steps need each other: the wires give the
-// parameter rectangle, the surface is converted over that rectangle, the
-// trims are carried into the conversion's parameters, and the normal's sense
-// is compared last.
-ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const cad::FileBoundary& file,
-                           const cad::FaceSense& sense, const CadImportOptions& options) {
+// A face's surface without rectangular trims and its wires: taken before
+// the faces are oriented, which needs to know which faces' loops enclose
+// the other side of their edges (FaceWires::turned).
+struct PreparedFace {
+  Handle(Geom_Surface) basis;
+  cad::FaceWires wires;
+};
+
+PreparedFace prepare_face(const TopoDS_Face& face, const cad::FileBoundary& file) {
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (surface.IsNull()) throw cad::FaceFailure("it has no surface");
-  const Handle(Geom_Surface) basis = cad::strip_trim(surface);
+  PreparedFace prepared;
+  prepared.basis = cad::strip_trim(surface);
+  prepared.wires = cad::face_wires(face, prepared.basis, file);
+  return prepared;
+}
+
+// One face, in the order the steps need each other: the wires give the
+// parameter rectangle (prepare_face()), the surface is converted over that
+// rectangle, the trims are carried into the conversion's parameters, and
+// the normal's sense is compared last.
+ConvertedFace convert_face(const TopoDS_Face& face, const std::string& name, const PreparedFace& prepared,
+                           const cad::FaceSense& sense, const CadImportOptions& options) {
+  const Handle(Geom_Surface)& basis = prepared.basis;
   CadFaceReport report;
   report.name = name;
   report.source_type = cad::source_type(basis);
 
-  const cad::FaceWires wires = cad::face_wires(face, basis, file);
+  const cad::FaceWires& wires = prepared.wires;
   const ParameterDomain& bounds = wires.bounds;
 
   const cad::Conversion conversion = cad::convert_surface(basis, bounds, options);
@@ -166,9 +183,33 @@ CadImportResult import_with_occt(const std::string& path, const CadImportOptions
                      "): nothing to inspect");
   }
 
+  // Each face's wires first (the orientation needs FaceWires::turned); a
+  // face that fails here is reported below, in its turn.
+  auto origin_of = [&file](const TopoDS_Face& face) {
+    const auto it = file.origins.find(face.TShape().get());
+    return it == file.origins.end() ? cad::FaceOrigin() : it->second;
+  };
+  std::vector<std::optional<PreparedFace>> prepared(static_cast<std::size_t>(faces.Extent()));
+  std::vector<std::string> failures(prepared.size());
+  std::vector<bool> turned(prepared.size(), false);
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    const std::size_t index = static_cast<std::size_t>(i - 1);
+    const TopoDS_Face& face = TopoDS::Face(faces(i));
+    try {
+      prepared[index] = prepare_face(face, origin_of(face).boundary);
+      turned[index] = prepared[index]->wires.turned;
+    } catch (const cad::FaceFailure& e) {
+      failures[index] = e.what();
+    } catch (const InputError& e) {
+      failures[index] = e.what();
+    } catch (const Standard_Failure& e) {
+      failures[index] = "OpenCASCADE failed on it: " + occt_text(e);
+    }
+  }
+
   cad::OrientationOutcome senses;
   try {
-    senses = cad::orient_faces(faces, solids, options);
+    senses = cad::orient_faces(faces, solids, options, turned);
   } catch (const Standard_Failure& e) {
     throw InputError(path + ": OpenCASCADE failed while sewing and orienting the faces: " + occt_text(e));
   }
@@ -180,13 +221,12 @@ CadImportResult import_with_occt(const std::string& path, const CadImportOptions
   for (int i = 1; i <= faces.Extent(); ++i) {
     const TopoDS_Face& face = TopoDS::Face(faces(i));
     const std::size_t index = static_cast<std::size_t>(i - 1);
-    cad::FaceOrigin origin;
-    if (auto it = file.origins.find(face.TShape().get()); it != file.origins.end()) origin = it->second;
+    const cad::FaceOrigin origin = origin_of(face);
     std::string name = origin.name.empty() ? "face_" + std::to_string(index) : origin.name;
     if (used_names.count(name)) name += "_" + std::to_string(index);
-    std::string failure;
-    try {
-      ConvertedFace converted = convert_face(face, name, origin.boundary, senses.faces[index], options);
+    std::string failure = failures[index];
+    if (failure.empty()) try {
+      ConvertedFace converted = convert_face(face, name, *prepared[index], senses.faces[index], options);
       converted.report.entity = origin.entity;
       if (!solid_faces.Contains(face)) ++result.free_faces;
       used_names.insert(name);

@@ -2,6 +2,7 @@
 #include "io/cad/occt/cad_orientation.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepGProp.hxx>
@@ -10,6 +11,7 @@
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomLProp_SLProps.hxx>
+#include <Precision.hxx>
 #include <Geom_Surface.hxx>
 #include <ShapeFix_Shell.hxx>
 #include <TopExp.hxx>
@@ -151,6 +153,42 @@ bool closes_on_itself(const TopoDS_Face& face, double tolerance) {
   return true;
 }
 
+// Whether an iso-line of `surface` shrinks to a point (a pole), on 9
+// samples within 1e-7 mm: the line u = `at` (v from `from` to `to`) when
+// `along_v`, else the line v = `at` (u from `from` to `to`).
+bool collapsed_iso(const Handle(Geom_Surface)& surface, bool along_v, double at, double from, double to) {
+  const gp_Pnt first = along_v ? surface->Value(at, from) : surface->Value(from, at);
+  for (int k = 1; k <= 8; ++k) {
+    const double t = from + (to - from) * k / 8;
+    if (first.Distance(along_v ? surface->Value(at, t) : surface->Value(t, at)) > 1e-7) return false;
+  }
+  return true;
+}
+
+// The volume the whole surface of `face` encloses, counted with the face's
+// orientation as BRepGProp counts a closed shell's (positive when the normal
+// points out of it), or nullopt when the surface does not close on itself
+// (in each parameter it must be closed or end at poles: a sphere, a torus;
+// not a cylinder or a patch).
+std::optional<double> whole_surface_volume(const TopoDS_Face& face) {
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  if (surface.IsNull()) return std::nullopt;
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  if (!(std::abs(u0) < 1e50 && std::abs(u1) < 1e50 && std::abs(v0) < 1e50 && std::abs(v1) < 1e50))
+    return std::nullopt;
+  const bool closed_u = surface->IsUClosed() || (collapsed_iso(surface, true, u0, v0, v1) &&
+                                                 collapsed_iso(surface, true, u1, v0, v1));
+  const bool closed_v = surface->IsVClosed() || (collapsed_iso(surface, false, v0, u0, u1) &&
+                                                 collapsed_iso(surface, false, v1, u0, u1));
+  if (!closed_u || !closed_v) return std::nullopt;
+  BRepBuilderAPI_MakeFace whole(surface, Precision::Confusion());
+  if (!whole.IsDone()) return std::nullopt;
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(whole.Face().Oriented(face.Orientation()), props);
+  return props.Mass();
+}
+
 // One group of loose faces: a sewn shell (or a face that sewed to nothing).
 struct Group {
   TopoDS_Shape shape;
@@ -162,7 +200,7 @@ struct Group {
 }  // namespace
 
 OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const TopTools_IndexedMapOfShape& solids,
-                                const CadImportOptions& options) {
+                                const CadImportOptions& options, const std::vector<bool>& turned) {
   OrientationOutcome out;
   out.faces.resize(static_cast<std::size_t>(faces.Extent()));
 
@@ -247,7 +285,19 @@ OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const T
       ++out.closed_shells;
       GProp_GProps props;
       BRepGProp::VolumeProperties(g.shape, props);
-      turn = props.Mass() < 0;
+      double volume = props.Mass();
+      // A turned face keeps the rest of its closed surface instead of
+      // OpenCASCADE's region, on the other side of the same edges, and is
+      // turned round to run its edges as its neighbours do: its share of
+      // the volume is the whole surface's less OpenCASCADE's region's,
+      // counted the other way, i.e. the shell's volume less the whole
+      // surface's (counted with the face as the shell orients it).
+      for (std::size_t k = 0; k < g.members.size(); ++k) {
+        const std::size_t index = static_cast<std::size_t>(g.members[k]);
+        if (index >= turned.size() || !turned[index]) continue;
+        if (const std::optional<double> whole = whole_surface_volume(g.oriented[k])) volume -= *whole;
+      }
+      turn = volume < 0;
       basis = CadFaceOrientation::closed_shell;
     } else if (options.outward.kind != OutwardRule::Kind::none) {
       double weight = 0;

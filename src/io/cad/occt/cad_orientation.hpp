@@ -41,9 +41,17 @@ struct OrientationOutcome {
 };
 
 // `faces` is the file's face map (TopExp::MapShapes order, as the import
-// walks it); `solids` the file's solids. Throws Standard_Failure only for
-// OpenCASCADE's own failures (the caller reports them for the file).
+// walks it); `solids` the file's solids. `turned` (parallel to `faces`, or
+// empty) flags faces whose loop, rebuilt from the file's model-space curves,
+// encloses the region on the other side of the face's edges than
+// OpenCASCADE's face does (FaceWires::turned, cad_face_trims.hpp): on a
+// closed surface (a sphere) that region is the rest of the surface, and a
+// closed shell's volume, which says which way is out, is corrected for it
+// (OpenCASCADE's volume counts the face's own region: a ball cut through
+// its pole, written inside out, came in as the cut-off cap, and its shell
+// was turned inside out). Throws Standard_Failure only for OpenCASCADE's
+// own failures (the caller reports them for the file).
 OrientationOutcome orient_faces(const TopTools_IndexedMapOfShape& faces, const TopTools_IndexedMapOfShape& solids,
-                                const CadImportOptions& options);
+                                const CadImportOptions& options, const std::vector<bool>& turned = {});
 
 }  // namespace furrow::cad

@@ -1,7 +1,11 @@
 // Reading a STEP or IGES file with OpenCASCADE (contract in cad_reader.hpp).
 #include "io/cad/occt/cad_reader.hpp"
 
+#include <BRepTools_ReShape.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IGESGeom_CurveOnSurface.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
@@ -17,6 +21,10 @@
 #include <StepShape_FaceSurface.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TCollection_HAsciiString.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TransferBRep.hxx>
 #include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
@@ -157,6 +165,69 @@ std::string unit_name(const std::string& occt_unit) {
 // A face without a name in the file, or a system's placeholder for none.
 bool meaningful_name(const std::string& name) { return !name.empty() && name != "NONE"; }
 
+// The wire OpenCASCADE made of an IGES entity, null when it made none.
+TopoDS_Wire wire_of(const Handle(Transfer_TransientProcess)& process, const Handle(Standard_Transient)& entity) {
+  if (entity.IsNull()) return {};
+  const TopoDS_Shape shape = TransferBRep::ShapeResult(process, entity);
+  return !shape.IsNull() && shape.ShapeType() == TopAbs_WIRE ? TopoDS::Wire(shape) : TopoDS_Wire();
+}
+
+// What OpenCASCADE made of a trimmed surface's model-space-only outer
+// boundary (FileBoundary::curves and ::wire): the 142's curve C is a
+// composite (type 102) whose translation keeps every curve; a single curve
+// is not bound to a shape of its own, and then the 142's healed wire serves.
+void add_outer_wires(const Handle(Transfer_TransientProcess)& process,
+                     const Handle(IGESGeom_TrimmedSurface)& trimmed, FileBoundary& boundary) {
+  if (trimmed.IsNull() || !boundary.model_space_only || !trimmed->HasOuterContour()) return;
+  const Handle(IGESGeom_CurveOnSurface) contour = trimmed->OuterContour();
+  if (contour.IsNull()) return;
+  boundary.wire = wire_of(process, contour);
+  boundary.curves = wire_of(process, contour->Curve3D());
+  if (boundary.curves.IsNull()) boundary.curves = boundary.wire;
+}
+
+// OpenCASCADE's healing splits a face whose wires it finds outside its
+// outer one into several faces (ShapeFix_Face's split of a face with
+// several outer wires): a lune from pole to pole with a hole, whose pole
+// edges it routed around the rest of the sphere, came in as the rest of the
+// sphere and the hole's disc. For an IGES boundary given in model space
+// only the importer builds the outer loop itself (cad_model_space_loop.hpp),
+// so the pieces are put back into one face on their common surface: the
+// piece holding the outer boundary's wire first (its orientation is the
+// face's), the other pieces' wires its holes, turned round (each ran around
+// its own piece). `outer_piece` is set to the piece holding the outer wire,
+// as `result` holds it. Returns a null face when the pieces do not share one
+// surface or none holds the outer wire.
+TopoDS_Face merge_pieces(const TopoDS_Shape& result, const TopoDS_Wire& outer, TopoDS_Face& outer_piece) {
+  std::vector<TopoDS_Face> pieces;
+  for (TopExp_Explorer f(result, TopAbs_FACE); f.More(); f.Next()) pieces.push_back(TopoDS::Face(f.Current()));
+  if (pieces.size() < 2 || outer.IsNull()) return {};
+  auto holds_outer = [&](const TopoDS_Face& face) {
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+      for (TopExp_Explorer o(outer, TopAbs_EDGE); o.More(); o.Next())
+        if (e.Current().IsSame(o.Current()) && !BRep_Tool::Degenerated(TopoDS::Edge(o.Current()))) return true;
+    return false;
+  };
+  const auto first = std::find_if(pieces.begin(), pieces.end(), holds_outer);
+  if (first == pieces.end()) return {};
+  std::rotate(pieces.begin(), first, first + 1);
+  outer_piece = pieces.front();
+  TopLoc_Location location;
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(pieces.front(), location);
+  for (const TopoDS_Face& piece : pieces) {
+    TopLoc_Location other;
+    if (BRep_Tool::Surface(piece, other) != surface || !other.IsEqual(location)) return {};
+  }
+  BRep_Builder builder;
+  TopoDS_Face merged;
+  builder.MakeFace(merged, surface, location, BRep_Tool::Tolerance(pieces.front()));
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    for (TopoDS_Iterator w(pieces[k].Oriented(TopAbs_FORWARD)); w.More(); w.Next())
+      builder.Add(merged, k == 0 ? w.Value() : w.Value().Reversed());
+  merged.Orientation(outer_piece.Orientation());
+  return merged;
+}
+
 }  // namespace
 
 LoadedFile read_file(const std::string& path, Format format) {
@@ -194,6 +265,9 @@ LoadedFile read_file(const std::string& path, Format format) {
     if (!iges.IsNull()) file.units = unit_name(hstring(iges->GlobalSection().UnitName()));
   }
 
+  // Faces OpenCASCADE split that are put back together (merge_pieces()).
+  const Handle(BRepTools_ReShape) merges = new BRepTools_ReShape;
+  bool merged_any = false;
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const Handle(Standard_Transient) entity = model->Value(i);
     std::string name;
@@ -213,16 +287,31 @@ LoadedFile read_file(const std::string& path, Format format) {
       if (iges->HasName()) name = hstring(iges->NameValue());
     }
     if (!meaningful_name(name)) name.clear();
-    const TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
+    TopoDS_Shape result = TransferBRep::ShapeResult(process, entity);
+    const auto trimmed = Handle(IGESGeom_TrimmedSurface)::DownCast(entity);
+    FileBoundary boundary = file_boundary(trimmed);
+    add_outer_wires(process, trimmed, boundary);
+    if (!result.IsNull() && result.ShapeType() != TopAbs_FACE && boundary.model_space_only) {
+      TopoDS_Face outer_piece;
+      if (const TopoDS_Face merged = merge_pieces(result, boundary.wire, outer_piece); !merged.IsNull()) {
+        for (TopExp_Explorer f(result, TopAbs_FACE); f.More(); f.Next())
+          if (f.Current().IsSame(outer_piece))
+            merges->Replace(f.Current(), merged);
+          else
+            merges->Remove(f.Current());
+        result = merged;
+        boundary.merged = true;
+        merged_any = true;
+      }
+    }
     if (!result.IsNull() && result.ShapeType() == TopAbs_FACE) {
-      file.origins.emplace(result.TShape().get(),
-                           FaceOrigin{name, entity_label(model, entity),
-                                      file_boundary(Handle(IGESGeom_TrimmedSurface)::DownCast(entity))});
+      file.origins.emplace(result.TShape().get(), FaceOrigin{name, entity_label(model, entity), boundary});
     } else if (result.IsNull() && format == Format::step && attempted(model, process, entity)) {
       file.untranslated.push_back({name, entity_label(model, entity),
                                    entity_problems(model, process, entity)});
     }
   }
+  if (merged_any) file.shape = merges->Apply(file.shape);
   if (format == Format::step) add_unreadable_entities(model, file.untranslated);
   if (format == Format::iges) {
     // IGES faces are roots (trimmed/bounded surfaces, MSBO solids): a root

@@ -2,8 +2,15 @@
 // Reading a STEP or IGES file with OpenCASCADE (docs/formats.md "CAD
 // import"): the file's shape, in millimetres, and what the file says about
 // its faces that the shape does not keep (names, entity labels, IGES
-// boundary senses), plus the entities OpenCASCADE could not read or
-// translate.
+// boundary senses and, for boundaries given in model space only, the
+// boundary's curves as translated before healing), plus the entities
+// OpenCASCADE could not read or translate.
+//
+// An IGES trimmed surface with a model-space-only outer boundary that
+// OpenCASCADE's healing split into several faces (a lune from pole to pole
+// with a hole: the rest of the sphere and the hole's disc) is put back into
+// one face in the shape (docs/formats.md "IGES boundaries"), whose outer
+// boundary the import then rebuilds (cad_model_space_loop.hpp).
 //
 // Strict mode: what OpenCASCADE could not read or translate is listed in
 // LoadedFile::untranslated, so that the caller can fail the import or, with
