@@ -27,6 +27,16 @@ json statistics_json(const DeviationStatistics& s) {
           {"max", jf::finite(s.max, "max")}};
 }
 
+DeviationStatistics read_statistics(const JsonCursor& n) {
+  DeviationStatistics s;
+  s.count = n.count("count");
+  s.mean = n.number("mean");
+  s.sigma = n.non_negative("sigma");
+  s.min = n.number("min");
+  s.max = n.number("max");
+  return s;
+}
+
 json run_options_json(const ComparisonDocument::Options& o) {
   return {{"dof", o.dof},
           {"loss", o.loss},

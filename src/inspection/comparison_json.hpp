@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "inspection/comparison_document.hpp"
+#include "base/json_cursor.hpp"
 #include "base/json_fields.hpp"
 
 namespace furrow::comparison_json {
@@ -25,6 +26,9 @@ json matrix_json(const Eigen::MatrixXd& m, const char* what);
 
 // count, mean, sigma, min, max [mm].
 json statistics_json(const DeviationStatistics& s);
+// Its reader: the same members, checked by `n` (a negative sigma or count
+// is an InputError naming the member).
+DeviationStatistics read_statistics(const JsonCursor& n);
 
 // Every run setting of "options" except the tolerance, which comparison.json
 // states as width + outside and report.json as the whole zone.

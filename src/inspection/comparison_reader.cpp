@@ -6,12 +6,14 @@
 #include "base/error.hpp"
 #include "base/text_fields.hpp"
 #include "inspection/comparison_file.hpp"
+#include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
 
 namespace furrow {
 
 namespace jf = json_fields;
 using jf::json;
+using comparison_json::read_statistics;
 
 namespace {
 
@@ -30,16 +32,6 @@ Eigen::Matrix<double, Rows, Cols> matrix(const json& value, const std::string& w
     for (int j = 0; j < Cols; ++j) m(i, j) = row[static_cast<std::size_t>(j)];
   }
   return m;
-}
-
-DeviationStatistics read_statistics(const JsonCursor& n) {
-  DeviationStatistics s;
-  s.count = n.count("count");
-  s.mean = n.number("mean");
-  s.sigma = n.non_negative("sigma");
-  s.min = n.number("min");
-  s.max = n.number("max");
-  return s;
 }
 
 ComparisonDocument::Options read_options(const JsonCursor& n) {

@@ -3,6 +3,7 @@
 
 #include "base/error.hpp"
 #include "base/json_cursor.hpp"
+#include "inspection/comparison_json.hpp"
 #include "inspection/scan_display_json.hpp"
 #include "inspection/scan_fit_options_json.hpp"
 
@@ -10,18 +11,9 @@ namespace furrow {
 
 namespace jf = json_fields;
 using nlohmann::json;
+using comparison_json::read_statistics;
 
 namespace {
-
-DeviationStatistics read_statistics(const JsonCursor& n) {
-  DeviationStatistics s;
-  s.count = n.count("count");
-  s.mean = n.number("mean");
-  s.sigma = n.non_negative("sigma");
-  s.min = n.number("min");
-  s.max = n.number("max");
-  return s;
-}
 
 }  // namespace
 

@@ -334,6 +334,19 @@ std::optional<std::string> compensate_job_stage(Staged& s, const Part& part, con
   return record;
 }
 
+// What every report of a job says about the job: its name, description,
+// inputs, options and inspection record, and when it was made.
+ReportContext job_report_context(const Staged& s) {
+  ReportContext context;
+  context.title = s.job.name;
+  context.description = s.job.description;
+  context.generated = utc_timestamp();
+  context.inputs = s.inputs;
+  context.job_options_json = job_options_json(s.job);
+  context.record = s.job.record;
+  return context;
+}
+
 // A scan instead of probe points (docs/scan.md "In a job"): the cloud
 // compared as `furrow compare --scan --regions regions.json --deviations
 // deviations.ply` does, then the report of the scan as `furrow report`
@@ -367,13 +380,7 @@ void scan_job_stages(Staged& s, const Part& part, const RegionMap& map, const Pr
 
   s.note("report");
   PipelineResult& result = s.result;
-  ReportContext context;
-  context.title = job.name;
-  context.description = job.description;
-  context.generated = utc_timestamp();
-  context.inputs = s.inputs;
-  context.job_options_json = job_options_json(job);
-  context.record = job.record;
+  ReportContext context = job_report_context(s);
   const Clock::time_point report_start = Clock::now();
   const std::vector<ReportFigure> figures = make_scan_report_figures(doc, part, &map);
   context.stages = result.stages;
@@ -481,13 +488,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     }
 
     s.note("report");
-    ReportContext context;
-    context.title = job.name;
-    context.description = job.description;
-    context.generated = utc_timestamp();
-    context.inputs = s.inputs;
-    context.job_options_json = job_options_json(job);
-    context.record = job.record;
+    ReportContext context = job_report_context(s);
     context.compensation = std::move(compensation);
     context.compensation_file = compensation_file;
     if (process)

@@ -209,11 +209,10 @@ std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, con
   if (interactive) jobs.push_back([&] { return part_view_3d_figure(doc, part, prediction); });
   if (doc.prediction) add_prediction_figures(doc, part, jobs);
   if (compensation) add_compensation_maps(doc, part, regions, *compensation, jobs);
-  // The figures share nothing but the inputs they read, so they are drawn
-  // at once, one per thread: at 100,000 points the figures are most of the
-  // report's time (docs/report.md, "Speed"). Each lands in its own slot, so
-  // the order and the bytes do not depend on the timing. An exception in a
-  // job is carried out of the parallel region and thrown here.
+  return draw_figures(jobs);
+}
+
+std::vector<ReportFigure> draw_figures(const std::vector<std::function<ReportFigure()>>& jobs) {
   std::vector<ReportFigure> out(jobs.size());
   std::vector<std::exception_ptr> failed(jobs.size());
   const int n = static_cast<int>(jobs.size());

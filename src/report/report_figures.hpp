@@ -21,6 +21,7 @@
 // Deviation colours: colour_scale.hpp, bar in um with the zone's limits.
 // Points not evaluated (blunders, beyond an edge) are grey with a ring;
 // points out of tolerance get a black ring. Deterministic bytes.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,13 @@ struct ReportFigure {
 
 // Maps of more points than this are raster only in the page.
 constexpr std::size_t kVectorPointLimit = 5000;
+
+// Figures that share nothing but the inputs they read, drawn at once, one
+// per thread: at 100,000 points the figures are most of a report's time
+// (docs/report.md, "Speed"). Each lands in its own slot, so the order and
+// the bytes do not depend on the timing; an exception in a job is carried
+// out of the parallel region and rethrown here.
+std::vector<ReportFigure> draw_figures(const std::vector<std::function<ReportFigure()>>& jobs);
 
 // `regions`, `prediction` and `compensation` may be null. Preconditions:
 // doc's faces are faces of `part` (the report checks the face names first);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <functional>
 
 #include "base/json_fields.hpp"
@@ -18,6 +17,7 @@
 #include "report/part_outlines.hpp"
 #include "report/part_view_3d.hpp"
 #include "report/region_map_figure.hpp"
+#include "report/report_figures.hpp"
 
 namespace furrow {
 
@@ -136,21 +136,7 @@ std::vector<ReportFigure> make_scan_report_figures(const ScanComparisonDocument&
                                "the scan's deviation surface: " + sample_text(s) + ", each at its place in the part frame",
                                "Scan deviation surface, " + std::to_string(view.points.size()) + " points shown");
   });
-  // As the probe-point figures: one job per thread, each in its own slot.
-  std::vector<ReportFigure> out(jobs.size());
-  std::vector<std::exception_ptr> failed(jobs.size());
-  const int n = static_cast<int>(jobs.size());
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int k = 0; k < n; ++k) {
-    try {
-      out[static_cast<std::size_t>(k)] = jobs[static_cast<std::size_t>(k)]();
-    } catch (...) {
-      failed[static_cast<std::size_t>(k)] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
-  return out;
+  return draw_figures(jobs);
 }
 
 std::vector<FolderFile> make_scan_report(const ScanComparisonDocument& scan, const Part& part,
