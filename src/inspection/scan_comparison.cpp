@@ -71,27 +71,27 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   c.foot_face.assign(n, -1);
   c.foot_uv.assign(n, Eigen::Vector2d::Zero());
   c.foot_normal.assign(n, Eigen::Vector3f::Zero());
-  std::vector<std::size_t> todo;
-  todo.reserve(n);
+  std::vector<std::size_t> to_project;
+  to_project.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (pre.spray[i] == kSprayFar) c.status[i] = ScanPointStatus::spray_far;
     else if (pre.spray[i] == kSprayNear) c.status[i] = ScanPointStatus::spray_near;
-    if (c.status[i] == ScanPointStatus::evaluated || regions) todo.push_back(i);
+    if (c.status[i] == ScanPointStatus::evaluated || regions) to_project.push_back(i);
   }
   std::vector<double> value(n, 0.0);
-  const long chunks = static_cast<long>((todo.size() + kProjectionChunk - 1) / kProjectionChunk);
+  const long chunks = static_cast<long>((to_project.size() + kProjectionChunk - 1) / kProjectionChunk);
   const double edge = options.registration.edge_tolerance;
 #pragma omp parallel for schedule(dynamic, 1)
   for (long k = 0; k < chunks; ++k) {
     const std::size_t begin = static_cast<std::size_t>(k) * kProjectionChunk;
-    const std::size_t end = std::min(todo.size(), begin + kProjectionChunk);
+    const std::size_t end = std::min(to_project.size(), begin + kProjectionChunk);
     std::vector<Eigen::Vector3d> xs;
     xs.reserve(end - begin);
     for (std::size_t m = begin; m < end; ++m)
-      xs.push_back(c.registration.transform * (cloud.points[todo[m]] - pre.origin));
+      xs.push_back(c.registration.transform * (cloud.points[to_project[m]] - pre.origin));
     const std::vector<ClosestPoint> feet = finder.project_in_order(xs);
     for (std::size_t m = begin; m < end; ++m) {
-      const std::size_t i = todo[m];
+      const std::size_t i = to_project[m];
       const ClosestPoint& f = feet[m - begin];
       if (regions && f.converged)
         if (const std::optional<int> id = regions->region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y()))

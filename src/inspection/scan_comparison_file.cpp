@@ -15,14 +15,6 @@ using nlohmann::json;
 
 namespace {
 
-json optional_number(const std::optional<double>& x, const char* what) {
-  return x ? jf::finite(*x, what) : json(nullptr);
-}
-
-json box_json(const Eigen::AlignedBox2d& b) {
-  return {{"min", jf::vector_json(Eigen::Vector2d(b.min()))}, {"max", jf::vector_json(Eigen::Vector2d(b.max()))}};
-}
-
 // The sites as the probe points' gouge_sites writes them, except that
 // `points` is a count and `deepest` the index of the point (in the scan's
 // finite points, the deviation cloud's order) whose local mean is deepest.
@@ -32,27 +24,10 @@ json scan_sites_json(const ScanVerification& v) {
     const GougeSiteCheck& s = g.check;
     json anchors = json::array();
     for (const Eigen::Vector3d& a : s.anchors) anchors.push_back(jf::vector_json(a));
-    json j;
-    j["id"] = s.id;
-    j["source"] = to_string(s.source);
-    j["face"] = s.face;
-    j["face_index"] = s.face_index;
-    j["uv_box"] = box_json(s.uv_box);
-    j["search_box"] = box_json(s.search_box);
-    j["centroid"] = jf::vector_json(s.centroid);
+    json j = verification_json::gouge_site_json(s, s.points.size(), s.deepest ? json(*s.deepest) : json(nullptr));
     j["anchors"] = anchors;
     j["anchors_seen"] = g.anchors_seen;
-    j["predicted_depth"] = optional_number(s.predicted_depth, "predicted depth");
-    j["contacts"] = s.contacts;
-    j["status"] = to_string(s.status);
-    j["points"] = s.points.size();
-    j["deepest"] = s.deepest ? json(*s.deepest) : json(nullptr);
     j["read_points"] = g.read_points;
-    j["measured_depth"] = optional_number(s.measured_depth, "measured depth");
-    j["uncertainty"] = optional_number(s.uncertainty, "uncertainty");
-    j["threshold"] = optional_number(s.threshold, "threshold");
-    j["predicted_error"] = optional_number(s.predicted_error, "predicted error");
-    j["depth_consistent"] = s.depth_consistent ? json(*s.depth_consistent) : json(nullptr);
     sites.push_back(std::move(j));
   }
   return sites;

@@ -210,29 +210,32 @@ PredictionComparison read_prediction_comparison(const JsonCursor& n) {
   return c;
 }
 
+json gouge_site_json(const GougeSiteCheck& s, json points, json deepest) {
+  json j;
+  j["id"] = s.id;
+  j["source"] = to_string(s.source);
+  j["face"] = s.face;
+  j["face_index"] = s.face_index;
+  j["uv_box"] = box_json(s.uv_box);
+  j["search_box"] = box_json(s.search_box);
+  j["centroid"] = jf::vector_json(s.centroid);
+  j["predicted_depth"] = optional_json(s.predicted_depth, "predicted depth");
+  j["contacts"] = s.contacts;
+  j["status"] = to_string(s.status);
+  j["points"] = std::move(points);
+  j["deepest"] = std::move(deepest);
+  j["measured_depth"] = optional_json(s.measured_depth, "measured depth");
+  j["uncertainty"] = optional_json(s.uncertainty, "uncertainty");
+  j["threshold"] = optional_json(s.threshold, "threshold");
+  j["predicted_error"] = optional_json(s.predicted_error, "predicted error");
+  j["depth_consistent"] = s.depth_consistent ? json(*s.depth_consistent) : json(nullptr);
+  return j;
+}
+
 json gouge_sites_json(const GougeConfirmation& g, const std::vector<std::string>& ids) {
   json sites = json::array();
-  for (const GougeSiteCheck& s : g.sites) {
-    json j;
-    j["id"] = s.id;
-    j["source"] = to_string(s.source);
-    j["face"] = s.face;
-    j["face_index"] = s.face_index;
-    j["uv_box"] = box_json(s.uv_box);
-    j["search_box"] = box_json(s.search_box);
-    j["centroid"] = jf::vector_json(s.centroid);
-    j["predicted_depth"] = optional_json(s.predicted_depth, "predicted depth");
-    j["contacts"] = s.contacts;
-    j["status"] = to_string(s.status);
-    j["points"] = id_list(s.points, ids);
-    j["deepest"] = s.deepest ? json(ids[*s.deepest]) : json(nullptr);
-    j["measured_depth"] = optional_json(s.measured_depth, "measured depth");
-    j["uncertainty"] = optional_json(s.uncertainty, "uncertainty");
-    j["threshold"] = optional_json(s.threshold, "threshold");
-    j["predicted_error"] = optional_json(s.predicted_error, "predicted error");
-    j["depth_consistent"] = s.depth_consistent ? json(*s.depth_consistent) : json(nullptr);
-    sites.push_back(std::move(j));
-  }
+  for (const GougeSiteCheck& s : g.sites)
+    sites.push_back(gouge_site_json(s, id_list(s.points, ids), s.deepest ? json(ids[*s.deepest]) : json(nullptr)));
   return sites;
 }
 

@@ -36,6 +36,9 @@ PredictionComparison read_prediction_comparison(const JsonCursor& node);
 // "gouge_sites" and "unexplained"; points are written as ids (`ids[i]` of
 // point i) and read back through `index_of`.
 json gouge_sites_json(const GougeConfirmation& gouges, const std::vector<std::string>& ids);
+// One site of "gouge_sites", its points and deepest point as the caller
+// names them (a probe comparison by ids, a scan by count and cloud index).
+json gouge_site_json(const GougeSiteCheck& site, json points, json deepest);
 json unexplained_json(const GougeConfirmation& gouges, const std::vector<std::string>& ids);
 // `root` holds both arrays.
 GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
