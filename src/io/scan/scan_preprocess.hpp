@@ -34,6 +34,9 @@
 //    spray passes at any setting that keeps 99 % of the good points), and
 //    it fires on good points where the neighbours are one-sided - the
 //    scan's borders and silhouettes.
+//    Where it fires, (a) and (b) are taken against the nearest points it
+//    did not fire on: far spray at a fine pitch is dense enough to be its
+//    own neighbourhood, and lies on the surface other spray describes.
 //    Real form errors wider than a neighbourhood (a dent, a step of the
 //    surface along a line) lie on their neighbours' surface and are kept.
 // 3. the fit subset: a voxel grid of edge `voxel` mm (pcl::VoxelGrid) over

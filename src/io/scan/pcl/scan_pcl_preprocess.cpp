@@ -153,6 +153,41 @@ void flag_spray(const pcl::PointCloud<pcl::PointXYZ>::Ptr& local, const ScanPrep
     }
   }
   if (kept_off.empty()) return;
+  // Where the statistical rule fired, the surface is the one the points it
+  // did not fire on describe: at a fine pitch far spray is dense enough
+  // that a spray point's nearest neighbours are other spray points (0.5 %
+  // spray 0.3-3 mm off a scan 0.1 mm apart puts some 20 of them within
+  // 3 mm of each other), whose quadric passes through it and whose own
+  // distances are as large as its own, so neither part of the rule could
+  // see it. Refitted to its nearest clean points, a spray point lies off
+  // their surface and stands out from them; a point on the scan's border,
+  // where the rule also fires, lies on their surface carried on.
+  pcl::IndicesPtr clean_indices(new pcl::Indices);
+  clean_indices->reserve(n - result.statistical_count);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!result.statistical[i]) clean_indices->push_back(static_cast<pcl::index_t>(i));
+  pcl::search::KdTree<pcl::PointXYZ> clean(false);
+  const bool refit = result.statistical_count > 0 && clean_indices->size() > static_cast<std::size_t>(k_near);
+  if (refit) clean.setInputCloud(local, clean_indices);
+  const auto clean_neighbours = [&](std::size_t i, pcl::Indices& found, std::vector<float>& squared) {
+    return clean.nearestKSearch((*local)[i], k_near, found, squared) > 0;
+  };
+  if (refit) {
+    std::vector<std::size_t> statistical;
+    for (std::size_t i = 0; i < n; ++i)
+      if (result.statistical[i]) statistical.push_back(i);
+    const long statistical_count = static_cast<long>(statistical.size());
+#pragma omp parallel
+    {
+      pcl::Indices found;
+      std::vector<float> squared;
+#pragma omp for schedule(static)
+      for (long s = 0; s < statistical_count; ++s) {
+        const std::size_t i = statistical[static_cast<std::size_t>(s)];
+        off[i] = clean_neighbours(i, found, squared) ? off_local_surface(*local, i, found) : 0.0f;
+      }
+    }
+  }
   std::nth_element(kept_off.begin(), kept_off.begin() + kept_off.size() / 2, kept_off.end());
   result.local_plane_sigma = 1.4826 * kept_off[kept_off.size() / 2];
   const double near_limit = options.spray_sigmas * result.local_plane_sigma;
@@ -172,7 +207,9 @@ void flag_spray(const pcl::PointCloud<pcl::PointXYZ>::Ptr& local, const ScanPrep
 #pragma omp for schedule(static)
     for (long c = 0; c < candidate_count; ++c) {
       const std::size_t i = candidates[static_cast<std::size_t>(c)];
-      if (search.nearestKSearch((*local)[i], k_near + 1, found, squared) == 0) continue;
+      const bool found_any = refit && result.statistical[i] ? clean_neighbours(i, found, squared)
+                                                            : search.nearestKSearch((*local)[i], k_near + 1, found, squared) > 0;
+      if (!found_any) continue;
       around.clear();
       for (const auto j : found)
         if (static_cast<std::size_t>(j) != i) around.push_back(off[static_cast<std::size_t>(j)]);
