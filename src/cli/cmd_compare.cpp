@@ -37,7 +37,7 @@ namespace {
 // are refused by name rather than ignored.
 int run_compare_scan(Args& args, const std::string& scan_path) {
   for (const char* other : {"measurements", "plan", "qif", "rps", "points", "probe-diameter",
-                            "dialect", "delimiter", "columns", "ipp-program", "db", "serial"})
+                            "dialect", "delimiter", "columns", "ipp-program"})
     if (args.option(other)) args.fail(std::string("--") + other + " does not apply to --scan");
   if (args.flag("decimal-comma")) args.fail("--decimal-comma does not apply to --scan");
   const auto regions_path = args.option("regions");
@@ -51,8 +51,11 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
   read_option_flags(args, compare_option_table(), options);
   ScanPreprocessOptions preprocessing;
   read_option_flags(args, scan_option_table(), preprocessing);
+  const ResultsStorageOptions storage = read_results_storage(args);
   const std::string part_path = args.positional("PART (a part file)");
   args.finish();
+  // Before any work: a database that is not Furrow's stops the command here.
+  const std::unique_ptr<ResultsDatabase> db = open_results_storage(args, storage, !storage.serial.empty());
   if (options.align != AlignMethod::bestfit) args.fail("--scan is registered by a best fit (--align bestfit)");
   const double mm_per_unit = units_to_mm(units, "--units");
   options.tolerance = ToleranceZone::make(tolerance, outside.value_or(tolerance / 2), "--tolerance/--outside");
@@ -97,6 +100,7 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
   if (deviations_path) outputs.file(*deviations_path, scan_deviation_ply(c, cloud));
   outputs.file(out, scan_comparison_json(c, sources));
   outputs.publish(out);
+  if (db) store_comparison_file(*db, out, record_context(storage.serial, std::nullopt), std::cout);
 
   const ComparisonSummary& s = c.summary;
   const RegistrationResult& r = c.registration;
@@ -419,7 +423,7 @@ const Command kCompareCommand = {
     "  --scan FILE          a dense scan instead (PLY or PCD, docs/scan.md): spray\n"
     "                       flagged, a voxel subset registered, every point's\n"
     "                       deviation by exact projection; not with --measurements,\n"
-    "                       --plan, --qif or a database\n"
+    "                       --plan or --qif; a database stores its regions\n"
     "  --deviations FILE    with --scan: every point in the part frame with its\n"
     "                       deviation and status, binary PLY (docs/formats.md)\n"
     "  --out FILE           comparison.json to write\n"

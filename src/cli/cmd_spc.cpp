@@ -2,6 +2,7 @@
 // parts stored in a results database (docs/spc.md): control charts,
 // capability and the Nelson rules per characteristic, as spc.json,
 // spc.html and spc.qif.
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -45,6 +46,15 @@ int run_spc(Args& args) {
   const std::unique_ptr<ResultsDatabase> db = open_results_database(db_path, DatabaseAccess::read);
   const SpcInput input = load_spc_input(*db, by, range);
   if (input.parts.empty()) throw InputError(db_path + ": no part stored yet, nothing to chart");
+  // Parts but nothing to follow (scans by point, parts without a
+  // partition by region): no chart may say no rule was violated.
+  if (input.characteristics.empty()) {
+    std::fprintf(stderr, "spc: %s: %zu parts but no characteristic %s (%s), nothing charted\n", db_path.c_str(),
+                 input.parts.size(), by == SpcBy::point ? "by point" : "by region",
+                 by == SpcBy::point ? "no evaluated point with an id; a scan is followed --by region"
+                                    : "no comparison had a partition (--regions)");
+    return kExitInconclusive;
+  }
   const SpcResult result = compute_spc(input);
   stage_spc_outputs(outputs, out, result, selection);
   outputs.publish();

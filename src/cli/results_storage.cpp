@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "base/json_fields.hpp"
 #include "cli/option_flags.hpp"
+#include "inspection/scan_comparison_document.hpp"
 #include "report/report_sources.hpp"
 
 namespace furrow::cli {
@@ -44,13 +45,19 @@ RecordContext record_context(const std::string& serial, const std::optional<Insp
 
 StoreResult store_comparison_file(ResultsDatabase& db, const std::string& path, RecordContext context,
                                   std::ostream& out) {
-  const ReportSources sources = read_report_sources(path);
+  const std::string text = json_fields::read_text(path);
+  const bool scan = is_scan_comparison_text(text);
+  const std::vector<InputDigest> inputs =
+      scan ? read_scan_report_sources(path).inputs : read_report_sources(path).inputs;
   // inputs[0] is the comparison itself; the record puts its own digest first.
-  for (std::size_t k = 1; k < sources.inputs.size(); ++k)
-    context.inputs.push_back({sources.inputs[k].role, sources.inputs[k].path, sources.inputs[k].sha256});
-  const ComparisonRecord record = make_comparison_record(json_fields::read_text(path), path, context);
+  for (std::size_t k = 1; k < inputs.size(); ++k)
+    context.inputs.push_back({inputs[k].role, inputs[k].path, inputs[k].sha256});
+  const ComparisonRecord record = make_comparison_record(text, path, context);
   const StoreResult result = db.store(record);
-  if (result == StoreResult::stored)
+  if (result == StoreResult::stored && scan)
+    out << "stored in " << db.location() << ": part \"" << record.serial << "\", a scan, " << record.regions.size()
+        << " regions, " << record.verdict << "\n";
+  else if (result == StoreResult::stored)
     out << "stored in " << db.location() << ": part \"" << record.serial << "\", " << record.points.size()
         << " points, " << record.verdict << "\n";
   else

@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "inspection/comparison_file.hpp"
+#include "inspection/scan_comparison_document.hpp"
 #include "io/qif/qif_uuid.hpp"
 #include "results/postgres_results_database.hpp"
 #include "results/sqlite_results_database.hpp"
@@ -30,25 +31,39 @@ void check_serial(const std::string& serial) {
 ComparisonRecord make_comparison_record(const std::string& bytes, const std::string& name,
                                         const RecordContext& context) {
   check_serial(context.serial);
-  const ComparisonDocument doc = parse_comparison(bytes, name);
   ComparisonRecord r;
   r.serial = context.serial;
-  r.part = doc.sources.part;
   r.date = context.date;
   r.operator_name = context.operator_name;
   r.cmm = context.cmm;
-  r.verdict = to_string(doc.summary.verdict);
   // The same digest the QA report and QIF give the comparison (io/qif sits
   // below results, report above).
   r.comparison_sha256 = qif_sha256_hex(bytes);
-  r.zone_lower = doc.options.tolerance.lower();
-  r.zone_upper = doc.options.tolerance.upper();
-  r.points.reserve(doc.points.size());
-  for (const ComparisonDocument::Point& p : doc.points)
-    r.points.push_back({p.id, p.region, p.deviation, p.evaluated, p.in_tolerance, p.outlier});
-  for (const RegionStatistics& s : doc.summary.regions)
-    r.regions.push_back({s.region, s.deviations.count, s.deviations.mean, s.deviations.sigma, s.deviations.min,
-                         s.deviations.max, s.out_of_tolerance});
+  const auto take_regions = [&r](const std::vector<RegionStatistics>& regions) {
+    for (const RegionStatistics& s : regions)
+      r.regions.push_back({s.region, s.deviations.count, s.deviations.mean, s.deviations.sigma, s.deviations.min,
+                           s.deviations.max, s.out_of_tolerance});
+  };
+  if (is_scan_comparison_text(bytes)) {
+    // A scan has no planned points: its record is its regions
+    // (docs/results_database.md "Scans").
+    const ScanComparisonDocument doc = parse_scan_comparison(bytes, name);
+    r.part = doc.sources.part;
+    r.verdict = to_string(doc.summary.verdict);
+    r.zone_lower = doc.tolerance.lower();
+    r.zone_upper = doc.tolerance.upper();
+    take_regions(doc.summary.regions);
+  } else {
+    const ComparisonDocument doc = parse_comparison(bytes, name);
+    r.part = doc.sources.part;
+    r.verdict = to_string(doc.summary.verdict);
+    r.zone_lower = doc.options.tolerance.lower();
+    r.zone_upper = doc.options.tolerance.upper();
+    r.points.reserve(doc.points.size());
+    for (const ComparisonDocument::Point& p : doc.points)
+      r.points.push_back({p.id, p.region, p.deviation, p.evaluated, p.in_tolerance, p.outlier});
+    take_regions(doc.summary.regions);
+  }
   r.inputs.push_back({"comparison", name, r.comparison_sha256});
   for (const StoredInput& in : context.inputs) {
     r.inputs.push_back(in);

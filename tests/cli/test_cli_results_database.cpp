@@ -42,6 +42,8 @@ std::string sha256sum(const std::string& path) {
   return std::string(hex, 64);
 }
 
+std::string batch_part() { return source_path("examples/parts/mould.json"); }
+
 struct Batch {
   std::string dir, part, plan, m1, m2;
 };
@@ -204,4 +206,79 @@ TEST_CASE("cli results database: run --db stores the job's part under the inspec
     CHECK(process["regions"][k]["region"] == comparison["regions"][k]["region"]);
     CHECK(process["regions"][k]["recent"][0]["value"] == comparison["regions"][k]["mean"]);
   }
+}
+
+TEST_CASE("cli results database: compare --scan --db stores a scan's regions and spc follows them") {
+  // Three scans of the mould with a dent on the dome's flank growing from
+  // 5 to 15 um deep (inside the zone): each part stored as its regions (a scan has no
+  // planned points), the rows equal to comparison.json's region statistics
+  // (read back by SQLite's own API), and `spc --by region` follows them.
+  const std::string dir = scratch_dir("cli-results-db-scan");
+  const std::string db = dir + "/results.db";
+  const std::string regions = dir + "/regions.json";
+  REQUIRE(run_furrow({"partition", batch_part(), "--out", regions, "--grid", "40x40"}).status == 0);
+  std::vector<nlohmann::json> docs;
+  for (int k = 1; k <= 3; ++k) {
+    const std::string ply = dir + "/scan" + std::to_string(k) + ".ply";
+    const std::string out = dir + "/c" + std::to_string(k) + ".json";
+    REQUIRE(run_furrow({"simulate-measurement", batch_part(), "--scan", "--out", ply, "--stripe-pitch", "1.2",
+                        "--point-pitch", "1.2", "--view", "0.1,0.2,-1", "--seed", std::to_string(k), "--misalign",
+                        "3,-2,40,5,10,-20", "--bump", "30,40,28.85,8," + std::to_string(-0.005 * k)})
+                .status == 0);
+    const CliResult r = run_furrow({"compare", batch_part(), "--scan", ply, "--regions", regions, "--out", out,
+                                    "--voxel", "2", "--db", db, "--serial", "SCAN-" + std::to_string(k)});
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    CHECK(r.out.find("stored in " + db + ": part \"SCAN-" + std::to_string(k) + "\", a scan") != std::string::npos);
+    docs.push_back(nlohmann::json::parse(slurp(out)));
+    const std::string key = "(SELECT part_key FROM parts WHERE serial = 'SCAN-" + std::to_string(k) + "')";
+    CHECK(query(db, "SELECT comparison_sha256 FROM parts WHERE part_key = " + key) == sha256sum(out));
+    CHECK(query(db, "SELECT count(*) FROM points WHERE part_key = " + key) == "0");
+    const nlohmann::json& written = docs.back()["summary"]["regions"];
+    REQUIRE(written.size() > 1);
+    CHECK(query(db, "SELECT count(*) FROM regions WHERE part_key = " + key) == std::to_string(written.size()));
+    for (const nlohmann::json& region : written) {
+      const std::string where = " FROM regions WHERE part_key = " + key +
+                                " AND region = " + std::to_string(region["region"].get<int>());
+      CHECK(query(db, "SELECT count" + where) == std::to_string(region["deviations"]["count"].get<std::size_t>()));
+      // REAL columns hold the double exactly; SQLite prints 15 digits.
+      CHECK(std::abs(std::stod(query(db, "SELECT mean" + where)) - region["deviations"]["mean"].get<double>()) <
+            1e-15);
+    }
+    // The scan was stored once: the same comparison again is not stored.
+    if (k == 1) {
+      const CliResult again = run_furrow({"compare", batch_part(), "--scan", ply, "--regions", regions, "--out",
+                                          dir + "/again.json", "--voxel", "2", "--db", db, "--serial", "SCAN-1"});
+      CHECK(again.status == 0);
+      CHECK(again.out.find("already in " + db) != std::string::npos);
+    }
+  }
+  // By point a scan gives nothing to follow: inconclusive, nothing written.
+  const CliResult by_point = run_furrow({"spc", "--db", db, "--out", dir + "/spc-points"});
+  CHECK(by_point.status == 4);
+  CHECK(by_point.err.find("--by region") != std::string::npos);
+  CHECK(!fs::exists(dir + "/spc-points"));
+  const CliResult spc = run_furrow({"spc", "--db", db, "--out", dir + "/spc", "--by", "region"});
+  REQUIRE_MESSAGE((spc.status == 0 || spc.status == 1), spc.err);
+  const nlohmann::json chart = nlohmann::json::parse(slurp(dir + "/spc/spc.json"));
+  REQUIRE(chart["parts"].size() == 3);
+  REQUIRE(chart["characteristics"].size() == docs[0]["summary"]["regions"].size());
+  std::string deepest;
+  double deepest_mean = 0;
+  for (const nlohmann::json& c : chart["characteristics"]) {
+    const std::string id = c["id"];
+    CAPTURE(id);
+    REQUIRE(c["values"].size() == 3);
+    for (int k = 0; k < 3; ++k)
+      for (const nlohmann::json& region : docs[static_cast<std::size_t>(k)]["summary"]["regions"])
+        if (std::to_string(region["region"].get<int>()) == id)
+          CHECK(c["values"][k].get<double>() == region["deviations"]["mean"].get<double>());
+    if (c["values"][2].get<double>() < deepest_mean) deepest = id, deepest_mean = c["values"][2].get<double>();
+  }
+  // The region holding the dent reads it deepening part after part.
+  REQUIRE(!deepest.empty());
+  for (const nlohmann::json& c : chart["characteristics"])
+    if (c["id"] == deepest) {
+      CHECK(c["values"][0].get<double>() > c["values"][1].get<double>());
+      CHECK(c["values"][1].get<double>() > c["values"][2].get<double>());
+    }
 }
