@@ -277,6 +277,26 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
         break;
       }
     }
+  // A point of each of the face's other wires (its holes) in (u,v): the
+  // rebuilt outer loop must hold them (cad_model_space_loop.hpp).
+  std::vector<Eigen::Vector2d> holes;
+  if (from_model_space)
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+      const TopAbs_Orientation o = it.Value().Orientation();
+      if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL ||
+          it.Value().IsSame(outer))
+        continue;
+      for (TopExp_Explorer e(it.Value(), TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        double c0 = 0, c1 = 0;
+        if (BRep_Tool::Degenerated(edge)) continue;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, c0, c1);
+        if (curve.IsNull()) continue;
+        const gp_Pnt2d q = projector->ValueOfUV(curve->Value(0.5 * (c0 + c1)), BRep_Tool::Tolerance(edge));
+        holes.emplace_back(q.X(), q.Y());
+        break;
+      }
+    }
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
     // Internal and external wires (imprinted lines, construction curves) do
     // not bound the face.
@@ -358,7 +378,8 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
       model.outer = use.outer;
       model.edges = std::move(model_chain);
       bool turn = false;
-      if (model_space_loop(model, surface, periods, file, face.Orientation() == TopAbs_REVERSED, turn)) {
+      if (model_space_loop(model, surface, periods, file, face.Orientation() == TopAbs_REVERSED, holes,
+                           turn)) {
         turned = turn;
         model.model_space = true;
         wires.push_back(std::move(model));
