@@ -277,6 +277,32 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
         break;
       }
     }
+  // Where the outer loop is rebuilt from every one of the file's curves, a
+  // further wire of the face is no hole when it lies on those curves (a
+  // piece of the same boundary) or runs only along the surface's seams and
+  // poles: the natural bound of the whole closed surface, which
+  // OpenCASCADE's healing adds to a face on a torus or sphere whose wires
+  // all look like holes to it. A torus band over the whole tube with a
+  // hole on its seam, its loop running clockwise, came in as the hole:
+  // the whole torus less the band's loop less the hole.
+  auto walked_edges = [&face](const TopoDS_Wire& wire) {
+    std::vector<TopoDS_Edge> edges;
+    for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) edges.push_back(we.Current());
+    return edges;
+  };
+  const bool outer_from_file = from_model_space && !outer.IsNull() &&
+                               !file_curves_as_walked(file.curves, walked_edges(outer)).empty();
+  auto natural_bound = [&face](const TopoDS_Shape& wire) {
+    for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+      if (!BRep_Tool::Degenerated(edge) && !BRep_Tool::IsClosed(edge, face)) return false;
+    }
+    return true;
+  };
+  auto piece_of_outer = [&](const TopoDS_Shape& wire) {
+    return outer_from_file && !wire.IsSame(outer) &&
+           (natural_bound(wire) || !file_curves_as_walked(file.curves, walked_edges(TopoDS::Wire(wire))).empty());
+  };
   // A point of each of the face's other wires (its holes) in (u,v): the
   // rebuilt outer loop must hold them (cad_model_space_loop.hpp).
   std::vector<Eigen::Vector2d> holes;
@@ -284,7 +310,7 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     for (TopoDS_Iterator it(face); it.More(); it.Next()) {
       const TopAbs_Orientation o = it.Value().Orientation();
       if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL ||
-          it.Value().IsSame(outer))
+          it.Value().IsSame(outer) || piece_of_outer(it.Value()))
         continue;
       for (TopExp_Explorer e(it.Value(), TopAbs_EDGE); e.More(); e.Next()) {
         const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
@@ -303,6 +329,7 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     const TopAbs_Orientation o = it.Value().Orientation();
     if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL) continue;
     const TopoDS_Wire& wire = TopoDS::Wire(it.Value());
+    if (piece_of_outer(wire)) continue;
     int edges_in_wire = 0;
     for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edges_in_wire;
     WireUse use;
