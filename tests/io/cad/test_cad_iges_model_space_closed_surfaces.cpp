@@ -2,7 +2,9 @@
 // PPTR 0, every CRTN and PREF, either loop direction) on periodic surfaces
 // other than spheres (docs/formats.md "IGES boundaries", "Orientation"):
 // - torus patches as type 120 surfaces of revolution across one or both
-//   seams, each with a hole across the seams, against the analytic area
+//   seams and bands closed around the tube or the axis (where
+//   OpenCASCADE's healing adds the whole torus's natural bound to the
+//   face), each with a hole across a seam, against the analytic area
 //   (patch less hole: both are rectangles in the torus's angles, area
 //   r dtheta (R dpsi + r (sin psi1 - sin psi0))) and the file's normal;
 // - closed shells of such faces, whose volume (solid_mass(), the faces'
@@ -81,6 +83,7 @@ TEST_CASE("CAD import: IGES torus patches across the seams with holes, bounded b
       {0.3, 2.0, 1.5 * pi, 2.5 * pi, 0.8, 1.4, 1.8 * pi, 2.2 * pi},  // across the tube's seam
       {0, pi, 0, 2 * pi, 1.0, 2.0, -0.4, 0.4},                 // the whole tube over half a turn, the hole on its seam
       {-pi / 2, pi / 2, 0.5, 2.0, -0.2, 0.3, 0.9, 1.5},        // across the axis seam, the hole too
+      {0, 2 * pi, 0.5, 2.0, -0.3, 0.3, 1.0, 1.5},              // a band around the axis, the hole on its seam
   };
   IgesBuilder builder;
   std::vector<ExpectedFace> cases;

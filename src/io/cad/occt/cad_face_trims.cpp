@@ -261,6 +261,22 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     const TopAbs_Orientation o = it.Value().Orientation();
     face_wire_count += it.Value().ShapeType() == TopAbs_WIRE && o != TopAbs_INTERNAL && o != TopAbs_EXTERNAL;
   }
+  // A face's wire as walked on it; whether a wire runs only along the
+  // surface's seams and poles (the natural bound of the whole closed
+  // surface, which OpenCASCADE's healing adds to a face on a torus or
+  // sphere whose wires all look like holes to it).
+  auto walked_edges = [&face](const TopoDS_Wire& wire) {
+    std::vector<TopoDS_Edge> edges;
+    for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) edges.push_back(we.Current());
+    return edges;
+  };
+  auto natural_bound = [&face](const TopoDS_Shape& wire) {
+    for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+      if (!BRep_Tool::Degenerated(edge) && !BRep_Tool::IsClosed(edge, face)) return false;
+    }
+    return true;
+  };
   // The outer wire: on a face whose split pieces the reader merged, the one
   // OpenCASCADE made of the file's outer boundary (the pieces' wires lie
   // apart, which OuterWire's box test cannot order).
@@ -277,6 +293,19 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
         break;
       }
     }
+  // OuterWire's box test takes that natural bound, which spans whole
+  // periods, for the outer wire: the outer wire is then the one that lies
+  // on the file's outer boundary curves (a band around a torus's axis with
+  // a hole on its seam came in as the whole torus and the band).
+  if (from_model_space && !outer.IsNull() && natural_bound(outer))
+    for (TopoDS_Iterator it(face); it.More(); it.Next())
+      if (it.Value().ShapeType() == TopAbs_WIRE && !it.Value().IsSame(outer) &&
+          !file_curves_as_walked(file.curves, walked_edges(TopoDS::Wire(it.Value()))).empty()) {
+        outer = TopoDS::Wire(it.Value());
+        break;
+      }
+  const bool outer_from_file = from_model_space && !outer.IsNull() &&
+                               !file_curves_as_walked(file.curves, walked_edges(outer)).empty();
   // Where the outer loop is rebuilt from every one of the file's curves, a
   // further wire of the face is no hole when it lies on those curves (a
   // piece of the same boundary) or runs only along the surface's seams and
@@ -285,20 +314,6 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
   // all look like holes to it. A torus band over the whole tube with a
   // hole on its seam, its loop running clockwise, came in as the hole:
   // the whole torus less the band's loop less the hole.
-  auto walked_edges = [&face](const TopoDS_Wire& wire) {
-    std::vector<TopoDS_Edge> edges;
-    for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) edges.push_back(we.Current());
-    return edges;
-  };
-  const bool outer_from_file = from_model_space && !outer.IsNull() &&
-                               !file_curves_as_walked(file.curves, walked_edges(outer)).empty();
-  auto natural_bound = [&face](const TopoDS_Shape& wire) {
-    for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) {
-      const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
-      if (!BRep_Tool::Degenerated(edge) && !BRep_Tool::IsClosed(edge, face)) return false;
-    }
-    return true;
-  };
   auto piece_of_outer = [&](const TopoDS_Shape& wire) {
     return outer_from_file && !wire.IsSame(outer) &&
            (natural_bound(wire) || !file_curves_as_walked(file.curves, walked_edges(TopoDS::Wire(wire))).empty());
