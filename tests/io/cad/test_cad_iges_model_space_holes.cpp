@@ -234,3 +234,35 @@ TEST_CASE("CAD import: an IGES plane as a type 128 B-spline with holes, bounded 
   }
   check_case_file(builder, cases, "iges-plane-model-space-holes", kSpacing);
 }
+
+TEST_CASE("CAD import: IGES sphere lunes across or on the seam with holes, bounded by model-space curves only, keep the lune") {
+  // Two meridians from pole to pole bound the lune and the rest of the
+  // sphere alike, and when the lune crosses the seam of the file's
+  // rectangle (rotation angles 0..2 pi) only the rest lies in it; a lune
+  // with no hole then reads as that rest (test_cad_iges_revolution.cpp).
+  // A face holds its holes: a hole inside the lune says the face is the
+  // lune, whichever way its loop runs and however the file writes it
+  // (docs/formats.md "IGES boundaries"). Oracle as in add_lune(): the
+  // lune's area less the holes' caps, the file's normal, the centroid by
+  // first moments (the rest of the sphere with the same holes has the same
+  // area only by accident, and its centroid on the other side).
+  struct Shape {
+    double theta0, theta1;
+    std::vector<SphereHole> holes;
+  };
+  const std::vector<Shape> shapes = {
+      {-pi / 3, pi / 3, {{0.5, 0.1, 0.4}}},                  // 300 to 60 degrees written below 0, a hole beside the seam
+      {5 * pi / 3, 7 * pi / 3, {{2 * pi, -0.2, 0.35}}},      // ... written beyond 2 pi, a hole across the seam
+      {0, 0.5 * pi, {{0.8, 0.3, 0.3}}},                      // a meridian on the seam
+      {1.5 * pi, 2 * pi, {{1.7 * pi, -0.3, 0.3}}},           // ... at 2 pi
+  };
+  // Every CRTN and PREF on every shape, the outer loop as built on shapes
+  // 0 and 2 and reversed on 1 and 3 (all 32 variants on every shape took
+  // twice the time for the same reader paths).
+  IgesBuilder builder;
+  std::vector<ExpectedFace> cases;
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    for (const Variant& v : variants())
+      if (v.outer_reversed == (i % 2 == 1)) add_lune(builder, cases, shapes[i].theta0, shapes[i].theta1, shapes[i].holes, v);
+  check_case_file(builder, cases, "iges-sphere-model-space-seam-lune-holes", kSpacing);
+}

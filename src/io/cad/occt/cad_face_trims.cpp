@@ -261,6 +261,22 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
     const TopAbs_Orientation o = it.Value().Orientation();
     face_wire_count += it.Value().ShapeType() == TopAbs_WIRE && o != TopAbs_INTERNAL && o != TopAbs_EXTERNAL;
   }
+  // A face's wire as walked on it; whether a wire runs only along the
+  // surface's seams and poles (the natural bound of the whole closed
+  // surface, which OpenCASCADE's healing adds to a face on a torus or
+  // sphere whose wires all look like holes to it).
+  auto walked_edges = [&face](const TopoDS_Wire& wire) {
+    std::vector<TopoDS_Edge> edges;
+    for (BRepTools_WireExplorer we(wire, face); we.More(); we.Next()) edges.push_back(we.Current());
+    return edges;
+  };
+  auto natural_bound = [&face](const TopoDS_Shape& wire) {
+    for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+      if (!BRep_Tool::Degenerated(edge) && !BRep_Tool::IsClosed(edge, face)) return false;
+    }
+    return true;
+  };
   // The outer wire: on a face whose split pieces the reader merged, the one
   // OpenCASCADE made of the file's outer boundary (the pieces' wires lie
   // apart, which OuterWire's box test cannot order).
@@ -277,12 +293,58 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
         break;
       }
     }
+  // OuterWire's box test takes that natural bound, which spans whole
+  // periods, for the outer wire: the outer wire is then the one that lies
+  // on the file's outer boundary curves (a band around a torus's axis with
+  // a hole on its seam came in as the whole torus and the band).
+  if (from_model_space && !outer.IsNull() && natural_bound(outer))
+    for (TopoDS_Iterator it(face); it.More(); it.Next())
+      if (it.Value().ShapeType() == TopAbs_WIRE && !it.Value().IsSame(outer) &&
+          !file_curves_as_walked(file.curves, walked_edges(TopoDS::Wire(it.Value()))).empty()) {
+        outer = TopoDS::Wire(it.Value());
+        break;
+      }
+  const bool outer_from_file = from_model_space && !outer.IsNull() &&
+                               !file_curves_as_walked(file.curves, walked_edges(outer)).empty();
+  // Where the outer loop is rebuilt from every one of the file's curves, a
+  // further wire of the face is no hole when it lies on those curves (a
+  // piece of the same boundary) or runs only along the surface's seams and
+  // poles: the natural bound of the whole closed surface, which
+  // OpenCASCADE's healing adds to a face on a torus or sphere whose wires
+  // all look like holes to it. A torus band over the whole tube with a
+  // hole on its seam, its loop running clockwise, came in as the hole:
+  // the whole torus less the band's loop less the hole.
+  auto piece_of_outer = [&](const TopoDS_Shape& wire) {
+    return outer_from_file && !wire.IsSame(outer) &&
+           (natural_bound(wire) || !file_curves_as_walked(file.curves, walked_edges(TopoDS::Wire(wire))).empty());
+  };
+  // A point of each of the face's other wires (its holes) in (u,v): the
+  // rebuilt outer loop must hold them (cad_model_space_loop.hpp).
+  std::vector<Eigen::Vector2d> holes;
+  if (from_model_space)
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+      const TopAbs_Orientation o = it.Value().Orientation();
+      if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL ||
+          it.Value().IsSame(outer) || piece_of_outer(it.Value()))
+        continue;
+      for (TopExp_Explorer e(it.Value(), TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        double c0 = 0, c1 = 0;
+        if (BRep_Tool::Degenerated(edge)) continue;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, c0, c1);
+        if (curve.IsNull()) continue;
+        const gp_Pnt2d q = projector->ValueOfUV(curve->Value(0.5 * (c0 + c1)), BRep_Tool::Tolerance(edge));
+        holes.emplace_back(q.X(), q.Y());
+        break;
+      }
+    }
   for (TopoDS_Iterator it(face); it.More(); it.Next()) {
     // Internal and external wires (imprinted lines, construction curves) do
     // not bound the face.
     const TopAbs_Orientation o = it.Value().Orientation();
     if (it.Value().ShapeType() != TopAbs_WIRE || o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL) continue;
     const TopoDS_Wire& wire = TopoDS::Wire(it.Value());
+    if (piece_of_outer(wire)) continue;
     int edges_in_wire = 0;
     for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edges_in_wire;
     WireUse use;
@@ -358,7 +420,8 @@ std::vector<WireUse> wire_chains(const TopoDS_Face& face, const Handle(Geom_Surf
       model.outer = use.outer;
       model.edges = std::move(model_chain);
       bool turn = false;
-      if (model_space_loop(model, surface, periods, file, face.Orientation() == TopAbs_REVERSED, turn)) {
+      if (model_space_loop(model, surface, periods, file, face.Orientation() == TopAbs_REVERSED, holes,
+                           turn)) {
         turned = turn;
         model.model_space = true;
         wires.push_back(std::move(model));

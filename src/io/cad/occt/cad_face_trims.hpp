@@ -18,6 +18,10 @@
 //   curve the face's healing dropped still counts, else the wire's edges;
 //   FaceWires::turned says when its region lies on the other side of the
 //   wire than OpenCASCADE's face has it;
+//   the face's other wires are its holes, less any that OpenCASCADE's
+//   healing made of the same boundary or added as the natural bound of the
+//   whole closed surface (seam and pole edges only), which the rebuilt
+//   loop makes redundant and which would take its region away again;
 // - the face's rectangle is the exact box of its outer wire, at most one
 //   period wide, snapped onto whole periods within rounding or the edges' own
 //   tolerance.

@@ -21,6 +21,7 @@ struct Candidate {
   std::vector<Eigen::Vector2d> shifts;
   double twice_area = 0;
   Eigen::Vector4d box;
+  std::vector<Eigen::Vector2d> polygon;  // the loop's samples, shifts applied
 };
 
 // One piece of the loop: an edge with a 3-D curve, sampled in running order.
@@ -30,10 +31,31 @@ struct Piece {
   bool pole_before = false;  // meets the previous piece at a pole
 };
 
+// Whether `q`, moved by any whole number of periods (up to two either way,
+// enough for a loop that spans at most one period), lies inside `polygon`
+// (even-odd rule).
+bool holds(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& q, const Eigen::Vector2d& period) {
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j) {
+      if ((i != 0 && period.x() == 0) || (j != 0 && period.y() == 0)) continue;
+      const Eigen::Vector2d p = q + Eigen::Vector2d(i * period.x(), j * period.y());
+      bool inside = false;
+      for (std::size_t k = 0, l = polygon.size() - 1; k < polygon.size(); l = k++) {
+        const Eigen::Vector2d& a = polygon[k];
+        const Eigen::Vector2d& b = polygon[l];
+        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+          inside = !inside;
+      }
+      if (inside) return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 bool model_space_loop(WireUse& wire, const Handle(Geom_Surface)& surface, const Periods& periods,
-                      const FileBoundary& file, bool face_reversed, bool& turned) {
+                      const FileBoundary& file, bool face_reversed, const std::vector<Eigen::Vector2d>& holes,
+                      bool& turned) {
   const Eigen::Vector2d period(periods.u ? periods.du : 0.0, periods.v ? periods.dv : 0.0);
   std::vector<Piece> pieces;
   bool pole_pending = false;  // a degenerate edge since the last piece
@@ -104,9 +126,19 @@ bool model_space_loop(WireUse& wire, const Handle(Geom_Surface)& surface, const 
     for (int d = 0; d < 2; ++d)
       if (period[d] > 0 && c.box[d + 2] - c.box[d] > period[d] * (1 + kRelative)) spans = false;
     const double extent = (c.box[2] - c.box[0]) * (c.box[3] - c.box[1]);
+    c.polygon = std::move(points);
     if (spans && std::abs(c.twice_area) > 1e-9 * extent) candidates.push_back(std::move(c));
   }
   if (candidates.empty()) return false;
+  // A face holds its holes: of several candidates (a lune and the rest of
+  // the sphere) keep those that hold every hole, when any does.
+  if (candidates.size() > 1 && !holes.empty()) {
+    std::vector<Candidate> holding;
+    for (const Candidate& c : candidates)
+      if (std::all_of(holes.begin(), holes.end(), [&](const Eigen::Vector2d& q) { return holds(c.polygon, q, period); }))
+        holding.push_back(c);
+    if (!holding.empty()) candidates = std::move(holding);
+  }
 
   const Candidate* chosen = candidates.size() == 1 ? &candidates.front() : nullptr;
   if (!chosen) {

@@ -17,7 +17,11 @@
 // by whatever the loop needs, and every jump by whole periods is tried. A
 // candidate loop must close in the parameter plane (a loop that winds around
 // the surface is not one) and span at most one period. The region is the
-// one the candidate encloses in the plane; the candidate is:
+// one the candidate encloses in the plane. A face holds its holes: where
+// several candidates close, only those whose region holds a point of every
+// hole (`holes`, in the surface's (u,v), any period) are kept, when any is
+// (a lune from pole to pole with a hole in it is the lune, wherever its
+// meridians lie). Of those, the candidate is:
 // 1. the only one, when there is one (every loop that does not run from
 //    pole to pole: zones, caps, bands, patches across the seam);
 // 2. else (a lune from pole to pole, which encloses one side of the sphere
@@ -43,14 +47,19 @@
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <Eigen/Core>
+#include <vector>
+
 #include "io/cad/occt/cad_face_trims.hpp"
 #include "io/cad/occt/cad_iges_boundary.hpp"
 
 namespace furrow::cad {
 
 // `wire.edges` carry each edge's `projected` curve (degenerate edges none);
-// `face_reversed`: the face is REVERSED (its wires are walked against the file's loop).
+// `face_reversed`: the face is REVERSED (its wires are walked against the file's loop);
+// `holes`: one point on each of the face's other wires, in (u,v).
 bool model_space_loop(WireUse& wire, const Handle(Geom_Surface)& surface, const Periods& periods,
-                      const FileBoundary& file, bool face_reversed, bool& turned);
+                      const FileBoundary& file, bool face_reversed, const std::vector<Eigen::Vector2d>& holes,
+                      bool& turned);
 
 }  // namespace furrow::cad
