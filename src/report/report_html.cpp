@@ -300,7 +300,7 @@ std::string gouges_section(const ComparisonDocument& doc, const std::vector<Repo
   const GougeConfirmation& g = *doc.gouges;
   const ScanVerification* v = scan && scan->verification ? &*scan->verification : nullptr;
   if (v)
-    out += "<p>A scan point is as noisy as the scanner (" + um(v->noise) +
+    out += "<p>A scan point is as noisy as the scanner (" + fixed(v->noise * 1000, 1) + " &micro;m" +
            "), so each site and cluster is read through local means: the mean deviation of the points within " +
            fixed(v->read_radius, 2) + " mm of a point (at least " + count(kScanReadPoints) +
            "); the deepest is the measured depth, its 1-sigma the noise over the square root of its points. "
