@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_flags.hpp"
+#include "stage/scan_simulate_stage.hpp"
 #include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "inspection/measurement_simulation.hpp"
@@ -16,7 +17,6 @@
 #include "base/text_fields.hpp"
 #include "io/cmm/measurement_qif.hpp"
 #include "io/part_file.hpp"
-#include "io/ply_writer.hpp"
 #include "machining/prediction/prediction_file.hpp"
 
 namespace furrow::cli {
@@ -62,27 +62,10 @@ int run_simulate_scan(Args& args) {
   outputs.add_input(part_path, "part");
   outputs.will_write(out);
   const Part part = read_part(part_path);
-  const SimulatedScan scan = simulate_scan(part, o.scanner);
-  const double unit = o.inch ? 25.4 : 1.0;
-  std::vector<PlyColumn> columns = {{"x", PlyScalar::float64, {}}, {"y", PlyScalar::float64, {}},
-                                    {"z", PlyScalar::float64, {}}, {"nx", PlyScalar::float32, {}},
-                                    {"ny", PlyScalar::float32, {}}, {"nz", PlyScalar::float32, {}},
-                                    {"red", PlyScalar::uchar, {}},  {"green", PlyScalar::uchar, {}},
-                                    {"blue", PlyScalar::uchar, {}}, {"intensity", PlyScalar::float32, {}}};
-  for (std::size_t k = 0; k < scan.points.size(); ++k) {
-    for (int a = 0; a < 3; ++a) {
-      columns[a].values.push_back(scan.points[k][a] / unit);
-      columns[3 + a].values.push_back(scan.normals[k][a]);
-    }
-    // Grey by the return's strength, as a monochrome scanner colours it.
-    const double grey = std::round(40 + 200 * std::clamp(double(scan.intensity[k]), 0.0, 1.0));
-    for (int c = 6; c < 9; ++c) columns[c].values.push_back(grey);
-    columns[9].values.push_back(scan.intensity[k]);
-  }
-  outputs.file(out, ply_vertex_text(columns, {"furrow simulate-measurement --scan of " +
-                                                  std::filesystem::path(part_path).filename().string(),
-                                              std::string("units ") + (o.inch ? "inch" : "mm"),
-                                              "seed " + std::to_string(o.scanner.seed)}));
+  const SimulatedScanFile simulated =
+      simulate_scan_stage(part, o, std::filesystem::path(part_path).filename().string());
+  const SimulatedScan& scan = simulated.scan;
+  outputs.file(out, simulated.ply);
   outputs.publish();
   const ScanRayCounts& c = scan.counts;
   std::printf("%zu points (%zu spray) of %zu rays: %zu missed the part, %zu grazing, %zu from behind, %zu not "

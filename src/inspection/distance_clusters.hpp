@@ -4,10 +4,15 @@
 // Used to group predicted local-gouge contact points into sites and measured
 // overcuts into unexplained clusters (gouge_confirmation.hpp).
 //
-// Neighbours come from the exact double-precision k-d tree of
-// geometry/point_search.hpp, so the result depends on the points only. Deterministic: members in increasing index order, clusters
-// ordered by their smallest member.
+// Exact single linkage in double precision (distance <= `distance`
+// joins), so the result depends on the points only: points are binned in
+// cells of side distance / sqrt(3), whose members all join, and nearby
+// cells join through their closest pairs; a scan's dense overcut clusters
+// (tens of thousands of points within a few mm of each other) cost about
+// one pair check per pair of cells. Deterministic: members in increasing
+// index order, clusters ordered by their smallest member.
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 namespace furrow {

@@ -160,6 +160,7 @@ void decide_scan_verdict(ScanComparison& c) {
   ComparisonSummary& s = c.summary;
   s.inconclusive.clear();
   s.confirmed_gouges = c.verification ? c.verification->confirmed() : 0;
+  s.unexplained_overcuts = c.verification ? c.verification->unexplained.size() : 0;
   if (s.alignment != "ok") {
     s.verdict = Verdict::inconclusive;
     s.inconclusive = {{"alignment_failed", "",

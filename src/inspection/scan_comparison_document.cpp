@@ -6,6 +6,7 @@
 #include "inspection/comparison_json.hpp"
 #include "inspection/scan_display_json.hpp"
 #include "inspection/scan_fit_options_json.hpp"
+#include "inspection/scan_verification_json.hpp"
 
 namespace furrow {
 
@@ -35,6 +36,7 @@ ScanComparisonDocument parse_scan_comparison(const std::string& text, const std:
   d.sources.regions = s.string("regions");
   d.sources.deviations = s.string("deviations");
   d.sources.scan_units = s.string("scan_units");
+  if (s.has("prediction")) d.sources.prediction = s.string("prediction");
 
   const JsonCursor p = c.at("preprocessing");
   auto& pre = d.preprocessing;
@@ -121,6 +123,11 @@ ScanComparisonDocument parse_scan_comparison(const std::string& text, const std:
                             "(written by an older Furrow): compare the scan again");
   d.histogram = read_scan_histogram(c.at("histogram"));
   d.display = read_scan_display(c.at("display"));
+  if (!d.sources.prediction.empty()) {
+    d.verification = scan_verification_json::read_scan_verification(c);
+    d.summary.confirmed_gouges = d.verification->confirmed();
+    d.summary.unexplained_overcuts = d.verification->unexplained.size();
+  }
   std::size_t counted = 0;
   for (std::size_t k : d.histogram.counts) counted += k;
   if (counted != sum.evaluated)

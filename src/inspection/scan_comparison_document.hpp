@@ -10,12 +10,14 @@
 // naming the file and the member. A scan comparison written before the
 // display sample was recorded is refused: compare the scan again.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "inspection/comparison.hpp"
 #include "inspection/comparison_document.hpp"
 #include "inspection/scan_display.hpp"
+#include "inspection/scan_verification.hpp"
 #include "inspection/tolerance_zone.hpp"
 
 namespace furrow {
@@ -23,7 +25,7 @@ namespace furrow {
 struct ScanComparisonDocument {
   std::string furrow_version;
   struct Sources {
-    std::string part, scan, regions, deviations, scan_units;  // file names as given; empty when not given
+    std::string part, scan, regions, deviations, prediction, scan_units;  // file names as given; empty when not given
   } sources;
   struct Preprocessing {
     double voxel = 0;  // [mm]
@@ -52,6 +54,11 @@ struct ScanComparisonDocument {
   ComparisonSummary summary;  // evaluated, in/out of tolerance, deviations, profile, regions, alignment, verdict
   ScanHistogram histogram;
   ScanDisplay display;
+  // With a machining prediction (sources.prediction set): predicted versus
+  // measured, the gouge sites and the unexplained overcuts as written (no
+  // per-point records: a site's and a cluster's points are counts,
+  // scan_verification_json.hpp).
+  std::optional<ScanVerification> verification;
 };
 
 // True when the text is a JSON object whose "kind" is "scan" (cheap: used

@@ -5,6 +5,7 @@
 
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
+#include "inspection/scan_verification_json.hpp"
 #include "inspection/scan_display_json.hpp"
 #include "inspection/scan_fit_options_json.hpp"
 
@@ -14,24 +15,6 @@ namespace jf = json_fields;
 using nlohmann::json;
 
 namespace {
-
-// The sites as the probe points' gouge_sites writes them, except that
-// `points` is a count and `deepest` the index of the point (in the scan's
-// finite points, the deviation cloud's order) whose local mean is deepest.
-json scan_sites_json(const ScanVerification& v) {
-  json sites = json::array();
-  for (const ScanGougeSite& g : v.sites) {
-    const GougeSiteCheck& s = g.check;
-    json anchors = json::array();
-    for (const Eigen::Vector3d& a : s.anchors) anchors.push_back(jf::vector_json(a));
-    json j = verification_json::gouge_site_json(s, s.points.size(), s.deepest ? json(*s.deepest) : json(nullptr));
-    j["anchors"] = anchors;
-    j["anchors_seen"] = g.anchors_seen;
-    j["read_points"] = g.read_points;
-    sites.push_back(std::move(j));
-  }
-  return sites;
-}
 
 // Per region of the partition (null without one); region null: the
 // removed points whose foot lies in no region.
@@ -94,17 +77,15 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
     throw std::logic_error("scan_comparison_json: the prediction file and its results go together");
   if (c.verification) {
     const ScanVerification& v = *c.verification;
-    doc["verification"] = {{"noise", jf::finite(v.noise, "scan noise")},
-                           {"read_radius", jf::finite(v.read_radius, "read radius")},
-                           {"read_points", kScanReadPoints},
-                           {"prediction", verification_json::options_json(v.options)},
-                           {"gouges", verification_json::options_json(v.gouge_options)}};
+    doc["verification"] = scan_verification_json::rules_json(v);
     doc["prediction_comparison"] = verification_json::prediction_comparison_json(v.compared);
-    doc["gouge_sites"] = scan_sites_json(v);
+    doc["gouge_sites"] = scan_verification_json::sites_json(v.sites);
+    doc["unexplained"] = scan_verification_json::clusters_json(v.unexplained);
   } else {
     doc["verification"] = nullptr;
     doc["prediction_comparison"] = nullptr;
     doc["gouge_sites"] = nullptr;
+    doc["unexplained"] = nullptr;
   }
   json regions = json::array();
   for (const RegionStatistics& g : s.regions)
@@ -120,6 +101,7 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                     {"deviations", comparison_json::statistics_json(s.deviations)},
                     {"profile", jf::finite(s.profile, "profile")},
                     {"confirmed_gouges", s.confirmed_gouges},
+                    {"unexplained_overcuts", s.unexplained_overcuts},
                     {"regions", regions},
                     {"alignment", s.alignment},
                     {"verdict", to_string(s.verdict)},

@@ -8,6 +8,8 @@
 #include <map>
 #include <optional>
 
+#include "geometry/point_search.hpp"
+#include "inspection/distance_clusters.hpp"
 #include "inspection/scan_comparison.hpp"
 
 namespace furrow {
@@ -20,6 +22,11 @@ std::size_t ScanVerification::confirmed() const {
 
 namespace {
 
+// [mm] How far a sparse scan's local mean may reach for its
+// kScanReadPoints points when fewer lie within kScanReadRadius: a raster up
+// to about 2 mm (scan_verification.hpp, "Unexplained overcuts").
+constexpr double kScanSparseReach = 3.0;
+
 // The points of one site hashed on a grid of kScanReadRadius cells, for
 // the local means and the anchors' views (a site holds up to a few
 // thousand points of a million). Cells keep their points in index order,
@@ -29,6 +36,19 @@ class SiteGrid {
   SiteGrid(const std::vector<std::size_t>& points, const std::vector<Eigen::Vector3d>& x, double cell)
       : x_(x), cell_(cell) {
     for (const std::size_t i : points) cells_[key(x[i])].push_back(i);
+  }
+  // Whether some point lies within `radius` (<= cell) of `at`.
+  bool any_near(const Eigen::Vector3d& at, double radius) const {
+    const std::array<long, 3> k = key(at);
+    for (long a = -1; a <= 1; ++a)
+      for (long b = -1; b <= 1; ++b)
+        for (long c = -1; c <= 1; ++c) {
+          const auto it = cells_.find({k[0] + a, k[1] + b, k[2] + c});
+          if (it == cells_.end()) continue;
+          for (const std::size_t j : it->second)
+            if ((x_[j] - at).squaredNorm() <= radius * radius) return true;
+        }
+    return false;
   }
   // Calls f(j) for every point within `radius` (<= cell) of `at`.
   template <class F>
@@ -117,6 +137,7 @@ void verify_scan_prediction(ScanComparison& c, const ScanCloud& cloud, const Par
     v.compared.regions.push_back({id, residual_statistics(s.predicted, s.measured, s.sigma, po)});
 
   // The sites.
+  std::vector<bool> on_any(n, false);
   for (GougeSiteCheck& site : predicted_gouge_sites(part, prediction, options.gouges)) {
     ScanGougeSite g;
     g.check = std::move(site);
@@ -125,6 +146,8 @@ void verify_scan_prediction(ScanComparison& c, const ScanCloud& cloud, const Par
       if (c.status[i] == ScanPointStatus::evaluated && c.foot_face[i] == s.face_index &&
           s.search_box.contains(c.foot_uv[i]))
         s.points.push_back(i);
+    g.on_site = s.points.size();
+    for (const std::size_t i : s.points) on_any[i] = true;
     const SiteGrid grid(s.points, x, kScanReadRadius);
     for (const Eigen::Vector3d& anchor : s.anchors) {
       std::size_t seen = 0;
@@ -183,6 +206,79 @@ void verify_scan_prediction(ScanComparison& c, const ScanCloud& cloud, const Par
                            po.within_sigmas * std::hypot(v.noise / std::sqrt(m), sum_resolution / m);
     }
     v.sites.push_back(std::move(g));
+  }
+  // Unexplained overcuts: evaluated points below the lower limit, on no
+  // site, whose depth the prediction does not account for at the point.
+  std::vector<std::size_t> loose;
+  std::vector<Eigen::Vector3d> feet;
+  const double lower = c.tolerance.lower();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (c.status[i] != ScanPointStatus::evaluated || !(c.deviation[i] < lower) || on_any[i]) continue;
+    if (predicted[i].reached() && std::abs(measured[i] - predicted[i].value) <= po.within_sigmas * sigma[i]) continue;
+    loose.push_back(i);
+    feet.push_back(x[i] - c.deviation[i] * c.foot_normal[i].cast<double>());
+  }
+  if (!loose.empty()) {
+    // The evaluated points within kScanSparseReach of an overcut (a cell
+    // map of the overcuts decides which), searched exactly for the local
+    // means of the clusters' points.
+    const SiteGrid overcuts(loose, x, kScanSparseReach);
+    std::vector<std::size_t> nearby;
+    std::vector<Eigen::Vector3d> nearby_x;
+    for (std::size_t j = 0; j < n; ++j)
+      if (c.status[j] == ScanPointStatus::evaluated && overcuts.any_near(x[j], kScanSparseReach)) {
+        nearby.push_back(j);
+        nearby_x.push_back(x[j]);
+      }
+    const PointSearch search(nearby_x);
+    for (const std::vector<std::size_t>& members : distance_clusters(feet, options.gouges.overcut_cluster_distance)) {
+      ScanOvercutCluster u;
+      OvercutCluster& k = u.cluster;
+      u.points = members.size();
+      u.extent_min = u.extent_max = feet[members.front()];
+      double deepest = 0;
+      bool read = false;
+      for (const std::size_t m : members) {
+        const std::size_t i = loose[m];
+        k.points.push_back(i);
+        k.centroid += feet[m];
+        u.extent_min = u.extent_min.cwiseMin(feet[m]);
+        u.extent_max = u.extent_max.cwiseMax(feet[m]);
+        // The points within the read radius; in a sparse scan, where fewer
+        // lie that close, the kScanReadPoints nearest within reach.
+        std::vector<PointNeighbour> found = search.within(x[i], kScanReadRadius);
+        if (found.size() < kScanReadPoints) {
+          found = search.nearest(x[i], kScanReadPoints);
+          if (found.size() < kScanReadPoints || found.back().distance > kScanSparseReach) continue;
+        }
+        double sum = 0;
+        for (const PointNeighbour& p : found) sum += c.deviation[nearby[p.index]];
+        const double mean = sum / static_cast<double>(found.size());
+        if (!read || mean < deepest) {
+          read = true;
+          deepest = mean;
+          k.deepest = i;
+          u.read_points = found.size();
+        }
+      }
+      k.centroid /= static_cast<double>(members.size());
+      if (!read) continue;  // too sparse to be read: a stray point, not a dent
+      k.uncertainty = v.noise / std::sqrt(static_cast<double>(u.read_points));
+      k.threshold = overcut_threshold(k.uncertainty, 0.0, c.tolerance, options.gouges);
+      // The local mean, not one noisy point, must lie beyond the lower
+      // limit and the threshold.
+      if (!(deepest < std::min(lower, -k.threshold))) continue;
+      k.depth = -deepest;
+      k.face_index = c.foot_face[k.deepest];
+      k.face = part.faces[static_cast<std::size_t>(k.face_index)].name();
+      k.uv = c.foot_uv[k.deepest];
+      k.xyz = x[k.deepest] - c.deviation[k.deepest] * c.foot_normal[k.deepest].cast<double>();
+      v.unexplained.push_back(std::move(u));
+    }
+    std::stable_sort(v.unexplained.begin(), v.unexplained.end(), [](const ScanOvercutCluster& a, const ScanOvercutCluster& b) {
+      return a.cluster.depth > b.cluster.depth;
+    });
+    for (std::size_t k = 0; k < v.unexplained.size(); ++k) v.unexplained[k].cluster.id = "U" + std::to_string(k + 1);
   }
   c.verification = std::move(v);
   decide_scan_verdict(c);

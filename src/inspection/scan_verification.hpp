@@ -49,9 +49,25 @@
 // at the deepest spot measured: that one the noise picks, and on an uncut
 // site it lies where the prediction is shallowest.
 //
-// Not done for a scan: the probe points' unexplained-overcut clusters (a
-// dent nothing predicted shows in the statistics, the tolerance and the
-// deviation cloud).
+// Unexplained overcuts. The probe points' rule (gouge_confirmation.hpp)
+// with what a cloud changes: a point is an overcut when its deviation lies
+// below the zone's lower limit (not one sigma-scaled threshold per point:
+// a dent holds hundreds of points, and the noise of one is not the
+// question), on no site (its foot outside every site's search box), and
+// its depth is not what the prediction expects there (reached and
+// |measured - predicted| <= within_sigmas sigma). Overcuts are clustered by
+// single linkage of their feet within --overcut-cluster mm
+// (distance_clusters.hpp; 5 mm by default: a dent's overcut points lie a
+// raster pitch apart, two dents farther apart than that are two clusters).
+// A cluster is read as a site is: the deepest local mean (kScanReadRadius,
+// at least kScanReadPoints points, over every evaluated point) centred on
+// one of its points - in a scan too sparse for that (a raster of 1 mm and
+// more: fewer than kScanReadPoints within the radius), the mean of the
+// kScanReadPoints nearest evaluated points, when they lie within 3 mm; it
+// is listed when that mean lies below both the
+// lower limit and -threshold (threshold = the sites' rule with the mean's
+// uncertainty), so a stray noisy point or a lone spray remnant below the
+// limit is no dent. Listed deepest first, ids "U<n>".
 #include <cstddef>
 #include <vector>
 
@@ -81,8 +97,26 @@ struct ScanGougeSite {
   // prediction at the anchor predicted deepest) and depth_consistent as
   // the header says.
   GougeSiteCheck check;
+  // Evaluated points on the site: check.points.size() when computed; read
+  // back from comparison.json, which records the count, check.points is
+  // empty and this holds it.
+  std::size_t on_site = 0;
   std::size_t read_points = 0;   // points in the deepest local mean
   std::size_t anchors_seen = 0;  // of check.anchors
+};
+
+// An unexplained overcut of a scan (the header's "Unexplained overcuts"):
+// `cluster` as the probe points' (id "U<n>", deepest first), with `deepest`
+// the cloud index of the point whose local mean is deepest, face, uv and
+// xyz its foot, depth = -that local mean, uncertainty noise / sqrt(points
+// in it), threshold, centroid the mean foot of the cluster's points;
+// `cluster.points` the cloud indices of the points below the lower limit
+// that make the cluster (empty when read back: the count is kept).
+struct ScanOvercutCluster {
+  OvercutCluster cluster;
+  std::size_t points = 0;       // points below the lower limit in it
+  std::size_t read_points = 0;  // points in the deepest local mean
+  Eigen::Vector3d extent_min = Eigen::Vector3d::Zero(), extent_max = Eigen::Vector3d::Zero();  // of the feet [mm]
 };
 
 struct ScanVerification {
@@ -94,6 +128,7 @@ struct ScanVerification {
   // every evaluated point; `points` is left empty (no per-point record).
   PredictionComparison compared;
   std::vector<ScanGougeSite> sites;
+  std::vector<ScanOvercutCluster> unexplained;  // deepest first
   std::size_t confirmed() const;
 };
 

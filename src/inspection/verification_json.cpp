@@ -239,21 +239,59 @@ json gouge_sites_json(const GougeConfirmation& g, const std::vector<std::string>
   return sites;
 }
 
+json overcut_cluster_json(const OvercutCluster& u, json points, json deepest) {
+  return {{"id", u.id},
+          {"points", std::move(points)},
+          {"deepest", std::move(deepest)},
+          {"face", u.face},
+          {"face_index", u.face_index},
+          {"uv", jf::vector_json(u.uv)},
+          {"xyz", jf::vector_json(u.xyz)},
+          {"depth", jf::finite(u.depth, "depth")},
+          {"uncertainty", jf::finite(u.uncertainty, "uncertainty")},
+          {"threshold", jf::finite(u.threshold, "threshold")},
+          {"centroid", jf::vector_json(u.centroid)}};
+}
+
 json unexplained_json(const GougeConfirmation& g, const std::vector<std::string>& ids) {
   json clusters = json::array();
   for (const OvercutCluster& u : g.unexplained)
-    clusters.push_back({{"id", u.id},
-                        {"points", id_list(u.points, ids)},
-                        {"deepest", ids[u.deepest]},
-                        {"face", u.face},
-                        {"face_index", u.face_index},
-                        {"uv", jf::vector_json(u.uv)},
-                        {"xyz", jf::vector_json(u.xyz)},
-                        {"depth", jf::finite(u.depth, "depth")},
-                        {"uncertainty", jf::finite(u.uncertainty, "uncertainty")},
-                        {"threshold", jf::finite(u.threshold, "threshold")},
-                        {"centroid", jf::vector_json(u.centroid)}});
+    clusters.push_back(overcut_cluster_json(u, id_list(u.points, ids), ids[u.deepest]));
   return clusters;
+}
+
+GougeSiteCheck read_gouge_site_fields(const JsonCursor& n) {
+  GougeSiteCheck s;
+  s.id = n.string("id");
+  s.source = parse_gouge_site_source(n.string("source"), n.path("source"));
+  s.face = n.string("face");
+  s.face_index = n.integer("face_index");
+  s.uv_box = read_box(n.at("uv_box"));
+  s.search_box = read_box(n.at("search_box"));
+  s.centroid = n.vector3("centroid");
+  s.predicted_depth = n.nullable_number("predicted_depth");
+  s.contacts = n.count("contacts");
+  s.status = parse_gouge_site_status(n.string("status"), n.path("status"));
+  s.measured_depth = n.nullable_number("measured_depth");
+  s.uncertainty = n.nullable_number("uncertainty");
+  s.threshold = n.nullable_number("threshold");
+  s.predicted_error = n.nullable_number("predicted_error");
+  if (!n.is_null("depth_consistent")) s.depth_consistent = n.boolean("depth_consistent");
+  return s;
+}
+
+OvercutCluster read_overcut_cluster_fields(const JsonCursor& n) {
+  OvercutCluster u;
+  u.id = n.string("id");
+  u.face = n.string("face");
+  u.face_index = n.integer("face_index");
+  u.uv = n.vector2("uv");
+  u.xyz = n.vector3("xyz");
+  u.depth = n.number("depth");
+  u.uncertainty = n.non_negative("uncertainty");
+  u.threshold = n.non_negative("threshold");
+  u.centroid = n.vector3("centroid");
+  return u;
 }
 
 GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
@@ -262,24 +300,9 @@ GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
   const json& sites = root.array("gouge_sites");
   for (std::size_t k = 0; k < sites.size(); ++k) {
     const JsonCursor n(sites[k], jf::child(root.path("gouge_sites"), k));
-    GougeSiteCheck s;
-    s.id = n.string("id");
-    s.source = parse_gouge_site_source(n.string("source"), n.path("source"));
-    s.face = n.string("face");
-    s.face_index = n.integer("face_index");
-    s.uv_box = read_box(n.at("uv_box"));
-    s.search_box = read_box(n.at("search_box"));
-    s.centroid = n.vector3("centroid");
-    s.predicted_depth = n.nullable_number("predicted_depth");
-    s.contacts = n.count("contacts");
-    s.status = parse_gouge_site_status(n.string("status"), n.path("status"));
+    GougeSiteCheck s = read_gouge_site_fields(n);
     s.points = point_indices(n, "points", index_of);
     if (!n.is_null("deepest")) s.deepest = point_index(n, "deepest", n.raw("deepest"), index_of);
-    s.measured_depth = n.nullable_number("measured_depth");
-    s.uncertainty = n.nullable_number("uncertainty");
-    s.threshold = n.nullable_number("threshold");
-    s.predicted_error = n.nullable_number("predicted_error");
-    if (!n.is_null("depth_consistent")) s.depth_consistent = n.boolean("depth_consistent");
     if ((s.status == GougeSiteStatus::not_measured) != s.points.empty() ||
         s.deepest.has_value() == s.points.empty() || s.measured_depth.has_value() == s.points.empty())
       throw InputError(n.where() + ": a site is NOT MEASURED exactly when it has no points, and then has no deepest point or depth");
@@ -288,18 +311,9 @@ GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
   const json& unexplained = root.array("unexplained");
   for (std::size_t k = 0; k < unexplained.size(); ++k) {
     const JsonCursor n(unexplained[k], jf::child(root.path("unexplained"), k));
-    OvercutCluster u;
-    u.id = n.string("id");
+    OvercutCluster u = read_overcut_cluster_fields(n);
     u.points = point_indices(n, "points", index_of);
     u.deepest = point_index(n, "deepest", n.raw("deepest"), index_of);
-    u.face = n.string("face");
-    u.face_index = n.integer("face_index");
-    u.uv = n.vector2("uv");
-    u.xyz = n.vector3("xyz");
-    u.depth = n.number("depth");
-    u.uncertainty = n.non_negative("uncertainty");
-    u.threshold = n.non_negative("threshold");
-    u.centroid = n.vector3("centroid");
     g.unexplained.push_back(std::move(u));
   }
   return g;

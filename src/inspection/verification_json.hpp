@@ -40,6 +40,14 @@ json gouge_sites_json(const GougeConfirmation& gouges, const std::vector<std::st
 // names them (a probe comparison by ids, a scan by count and cloud index).
 json gouge_site_json(const GougeSiteCheck& site, json points, json deepest);
 json unexplained_json(const GougeConfirmation& gouges, const std::vector<std::string>& ids);
+// One cluster of "unexplained", its points and deepest point as the caller
+// names them.
+json overcut_cluster_json(const OvercutCluster& cluster, json points, json deepest);
+// The members of one site / cluster other than "points" and "deepest",
+// which the caller reads in its own naming (ids, or a scan's counts and
+// cloud indices).
+GougeSiteCheck read_gouge_site_fields(const JsonCursor& node);
+OvercutCluster read_overcut_cluster_fields(const JsonCursor& node);
 // `root` holds both arrays.
 GougeConfirmation read_gouge_confirmation(const JsonCursor& root,
                                           const std::map<std::string, std::size_t>& index_of);

@@ -128,11 +128,9 @@ void read_plan(const JsonCursor& p, Job& job, const std::string& folder) {
                      ": a job plans and compares one setup; plan several with furrow plan --setups");
 }
 
-void read_simulation(const JsonCursor& s, Job& job) {
-  MeasurementSimulationJob sim;
-  SimulationOptions& o = sim.options;
-  s.boolean("prediction", sim.from_prediction);
-  read_option_members(s, simulation_option_table(), o);
+// "bumps": [[x, y, z, radius, height], ...] in mm.
+std::vector<SurfaceBump> read_bumps(const JsonCursor& s) {
+  std::vector<SurfaceBump> out;
   if (const json* bumps = s.find("bumps")) {
     const json& list = jf::array(*bumps, s.path("bumps"));
     for (std::size_t k = 0; k < list.size(); ++k) {
@@ -140,11 +138,35 @@ void read_simulation(const JsonCursor& s, Job& job) {
       const std::vector<double> v = jf::numbers(list[k], where);
       if (v.size() != 5) throw InputError(where + ": expected [x, y, z, radius, height] in mm");
       if (!(v[3] > 0)) throw InputError(where + ": the radius must be positive");
-      o.bumps.push_back({Eigen::Vector3d(v[0], v[1], v[2]), v[3], v[4]});
+      out.push_back({Eigen::Vector3d(v[0], v[1], v[2]), v[3], v[4]});
     }
   }
+  return out;
+}
+
+void read_simulation(const JsonCursor& s, Job& job) {
+  MeasurementSimulationJob sim;
+  SimulationOptions& o = sim.options;
+  s.boolean("prediction", sim.from_prediction);
+  read_option_members(s, simulation_option_table(), o);
+  o.bumps = read_bumps(s);
   s.finish("docs/formats.md \"Job file\"");
   job.simulate = sim;
+}
+
+// measurements.scan.simulate: the scanner model's options, and the
+// placement, seed and bumps of the measurement simulation (the members
+// furrow simulate-measurement --scan takes).
+ScanSimulationOptions read_scan_simulation(const JsonCursor& s) {
+  ScanSimulationOptions o;
+  read_option_members(s, scan_simulation_option_table(), o);
+  SimulationOptions common;
+  read_option_members(s, scan_simulation_placement_table(), common);
+  o.scanner.part_to_scanner = common.misalignment;
+  o.scanner.seed = common.seed;
+  o.scanner.bumps = read_bumps(s);
+  s.finish("docs/formats.md \"Job file\"");
+  return o;
 }
 
 // The CSV dialect and the I++ DME program of a measurement file, as
@@ -214,9 +236,20 @@ void read_measurements(const JsonCursor& root, Job& job, const std::string& fold
     read_simulation(*sim, job);
   } else if (auto scan = m.optional_at("scan")) {
     ScanJob sj;
-    sj.file = path_member(*scan, "file", folder);
+    if (auto sim = scan->optional_at("simulate")) {
+      if (scan->find("file"))
+        throw InputError(scan->path("file") + ": a simulated scan is written by the job (scan.ply in its folder): "
+                                              "give \"file\" or \"simulate\", not both");
+      sj.simulate = read_scan_simulation(*sim);
+      sj.units = sj.simulate->inch ? "inch" : "mm";
+    } else {
+      sj.file = path_member(*scan, "file", folder);
+    }
     if (const auto units = scan->optional_string("units")) {
       if (*units != "mm" && *units != "inch") throw InputError(scan->path("units") + ": expected mm or inch");
+      if (sj.simulate && *units != sj.units)
+        throw InputError(scan->path("units") + ": the simulated scan is written in " + sj.units +
+                         " (simulate.scan_inch)");
       sj.units = *units;
     }
     read_option_members(*scan, scan_option_table(), sj.preprocessing);

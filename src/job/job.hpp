@@ -30,6 +30,7 @@
 #include "stage/compensate_options.hpp"
 #include "stage/toolpath_stage.hpp"
 #include "io/scan/scan_preprocess.hpp"
+#include "stage/scan_simulation_options.hpp"
 
 namespace furrow {
 
@@ -45,11 +46,16 @@ struct MeasurementSimulationJob {
 
 // A dense scan compared instead of probe points ("measurements": {"scan":
 // {...}}; docs/scan.md "In a job"): the cloud file, its units and the
-// pre-processing options of furrow compare --scan.
+// pre-processing options of furrow compare --scan. Or, with "simulate"
+// instead of "file", a simulated scan: the scanner model of furrow
+// simulate-measurement --scan (its option table, with "misalign", "seed"
+// and "bumps" as a probe-point simulation takes them), which the job writes
+// as scan.ply in its folder and compares as that file.
 struct ScanJob {
-  std::string file;  // resolved path
+  std::string file;  // resolved path; empty for a simulated scan
   std::string units = "mm";
   ScanPreprocessOptions preprocessing;
+  std::optional<ScanSimulationOptions> simulate;  // placement, seed and bumps in its scanner
 };
 
 struct Job {

@@ -7,13 +7,28 @@
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
 #include "stage/scan_options.hpp"
+#include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
 namespace furrow {
 
+
 namespace jf = json_fields;
 using jf::json;
+
+namespace {
+
+json bumps_json(const std::vector<SurfaceBump>& bumps) {
+  json out = json::array();
+  for (const SurfaceBump& b : bumps)
+    out.push_back({json_fields::finite(b.centre.x(), "bump"), json_fields::finite(b.centre.y(), "bump"),
+                   json_fields::finite(b.centre.z(), "bump"), json_fields::finite(b.radius, "bump"),
+                   json_fields::finite(b.height, "bump")});
+  return out;
+}
+
+}  // namespace
 
 std::string job_options_json(const Job& job) {
   json j;
@@ -46,17 +61,23 @@ std::string job_options_json(const Job& job) {
   }
   if (job.simulate) {
     const SimulationOptions& s = job.simulate->options;
-    json bumps = json::array();
-    for (const SurfaceBump& b : s.bumps)
-      bumps.push_back({jf::finite(b.centre.x(), "bump"), jf::finite(b.centre.y(), "bump"),
-                       jf::finite(b.centre.z(), "bump"), jf::finite(b.radius, "bump"), jf::finite(b.height, "bump")});
     json simulate = option_members(simulation_option_table(), s);
     simulate["prediction"] = job.simulate->from_prediction;
-    simulate["bumps"] = std::move(bumps);
+    simulate["bumps"] = bumps_json(s.bumps);
     j["measurements"] = {{"simulate", std::move(simulate)}};
   } else if (job.scan) {
     json scan = option_members(scan_option_table(), job.scan->preprocessing);
-    scan["file"] = job.scan->file;
+    if (const auto& sim = job.scan->simulate) {
+      json simulate = option_members(scan_simulation_option_table(), *sim);
+      SimulationOptions placement;
+      placement.misalignment = sim->scanner.part_to_scanner;
+      placement.seed = sim->scanner.seed;
+      simulate.update(option_members(scan_simulation_placement_table(), placement));
+      simulate["bumps"] = bumps_json(sim->scanner.bumps);
+      scan["simulate"] = std::move(simulate);
+    } else {
+      scan["file"] = job.scan->file;
+    }
     scan["units"] = job.scan->units;
     j["measurements"] = {{"scan", std::move(scan)}};
   } else if (!job.measurement_files.empty()) {

@@ -9,6 +9,7 @@
 #include "stage/plan_options.hpp"
 #include "stage/prediction_options.hpp"
 #include "stage/scan_options.hpp"
+#include "stage/scan_simulation_options.hpp"
 #include "stage/simulation_options.hpp"
 #include "stage/toolpath_options.hpp"
 
@@ -74,10 +75,16 @@ json measurements_schema() {
       describe(simulation_option_table()),
       {{"prediction", typed("boolean", "the machined surface is nominal + predicted error")},
        {"bumps", {{"type", "array"}, {"items", bump}, {"description", "[[x, y, z, radius, height], ...] in mm"}}}});
+  std::vector<OptionDoc> scanner = describe(scan_simulation_option_table());
+  for (OptionDoc& d : describe(scan_simulation_placement_table())) scanner.push_back(std::move(d));
+  const json simulate_scan = section_schema(
+      scanner, {{"bumps", {{"type", "array"}, {"items", bump}, {"description", "[[x, y, z, radius, height] in mm, ...]"}}}});
   json scan = section_schema(describe(scan_option_table()),
                              {{"file", path("the scan (PLY or PCD), compared as furrow compare --scan does")},
+                              {"simulate", simulate_scan},
                               {"units", {{"enum", {"mm", "inch"}}}}});
-  scan["required"] = {"file"};
+  // A file, or a simulated scan the job writes as scan.ply: one of the two.
+  scan["oneOf"] = json::array({{{"required", {"file"}}}, {{"required", {"simulate"}}}});
   // null, as absent: the job stops after the plan (what a run without measurements echoes).
   return one_of({files, read, object({{"simulate", simulate}}, {"simulate"}), object({{"scan", scan}}, {"scan"}),
                  {{"type", "null"}}});

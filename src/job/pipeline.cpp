@@ -3,7 +3,10 @@
 #include <chrono>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
+#include <fstream>
 #include <optional>
 
 #include "base/atomic_file.hpp"
@@ -32,6 +35,7 @@
 #include "report/pdf_print.hpp"
 #include "report/scan_report.hpp"
 #include "stage/scan_compare_stage.hpp"
+#include "stage/scan_simulate_stage.hpp"
 #include "stage/predict_stage.hpp"
 #include "stage/toolpath_stage.hpp"
 
@@ -347,6 +351,32 @@ ReportContext job_report_context(const Staged& s) {
   return context;
 }
 
+// PCL reads clouds from files: a job's simulated scan goes through a
+// private temporary folder (removed at once, also on failure), so that the
+// job reads the very bytes furrow compare would read from scan.ply.
+ScanCloud read_scan_bytes(const std::string& bytes, const std::string& name, double mm_per_unit) {
+  namespace fs = std::filesystem;
+  std::string pattern = (fs::temp_directory_path() / "furrow-scan-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("the simulated scan: cannot create a temporary folder");
+  const fs::path folder = pattern;
+  struct Remove {
+    fs::path path;
+    ~Remove() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } remove{folder};
+  const fs::path file = folder / name;
+  {
+    std::ofstream out(file, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw std::runtime_error("the simulated scan: cannot write " + file.string());
+  }
+  ScanCloud cloud = read_scan(file.string(), mm_per_unit);
+  cloud.file = name;
+  return cloud;
+}
+
 // A scan instead of probe points (docs/scan.md "In a job"): the cloud
 // compared as `furrow compare --scan --regions regions.json --deviations
 // deviations.ply` does, then the report of the scan as `furrow report`
@@ -354,12 +384,25 @@ ReportContext job_report_context(const Staged& s) {
 void scan_job_stages(Staged& s, const Part& part, const RegionMap& map, const Prediction& prediction,
                      StageClock& clock) {
   const Job& job = s.job;
-  s.note("read scan");
-  ScanCloud cloud = read_scan(job.scan->file, units_to_mm(job.scan->units, "measurements.scan.units"));
-  // Named as the folder's files name it (relative to the folder), as the
-  // deviation cloud of furrow compare run there names it.
-  cloud.file = relative_to_folder(job.output, job.scan->file);
-  clock.done("read scan");
+  ScanCloud cloud;
+  if (job.scan->simulate) {
+    // Simulated as furrow simulate-measurement --scan writes it, then read
+    // back through the scan reader as compare reads that file: the cloud is
+    // the file's, to the bit (the inch file's coordinates included).
+    s.note("simulate scan");
+    SimulatedScanFile simulated =
+        simulate_scan_stage(part, *job.scan->simulate, std::filesystem::path(job.part).filename().string());
+    cloud = read_scan_bytes(simulated.ply, "scan.ply", units_to_mm(job.scan->units, "measurements.scan.units"));
+    s.add_input("scan", "scan.ply", std::move(simulated.ply));
+    clock.done("simulate scan");
+  } else {
+    s.note("read scan");
+    cloud = read_scan(job.scan->file, units_to_mm(job.scan->units, "measurements.scan.units"));
+    // Named as the folder's files name it (relative to the folder), as the
+    // deviation cloud of furrow compare run there names it.
+    cloud.file = relative_to_folder(job.output, job.scan->file);
+    clock.done("read scan");
+  }
   s.note("compare");
   CompareOptions options = job.compare;
   options.registration.progress = [&](const std::string& what) { s.note("compare: " + what); };
@@ -430,7 +473,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
     s.inputs.push_back(digest_file("measurement dialect", job.measurement_dialect_file));
   if (!job.measurement_read.ippdme_program.empty())
     s.inputs.push_back(digest_file("I++ DME program", job.measurement_read.ippdme_program));
-  if (job.scan) s.inputs.push_back(digest_file("scan", job.scan->file));
+  if (job.scan && !job.scan->simulate) s.inputs.push_back(digest_file("scan", job.scan->file));
   if (!job.record_file.empty()) s.inputs.push_back(digest_file("record", job.record_file));
   if (!job.rps_file.empty()) s.inputs.push_back(digest_file("rps", job.rps_file));
   if (!job.head_file.empty()) s.inputs.push_back(digest_file("head", job.head_file));

@@ -1,5 +1,6 @@
 #include "report/part_view_3d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -153,6 +154,19 @@ if(n>0&&n<=data.mesh_limit){
     fragmentShader:'varying vec3 vColor;void main(){vec2 p=gl_PointCoord*2.0-1.0;float r2=dot(p,p);if(r2>1.0)discard;vec3 n=vec3(p.x,-p.y,sqrt(1.0-r2));'+shade+'}'});
   var sprites=new THREE.Points(pg,pm);sprites.frustumCulled=false;scene.add(sprites);
 }
+// Gouge sites and unexplained overcuts: wire spheres in their status
+// colour, each labelled by a sprite of its id.
+var marks=new THREE.Group();
+(data.markers||[]).forEach(function(m){
+  var col=new THREE.Color('#'+m.c);
+  var ball=new THREE.Mesh(new THREE.SphereBufferGeometry(m.r,16,12),new THREE.MeshBasicMaterial({color:col,wireframe:true,transparent:true,opacity:0.8}));
+  ball.position.set(m.at[0],m.at[1],m.at[2]);marks.add(ball);
+  var cv=document.createElement('canvas');cv.width=128;cv.height=48;var cx=cv.getContext('2d');
+  cx.font='bold 32px sans-serif';cx.fillStyle='#'+m.c;cx.textBaseline='middle';cx.fillText(m.label,4,24);
+  var label=new THREE.Sprite(new THREE.SpriteMaterial({map:new THREE.CanvasTexture(cv),depthTest:false}));
+  label.scale.set(size*0.08,size*0.03,1);label.position.set(m.at[0],m.at[1],m.at[2]+m.r+size*0.02);marks.add(label);
+});
+scene.add(marks);
 var controls=new THREE.OrbitControls(camera,renderer.domElement);
 function render(){renderer.render(scene,camera);}
 function view(dir,up){camera.position.copy(centre).add(new THREE.Vector3(dir[0],dir[1],dir[2]).normalize().multiplyScalar(size*1.8));camera.up.set(up[0],up[1],up[2]);controls.target.copy(centre);camera.lookAt(centre);controls.update();render();}
@@ -162,6 +176,8 @@ var views={top:[[0,0,1],[0,1,0]],front:[[0,-1,0],[0,0,1]],side:[[1,0,0],[0,0,1]]
 root.querySelectorAll('button[data-view]').forEach(function(b){b.addEventListener('click',function(){var k=b.getAttribute('data-view');if(k==='reset'){controls.reset();render();}else view(views[k][0],views[k][1]);});});
 var toggle=root.querySelector('input.view3d-zmap');
 if(toggle){toggle.addEventListener('change',function(){surfaces.forEach(function(s){s.geometry.attributes.color.array.set(toggle.checked?s.pred:s.grey);s.geometry.attributes.color.needsUpdate=true;});render();});}
+var showMarks=root.querySelector('input.view3d-marks');
+if(showMarks){showMarks.addEventListener('change',function(){marks.visible=showMarks.checked;render();});}
 live.style.display='block';root.querySelector('.view3d-static').style.display='none';
 var t0=performance.now();render();
 var gl=renderer.getContext(),px=new Uint8Array(width*height*4),drawn=0;
@@ -169,7 +185,7 @@ gl.readPixels(0,0,width,height,gl.RGBA,gl.UNSIGNED_BYTE,px);
 var t1=performance.now();render();gl.readPixels(0,0,1,1,gl.RGBA,gl.UNSIGNED_BYTE,new Uint8Array(4));
 root.setAttribute('data-view3d-frame-ms',(performance.now()-t1).toFixed(0));
 for(var i=0;i<px.length;i+=4){if(Math.abs(px[i]-248)>3||Math.abs(px[i+1]-248)>3||Math.abs(px[i+2]-248)>3)drawn++;}
-root.setAttribute('data-view3d','drawn:'+drawn);root.setAttribute('data-view3d-spheres',String(n));
+root.setAttribute('data-view3d','drawn:'+drawn);root.setAttribute('data-view3d-spheres',String(n));root.setAttribute('data-view3d-markers',String((data.markers||[]).length));
 }catch(e){root.setAttribute('data-view3d','error:'+e.message);fallback('error');throw e;}
 })();
 )JS";
@@ -221,6 +237,27 @@ PartView3d part_view_3d(const ComparisonDocument& doc, const Part& part, const P
   const double diagonal = box.isEmpty() ? 1.0 : box.diagonal().norm();
   // Visible at a glance but not merging for a typical plan; denser sets get smaller spheres.
   v.sphere_radius = diagonal * (v.points.size() > 20000 ? 0.0015 : v.points.size() > 2000 ? 0.004 : 0.008);
+  if (doc.gouges) {
+    // At least a hundredth of the part across, so a site of one cell still shows.
+    const double least = 0.01 * diagonal;
+    for (const GougeSiteCheck& site : doc.gouges->sites) {
+      PartView3d::Marker m{site.id, to_string(site.status), site.centroid, least, status_colour(to_string(site.status))};
+      if (site.face_index >= 0 && static_cast<std::size_t>(site.face_index) < part.faces.size()) {
+        const Face& face = part.faces[static_cast<std::size_t>(site.face_index)];
+        const ParameterDomain& d = face.domain();
+        for (int corner = 0; corner < 4; ++corner) {
+          const Eigen::Vector2d uv = site.uv_box.corner(static_cast<Eigen::AlignedBox2d::CornerType>(corner));
+          const Eigen::Vector3d at = face.surface().point(std::clamp(uv.x(), d.u0, d.u0 + d.width_u()),
+                                                          std::clamp(uv.y(), d.v0, d.v0 + d.width_v()));
+          m.radius = std::max(m.radius, (at - site.centroid).norm());
+        }
+      }
+      v.markers.push_back(std::move(m));
+    }
+    for (const OvercutCluster& c : doc.gouges->unexplained)
+      v.markers.push_back({c.id, "UNEXPLAINED", c.xyz, std::max(least, 4 * v.sphere_radius),
+                           status_colour("UNEXPLAINED")});
+  }
   return v;
 }
 
@@ -274,7 +311,22 @@ std::string part_view_3d_json(const PartView3d& v) {
     }
   out += "],\"c\":";
   append_colours(out, v.colours);
-  return out + "}}";
+  out += "},\"markers\":[";
+  for (std::size_t k = 0; k < v.markers.size(); ++k) {
+    const PartView3d::Marker& m = v.markers[k];
+    out += (k ? ",{" : "{");
+    out += "\"label\":" + json_string(m.label) + ",\"status\":" + json_string(m.status) + ",\"at\":[";
+    for (int c = 0; c < 3; ++c) {
+      if (c) out += ',';
+      append_number(out, m.centre[c], 3);
+    }
+    out += "],\"r\":";
+    append_number(out, m.radius, 3);
+    out += ",\"c\":";
+    append_colours(out, std::vector<Rgb>(1, m.colour));
+    out += "}";
+  }
+  return out + "]}";
 }
 
 ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part, const Prediction* prediction,
@@ -306,6 +358,9 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
     html += std::string("<button type=\"button\" data-view=\"") + name + "\">" + name + "</button> ";
   if (view.has_prediction)
     html += "<label><input type=\"checkbox\" class=\"view3d-zmap\"> predicted error (z-map) on the surface</label>";
+  if (!view.markers.empty())
+    html += " <label><input type=\"checkbox\" class=\"view3d-marks\" checked> gouge sites and unexplained "
+            "overcuts</label>";
   html += "</p>\n<div class=\"view3d-canvas\"></div>\n";
   html += "<p class=\"view3d-legend\"><span>&minus;" + std::string(range_um) +
           " &micro;m</span> <span class=\"bar\" style=\"background:" + legend_gradient(view.range) +
@@ -317,7 +372,22 @@ ReportFigure part_view_3d_figure(const ComparisonDocument& doc, const Part& part
           std::string(view.has_prediction ? "; the check box colours the surface with the predicted machining error "
                                             "(z-map error map) on the same scale"
                                           : "") +
-          ". Drag to orbit, wheel to zoom, right-drag to pan.</p>\n</div>\n";
+          std::string(view.markers.empty() ? ""
+                                           : "; wire spheres mark the predicted gouge sites (their extent on the "
+                                             "surface) and the unexplained overcuts, coloured by status as in the "
+                                             "Gouges section") +
+          ". Drag to orbit, wheel to zoom, right-drag to pan.</p>\n";
+  if (!view.markers.empty()) {
+    html += "<ul class=\"view3d-markers\">";
+    for (const PartView3d::Marker& m : view.markers) {
+      char where[160];
+      std::snprintf(where, sizeof where, " at %.2f, %.2f, %.2f mm, %.2f mm across", m.centre.x(), m.centre.y(),
+                    m.centre.z(), 2 * m.radius);
+      html += "<li><b>" + html::escape(m.label) + "</b> " + html::escape(m.status) + where + "</li>";
+    }
+    html += "</ul>\n";
+  }
+  html += "</div>\n";
   html += "<div class=\"view3d-static\">\n<p>The interactive view needs WebGL; the part in four views, the "
           "measured points coloured by deviation on the same scale (a grey ring where a view does not see the "
           "point):</p>\n" +

@@ -48,6 +48,19 @@ struct PartView3d {
   double range = 0;                     // [mm] of the deviation scale
   double sphere_radius = 0;             // [mm]
   bool has_prediction = false;
+  // With gouge confirmation (doc.gouges): every predicted site and every
+  // unexplained overcut as a wire sphere coloured by its status (the
+  // colours of the gouge-site figure, status_colour), labelled with its id.
+  // A site's sphere is centred on its centroid and holds the corners of
+  // its (u, v) box on the surface; an unexplained cluster's on its deepest
+  // point, 4 sphere radii across (its extent is not in the document).
+  struct Marker {
+    std::string label, status;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double radius = 0;  // [mm]
+    Rgb colour{0, 0, 0};
+  };
+  std::vector<Marker> markers;
 };
 
 // Tessellation: `grid` x `grid` cells per face's parameter rectangle.
@@ -58,7 +71,8 @@ PartView3d part_view_3d(const ComparisonDocument& doc, const Part& part, const P
 std::string part_view_3d_json(const PartView3d& view);
 
 // The report figure: `html` is the whole section (viewer, data, static
-// fallback), `png`/`svg` the static front view. Throws std::runtime_error
+// fallback), `png`/`svg` the static front view. The markers are listed
+// under the view and drawn on it; a check box hides them. Throws std::runtime_error
 // naming the missing file when three.js is not installed.
 // `points_text` says in the caption what the points are (default: "every
 // measured point as a sphere at its foot point"; a scan's display sample

@@ -115,31 +115,9 @@ void add_prediction_figures(const ComparisonDocument& doc, const Part& part, Fig
 
   if (!doc.gouges) return;
   out.push_back([&doc, &part] {
-    std::vector<StatusItem> items;
-    for (const GougeSiteCheck& site : doc.gouges->sites) {
-      StatusItem it;
-      it.position = site.centroid.head<2>();
-      if (site.face_index >= 0 && static_cast<std::size_t>(site.face_index) < part.faces.size())
-        it.outline = uv_box_outline_xy(part.faces[static_cast<std::size_t>(site.face_index)], site.uv_box);
-      it.label = site.id;
-      it.status = to_string(site.status);
-      items.push_back(std::move(it));
-    }
-    for (const OvercutCluster& c : doc.gouges->unexplained) {
-      StatusItem it;
-      it.position = c.xyz.head<2>();
-      it.label = c.id;
-      it.status = "UNEXPLAINED";
-      items.push_back(std::move(it));
-    }
     std::vector<Eigen::Vector2d> background;
     for (const auto& p : doc.points) background.emplace_back(p.foot.x(), p.foot.y());
-    return figure("figures/gouge_sites.png", "gouges", "Gouge sites",
-                  "Predicted gouge sites (their extent on the surface, from above) coloured by status, "
-                  "unexplained overcuts (measured, not predicted) in purple; grey dots are the measured points.",
-                  status_map_drawing("Gouge sites and unexplained overcuts, top view", items, face_outlines_xy(part),
-                                     background, "x [mm]", "y [mm]"),
-                  background.size() <= kVectorPointLimit);
+    return gouge_sites_figure(doc, part, background, "grey dots are the measured points");
   });
 }
 
@@ -192,6 +170,35 @@ void add_compensation_maps(const ComparisonDocument& doc, const Part& part, cons
 }
 
 }  // namespace
+
+ReportFigure gouge_sites_figure(const ComparisonDocument& doc, const Part& part,
+                                const std::vector<Eigen::Vector2d>& background, const std::string& background_text) {
+  std::vector<StatusItem> items;
+  if (doc.gouges) {
+    for (const GougeSiteCheck& site : doc.gouges->sites) {
+      StatusItem it;
+      it.position = site.centroid.head<2>();
+      if (site.face_index >= 0 && static_cast<std::size_t>(site.face_index) < part.faces.size())
+        it.outline = uv_box_outline_xy(part.faces[static_cast<std::size_t>(site.face_index)], site.uv_box);
+      it.label = site.id;
+      it.status = to_string(site.status);
+      items.push_back(std::move(it));
+    }
+    for (const OvercutCluster& c : doc.gouges->unexplained) {
+      StatusItem it;
+      it.position = c.xyz.head<2>();
+      it.label = c.id;
+      it.status = "UNEXPLAINED";
+      items.push_back(std::move(it));
+    }
+  }
+  return figure("figures/gouge_sites.png", "gouges", "Gouge sites",
+                "Predicted gouge sites (their extent on the surface, from above) coloured by status, "
+                "unexplained overcuts (measured, not predicted) in purple; " + background_text + ".",
+                status_map_drawing("Gouge sites and unexplained overcuts, top view", items, face_outlines_xy(part),
+                                   background, "x [mm]", "y [mm]"),
+                background.size() <= kVectorPointLimit);
+}
 
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
                                               const RegionMap* regions, const Prediction* prediction,

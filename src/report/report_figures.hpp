@@ -60,6 +60,13 @@ std::vector<ReportFigure> draw_figures(const std::vector<std::function<ReportFig
 // the compensation record is of `doc` (check_record_against). With
 // `interactive`, the last figure of the deviations is the 3D view
 // (part_view_3d.hpp; section "view3d"), which needs three.js installed.
+// figures/gouge_sites.png: the predicted sites of doc.gouges by status and
+// its unexplained overcuts, top view, over `background` (x, y of the
+// measured points; a scan's display sample), which `background_text` names
+// in the caption. Shared by the probe-point and the scan report.
+ReportFigure gouge_sites_figure(const ComparisonDocument& doc, const Part& part,
+                                const std::vector<Eigen::Vector2d>& background, const std::string& background_text);
+
 std::vector<ReportFigure> make_report_figures(const ComparisonDocument& doc, const Part& part,
                                               const RegionMap* regions, const Prediction* prediction = nullptr,
                                               const CompensationRecord* compensation = nullptr,

@@ -290,42 +290,82 @@ std::string prediction_section(const ComparisonDocument& doc, const std::vector<
   return out + figures_of(figures, "prediction") + "</section>\n";
 }
 
-std::string gouges_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures) {
+// A scan (`scan` set) records per site and cluster a count of points and
+// the cloud index of the point its deepest local mean is centred on, not
+// point ids (scan_verification.hpp); its tables add how the depth was read.
+std::string gouges_section(const ComparisonDocument& doc, const std::vector<ReportFigure>& figures,
+                           const ScanComparisonDocument* scan) {
   std::string out = "<section id=\"gouges\"><h2>Gouges</h2>\n";
   if (!doc.gouges) return out + "<p>No machining prediction was given: no gouge sites to check.</p></section>\n";
   const GougeConfirmation& g = *doc.gouges;
+  const ScanVerification* v = scan && scan->verification ? &*scan->verification : nullptr;
+  if (v)
+    out += "<p>A scan point is as noisy as the scanner (" + fixed(v->noise * 1000, 1) + " &micro;m" +
+           "), so each site and cluster is read through local means: the mean deviation of the points within " +
+           fixed(v->read_radius, 2) + " mm of a point (at least " + count(kScanReadPoints) +
+           "); the deepest is the measured depth, its 1-sigma the noise over the square root of its points. "
+           "<i>Deepest</i> is the index of its centre point in the deviation cloud.</p>\n";
   if (g.sites.empty()) {
     out += "<p>The prediction has no gouge sites.</p>\n";
   } else {
     std::vector<TableRow> rows;
-    for (const GougeSiteCheck& s : g.sites) {
-      rows.push_back({{escape(s.id), escape(to_string(s.source)), escape(s.face), status_badge(to_string(s.status)),
-                       um_or_dash(s.predicted_depth ? std::optional<double>(-*s.predicted_depth) : std::nullopt),
-                       um_or_dash(s.measured_depth ? std::optional<double>(-*s.measured_depth) : std::nullopt),
-                       s.uncertainty ? fixed(*s.uncertainty * 1000, 1) : "&ndash;",
-                       s.threshold ? fixed(*s.threshold * 1000, 1) : "&ndash;", count(s.points.size()),
-                       s.deepest ? escape(doc.points.at(*s.deepest).id) : "&ndash;",
-                       s.depth_consistent ? (*s.depth_consistent ? "yes" : "no") : "&ndash;"},
-                      ""});
+    for (std::size_t k = 0; k < g.sites.size(); ++k) {
+      const GougeSiteCheck& s = g.sites[k];
+      const ScanGougeSite* read = v ? &v->sites.at(k) : nullptr;
+      TableRow row{{escape(s.id), escape(to_string(s.source)), escape(s.face), status_badge(to_string(s.status)),
+                    um_or_dash(s.predicted_depth ? std::optional<double>(-*s.predicted_depth) : std::nullopt),
+                    um_or_dash(s.measured_depth ? std::optional<double>(-*s.measured_depth) : std::nullopt),
+                    s.uncertainty ? fixed(*s.uncertainty * 1000, 1) : "&ndash;",
+                    s.threshold ? fixed(*s.threshold * 1000, 1) : "&ndash;",
+                    count(read ? read->on_site : s.points.size()),
+                    !s.deepest ? "&ndash;" : read ? "#" + count(*s.deepest) : escape(doc.points.at(*s.deepest).id),
+                    s.depth_consistent ? (*s.depth_consistent ? "yes" : "no") : "&ndash;"},
+                   ""};
+      if (read) {
+        row.cells.push_back(s.deepest ? count(read->read_points) : "&ndash;");
+        row.cells.push_back(count(read->anchors_seen) + " of " + count(s.anchors.size()));
+      }
+      rows.push_back(std::move(row));
     }
-    out += html::table({"Site", "Source", "Face", "Status", "Predicted error [um]", "Measured deviation [um]", "1-sigma [um]",
-                        "Threshold [um]", "Points", "Deepest", "Depth consistent"},
-                       rows);
+    std::vector<std::string> head = {"Site", "Source", "Face", "Status", "Predicted error [um]",
+                                     "Measured deviation [um]", "1-sigma [um]", "Threshold [um]", "Points", "Deepest",
+                                     "Depth consistent"};
+    if (v) {
+      head.push_back("Read over [points]");
+      head.push_back("Predicted spots seen");
+    }
+    out += html::table(head, rows);
   }
   if (g.unexplained.empty()) {
     out += "<p>No unexplained overcuts.</p>\n";
   } else {
     std::vector<TableRow> rows;
-    for (const OvercutCluster& c : g.unexplained)
-      rows.push_back({{escape(c.id), status_badge("UNEXPLAINED"), escape(c.face),
-                       fixed(c.xyz.x(), 2) + ", " + fixed(c.xyz.y(), 2) + ", " + fixed(c.xyz.z(), 2), um(-c.depth),
-                       fixed(c.uncertainty * 1000, 1), fixed(c.threshold * 1000, 1), count(c.points.size()),
-                       escape(doc.points.at(c.deepest).id)},
-                      ""});
-    out += "<h3>Unexplained overcuts (measured, not predicted)</h3>\n" +
-           html::table({"Cluster", "Status", "Face", "Deepest at x, y, z [mm]", "Deviation [um]", "1-sigma [um]",
-                        "Threshold [um]", "Points", "Deepest"},
-                       rows);
+    for (std::size_t k = 0; k < g.unexplained.size(); ++k) {
+      const OvercutCluster& c = g.unexplained[k];
+      const ScanOvercutCluster* read = v ? &v->unexplained.at(k) : nullptr;
+      TableRow row{{escape(c.id), status_badge("UNEXPLAINED"), escape(c.face),
+                    fixed(c.xyz.x(), 2) + ", " + fixed(c.xyz.y(), 2) + ", " + fixed(c.xyz.z(), 2), um(-c.depth),
+                    fixed(c.uncertainty * 1000, 1), fixed(c.threshold * 1000, 1),
+                    count(read ? read->points : c.points.size()),
+                    read ? "#" + count(c.deepest) : escape(doc.points.at(c.deepest).id)},
+                   ""};
+      if (read) {
+        row.cells.push_back(count(read->read_points));
+        row.cells.push_back(fixed(c.centroid.x(), 2) + ", " + fixed(c.centroid.y(), 2) + ", " +
+                            fixed(c.centroid.z(), 2));
+        const Eigen::Vector3d size = read->extent_max - read->extent_min;
+        row.cells.push_back(fixed(size.x(), 2) + ", " + fixed(size.y(), 2) + ", " + fixed(size.z(), 2));
+      }
+      rows.push_back(std::move(row));
+    }
+    std::vector<std::string> head = {"Cluster", "Status", "Face", "Deepest at x, y, z [mm]", "Deviation [um]",
+                                     "1-sigma [um]", "Threshold [um]", "Points", "Deepest"};
+    if (v) {
+      head.push_back("Read over [points]");
+      head.push_back("Centre x, y, z [mm]");
+      head.push_back("Extent along x, y, z [mm]");
+    }
+    out += "<h3>Unexplained overcuts (measured, not predicted)</h3>\n" + html::table(head, rows);
   }
   return out + figures_of(figures, "gouges") + "</section>\n";
 }
@@ -434,7 +474,7 @@ std::string report_html(const ComparisonDocument& doc, const ReportVerdict& verd
   out += deviations_section(doc, figures);
   out += figures_of(figures, "view3d");  // part_view_3d.hpp: a whole section, when present
   out += prediction_section(doc, figures);
-  out += gouges_section(doc, figures);
+  out += gouges_section(doc, figures, context.scan.get());
   out += compensation_section_html(context.compensation, context.compensation_file,
                                    figures_of(figures, "compensation"));
   if (context.scan)  // a scan's points are in its deviation cloud, not listed here

@@ -4,6 +4,7 @@
 
 #include "inspection/comparison_json.hpp"
 #include "inspection/verification_json.hpp"
+#include "inspection/scan_verification_json.hpp"
 #include "base/json_fields.hpp"
 #include "base/json_text.hpp"
 #include "io/part_file.hpp"
@@ -307,7 +308,13 @@ std::string report_json_text(const ComparisonDocument& doc, const ReportVerdict&
   d["surfaces"] = surfaces_json(doc, regions);
   // The verification parts as comparison.json writes them.
   d["prediction"] = doc.prediction ? vj::prediction_comparison_json(*doc.prediction) : json(nullptr);
-  if (doc.gouges) {
+  if (doc.gouges && context.scan && context.scan->verification) {
+    // A scan's sites and clusters as its comparison.json writes them
+    // (counts and cloud indices, scan_verification_json.hpp).
+    const ScanVerification& v = *context.scan->verification;
+    d["gouges"] = {{"sites", scan_verification_json::sites_json(v.sites)},
+                   {"unexplained", scan_verification_json::clusters_json(v.unexplained)}};
+  } else if (doc.gouges) {
     std::vector<std::string> ids;
     for (const auto& p : doc.points) ids.push_back(p.id);
     d["gouges"] = {{"sites", vj::gouge_sites_json(*doc.gouges, ids)},

@@ -74,6 +74,20 @@ ComparisonDocument scan_as_comparison(const ScanComparisonDocument& s) {
   r.outliers = {{"off_part", s.points.off_part}, {"spray_far", s.points.spray_far}, {"spray_near", s.points.spray_near}};
   d.alignment.method = "bestfit";
   d.summary = s.summary;
+  // With a prediction, the verification as the probe-point sections read
+  // it: the sites' and clusters' `points` are left empty (a scan records
+  // counts) and `deepest` is a cloud index; the sections that name points
+  // ask context.scan for both (report_html.cpp, report_json.cpp).
+  if (const auto& v = s.verification) {
+    d.sources.prediction = s.sources.prediction;
+    d.options.prediction = v->options;
+    d.options.gouges = v->gouge_options;
+    d.prediction = v->compared;
+    GougeConfirmation g;
+    for (const ScanGougeSite& site : v->sites) g.sites.push_back(site.check);
+    for (const ScanOvercutCluster& c : v->unexplained) g.unexplained.push_back(c.cluster);
+    d.gouges = std::move(g);
+  }
   return d;
 }
 
@@ -121,6 +135,13 @@ std::vector<ReportFigure> make_scan_report_figures(const ScanComparisonDocument&
                         to_png(drawing), to_svg(drawing, "Histogram of the scan's deviations", "fig-scan_histogram"),
                         ""};
   });
+  if (s.verification)
+    jobs.push_back([&s, &part] {
+      std::vector<Eigen::Vector2d> background;
+      for (const Eigen::Vector3d& p : s.display.points) background.emplace_back(p.x(), p.y());
+      return gouge_sites_figure(scan_as_comparison(s), part, background,
+                                "grey dots are the scan's displayed points");
+    });
   jobs.push_back([&s, &part] {
     ComparisonDocument view = scan_as_comparison(s);
     for (std::size_t k = 0; k < s.display.points.size(); ++k) {

@@ -59,4 +59,9 @@ const OptionTable<ScanSimulationOptions>& scan_simulation_option_table() {
   return table;
 }
 
+const OptionTable<SimulationOptions>& scan_simulation_placement_table() {
+  static const OptionTable<SimulationOptions> table = only_options(simulation_option_table(), {"misalign", "seed"});
+  return table;
+}
+
 }  // namespace furrow

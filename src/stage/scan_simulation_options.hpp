@@ -6,6 +6,7 @@
 // scan too.
 #include "base/option_table.hpp"
 #include "inspection/scan_simulation.hpp"
+#include "stage/simulation_options.hpp"
 
 namespace furrow {
 
@@ -15,5 +16,11 @@ struct ScanSimulationOptions {
 };
 
 const OptionTable<ScanSimulationOptions>& scan_simulation_option_table();
+
+// The measurement simulation's options a scan takes too: "misalign" (the
+// part's placement in the scanner's frame) and "seed" (a job's simulated
+// scan reads them with this table; the command reads the whole
+// simulation table and refuses the probe-only ones).
+const OptionTable<SimulationOptions>& scan_simulation_placement_table();
 
 }  // namespace furrow

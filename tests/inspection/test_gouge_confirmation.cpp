@@ -6,6 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
 
 #include "base/error.hpp"
 #include "inspection/comparison.hpp"
@@ -205,6 +209,44 @@ TEST_CASE("distance clusters: single linkage, ordered by first member") {
   CHECK(c[2] == std::vector<std::size_t>{5});
   CHECK(distance_clusters(pts, 1.49).size() == 4);  // 10 and 11.5 part
   CHECK(distance_clusters({}, 1).empty());
+}
+
+TEST_CASE("distance clusters of dense blobs and chains equal brute-force single linkage") {
+  // The oracle: every pair compared, joined by union-find, the same order
+  // rule (members increasing, clusters by first member).
+  std::mt19937 rng(5);
+  std::normal_distribution<double> spread(0.0, 1.0);
+  std::uniform_real_distribution<double> where(-20.0, 20.0);
+  std::vector<Eigen::Vector3d> pts;
+  for (int blob = 0; blob < 6; ++blob) {  // dense blobs, a scan dent's overcuts
+    const Eigen::Vector3d c(where(rng), where(rng), 0.1 * where(rng));
+    for (int k = 0; k < 150; ++k) pts.push_back(c + 0.8 * Eigen::Vector3d(spread(rng), spread(rng), 0.1 * spread(rng)));
+  }
+  for (int k = 0; k < 40; ++k) pts.emplace_back(25 + 0.9 * k, -25, 0);  // a chain 0.9 mm apart
+  for (int k = 0; k < 60; ++k) pts.emplace_back(where(rng), where(rng), where(rng));  // strays
+  auto brute = [&](double d) {
+    std::vector<std::size_t> parent(pts.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    std::function<std::size_t(std::size_t)> root = [&](std::size_t i) { return parent[i] == i ? i : parent[i] = root(parent[i]); };
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (std::size_t j = i + 1; j < pts.size(); ++j)
+        if ((pts[i] - pts[j]).norm() <= d) {
+          const std::size_t a = root(i), b = root(j);
+          if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::map<std::size_t, std::vector<std::size_t>> by;
+    for (std::size_t i = 0; i < pts.size(); ++i) by[root(i)].push_back(i);
+    std::vector<std::vector<std::size_t>> out;
+    for (auto& [r, m] : by) out.push_back(m);
+    return out;
+  };
+  for (const double d : {0.3, 0.9, 1.5, 5.0}) {
+    INFO("distance " << d);
+    const auto fast = distance_clusters(pts, d);
+    CHECK(fast == brute(d));
+    MESSAGE("distance " << d << ": " << fast.size() << " clusters of " << pts.size() << " points");
+  }
+  CHECK(distance_clusters(pts, 0.9).size() < distance_clusters(pts, 0.3).size());
 }
 
 TEST_CASE("one probe point on a narrow predicted gouge: a blunder to the fit, confirmed by the prediction") {
