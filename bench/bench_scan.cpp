@@ -141,14 +141,14 @@ int main(int argc, char** argv) {
   double voxel = 1.0;
   std::string dir = std::filesystem::temp_directory_path().string();
   bool cloudcompare = true;
-  ScanStart start = ScanPreprocessOptions{}.start;
+  ScanStart scan_start = ScanPreprocessOptions{}.start;
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--no-cloudcompare")) cloudcompare = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--points")) n = std::atol(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--voxel")) voxel = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--dir")) dir = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--scan-start")) start = parse_scan_start(argv[i + 1], "--scan-start");
+    else if (!std::strcmp(argv[i], "--scan-start")) scan_start = parse_scan_start(argv[i + 1], "--scan-start");
   }
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const Face& face = part.faces.at(0);
@@ -198,7 +198,7 @@ int main(int argc, char** argv) {
   scale_registration_to_tolerance(options);
   ScanPreprocessOptions pre_options;
   pre_options.voxel = voxel;
-  pre_options.start = start;
+  pre_options.start = scan_start;
   t = std::chrono::steady_clock::now();
   const ScanPreprocessed pre = preprocess_scan(cloud, pre_options);
   std::printf("pre-processing (spray far %zu, near %zu; %zu voxel points of %g mm; normals from the file): %.2f s\n",
