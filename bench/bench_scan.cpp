@@ -14,7 +14,12 @@
 // projects onto the NURBS). Skipped, and said so, without CloudCompare or
 // with --no-cloudcompare.
 //
-//   ./build/bench_scan [--points N] [--voxel MM] [--dir DIR] [--no-cloudcompare]
+// It also prints both coarse starts of the registration (--scan-start,
+// docs/scan.md "Registration"): each start's time, the fit from it, and
+// both against the planted transform.
+//
+//   ./build/bench_scan [--points N] [--voxel MM] [--scan-start global|features|best] [--dir DIR]
+//                      [--no-cloudcompare]
 #include <chrono>
 #include <fstream>
 #include <cmath>
@@ -136,12 +141,14 @@ int main(int argc, char** argv) {
   double voxel = 1.0;
   std::string dir = std::filesystem::temp_directory_path().string();
   bool cloudcompare = true;
+  ScanStart scan_start = ScanPreprocessOptions{}.start;
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--no-cloudcompare")) cloudcompare = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--points")) n = std::atol(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--voxel")) voxel = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--dir")) dir = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--scan-start")) scan_start = parse_scan_start(argv[i + 1], "--scan-start");
   }
   const Part part = read_part(std::string(FURROW_SOURCE_DIR) + "/examples/parts/mould.json");
   const Face& face = part.faces.at(0);
@@ -191,17 +198,54 @@ int main(int argc, char** argv) {
   scale_registration_to_tolerance(options);
   ScanPreprocessOptions pre_options;
   pre_options.voxel = voxel;
+  pre_options.start = scan_start;
   t = std::chrono::steady_clock::now();
   const ScanPreprocessed pre = preprocess_scan(cloud, pre_options);
   std::printf("pre-processing (spray far %zu, near %zu; %zu voxel points of %g mm; normals from the file): %.2f s\n",
               pre.spray_far, pre.spray_near, pre.fit.size(), voxel, bench::seconds_since(t));
   t = std::chrono::steady_clock::now();
   const ClosestPointFinder finder(part);
-  ScanComparison c = compare_scan(finder, cloud, pre, nullptr, options);
-  c.preprocessing = pre_options;
+  ScanComparison c = compare_scan(finder, cloud, pre, pre_options, nullptr, options);
   std::printf("registration + exact projection of %zu points: %.2f s (registration %s, rms %.4f mm)\n",
               c.evaluated + c.off_part, bench::seconds_since(t), c.registration.status.c_str(),
               c.registration.rms_after);
+  // Both coarse starts (--scan-start best) against the planted transform:
+  // the start itself and the fit from it, rotation error and the largest
+  // displacement over the fit subset.
+  {
+    const Eigen::Isometry3d truth = to_scanner.inverse() * Eigen::Translation3d(c.pre.origin);
+    std::vector<Eigen::Vector3d> fit_points;
+    for (const std::size_t i : c.pre.fit) fit_points.push_back(cloud.points[i] - c.pre.origin);
+    auto error = [&](const Eigen::Isometry3d& t, double& rotation, double& moved) {
+      rotation = Eigen::AngleAxisd(t.linear().transpose() * truth.linear()).angle();
+      moved = 0;
+      for (const Eigen::Vector3d& p : fit_points) moved = std::max(moved, (t * p - truth * p).norm());
+    };
+    const ScanStartRecord& s = c.start;
+    auto report = [&](const char* name, const ScanStartFit& f, double start_seconds) {
+      if (!f.ran) {
+        std::printf("  %s start: %s\n", name, f.status.c_str());
+        return;
+      }
+      double r0, m0, r1, m1;
+      error(f.start, r0, m0);
+      error(f.transform, r1, m1);
+      char took[32] = "";
+      if (start_seconds >= 0) std::snprintf(took, sizeof took, " %.2f s,", start_seconds);
+      std::printf("  %s start:%s error %.3g deg / %.3g mm; start and fit %.2f s, %s, cost %.6g mm2, rms %.4f mm, "
+                  "%d outer / %d solver iterations, error %.3g urad / %.3g um\n",
+                  name, took, r0 * 180 / kPi, m0, f.seconds, f.status.c_str(), f.cost, f.rms, f.outer_iterations,
+                  f.solver_iterations, r1 * 1e6, m1 * 1e3);
+    };
+    std::printf("coarse starts (%s; %zu fit points):\n", to_string(s.mode), fit_points.size());
+    report("global search", s.global, -1);
+    std::printf("  feature start: %s, %zu thinned scan points (%zu with a shape), %zu part points, spacing %.3g mm, "
+                "inlier share %.3f\n",
+                s.feature.status.c_str(), s.feature.scan_points, s.feature.shaped_points, s.feature.part_points,
+                s.feature.used.spacing, s.feature.inlier_share);
+    report("features", s.features, s.feature_seconds);
+    std::printf("  kept: %s (%s)\n", s.chosen.c_str(), s.why.c_str());
+  }
   t = std::chrono::steady_clock::now();
   const std::string ply = scan_deviation_ply(c, cloud);
   const std::string json = scan_comparison_json(c, ScanComparisonSources{});

@@ -27,6 +27,8 @@ const char* to_string(CoarseMethod method) {
       return "global search";
     case CoarseMethod::frame:
       return "alignment frame";
+    case CoarseMethod::features:
+      return "features";
   }
   return "?";
 }

@@ -36,8 +36,9 @@
 namespace furrow {
 
 // frame: a start the caller already knows (RegistrationOptions::start: the
-// frame of a datum or RPS alignment), no search.
-enum class CoarseMethod { identity, plan_ids, dmis_nominals, global_search, frame };
+// frame of a datum or RPS alignment), no search; features: a scan's start
+// from PCL's FPFH features (scan_registration.hpp), given as such a frame.
+enum class CoarseMethod { identity, plan_ids, dmis_nominals, global_search, frame, features };
 const char* to_string(CoarseMethod method);
 
 struct CoarseOptions {

@@ -37,9 +37,11 @@ std::string alignment_status(const RegistrationResult& r) {
 }  // namespace
 
 ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& cloud, const ScanPreprocessed& pre,
-                            const RegionMap* regions, const CompareOptions& options) {
+                            const ScanPreprocessOptions& preprocessing, const RegionMap* regions,
+                            const CompareOptions& options) {
   ScanComparison c;
   c.scan = cloud.file;
+  c.preprocessing = preprocessing;
   c.pre = pre;
   c.read = cloud.read;
   c.not_finite = cloud.not_finite;
@@ -59,7 +61,10 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
     p.xyz = cloud.points[i] - pre.origin;
     fit.points.push_back(std::move(p));
   }
-  c.registration = register_measurements(finder, fit, nullptr, options.registration);
+  ScanRegistration registered = register_scan(finder, fit, pre.fit_normals, pre.normals_estimated,
+                                              preprocessing.voxel, preprocessing.start, options.registration);
+  c.registration = std::move(registered.registration);
+  c.start = std::move(registered.record);
   c.transform = c.registration.transform * Eigen::Translation3d(-pre.origin);
 
   // Every point that is not spray, projected exactly; with a partition the

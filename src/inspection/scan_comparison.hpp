@@ -39,6 +39,7 @@
 #include "inspection/comparison.hpp"
 #include "inspection/scan_verification.hpp"
 #include "inspection/scan_display.hpp"
+#include "inspection/scan_registration.hpp"
 #include "io/scan/scan_cloud.hpp"
 #include "io/scan/scan_preprocess.hpp"
 
@@ -64,6 +65,7 @@ struct ScanComparison {
   std::size_t off_part = 0, evaluated = 0;
   std::string normals;  // "file" or "estimated"
   RegistrationResult registration;  // of the fit subset, relative to pre.origin
+  ScanStartRecord start;            // which coarse start it came from (scan_registration.hpp)
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // scanner frame -> part frame
   ToleranceZone tolerance;
   std::vector<ScanPointStatus> status;  // per point
@@ -88,13 +90,15 @@ struct ScanComparison {
   RegistrationOptions fit_options;  // what the fit ran with (comparison.json "fit_options")
 };
 
-// `cloud` and `pre` as read and pre-processed; `regions` may be null (else
+// `cloud` and `pre` as read and pre-processed with `preprocessing` (its
+// voxel and `start` choose the registration's start); `regions` may be null (else
 // it must belong to the finder's part). Registration options, the tolerance
 // and its scaling come from `options` as for probe points; the fit's points
 // are contact points (no probe radius). Failure of the fit is reported in
 // the result (summary.alignment), never thrown.
 ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& cloud, const ScanPreprocessed& pre,
-                            const RegionMap* regions, const CompareOptions& options);
+                            const ScanPreprocessOptions& preprocessing, const RegionMap* regions,
+                            const CompareOptions& options);
 
 // The verdict from the statistics, the alignment and, with a prediction,
 // the gouge sites (the rules above; with a prediction as for probe points,

@@ -29,6 +29,52 @@ json removed_by_region_json(const ScanComparison& c, bool partition) {
   return out;
 }
 
+json start_fit_json(const ScanStartFit& f, const char* what) {
+  if (!f.ran) return {{"ran", false}, {"status", f.status}};
+  return {{"ran", true},
+          {"status", f.status},
+          {"ok", f.ok},
+          {"cost", jf::finite(f.cost, what)},
+          {"rms", jf::finite(f.rms, what)},
+          {"outer_iterations", f.outer_iterations},
+          {"solver_iterations", f.solver_iterations}};
+}
+
+// Which start the registration kept, both starts' fits, and the feature
+// start itself with the parameters it ran with. No times: the file is the
+// same bytes for the same inputs.
+json start_json(const ScanStartRecord& s) {
+  const FeatureStart& f = s.feature;
+  const FeatureStartOptions& o = f.used;
+  json feature = nullptr;
+  if (s.mode != ScanStart::global)
+    feature = {{"found", f.found},
+               {"status", f.status},
+               {"inlier_share", jf::finite(f.inlier_share, "inlier share")},
+               {"inlier_rms", jf::finite(f.inlier_rms, "inlier rms")},
+               {"scan_points", f.scan_points},
+               {"part_points", f.part_points},
+               {"shaped_points", f.shaped_points},
+               {"normal_side", f.normal_side},
+               {"spacing", jf::finite(o.spacing, "spacing")},
+               {"feature_radius", jf::finite(o.feature_radius, "feature radius")},
+               {"inlier_distance", jf::finite(o.inlier_distance, "inlier distance")},
+               {"iterations", o.iterations},
+               {"correspondences", o.correspondences},
+               {"similarity", jf::finite(o.similarity, "similarity")},
+               {"min_inlier_share", jf::finite(o.min_inlier_share, "min inlier share")},
+               {"seed", o.seed},
+               {"rotation_to_registration", f.found ? json(jf::finite(s.feature_rotation_error, "rotation")) : json(nullptr)},
+               {"translation_to_registration",
+                f.found ? json(jf::finite(s.feature_translation_error, "translation")) : json(nullptr)}};
+  return {{"mode", to_string(s.mode)},
+          {"chosen", s.chosen},
+          {"why", s.why},
+          {"global", start_fit_json(s.global, "global start")},
+          {"features", start_fit_json(s.features, "feature start")},
+          {"feature_start", feature}};
+}
+
 }  // namespace
 
 std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSources& sources) {
@@ -71,7 +117,8 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                          {"rms_after", jf::finite(r.rms_after, "rms_after")},
                          {"sigma", jf::finite(r.sigma, "sigma")},
                          {"outer_iterations", r.outer_iterations},
-                         {"transform", comparison_json::matrix_json(c.transform.matrix(), "transform")}};
+                         {"transform", comparison_json::matrix_json(c.transform.matrix(), "transform")},
+                         {"start", start_json(c.start)}};
   doc["tolerance"] = {{"width", c.tolerance.width}, {"outside", c.tolerance.outside}};
   if (c.verification.has_value() == sources.prediction.empty())
     throw std::logic_error("scan_comparison_json: the prediction file and its results go together");

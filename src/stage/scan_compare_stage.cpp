@@ -9,8 +9,7 @@ ScanComparison compare_scan_stage(const Part& part, const ScanCloud& cloud, cons
                                   const ScanPreprocessOptions& preprocessing) {
   const ScanPreprocessed pre = preprocess_scan(cloud, preprocessing);
   const ClosestPointFinder finder(part);
-  ScanComparison c = compare_scan(finder, cloud, pre, regions, options);
-  c.preprocessing = preprocessing;
+  ScanComparison c = compare_scan(finder, cloud, pre, preprocessing, regions, options);
   if (prediction) verify_scan_prediction(c, cloud, part, *prediction, options);
   c.fit_options = options.registration;
   // Recorded now: the report of the comparison must not need the raw scan.

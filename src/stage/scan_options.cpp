@@ -25,6 +25,13 @@ OptionTable<ScanPreprocessOptions> make_table() {
   t.push_back(integer_option<O>("normal_neighbours", "K",
                                 "neighbours of a point's local surface (normals and the spray rule)",
                                 [](auto& o) -> auto& { return o.normal_neighbours; }, 3));
+  t.push_back(parsed_option<O>(
+      "scan_start", "START",
+      "the registration's coarse start: global (the global search), features (PCL's FPFH features matched to "
+      "the part; the global search where they place nothing) or best (both fitted, the lower robust cost kept; "
+      "docs/scan.md \"Registration\")",
+      [](auto& o) -> auto& { return o.start; }, parse_scan_start, [](ScanStart s) { return to_string(s); },
+      choice_names({ScanStart::global, ScanStart::features, ScanStart::best})));
   return t;
 }
 

@@ -60,6 +60,7 @@
 #include <vector>
 
 #include "io/scan/scan_cloud.hpp"
+#include "io/scan/scan_feature_start.hpp"
 
 namespace furrow {
 
@@ -73,6 +74,9 @@ struct ScanPreprocessOptions {
   double spray_sigmas = 6.0;    // robust standard deviations off the local plane that make near spray
   bool remove_spray = true;     // false: no point is flagged as spray
   int normal_neighbours = 16;   // k of the normal estimation
+  // Not pre-processing, but read with the scan's options (one table, one
+  // job section): the registration's coarse start (scan_registration.hpp).
+  ScanStart start = ScanStart::best;
 };
 
 struct ScanPreprocessed {
