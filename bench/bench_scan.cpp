@@ -16,10 +16,15 @@
 //
 // It also prints both coarse starts of the registration (--scan-start,
 // docs/scan.md "Registration"): each start's time, the fit from it, and
-// both against the planted transform.
+// both against the planted transform. --view gives the comparison a line
+// of sight (the view direction the mould is seen along from above, in the
+// scanner frame: grazing points and incidence weights, docs/scan.md "Line
+// of sight"); --no-file-normals drops the file's normals after reading, so
+// that PCL estimates them at every point (the cost of NormalEstimationOMP
+// over the whole cloud).
 //
 //   ./build/bench_scan [--points N] [--voxel MM] [--scan-start global|features|best] [--dir DIR]
-//                      [--no-cloudcompare]
+//                      [--no-cloudcompare] [--view] [--no-file-normals]
 #include <chrono>
 #include <fstream>
 #include <cmath>
@@ -142,9 +147,13 @@ int main(int argc, char** argv) {
   std::string dir = std::filesystem::temp_directory_path().string();
   bool cloudcompare = true;
   ScanStart scan_start = ScanPreprocessOptions{}.start;
-  for (int i = 1; i < argc; ++i)
+  bool view = false, file_normals = true;
+  for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--no-cloudcompare")) cloudcompare = false;
-  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--view")) view = true;
+    if (!std::strcmp(argv[i], "--no-file-normals")) file_normals = false;
+  }
+  for (int i = 1; i + 1 < argc; ++i) {
     if (!std::strcmp(argv[i], "--points")) n = std::atol(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--voxel")) voxel = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--dir")) dir = argv[i + 1];
@@ -191,18 +200,27 @@ int main(int argc, char** argv) {
 
   const auto start = std::chrono::steady_clock::now();
   t = start;
-  const ScanCloud cloud = read_scan(scan);
+  ScanCloud cloud = read_scan(scan);
   std::printf("read (PCL PLYReader, module load included): %.2f s\n", bench::seconds_since(t));
+  if (!file_normals) {
+    cloud.normals.clear();
+    cloud.normals.shrink_to_fit();
+  }
   CompareOptions options;
   options.tolerance = ToleranceZone::make(0.05, 0.025, "bench");
   scale_registration_to_tolerance(options);
   ScanPreprocessOptions pre_options;
   pre_options.voxel = voxel;
   pre_options.start = scan_start;
+  if (view) pre_options.view_direction = to_scanner.linear() * -Eigen::Vector3d::UnitZ();
   t = std::chrono::steady_clock::now();
   const ScanPreprocessed pre = preprocess_scan(cloud, pre_options);
-  std::printf("pre-processing (spray far %zu, near %zu; %zu voxel points of %g mm; normals from the file): %.2f s\n",
-              pre.spray_far, pre.spray_near, pre.fit.size(), voxel, bench::seconds_since(t));
+  std::printf("pre-processing (spray far %zu, near %zu; %zu voxel points of %g mm; normals %s; line of sight %s: "
+              "%zu grazing): %.2f s\n",
+              pre.spray_far, pre.spray_near, pre.fit.size(), voxel,
+              pre.normals_estimated ? (view ? "estimated at every point" : "estimated at the fit points")
+                                    : "from the file",
+              to_string(pre.view), pre.grazing_count, bench::seconds_since(t));
   t = std::chrono::steady_clock::now();
   const ClosestPointFinder finder(part);
   ScanComparison c = compare_scan(finder, cloud, pre, pre_options, nullptr, options);

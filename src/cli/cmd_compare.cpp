@@ -108,6 +108,15 @@ int run_compare_scan(Args& args, const std::string& scan_path) {
               "%zu compared\n",
               c.read, cloud.format.c_str(), cloud.coordinate_type.c_str(), c.not_finite, c.pre.spray_far,
               c.pre.spray_near, c.off_part, c.evaluated);
+  if (c.pre.view == ScanViewKind::none)
+    std::printf("line of sight: none (no --viewpoint, --view-direction or PCD VIEWPOINT): no grazing rejection, "
+                "the fit not weighted by incidence\n");
+  else
+    std::printf("line of sight: %s (%g, %g, %g), %s: %zu grazing beyond %g deg, %zu without a normal; "
+                "fit weights %s\n",
+                to_string(c.pre.view), c.pre.view_vector.x(), c.pre.view_vector.y(), c.pre.view_vector.z(),
+                c.pre.view_source == "file" ? "the file's VIEWPOINT" : "given", c.grazing, preprocessing.max_incidence_deg,
+                c.pre.no_normal, c.pre.fit_weights.empty() ? "none" : "cos(incidence)");
   std::printf("registration: %s (%s start), %zu voxel points (%g mm), rms %.4f -> %.4f mm, %zu in the fit\n",
               r.status.c_str(), to_string(r.coarse.method), c.pre.fit.size(), preprocessing.voxel, r.rms_before,
               r.rms_after, r.in_fit_count());

@@ -333,6 +333,11 @@ class RegistrationRun {
     // y is handed over, not copied: the fit keeps the only copy.
     fit_ = std::make_unique<SurfaceFit>(std::move(y), set_.probe_radius, options_.dof, options_.loss,
                                         options_.loss_scale, options_.max_solver_iterations);
+    for (std::size_t i = 0; i < n_; ++i)
+      if (set_.points[i].weight != 1) {
+        fit_->set_weight(i, set_.points[i].weight);
+        weighted_ = true;
+      }
     result_.points.resize(n_);
     ws_.reset(new Workspace{finder_, set_, options_, *fit_, result_.points,
                             std::vector<OutlierReason>(n_, OutlierReason::none), std::vector<bool>(n_, false),
@@ -534,7 +539,10 @@ class RegistrationRun {
     auto squares = [&] {
       double sum = 0;
       for (std::size_t i = 0; i < n_; ++i)
-        if (ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i]) sum += fit_->residual(i) * fit_->residual(i);
+        if (ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i]) {
+          const double r = fit_->weight(i) * fit_->residual(i);  // the weighted problem's
+          sum += r * r;
+        }
       return sum;
     };
     const double held_squares = squares();
@@ -586,7 +594,10 @@ class RegistrationRun {
       p.in_fit = ws_->geometric[i] == OutlierReason::none && !ws_->excluded[i];
       p.evaluated = p.outlier == OutlierReason::none || p.outlier == OutlierReason::large_deviation;
       p.outlier_detail = outlier_detail(p);
-      if (p.in_fit) in_fit_.push_back(p.deviation);
+      if (p.in_fit) {
+        in_fit_.push_back(p.deviation);
+        weighted_squares_ += (fit_->weight(i) * p.deviation) * (fit_->weight(i) * p.deviation);
+      }
     }
   }
 
@@ -608,6 +619,9 @@ class RegistrationRun {
     result_.rms_after = rms(in_fit_);
     const double redundancy = static_cast<double>(in_fit_.size()) - fitted_;
     result_.sigma = redundancy > 0 ? rms(in_fit_) * std::sqrt(in_fit_.size() / redundancy) : 0;
+    // Weighted points: the covariance scales by the variance of unit weight,
+    // sum (w d)^2 / (n - dof), the weighted least squares' estimate.
+    unit_sigma_ = !weighted_ ? result_.sigma : redundancy > 0 ? std::sqrt(weighted_squares_ / redundancy) : 0;
     if (too_few_.empty() && redundancy <= 0) {
       too_few_ = std::to_string(in_fit_.size()) + " points in the fit for " + std::to_string(fitted_) +
                  " degrees of freedom: they fit exactly and verify nothing";
@@ -631,7 +645,7 @@ class RegistrationRun {
     note("covariance");
     if (!options_.compute_covariance) return;
     if (auto c = fit_->covariance(result_.covariance_status)) {
-      result_.covariance = (*c) * (result_.sigma * result_.sigma);
+      result_.covariance = (*c) * (unit_sigma_ * unit_sigma_);
       for (std::size_t i = 0; i < n_; ++i) {
         RegisteredPoint& p = result_.points[i];
         const Eigen::Matrix<double, 1, 6> j = fit_->jacobian(i);
@@ -664,6 +678,9 @@ class RegistrationRun {
   std::vector<OutlierReason> verdict_;
   OutlierVerdict numbers_;
   std::vector<double> in_fit_;
+  bool weighted_ = false;         // some point's weight is not 1 (MeasuredPoint::weight)
+  double weighted_squares_ = 0;   // sum (w d)^2 over the points in the fit
+  double unit_sigma_ = 0;         // what the covariance is scaled by
   std::size_t left_out_;
 };
 
@@ -679,6 +696,10 @@ RegistrationResult register_measurements(const ClosestPointFinder& finder, const
                                          const InspectionPlan* plan, const RegistrationOptions& options) {
   if (!(options.weak_ratio > 0 && options.weak_ratio < 1))
     throw InputError("the weak-direction ratio must lie in (0, 1)");
+  for (const MeasuredPoint& p : set.points)
+    if (!(std::isfinite(p.weight) && p.weight > 0))
+      throw InputError(set.source + ": point " + p.id + " has weight " + general(p.weight) +
+                       "; a weight must be positive and finite");
   RegistrationResult first = run_registration(finder, set, plan, options);
   if (!options.multi_start_few || set.points.size() >= options.coarse.few_points)
     return settle_orientation(std::move(first), finder, set, plan, options);

@@ -20,6 +20,12 @@
 // agree where a foot crosses the boundary (docs/registration.md "Points at
 // an edge").
 //
+// Weights: a point's MeasuredPoint::weight w_i multiplies its residual in
+// the fit (sum rho((w_i d_i)^2)); 1 for every probe point, cos(incidence)
+// for a scan's (docs/scan.md "Weights"). Deviations, outlier rules and
+// `sigma` are of d_i itself; the covariance is the weighted fit's, scaled by
+// the variance of unit weight sum (w d)^2 / (n - dof).
+//
 // Solution (defended in docs/registration.md): foot points are re-projected
 // globally (closest_point.hpp) in every outer iteration and held fixed while
 // Ceres minimises sum rho(d_i^2) over the parameters (point-to-tangent-plane,
@@ -192,7 +198,8 @@ struct RegistrationResult {
   std::size_t in_fit_count() const;
 };
 
-// `plan` may be null. Throws InputError only for invalid options.
+// `plan` may be null. Throws InputError only for invalid options and a weight
+// that is not positive and finite.
 RegistrationResult register_measurements(const ClosestPointFinder& finder,
                                          const MeasurementSet& set, const InspectionPlan* plan,
                                          const RegistrationOptions& options);

@@ -13,6 +13,7 @@ const char* to_string(ScanPointStatus status) {
     case ScanPointStatus::spray_far: return "spray_far";
     case ScanPointStatus::spray_near: return "spray_near";
     case ScanPointStatus::off_part: return "off_part";
+    case ScanPointStatus::grazing: return "grazing";
   }
   return "?";
 }
@@ -55,10 +56,12 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   fit.kind = ProbePointKind::contact;
   fit.probe_radius = 0;
   fit.points.reserve(pre.fit.size());
-  for (const std::size_t i : pre.fit) {
+  for (std::size_t k = 0; k < pre.fit.size(); ++k) {
+    const std::size_t i = pre.fit[k];
     MeasuredPoint p;
     p.id = "S" + std::to_string(i);
     p.xyz = cloud.points[i] - pre.origin;
+    if (!pre.fit_weights.empty()) p.weight = pre.fit_weights[k];
     fit.points.push_back(std::move(p));
   }
   ScanRegistration registered = register_scan(finder, fit, pre.fit_normals, pre.normals_estimated,
@@ -67,8 +70,9 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   c.start = std::move(registered.record);
   c.transform = c.registration.transform * Eigen::Translation3d(-pre.origin);
 
-  // Every point that is not spray, projected exactly; with a partition the
-  // spray too, for the region it was removed from (never compared).
+  // Every point that is neither spray nor grazing, projected exactly; with
+  // a partition the others too, for the region they were removed from
+  // (never compared).
   const std::size_t n = cloud.points.size();
   c.status.assign(n, ScanPointStatus::evaluated);
   c.deviation.assign(n, 0.0f);
@@ -79,7 +83,8 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   std::vector<std::size_t> to_project;
   to_project.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (pre.spray[i] == kSprayFar) c.status[i] = ScanPointStatus::spray_far;
+    if (!pre.grazing.empty() && pre.grazing[i]) c.status[i] = ScanPointStatus::grazing;
+    else if (pre.spray[i] == kSprayFar) c.status[i] = ScanPointStatus::spray_far;
     else if (pre.spray[i] == kSprayNear) c.status[i] = ScanPointStatus::spray_near;
     if (c.status[i] == ScanPointStatus::evaluated || regions) to_project.push_back(i);
   }
@@ -101,7 +106,7 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
       if (regions && f.converged)
         if (const std::optional<int> id = regions->region_at(static_cast<int>(f.face), f.uv.x(), f.uv.y()))
           c.region[i] = *id;
-      if (c.status[i] != ScanPointStatus::evaluated) continue;  // spray: its region only
+      if (c.status[i] != ScanPointStatus::evaluated) continue;  // spray, grazing: its region only
       const Eigen::Vector3d r = xs[m - begin] - f.point;
       const double along = r.dot(f.normal);
       const bool boundary = f.location != FootLocation::interior;
@@ -128,13 +133,15 @@ ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& c
   std::map<int, ScanRemovedInRegion> removed;
   for (std::size_t i = 0; i < n; ++i) {
     if (c.status[i] == ScanPointStatus::off_part) ++c.off_part;
+    if (c.status[i] == ScanPointStatus::grazing) ++c.grazing;
     if (c.status[i] != ScanPointStatus::evaluated) {
       if (!regions) continue;
       ScanRemovedInRegion& r = removed[c.region[i]];
       r.region = c.region[i];
-      ++(c.status[i] == ScanPointStatus::spray_far ? r.spray_far
+      ++(c.status[i] == ScanPointStatus::spray_far    ? r.spray_far
          : c.status[i] == ScanPointStatus::spray_near ? r.spray_near
-                                                     : r.off_part);
+         : c.status[i] == ScanPointStatus::grazing    ? r.grazing
+                                                      : r.off_part);
       continue;
     }
     evaluated.push_back(value[i]);

@@ -13,6 +13,10 @@
 //
 // Which points count (every point keeps a status, none is dropped):
 //   spray_far, spray_near  flagged by pre-processing (scan_preprocess.hpp);
+//   grazing                seen beyond the largest incidence from its
+//                          normal (pre-processing with a line of sight,
+//                          scan_preprocess.hpp step 5): out of the fit and
+//                          of the evaluation, whatever else it is;
 //   off_part               after the registration its foot lies on a face
 //                          or trim boundary with the point more than the
 //                          registration's edge_tolerance beside the surface
@@ -46,15 +50,16 @@
 namespace furrow {
 
 // Per point status, as written in the deviation cloud's `outlier` property.
-enum class ScanPointStatus : std::uint8_t { evaluated = 0, spray_far = 1, spray_near = 2, off_part = 3 };
-const char* to_string(ScanPointStatus status);  // "evaluated", "spray_far", "spray_near", "off_part"
+enum class ScanPointStatus : std::uint8_t { evaluated = 0, spray_far = 1, spray_near = 2, off_part = 3, grazing = 4 };
+// "evaluated", "spray_far", "spray_near", "off_part", "grazing"
+const char* to_string(ScanPointStatus status);
 
 // Points removed from the comparison in one region of the partition: the
 // region holding the foot of their projection (region -1: in none, or the
 // projection did not converge).
 struct ScanRemovedInRegion {
   int region = -1;
-  std::size_t spray_far = 0, spray_near = 0, off_part = 0;
+  std::size_t spray_far = 0, spray_near = 0, off_part = 0, grazing = 0;
 };
 
 struct ScanComparison {
@@ -62,7 +67,7 @@ struct ScanComparison {
   ScanPreprocessOptions preprocessing;
   ScanPreprocessed pre;  // origin, spray, fit subset
   std::size_t read = 0, not_finite = 0, points = 0;  // points: finite points, the size of the vectors below
-  std::size_t off_part = 0, evaluated = 0;
+  std::size_t off_part = 0, evaluated = 0, grazing = 0;
   std::string normals;  // "file" or "estimated"
   RegistrationResult registration;  // of the fit subset, relative to pre.origin
   ScanStartRecord start;            // which coarse start it came from (scan_registration.hpp)
@@ -94,7 +99,8 @@ struct ScanComparison {
 // voxel and `start` choose the registration's start); `regions` may be null (else
 // it must belong to the finder's part). Registration options, the tolerance
 // and its scaling come from `options` as for probe points; the fit's points
-// are contact points (no probe radius). Failure of the fit is reported in
+// are contact points (no probe radius), weighted by pre.fit_weights when it
+// has them. Failure of the fit is reported in
 // the result (summary.alignment), never thrown.
 ScanComparison compare_scan(const ClosestPointFinder& finder, const ScanCloud& cloud, const ScanPreprocessed& pre,
                             const ScanPreprocessOptions& preprocessing, const RegionMap* regions,

@@ -60,6 +60,7 @@ ScanComparisonDocument parse_scan_comparison(const std::string& text, const std:
   pts.spray_far = removed.count("spray_far");
   pts.spray_near = removed.count("spray_near");
   pts.off_part = removed.count("off_part");
+  if (removed.find("grazing")) pts.grazing = removed.count("grazing");
   pts.fit = n.count("fit");
   pts.in_fit = n.count("in_fit");
 

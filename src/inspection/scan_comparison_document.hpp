@@ -39,6 +39,7 @@ struct ScanComparisonDocument {
   } preprocessing;
   struct Points {
     std::size_t read = 0, not_finite = 0, kept = 0, spray_far = 0, spray_near = 0, off_part = 0, fit = 0, in_fit = 0;
+    std::size_t grazing = 0;  // seen beyond the largest incidence (0 in a comparison written before it)
   } points;
   struct Registration {
     std::string status, coarse;

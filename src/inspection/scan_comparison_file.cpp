@@ -1,6 +1,7 @@
 // comparison.json of a scan (contract in scan_comparison_file.hpp).
 #include "inspection/scan_comparison_file.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "inspection/comparison_json.hpp"
@@ -25,7 +26,8 @@ json removed_by_region_json(const ScanComparison& c, bool partition) {
     out.push_back({{"region", r.region >= 0 ? json(r.region) : json(nullptr)},
                    {"spray_far", r.spray_far},
                    {"spray_near", r.spray_near},
-                   {"off_part", r.off_part}});
+                   {"off_part", r.off_part},
+                   {"grazing", r.grazing}});
   return out;
 }
 
@@ -75,6 +77,37 @@ json start_json(const ScanStartRecord& s) {
           {"feature_start", feature}};
 }
 
+// The line of sight and what it did (docs/formats.md "Comparison of a
+// scan"): without one, view "none" and the reason nothing was rejected or
+// weighted, said in the file rather than left to be guessed.
+json line_of_sight_json(const ScanComparison& c) {
+  const ScanPreprocessed& p = c.pre;
+  const ScanPreprocessOptions& o = c.preprocessing;
+  json j = {{"view", to_string(p.view)}};
+  if (p.view == ScanViewKind::none) {
+    j["source"] = nullptr;
+    j["note"] = "no viewpoint or view direction given (--viewpoint, --view-direction, a PCD's VIEWPOINT): "
+                "no point rejected as grazing, the fit not weighted by incidence";
+    return j;
+  }
+  j["source"] = p.view_source;
+  j[p.view == ScanViewKind::viewpoint ? "viewpoint" : "direction"] = jf::vector_json(p.view_vector);
+  j["max_incidence"] = o.max_incidence_deg;
+  j["grazing"] = p.grazing_count;
+  j["no_normal"] = p.no_normal;
+  j["weights"] = p.fit_weights.empty() ? "none" : "cos_incidence";
+  if (!p.fit_weights.empty()) {
+    double low = p.fit_weights.front(), sum = 0;
+    for (const double w : p.fit_weights) {
+      low = std::min(low, w);
+      sum += w;
+    }
+    j["weight_min"] = low;
+    j["weight_mean"] = sum / static_cast<double>(p.fit_weights.size());
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSources& sources) {
@@ -99,13 +132,15 @@ std::string scan_comparison_json(const ScanComparison& c, const ScanComparisonSo
                           {"local_origin", jf::vector_json(c.pre.origin)},
                           {"local_plane_sigma", jf::finite(c.pre.local_plane_sigma, "local_plane_sigma")},
                           {"statistical_rule", c.pre.statistical_count},
-                          {"normals", c.normals}};
+                          {"normals", c.normals},
+                          {"line_of_sight", line_of_sight_json(c)}};
   doc["points"] = {{"read", c.read},
                    {"not_finite", c.not_finite},
                    {"kept", c.evaluated},
                    {"removed", {{"spray_far", c.pre.spray_far},
                                 {"spray_near", c.pre.spray_near},
-                                {"off_part", c.off_part}}},
+                                {"off_part", c.off_part},
+                                {"grazing", c.grazing}}},
                    {"removed_by_region", removed_by_region_json(c, !sources.regions.empty())},
                    {"fit", c.pre.fit.size()},
                    {"in_fit", r.in_fit_count()}};

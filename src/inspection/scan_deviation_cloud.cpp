@@ -28,7 +28,7 @@ std::string scan_deviation_ply(const ScanComparison& c, const ScanCloud& cloud) 
   std::replace(name.begin(), name.end(), '\n', ' ');
   std::replace(name.begin(), name.end(), '\r', ' ');
   return ply_vertex_text(columns, {"furrow " FURROW_VERSION " deviation cloud of " + name +
-                                   " (part frame, mm; outlier: 0 evaluated, 1 spray far, 2 spray near, 3 off part)"});
+                                   " (part frame, mm; outlier: 0 evaluated, 1 spray far, 2 spray near, 3 off part, 4 grazing)"});
 }
 
 }  // namespace furrow

@@ -8,7 +8,8 @@
 //   float deviation     signed deviation [mm] (+ material left); 0 where the
 //                       point was not evaluated
 //   uchar outlier       ScanPointStatus: 0 evaluated, 1 spray (far),
-//                       2 spray (near the surface), 3 off the part
+//                       2 spray (near the surface), 3 off the part,
+//                       4 grazing (seen beyond the largest incidence)
 // in the scan file's order (non-finite points left out).
 #include <string>
 

@@ -273,7 +273,10 @@ SimulatedScan simulate_scan(const Part& part, const ScannerModel& m) {
     out.intensity.push_back(static_cast<float>(ray.cos_incidence));
     out.true_deviation.push_back(h);
     out.points.push_back(ray.point + h * ray.normal);
-    along_sight.push_back(m.noise_sigma > 0 ? m.noise_sigma * noise(rng) : 0.0);
+    const double sigma = m.noise_grows_with_incidence
+                             ? m.noise_sigma / (ray.cos_incidence * ray.cos_incidence)
+                             : m.noise_sigma;
+    along_sight.push_back(m.noise_sigma > 0 ? sigma * noise(rng) : 0.0);
   }
   const std::size_t count = out.points.size();
   out.spray.assign(count, false);

@@ -25,7 +25,11 @@
 // - The part as machined: planted bumps and dents move each point along
 //   the surface normal (SurfaceBump, as for probe points).
 // - Noise along the line of sight (Gaussian, `noise_sigma` mm): a
-//   triangulating scanner's error is in depth, not along the normal.
+//   triangulating scanner's error is in depth, not along the normal. With
+//   `noise_grows_with_incidence` its sigma is noise_sigma / cos^2(incidence),
+//   so that the part of it along the normal grows as noise_sigma /
+//   cos(incidence): the model the comparison weights its fit by
+//   (docs/scan.md "Weights").
 // - Spray: a share of the points thrown off along the line of sight by
 //   `spray_min`..`spray_max` mm (either sign), as specular glints and dust
 //   give them.
@@ -49,6 +53,7 @@ struct ScannerModel {
   double point_pitch = 0.2;                          // [mm] along a stripe, > 0
   double max_incidence_deg = 75;                     // (0, 90): steeper views give no point
   double noise_sigma = 0.005;                        // [mm] along the line of sight, >= 0
+  bool noise_grows_with_incidence = false;           // sigma / cos^2(incidence) along the line of sight
   double spray_share = 0;                            // [0, 1): share of the points thrown off
   double spray_min = 0.3, spray_max = 3;             // [mm], 0 < min <= max
   Misalignment part_to_scanner;                      // the part in the scanner's frame

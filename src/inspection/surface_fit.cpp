@@ -49,12 +49,21 @@ constexpr double kSmallestTrustRadius = 1e-12;
 // foot inside a face (point to tangent plane) and sign |e| - r for a foot on
 // a face or trim boundary (the probe centre's true distance to the bounded
 // surface less the radius, docs/registration.md "Points at an edge").
+// `weighted`: the solver's residual w d (the residual blocks), else d itself.
 struct BoundedDistance {
   const SurfaceFit::Point* point;
   double probe_radius;
+  bool weighted = false;
 
   template <class T>
   bool operator()(const T* const x, T* residual) const {
+    if (!distance(x, residual)) return false;
+    if (weighted) residual[0] *= point->weight;  // exact for w = 1: unweighted fits keep their bits
+    return true;
+  }
+
+  template <class T>
+  bool distance(const T* const x, T* residual) const {
     if (!point->active) {
       residual[0] = T(0);
       return true;
@@ -89,7 +98,7 @@ struct BoundedDistance {
 // function to count references; docs/registration.md "Memory").
 class PointCost final : public ceres::SizedCostFunction<1, 6> {
  public:
-  BoundedDistance functor{nullptr, 0};
+  BoundedDistance functor{nullptr, 0, true};
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     if (!jacobians) return ceres::internal::VariadicEvaluate<ParameterDims>(functor, parameters, residuals);
@@ -143,7 +152,7 @@ SurfaceFit::SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius,
   impl_->costs = std::make_unique<PointCost[]>(points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {
     PointCost& cost = impl_->costs[i];
-    cost.functor = BoundedDistance{&points_[i], probe_radius_};
+    cost.functor = BoundedDistance{&points_[i], probe_radius_, true};
     impl_->problem->AddResidualBlock(&cost, impl_->loss.get(), parameters_.data());
   }
   restrict_motion(free_parameter_basis(dof_.free));
@@ -232,7 +241,7 @@ double SurfaceFit::cost() const {
   double sum = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     if (!points_[i].active) continue;
-    const double r = residual(i);
+    const double r = points_[i].weight * residual(i);
     double rho[3] = {r * r, 1, 0};
     if (const ceres::LossFunction* loss = impl_->loss.get(); loss) loss->Evaluate(r * r, rho);
     sum += rho[0];
@@ -324,8 +333,9 @@ void SurfaceFit::rebase() {
 double SurfaceFit::loss_weight(std::size_t i) const {
   const double* params[1] = {parameters_.data()};
   double residual = 0;
-  impl_->costs[i].Evaluate(params, &residual, nullptr);
-  return corrected_weight(impl_->loss.get(), residual);
+  impl_->costs[i].Evaluate(params, &residual, nullptr);  // w_i d_i
+  const double w = points_[i].weight;
+  return w * w * corrected_weight(impl_->loss.get(), residual);
 }
 
 std::optional<Eigen::Matrix<double, 6, 6>> SurfaceFit::covariance(std::string& status) const {

@@ -21,6 +21,12 @@
 // first order perpendicular to e_i). The sign flips, and d_i jumps by
 // 2 r_probe, only for a centre in the tangent plane beside the edge.
 //
+// Each point may carry a weight w_i (1 unless set_weight): the solver sees
+// w_i d_i, so the fit minimises sum rho((w_i d_i)^2); residual(), direction()
+// and jacobian() stay those of d_i itself (the deviation and its
+// uncertainty), cost(), loss_weight() and covariance() are the weighted
+// problem's.
+//
 // One Ceres problem lives for the whole registration: the residual blocks
 // read the feet from this object, so the outer loop only updates them
 // (set_foot) and solves again, warm-started. Points left out of the fit keep
@@ -52,6 +58,7 @@ class SurfaceFit {
     bool active = false;
     bool boundary = false;  // foot on a face or trim boundary: d = sign |e|
     double sign = 1;        // side of the tangent plane (boundary feet)
+    double weight = 1;      // w_i: the solver's residual is w_i d_i
   };
 
   SurfaceFit(std::vector<Eigen::Vector3d> y, double probe_radius, const DegreesOfFreedom& dof,
@@ -70,7 +77,10 @@ class SurfaceFit {
   // then the distance to the compensated foot, see above).
   void set_foot(std::size_t i, const Eigen::Vector3d& foot, const Eigen::Vector3d& normal,
                 bool active, bool boundary = false);
-  // Signed residual d_i of point i (active or not) [mm].
+  // The weight of point i's residual in the fit (positive, finite; 1 by default).
+  void set_weight(std::size_t i, double weight) { points_[i].weight = weight; }
+  double weight(std::size_t i) const { return points_[i].weight; }
+  // Signed residual d_i of point i (active or not) [mm], unweighted.
   double residual(std::size_t i) const;
   // Unit gradient of d_i with respect to the moved point: n_i inside a face,
   // s_i e_i / |e_i| on a boundary.
@@ -118,8 +128,9 @@ class SurfaceFit {
   // with `status` saying why (rank deficiency: the surface does not fix
   // every free parameter, or a singular value below 1e-7 of the largest).
   std::optional<Eigen::Matrix<double, 6, 6>> covariance(std::string& status) const;
-  // The weight the loss gives point i's row in covariance() at the current
-  // parameters (1 without a loss): its leverage in the fit is
+  // The weight point i's row has in covariance() at the current parameters:
+  // its own weight squared times the loss's correction at w_i d_i (1 for an
+  // unweighted point without a loss): its leverage in the fit is
   // loss_weight(i) jacobian(i) C jacobian(i)^T, C = covariance().
   double loss_weight(std::size_t i) const;
 

@@ -183,6 +183,7 @@ std::string scan_section_html(const ScanComparisonDocument* scan, const std::str
       {"Removed: spray far", count(p.spray_far)},
       {"Removed: spray near the surface", count(p.spray_near)},
       {"Removed: off the part", count(p.off_part)},
+      {"Removed: seen at grazing incidence", count(p.grazing)},
       {"Spray rules", pre.spray_removal ? "on: " + fixed(pre.spray_near_sigmas, 1) + " robust sigmas off the local "
                                               "quadric of " + std::to_string(pre.normal_neighbours) +
                                               " neighbours (local sigma " + um(pre.local_plane_sigma) +
@@ -217,7 +218,8 @@ json scan_section_json(const ScanComparisonDocument* scan) {
           {"points", {{"read", p.read},
                       {"not_finite", p.not_finite},
                       {"evaluated", p.kept},
-                      {"removed", {{"spray_far", p.spray_far}, {"spray_near", p.spray_near}, {"off_part", p.off_part}}},
+                      {"removed", {{"spray_far", p.spray_far}, {"spray_near", p.spray_near}, {"off_part", p.off_part},
+                                   {"grazing", p.grazing}}},
                       {"fit", p.fit},
                       {"in_fit", p.in_fit}}},
           {"preprocessing", {{"voxel", num(pre.voxel, "voxel")},

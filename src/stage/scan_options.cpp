@@ -1,5 +1,8 @@
 #include "stage/scan_options.hpp"
 
+#include "base/error.hpp"
+#include "base/number_text.hpp"
+
 namespace furrow {
 
 namespace {
@@ -32,6 +35,52 @@ OptionTable<ScanPreprocessOptions> make_table() {
       "docs/scan.md \"Registration\")",
       [](auto& o) -> auto& { return o.start; }, parse_scan_start, [](ScanStart s) { return to_string(s); },
       choice_names({ScanStart::global, ScanStart::features, ScanStart::best})));
+  // The line of sight (docs/scan.md "Line of sight").
+  const auto point_of = [](const std::optional<Eigen::Vector3d>& v) -> std::optional<std::vector<double>> {
+    if (!v) return std::nullopt;
+    return std::vector<double>{v->x(), v->y(), v->z()};
+  };
+  OptionSpec<O> viewpoint = numbers_option<O>(
+      "viewpoint", "X,Y,Z",
+      "where the scanner stood, in the scan's frame and units: each point is seen along the line to it (PCL's "
+      "viewpoint); enables grazing rejection and weights. Default: a PCD's VIEWPOINT when it is not PCL's "
+      "0 0 0 1 0 0 0, else none",
+      3,
+      [](const std::vector<double>& v, const std::string&, O& o) { o.viewpoint = Eigen::Vector3d(v[0], v[1], v[2]); },
+      [point_of](const O& o) { return point_of(o.viewpoint); });
+  viewpoint.example = "0,0,500";
+  t.push_back(viewpoint);
+  OptionSpec<O> direction = numbers_option<O>(
+      "view_direction", "X,Y,Z",
+      "the direction a parallel scanner looks along, in the scan's frame (any length; a laser line swept over "
+      "the part): instead of --viewpoint",
+      3,
+      [](const std::vector<double>& v, const std::string& where, O& o) {
+        const Eigen::Vector3d d(v[0], v[1], v[2]);
+        if (!(d.stableNorm() > 0)) throw InputError(where + ": the view direction must not be zero");
+        o.view_direction = d;
+      },
+      [point_of](const O& o) { return point_of(o.view_direction); });
+  direction.example = "0,0,-1";
+  t.push_back(direction);
+  OptionSpec<O> incidence = number_option<O>(
+      "max_incidence", "DEG",
+      "points seen more obliquely than this from their normal are grazing: reported, out of the fit and the "
+      "evaluation (0 to 90; with a view)",
+      [](auto& o) -> auto& { return o.max_incidence_deg; });
+  const auto read_incidence = incidence.read;
+  incidence.read = [read_incidence](const nlohmann::json& v, const std::string& where, O& o) {
+    read_incidence(v, where, o);
+    if (!(o.max_incidence_deg < 90))
+      throw InputError(where + ": must lie between 0 and 90 degrees, got " + general(o.max_incidence_deg));
+  };
+  incidence.schema["exclusiveMaximum"] = 90;
+  incidence.example = "60";
+  t.push_back(incidence);
+  t.push_back(toggle_option<O>("incidence_weights",
+                               "with a view, weight each fit point by cos(incidence), the noise model of "
+                               "docs/scan.md \"Weights\" (off: every point weighs the same)",
+                               [](auto& o) -> auto& { return o.incidence_weights; }));
   return t;
 }
 

@@ -27,6 +27,10 @@ OptionTable<ScanSimulationOptions> make_table() {
                                [](auto& o) -> auto& { return o.scanner.point_pitch; }));
   t.push_back(number_option<O>("scan_noise", "S", "noise sigma in mm along the line of sight",
                                [](auto& o) -> auto& { return o.scanner.noise_sigma; }, Bound::non_negative));
+  t.push_back(toggle_option<O>("noise_grows_with_incidence",
+                               "make the noise along the line of sight grow as 1 / cos^2(incidence), its part "
+                               "along the normal as 1 / cos(incidence) (docs/scan.md \"Weights\")",
+                               [](auto& o) -> auto& { return o.scanner.noise_grows_with_incidence; }));
   t.push_back(number_option<O>("max_incidence", "DEG",
                                "surfaces seen more obliquely than this from their normal give no point (0 to 90)",
                                [](auto& o) -> auto& { return o.scanner.max_incidence_deg; }));

@@ -88,11 +88,13 @@ inline std::string ply_text(const std::vector<Eigen::Vector3d>& points, const Pl
   return out;
 }
 
-// PCD with double x y z (TYPE F, SIZE 8), ascii or binary.
-inline std::string pcd_text(const std::vector<Eigen::Vector3d>& points, bool binary) {
+// PCD with double x y z (TYPE F, SIZE 8), ascii or binary; `viewpoint` is
+// the VIEWPOINT header's seven numbers (PCL's default when nobody set one).
+inline std::string pcd_text(const std::vector<Eigen::Vector3d>& points, bool binary,
+                            const std::string& viewpoint = "0 0 0 1 0 0 0") {
   const std::string n = std::to_string(points.size());
   std::string out = "# .PCD v0.7 - written by the Furrow tests\nVERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\n"
-                    "TYPE F F F\nCOUNT 1 1 1\nWIDTH " + n + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + n +
+                    "TYPE F F F\nCOUNT 1 1 1\nWIDTH " + n + "\nHEIGHT 1\nVIEWPOINT " + viewpoint + "\nPOINTS " + n +
                     "\nDATA " + (binary ? "binary" : "ascii") + "\n";
   for (const Eigen::Vector3d& p : points) {
     if (binary) {

@@ -61,6 +61,11 @@ struct MeasuredPoint {
   // I++ DME: the effective ball radius ER() the server reported with the
   // point (it answers with the ball's centre); see MeasurementSet::kind.
   std::optional<double> effective_radius;
+  // Relative weight in the registration: the point's residual enters the
+  // fit multiplied by it (1/sigma relative to the set's other points;
+  // positive and finite). Every reader leaves 1; a scan's fit points carry
+  // cos(incidence) (docs/scan.md "Weights"). Deviations are never weighted.
+  double weight = 1;
 };
 
 // A point the file says was to be measured but was not (an I++ DME PtMeas

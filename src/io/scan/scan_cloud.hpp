@@ -8,6 +8,7 @@
 // x/y/z keeps them here bit for bit, and a file of floats is widened exactly.
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct ScanCloud {
   std::vector<Eigen::Vector3f> normals;
   std::size_t read = 0;        // points in the file
   std::size_t not_finite = 0;  // of them, points with a NaN or infinite coordinate: not in `points`
+  // Where the scanner stood, file frame, in mm like `points`: a PCD's
+  // VIEWPOINT translation when the file sets one (PCL writes 0 0 0 1 0 0 0
+  // when nobody did; that header is taken as no viewpoint: docs/scan.md
+  // "Line of sight"). A PLY has no standard place for it: none.
+  std::optional<Eigen::Vector3d> viewpoint;
+  // The scale read_scan() applied to the file's coordinates (25.4 for a scan
+  // in inches): options given in file units (a viewpoint) are scaled by it.
+  double mm_per_unit = 1.0;
   // Names of the fields the file has besides x y z and the normals (colour,
   // intensity, ...): read past, not used.
   std::vector<std::string> ignored_fields;

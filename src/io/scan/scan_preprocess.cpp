@@ -17,8 +17,39 @@
 
 namespace furrow {
 
-ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOptions& options) {
+const char* to_string(ScanViewKind kind) {
+  switch (kind) {
+    case ScanViewKind::none: return "none";
+    case ScanViewKind::viewpoint: return "viewpoint";
+    case ScanViewKind::direction: return "direction";
+  }
+  return "?";
+}
+
+ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOptions& given) {
   const std::string& name = cloud.file;
+  // The line of sight, resolved here (scan_preprocess.hpp step 5): the
+  // module gets at most one of the two, the viewpoint in mm.
+  ScanPreprocessOptions options = given;
+  if (!(std::isfinite(options.max_incidence_deg) && options.max_incidence_deg > 0 && options.max_incidence_deg < 90))
+    throw InputError(name + ": --max-incidence must lie between 0 and 90 degrees, got " +
+                     general(options.max_incidence_deg));
+  if (options.viewpoint && options.view_direction)
+    throw InputError(name + ": --viewpoint and --view-direction both given: a scanner is seen from one of them");
+  std::string view_source;
+  if (options.view_direction) {
+    if (!options.view_direction->allFinite() || !(options.view_direction->stableNorm() > 0))
+      throw InputError(name + ": --view-direction must be a non-zero vector");
+    options.view_direction = Eigen::Vector3d(*options.view_direction / options.view_direction->stableNorm());
+    view_source = "option";
+  } else if (options.viewpoint) {
+    if (!options.viewpoint->allFinite()) throw InputError(name + ": --viewpoint must be a finite point");
+    options.viewpoint = Eigen::Vector3d(*options.viewpoint * cloud.mm_per_unit);
+    view_source = "option";
+  } else if (cloud.viewpoint) {
+    options.viewpoint = cloud.viewpoint;
+    view_source = "file";
+  }
   if (!(std::isfinite(options.voxel) && options.voxel > 0))
     throw InputError(name + ": --voxel must be a positive number of mm, got " + general(options.voxel));
   if (options.outlier_neighbours < 2 || options.normal_neighbours < 3)
@@ -50,7 +81,7 @@ ScanPreprocessed preprocess_scan(const ScanCloud& cloud, const ScanPreprocessOpt
   ScanPreprocessed result;
   std::string message;
   switch (static_cast<scan::ScanModuleOutcome>(entry(&cloud, &options, &result, &message))) {
-    case scan::ScanModuleOutcome::ok: return result;
+    case scan::ScanModuleOutcome::ok: result.view_source = view_source; return result;
     case scan::ScanModuleOutcome::input_error: throw InputError(message);
     case scan::ScanModuleOutcome::out_of_memory: throw std::bad_alloc();
     case scan::ScanModuleOutcome::failure: break;

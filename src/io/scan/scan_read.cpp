@@ -63,6 +63,12 @@ ScanCloud read_scan(const std::string& path, double mm_per_unit) {
   }
   if (cloud.points.empty())
     throw InputError(path + ": the scan has no finite point (" + std::to_string(cloud.read) + " read)");
+  cloud.mm_per_unit = mm_per_unit;
+  if (cloud.viewpoint) {
+    *cloud.viewpoint *= mm_per_unit;
+    if (!cloud.viewpoint->allFinite() || cloud.viewpoint->cwiseAbs().maxCoeff() > limits::kMaxScanCoordinateMm)
+      throw InputError(path + ": the VIEWPOINT lies beyond ±1e8 mm (100 km) of the origin");
+  }
   for (std::size_t i = 0; i < cloud.points.size(); ++i) {
     Eigen::Vector3d& p = cloud.points[i];
     if (mm_per_unit != 1.0) p *= mm_per_unit;

@@ -1,6 +1,6 @@
 // Pre-processing a scan with PCL inside the scan module (contract in
-// io/scan/scan_preprocess.hpp): local origin, spray, voxel-grid subset,
-// normals.
+// io/scan/scan_preprocess.hpp): local origin, spray, normals and grazing
+// points with a line of sight, voxel-grid subset, normals at the fit points.
 #include <pcl/common/centroid.h>
 #include <pcl/common/eigen.h>
 #include <pcl/exceptions.h>
@@ -14,11 +14,13 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <optional>
 #include <string>
 
 #include "base/error.hpp"
+#include "base/numbers.hpp"
 #include "io/scan/pcl/scan_pcl_entry.hpp"
 #include "io/scan/scan_module.hpp"
 
@@ -231,6 +233,60 @@ void flag_spray(const pcl::PointCloud<pcl::PointXYZ>::Ptr& local, const ScanPrep
   }
 }
 
+// Unit normals estimated by PCL's NormalEstimationOMP at the points of
+// `at` from their `k` nearest points of `surface` (zero where none could be
+// had). Each point's normal depends on its neighbours alone: the same on
+// any thread count.
+std::vector<Eigen::Vector3f> estimate_normals(const pcl::PointCloud<pcl::PointXYZ>::Ptr& at,
+                                              const pcl::PointCloud<pcl::PointXYZ>::Ptr& surface, int k) {
+  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud(at);
+  estimation.setSearchSurface(surface);
+  estimation.setKSearch(k);
+  pcl::PointCloud<pcl::Normal> normals;
+  estimation.compute(normals);
+  std::vector<Eigen::Vector3f> out;
+  out.reserve(normals.size());
+  for (const pcl::Normal& m : normals) {
+    const Eigen::Vector3f v(m.normal_x, m.normal_y, m.normal_z);
+    out.push_back(v.allFinite() && v.norm() > 0 ? Eigen::Vector3f(v.normalized()) : Eigen::Vector3f::Zero());
+  }
+  return out;
+}
+
+// Step 5 of scan_preprocess.hpp: the incidence of every point and the
+// grazing ones, from `normals` (one per point) and the view of `options`
+// (resolved by preprocess_scan: the viewpoint in mm, the direction unit).
+// Grazing points are spray no more (grazing is decided from geometry
+// alone; spray among the rest).
+void mark_grazing(const ScanCloud& cloud, const std::vector<Eigen::Vector3f>& normals,
+                  const ScanPreprocessOptions& options, ScanPreprocessed& result) {
+  const std::size_t n = cloud.points.size();
+  result.incidence.assign(n, std::numeric_limits<float>::quiet_NaN());
+  result.grazing.assign(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d m = normals[i].cast<double>();
+    // The line of sight from the point to the scanner, in double: the
+    // viewpoint may lie a metre off, where floats step by 60 um.
+    const Eigen::Vector3d sight = options.viewpoint ? Eigen::Vector3d(*options.viewpoint - cloud.points[i])
+                                                    : *options.view_direction;
+    const double length = m.norm() * sight.norm();
+    if (!(length > 0)) {
+      ++result.no_normal;
+      continue;
+    }
+    const double angle = degrees(std::acos(std::min(1.0, std::abs(m.dot(sight)) / length)));
+    result.incidence[i] = static_cast<float>(angle);
+    if (angle > options.max_incidence_deg) {
+      result.grazing[i] = true;
+      ++result.grazing_count;
+      if (result.spray[i] == kSprayFar) --result.spray_far;
+      if (result.spray[i] == kSprayNear) --result.spray_near;
+      result.spray[i] = 0;
+    }
+  }
+}
+
 }  // namespace
 
 ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreprocessOptions& options) {
@@ -250,19 +306,40 @@ ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreproces
 
   // Spray: flagged by the statistical filter, never dropped from the cloud.
   result.spray.assign(n, 0);
-  pcl::IndicesPtr kept(new pcl::Indices);
-  if (options.remove_spray) {
-    flag_spray(local, options, result);
-    result.spray_count = result.spray_far + result.spray_near;
+  if (options.remove_spray) flag_spray(local, options, result);
+  // The points that are not spray: the surface normals are estimated from.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr surface(new pcl::PointCloud<pcl::PointXYZ>);
+  const auto not_spray = [&] {
+    surface->clear();
+    surface->reserve(n);
     for (std::size_t i = 0; i < n; ++i)
-      if (!result.spray[i]) kept->push_back(static_cast<pcl::index_t>(i));
-  } else {
-    kept->resize(n);
-    for (std::size_t i = 0; i < n; ++i) (*kept)[i] = static_cast<pcl::index_t>(i);
+      if (!result.spray[i]) surface->push_back((*local)[i]);
+  };
+
+  // With a line of sight: normals at every point, the incidence, grazing.
+  std::vector<Eigen::Vector3f> estimated;  // at every point, when estimated for the view
+  if (options.viewpoint || options.view_direction) {
+    result.view = options.viewpoint ? ScanViewKind::viewpoint : ScanViewKind::direction;
+    result.view_vector = options.viewpoint ? *options.viewpoint : *options.view_direction;
+    if (cloud.normals.empty()) {
+      not_spray();
+      if (surface->size() <= static_cast<std::size_t>(options.normal_neighbours))
+        throw InputError(cloud.file + ": only " + std::to_string(surface->size()) + " of " + std::to_string(n) +
+                         " points are not spray, too few to compare");
+      estimated = estimate_normals(local, surface, options.normal_neighbours);
+      result.normals_estimated = true;
+    }
+    mark_grazing(cloud, cloud.normals.empty() ? estimated : cloud.normals, options, result);
   }
+  result.spray_count = result.spray_far + result.spray_near;
+  pcl::IndicesPtr kept(new pcl::Indices);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!result.spray[i] && (result.grazing.empty() || !result.grazing[i])) kept->push_back(static_cast<pcl::index_t>(i));
   if (kept->size() <= static_cast<std::size_t>(options.normal_neighbours))
     throw InputError(cloud.file + ": only " + std::to_string(kept->size()) + " of " + std::to_string(n) +
-                     " points are not spray, too few to compare");
+                     (result.grazing.empty() ? " points are not spray"
+                                             : " points are neither spray nor seen at grazing incidence") +
+                     ", too few to compare");
 
   // The fit subset: per occupied voxel, the real point nearest its centroid.
   pcl::VoxelGrid<pcl::PointXYZ> grid;
@@ -282,29 +359,26 @@ ScanPreprocessed preprocess_with_pcl(const ScanCloud& cloud, const ScanPreproces
   std::sort(result.fit.begin(), result.fit.end());
   result.fit.erase(std::unique(result.fit.begin(), result.fit.end()), result.fit.end());
 
-  // Normals at the fit points: the file's, or estimated from the points
-  // that are not spray around them.
+  // Normals at the fit points: the file's, those estimated for the view,
+  // or estimated now from the points that are not spray around them.
   if (!cloud.normals.empty()) {
     for (const std::size_t i : result.fit) result.fit_normals.push_back(cloud.normals[i]);
-    return result;
+  } else if (!estimated.empty()) {
+    for (const std::size_t i : result.fit) result.fit_normals.push_back(estimated[i]);
+  } else {
+    result.normals_estimated = true;
+    not_spray();
+    pcl::PointCloud<pcl::PointXYZ>::Ptr at(new pcl::PointCloud<pcl::PointXYZ>);
+    for (const std::size_t i : result.fit) at->push_back((*local)[i]);
+    result.fit_normals = estimate_normals(at, surface, options.normal_neighbours);
   }
-  result.normals_estimated = true;
-  pcl::PointCloud<pcl::PointXYZ>::Ptr surface(new pcl::PointCloud<pcl::PointXYZ>);
-  surface->reserve(kept->size());
-  for (const auto i : *kept) surface->push_back((*local)[static_cast<std::size_t>(i)]);
-  pcl::PointCloud<pcl::PointXYZ>::Ptr at(new pcl::PointCloud<pcl::PointXYZ>);
-  for (const std::size_t i : result.fit) at->push_back((*local)[i]);
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud(at);
-  estimation.setSearchSurface(surface);
-  estimation.setKSearch(options.normal_neighbours);
-  pcl::PointCloud<pcl::Normal> normals;
-  estimation.compute(normals);
-  result.fit_normals.reserve(result.fit.size());
-  for (const pcl::Normal& m : normals) {
-    const Eigen::Vector3f v(m.normal_x, m.normal_y, m.normal_z);
-    result.fit_normals.push_back(v.allFinite() && v.norm() > 0 ? Eigen::Vector3f(v.normalized())
-                                                               : Eigen::Vector3f::Zero());
+  // The fit's weights, cos(incidence) (docs/scan.md "Weights").
+  if (!result.incidence.empty() && options.incidence_weights) {
+    result.fit_weights.reserve(result.fit.size());
+    for (const std::size_t i : result.fit) {
+      const float angle = result.incidence[i];
+      result.fit_weights.push_back(std::isnan(angle) ? 1.0 : std::cos(radians(static_cast<double>(angle))));
+    }
   }
   return result;
 }

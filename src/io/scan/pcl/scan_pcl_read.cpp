@@ -163,6 +163,16 @@ ScanCloud read_with_pcl(const std::string& path) {
     if (reader.read(path, cloud, origin, orientation, version) < 0)
       throw InputError(path + ": PCL cannot read it as PCD (a malformed header, or fewer data than its POINTS "
                               "says)");
+    // VIEWPOINT tx ty tz qw qx qy qz: the scanner's pose in the cloud's
+    // frame. PCL writes "0 0 0 1 0 0 0" when nobody set it, so that exact
+    // header says nothing; any other gives the scanner's position (its
+    // orientation does not change a line of sight). docs/scan.md "Line of sight".
+    const bool pcl_default = origin.head<3>().isZero() && orientation.w() == 1 && orientation.x() == 0 &&
+                             orientation.y() == 0 && orientation.z() == 0;
+    if (!pcl_default) {
+      if (!origin.head<3>().allFinite()) throw InputError(path + ": its VIEWPOINT is not a finite position");
+      scan.viewpoint = origin.head<3>().cast<double>();
+    }
   }
   const std::size_t count = static_cast<std::size_t>(cloud.width) * cloud.height;
   if (declared >= 0 && static_cast<long long>(count) != declared)
