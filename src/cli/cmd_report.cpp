@@ -1,7 +1,6 @@
 // furrow report comparison.json --out reports/NAME: the QA report folder
 // (report.html, report.json, points.csv, figures) of a comparison.
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
 #include <ctime>
@@ -27,9 +26,9 @@ namespace {
 // stored there first under --serial (else the record's serial), as
 // furrow compare --db would have (docs/results_database.md).
 ProcessContext report_process(Args& args, const ResultsStorageOptions& storage, const std::string& comparison_path,
-                              const ReportSources& sources, const ReportContext& report) {
+                              const std::vector<InputDigest>& inputs, const ReportContext& report) {
   std::string serial = storage.serial.empty() && report.record ? report.record->serial : storage.serial;
-  const std::string& digest = sources.inputs.front().sha256;  // the comparison's own
+  const std::string& digest = inputs.front().sha256;  // the comparison's own
   const std::unique_ptr<ResultsDatabase> db =
       open_results_database(storage.db, serial.empty() ? DatabaseAccess::read : DatabaseAccess::write);
   bool stored = false;
@@ -59,11 +58,6 @@ int run_report(Args& args) {
 
   if (is_scan_comparison_text(json_fields::read_text(comparison_path))) {
     if (compensation) args.fail("--compensation: a compensation record is made from probe points, not from a scan");
-    // FURROW_DB names the shop's database for probe points: a scan's report
-    // is made without it; an explicit --db or --serial is refused.
-    const char* env_db = std::getenv("FURROW_DB");
-    if (!storage.serial.empty() || (!storage.db.empty() && (!env_db || storage.db != env_db)))
-      args.fail("--db: a scan comparison is not stored in a results database (docs/scan.md \"Limits\")");
     ScanReportSources sources = read_scan_report_sources(comparison_path);
     ReportContext context;
     if (record) {
@@ -71,6 +65,10 @@ int run_report(Args& args) {
       sources.inputs.push_back(digest_file("record", *record));
     }
     check_inputs_outside(out, sources.inputs);
+    // A scan is stored by its regions (docs/results_database.md "Scans"):
+    // its place in the batch is found as a probe comparison's is.
+    if (!storage.db.empty()) context.process = report_process(args, storage, comparison_path, sources.inputs, context);
+    else if (!storage.serial.empty()) args.fail("--serial names the part in a results database: give --db (or FURROW_DB)");
     context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
     if (context.title.empty() || context.title == ".") context.title = "comparison";
     context.generated = utc_timestamp();
@@ -101,7 +99,7 @@ int run_report(Args& args) {
     sources.inputs.push_back(digest_file("compensation", *compensation));
   }
   check_inputs_outside(out, sources.inputs);
-  if (!storage.db.empty()) context.process = report_process(args, storage, comparison_path, sources, context);
+  if (!storage.db.empty()) context.process = report_process(args, storage, comparison_path, sources.inputs, context);
   else if (!storage.serial.empty()) args.fail("--serial names the part in a results database: give --db (or FURROW_DB)");
   context.title = title.value_or(std::filesystem::path(out).lexically_normal().filename().string());
   if (context.title.empty() || context.title == ".") context.title = "comparison";

@@ -382,7 +382,7 @@ ScanCloud read_scan_bytes(const std::string& bytes, const std::string& name, dou
 // deviations.ply` does, then the report of the scan as `furrow report`
 // makes it from that comparison (read back from its text).
 void scan_job_stages(Staged& s, const Part& part, const RegionMap& map, const Prediction& prediction,
-                     StageClock& clock) {
+                     const ProcessLookup& process, StageClock& clock) {
   const Job& job = s.job;
   ScanCloud cloud;
   if (job.scan->simulate) {
@@ -418,12 +418,16 @@ void scan_job_stages(Staged& s, const Part& part, const RegionMap& map, const Pr
   s.add("deviations.ply", scan_deviation_ply(c, cloud));
   std::string text = scan_comparison_json(c, sources);
   const ScanComparisonDocument doc = parse_scan_comparison(text, "comparison.json");
+  // The part's place in its batch, as for probe points (`furrow run --db`).
+  std::optional<ProcessContext> batch;
+  if (process) batch = process(text);
   s.add_input("comparison", "comparison.json", std::move(text));
   clock.done("compare");
 
   s.note("report");
   PipelineResult& result = s.result;
   ReportContext context = job_report_context(s);
+  context.process = std::move(batch);
   const Clock::time_point report_start = Clock::now();
   const std::vector<ReportFigure> figures = make_scan_report_figures(doc, part, &map);
   context.stages = result.stages;
@@ -504,7 +508,7 @@ PipelineResult run_job(const Job& job, const PipelineProgress& progress, const P
   clock.done("plan");
 
   if (job.scan) {
-    scan_job_stages(s, part, map, prediction, clock);
+    scan_job_stages(s, part, map, prediction, process, clock);
   } else if (job.has_measurements()) {
     const MeasurementSet set = measurement_stage(s, plan, prediction);
     clock.done(job.simulate ? "simulate measurement" : "read measurements");

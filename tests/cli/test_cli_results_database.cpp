@@ -252,6 +252,28 @@ TEST_CASE("cli results database: compare --scan --db stores a scan's regions and
       CHECK(again.out.find("already in " + db) != std::string::npos);
     }
   }
+  // The QA report of the last scan shows its place in the batch: the third
+  // of three stored parts, each region's recent means as stored.
+  const CliResult report = run_furrow({"report", dir + "/c3.json", "--out", dir + "/report", "--db", db});
+  REQUIRE_MESSAGE(report.status == 0, report.err);
+  const nlohmann::json process = nlohmann::json::parse(slurp(dir + "/report/report.json"))["process"];
+  REQUIRE(process.is_object());
+  CHECK(process["stored"] == true);
+  CHECK(process["serial"] == "SCAN-3");
+  CHECK(process["parts"] == 3);
+  CHECK(process["position"] == 2);  // 0-based
+  REQUIRE(process["regions"].size() == docs[2]["summary"]["regions"].size());
+  for (std::size_t r = 0; r < process["regions"].size(); ++r) {
+    const nlohmann::json& recent = process["regions"][r]["recent"];
+    REQUIRE(recent.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(recent[k]["serial"] == "SCAN-" + std::to_string(k + 1));
+      for (const nlohmann::json& region : docs[k]["summary"]["regions"])
+        if (region["region"] == process["regions"][r]["region"])
+          CHECK(recent[k]["value"].get<double>() == region["deviations"]["mean"].get<double>());
+    }
+  }
+
   // By point a scan gives nothing to follow: inconclusive, nothing written.
   const CliResult by_point = run_furrow({"spc", "--db", db, "--out", dir + "/spc-points"});
   CHECK(by_point.status == 4);
