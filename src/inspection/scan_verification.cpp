@@ -39,20 +39,22 @@ class SiteGrid {
   }
   // Whether some point lies within `radius` (<= cell) of `at`.
   bool any_near(const Eigen::Vector3d& at, double radius) const {
-    const std::array<long, 3> k = key(at);
-    for (long a = -1; a <= 1; ++a)
-      for (long b = -1; b <= 1; ++b)
-        for (long c = -1; c <= 1; ++c) {
-          const auto it = cells_.find({k[0] + a, k[1] + b, k[2] + c});
-          if (it == cells_.end()) continue;
-          for (const std::size_t j : it->second)
-            if ((x_[j] - at).squaredNorm() <= radius * radius) return true;
-        }
-    return false;
+    return !visit(at, radius, [](std::size_t) { return false; });
   }
   // Calls f(j) for every point within `radius` (<= cell) of `at`.
   template <class F>
   void near(const Eigen::Vector3d& at, double radius, F&& f) const {
+    visit(at, radius, [&f](std::size_t j) {
+      f(j);
+      return true;
+    });
+  }
+
+ private:
+  // Calls f(j) for the points within `radius` (<= cell) of `at` until f
+  // returns false; returns false when it stopped so.
+  template <class F>
+  bool visit(const Eigen::Vector3d& at, double radius, F&& f) const {
     const std::array<long, 3> k = key(at);
     for (long a = -1; a <= 1; ++a)
       for (long b = -1; b <= 1; ++b)
@@ -60,11 +62,10 @@ class SiteGrid {
           const auto it = cells_.find({k[0] + a, k[1] + b, k[2] + c});
           if (it == cells_.end()) continue;
           for (const std::size_t j : it->second)
-            if ((x_[j] - at).squaredNorm() <= radius * radius) f(j);
+            if ((x_[j] - at).squaredNorm() <= radius * radius && !f(j)) return false;
         }
+    return true;
   }
-
- private:
   std::array<long, 3> key(const Eigen::Vector3d& p) const {
     return {static_cast<long>(std::floor(p.x() / cell_)), static_cast<long>(std::floor(p.y() / cell_)),
             static_cast<long>(std::floor(p.z() / cell_))};
